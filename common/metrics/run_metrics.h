@@ -1,0 +1,92 @@
+#pragma once
+// The metric definitions, in one place (see README "Metrics"):
+// - throughput (Mbit/s): application bytes received at the UAV sink inside the measurement
+//   window x 8 / window length;
+// - mean delay (ms): mean one-way delay of the packets received inside the window
+//   (packet-weighted over all UEs for the aggregate);
+// - loss: share of the packets sent inside the window that never arrived (late arrivals after
+//   the window still count as arrived);
+// - nLoS: UEs whose link to the UAV is geometrically clear of every building;
+// - demand check: the MCS a UE's demand needs -> that MCS's minimum SNR -> met if SNR >= it.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "metrics/mcs_table.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+struct MeasurementWindow {
+  double start = 0.0;  // s
+  double end = 0.0;    // s
+  bool Holds(double t) const { return t >= start && t < end; }
+  double Length() const { return end - start; }
+};
+
+// Counts one flow (one UE -> UAV) against a window. Fed by the simulator's traces.
+class FlowAccumulator {
+ public:
+  explicit FlowAccumulator(MeasurementWindow window) : window_(window) {}
+  void OnSent(double sent_at);
+  void OnReceived(double sent_at, double received_at, std::uint64_t bytes);
+
+  double ThroughputMbps() const;
+  double MeanDelayMs() const;  // NaN when nothing was received
+  double LossRatio() const;    // NaN when nothing was sent
+  std::uint64_t SentInWindow() const { return sent_; }
+  std::uint64_t ReceivedInWindow() const { return received_packets_; }
+  double DelaySumS() const { return delay_sum_s_; }
+  std::uint64_t BytesInWindow() const { return received_bytes_; }
+  std::uint64_t DeliveredOfSentInWindow() const { return delivered_of_sent_; }
+
+ private:
+  MeasurementWindow window_;
+  std::uint64_t sent_ = 0;
+  std::uint64_t delivered_of_sent_ = 0;
+  std::uint64_t received_packets_ = 0;
+  std::uint64_t received_bytes_ = 0;
+  double delay_sum_s_ = 0.0;
+};
+
+struct DemandCheck {
+  int required_mcs = -1;  // -1: no MCS of this PHY carries the demand
+  double min_snr_db = 0.0;
+  bool met = false;
+};
+DemandCheck CheckDemand(const PhyProfile& phy, double demand_mbps, double snr_db);
+
+struct UeMetrics {
+  std::string name;
+  bool los = false;
+  double snr_db = 0.0;
+  double demand_mbps = 0.0;
+  DemandCheck demand;
+  double throughput_mbps = 0.0;
+  double mean_delay_ms = 0.0;
+  double loss_ratio = 0.0;
+  std::uint64_t sent = 0;
+  std::uint64_t received = 0;
+};
+
+struct RunMetrics {
+  Vec3 position;
+  MeasurementWindow window;
+  std::uint64_t run = 0;
+  double aggregate_throughput_mbps = 0.0;
+  double mean_delay_ms = 0.0;
+  double loss_ratio = 0.0;
+  int n_los = 0;
+  int demands_met = 0;
+  double min_snr_db = 0.0;
+  std::vector<UeMetrics> ues;
+};
+
+// Aggregates per-flow accumulators (one per UE, same order as `ues`) into the run's metrics.
+RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64_t run,
+                     const std::vector<FlowAccumulator>& flows, std::vector<UeMetrics> ues);
+
+nlohmann::json ToJson(const RunMetrics& metrics);
+
+}  // namespace rlpos

@@ -1,0 +1,113 @@
+#pragma once
+// The scenario model: everything one experiment needs, with the paper's Table I and II defaults.
+// Plain data, no ns-3: the worker turns it into ns-3 objects.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rlpos {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+
+// An axis-aligned box [xmin,xmax] x [ymin,ymax] x [zmin,zmax].
+struct Box {
+  double xmin = 0, xmax = 0, ymin = 0, ymax = 0, zmin = 0, zmax = 0;
+  bool Contains(const Vec3& p) const {
+    return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax && p.z >= zmin && p.z <= zmax;
+  }
+};
+
+// An ns-3 object chosen the ns-3 way: a TypeId name and attribute values. An attribute value is a
+// JSON scalar (converted to the attribute's string form) or a nested {"type", "attributes"} spec
+// for pointer attributes.
+struct ObjectSpec {
+  std::string type;
+  nlohmann::json attributes = nlohmann::json::object();
+};
+
+struct Venue {
+  double width = 100.0;  // x extent, m
+  double depth = 100.0;  // y extent, m
+  double height = 60.0;  // height limit for anything in the venue, m
+};
+
+struct BuildingSpec {
+  std::string name;
+  double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+  double height = 10.0;
+  int floors = 1;
+  int rooms_x = 1;
+  int rooms_y = 1;
+  std::string type = "residential";                 // residential | office | commercial
+  std::string walls = "concrete_with_windows";      // ns-3 Building::ExtWallsType
+  Box Footprint3d() const { return {xmin, xmax, ymin, ymax, 0.0, height}; }
+};
+
+struct MobilitySpec {
+  std::string model = "static";  // static | random_walk
+  double speed = 1.0;            // m/s, random_walk
+  double change_interval = 2.0;  // s between direction changes, random_walk
+};
+
+struct UeSpec {
+  std::string name;
+  Vec3 position;
+  double demand_mbps = 0.0;  // resolved from "mbps" or "mcs"
+  int demand_mcs = -1;       // the MCS the demand was given as, or -1 when given in Mbit/s
+  MobilitySpec mobility;
+};
+
+struct UavSpec {
+  Vec3 initial{50.0, 50.0, 10.0};
+  Box zone{0, 100, 0, 100, 1, 60};
+};
+
+struct WifiSpec {
+  std::string standard = "802.11ac";  // 802.11n | 802.11ac | 802.11ax
+  int channel = 50;
+  int width_mhz = 160;
+  int guard_interval_ns = 800;
+  int spatial_streams = 1;
+  double tx_power_dbm = 20.0;
+  double antenna_gain_dbi = 0.0;
+  double noise_floor_dbm = -85.0;
+  ObjectSpec rate_manager{"ns3::IdealWifiManager", nlohmann::json::object()};
+  std::string mode = "ap_sta";  // adhoc | ap_sta
+  bool rts_cts = false;
+};
+
+struct TrafficSpec {
+  std::string protocol = "udp_cbr";  // udp_cbr | tcp_bulk
+  int packet_size = 1400;            // application bytes per packet
+};
+
+struct SimulationSpec {
+  double duration = 10.0;  // s of simulated time, traffic included
+  double warmup = 1.0;     // s excluded from metrics (association, ARP)
+  std::uint32_t seed = 1;  // RngSeedManager seed
+  std::uint64_t run = 1;   // RngRun
+};
+
+struct Scenario {
+  std::string name;
+  std::string description;
+  Venue venue;
+  std::vector<BuildingSpec> buildings;
+  std::vector<UeSpec> ues;
+  UavSpec uav;
+  WifiSpec wifi;
+  TrafficSpec traffic;
+  ObjectSpec propagation;
+  SimulationSpec simulation;
+  std::string log_level = "warning";  // error | warning | info | debug
+
+  double TotalDemandMbps() const;
+};
+
+// The default propagation: our obstacle-aware model with the paper's ITU-R P.1411 LoS/NLoS pair.
+ObjectSpec DefaultPropagation();
+
+}  // namespace rlpos

@@ -1,0 +1,88 @@
+#include "scenario/scenario_checks.h"
+
+#include <sstream>
+
+#include "config/config_error.h"
+#include "config/object_reader.h"
+
+namespace rlpos {
+namespace {
+
+std::string Format(const Vec3& p) {
+  std::ostringstream out;
+  out << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return out.str();
+}
+
+void CheckInVenue(const Venue& venue, const Vec3& p, const std::string& path, const char* what) {
+  if (p.x < 0 || p.x > venue.width || p.y < 0 || p.y > venue.depth || p.z < 0 ||
+      p.z > venue.height) {
+    std::ostringstream out;
+    out << what << " at " << Format(p) << " is outside the venue [0, " << venue.width << "] x [0, "
+        << venue.depth << "] x [0, " << venue.height << "]";
+    throw ConfigError(path, out.str());
+  }
+}
+
+}  // namespace
+
+int BuildingContaining(const Scenario& scenario, const Vec3& p) {
+  for (std::size_t i = 0; i < scenario.buildings.size(); ++i) {
+    if (scenario.buildings[i].Footprint3d().Contains(p)) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void CheckScenarioGeometry(const Scenario& s) {
+  for (std::size_t i = 0; i < s.buildings.size(); ++i) {
+    const auto& b = s.buildings[i];
+    const std::string path = JoinPath("/buildings", i);
+    if (b.xmin < 0 || b.xmax > s.venue.width || b.ymin < 0 || b.ymax > s.venue.depth ||
+        b.height > s.venue.height) {
+      std::ostringstream out;
+      out << "building \"" << b.name << "\" [" << b.xmin << ", " << b.xmax << "] x [" << b.ymin
+          << ", " << b.ymax << "] x [0, " << b.height << "] is outside the venue";
+      throw ConfigError(path, out.str());
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const auto& o = s.buildings[j];
+      // Touching walls are allowed (a terrace); a shared volume is not.
+      const bool overlap = b.xmin < o.xmax && o.xmin < b.xmax && b.ymin < o.ymax && o.ymin < b.ymax;
+      if (overlap) {
+        throw ConfigError(path, "building \"" + b.name + "\" overlaps building " +
+                                    std::to_string(j) + " (\"" + o.name + "\")");
+      }
+    }
+  }
+  for (std::size_t i = 0; i < s.ues.size(); ++i) {
+    const std::string path = JoinPath(JoinPath("/ues", i), "position");
+    CheckInVenue(s.venue, s.ues[i].position, path, "UE");
+    const int inside = BuildingContaining(s, s.ues[i].position);
+    if (inside >= 0) {
+      throw ConfigError(path, "UE at " + Format(s.ues[i].position) + " is inside building " +
+                                  std::to_string(inside) + " (\"" + s.buildings[inside].name +
+                                  "\")");
+    }
+  }
+  const Box& z = s.uav.zone;
+  if (z.xmin < 0 || z.xmax > s.venue.width || z.ymin < 0 || z.ymax > s.venue.depth || z.zmin < 0 ||
+      z.zmax > s.venue.height) {
+    throw ConfigError("/uav/zone", "the zone reaches outside the venue");
+  }
+  CheckInVenue(s.venue, s.uav.initial, "/uav/position", "UAV");
+  if (!z.Contains(s.uav.initial)) {
+    std::ostringstream out;
+    out << "the zone [" << z.xmin << ", " << z.xmax << "] x [" << z.ymin << ", " << z.ymax
+        << "] x [" << z.zmin << ", " << z.zmax << "] excludes the initial position "
+        << Format(s.uav.initial);
+    throw ConfigError("/uav/zone", out.str());
+  }
+  const int inside = BuildingContaining(s, s.uav.initial);
+  if (inside >= 0) {
+    throw ConfigError("/uav/position", "UAV at " + Format(s.uav.initial) + " is inside building " +
+                                           std::to_string(inside) + " (\"" +
+                                           s.buildings[inside].name + "\")");
+  }
+}
+
+}  // namespace rlpos

@@ -1,0 +1,370 @@
+#include "scenario/scenario_parser.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "config/config_error.h"
+#include "config/object_reader.h"
+#include "metrics/mcs_table.h"
+#include "scenario/scenario_checks.h"
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+
+Vec3 ReadVec3(const json& v, const std::string& path) {
+  if (!v.is_array() || v.size() != 3) {
+    throw ConfigError(path, "expected [x, y, z], got " + (v.is_array() ? "an array of " +
+                                                             std::to_string(v.size())
+                                                                       : TypeName(v)));
+  }
+  return {CheckedNumber(v[0], JoinPath(path, 0), {}), CheckedNumber(v[1], JoinPath(path, 1), {}),
+          CheckedNumber(v[2], JoinPath(path, 2), {})};
+}
+
+// [lo, hi] with lo < hi (or lo <= hi when `allow_point`).
+std::pair<double, double> ReadInterval(const json& v, const std::string& path, bool allow_point) {
+  if (!v.is_array() || v.size() != 2) {
+    throw ConfigError(path, "expected [min, max], got " + TypeName(v));
+  }
+  const double lo = CheckedNumber(v[0], JoinPath(path, 0), {});
+  const double hi = CheckedNumber(v[1], JoinPath(path, 1), {});
+  if (hi < lo || (!allow_point && hi == lo)) {
+    throw ConfigError(path, "min must be below max");
+  }
+  return {lo, hi};
+}
+
+ObjectSpec ReadObjectSpec(const json& v, const std::string& path) {
+  ObjectReader r(v, path);
+  ObjectSpec spec;
+  spec.type = r.String("type", "");
+  if (spec.type.empty()) throw ConfigError(r.PathOf("type"), "is required (an ns-3 TypeId name)");
+  if (const json* attributes = r.Child("attributes")) {
+    if (!attributes->is_object()) {
+      throw ConfigError(r.PathOf("attributes"), "expected an object, got " + TypeName(*attributes));
+    }
+    for (auto it = attributes->begin(); it != attributes->end(); ++it) {
+      const std::string attribute_path = JoinPath(r.PathOf("attributes"), it.key());
+      if (it->is_object()) {
+        ReadObjectSpec(*it, attribute_path);  // nested spec: validate its shape now
+      } else if (it->is_number()) {
+        CheckedNumber(*it, attribute_path, {});
+      } else if (!it->is_string() && !it->is_boolean()) {
+        throw ConfigError(attribute_path, "expected a number, string, boolean or {\"type\": ...}");
+      }
+    }
+    spec.attributes = *attributes;
+  }
+  r.Finish();
+  return spec;
+}
+
+Venue ReadVenue(const json& v) {
+  ObjectReader r(v, "/venue");
+  Venue venue;
+  venue.width = r.Number("width", venue.width, Positive());
+  venue.depth = r.Number("depth", venue.depth, Positive());
+  venue.height = r.Number("height", venue.height, Positive());
+  r.Finish();
+  return venue;
+}
+
+BuildingSpec ReadBuilding(const json& v, const std::string& path, std::size_t index) {
+  ObjectReader r(v, path);
+  BuildingSpec b;
+  b.name = r.String("name", "building" + std::to_string(index));
+  const json* x = r.Child("x");
+  const json* y = r.Child("y");
+  if (!x) throw ConfigError(r.PathOf("x"), "is required ([xmin, xmax])");
+  if (!y) throw ConfigError(r.PathOf("y"), "is required ([ymin, ymax])");
+  std::tie(b.xmin, b.xmax) = ReadInterval(*x, r.PathOf("x"), false);
+  std::tie(b.ymin, b.ymax) = ReadInterval(*y, r.PathOf("y"), false);
+  b.height = r.RequiredNumber("height", Positive());
+  b.floors = static_cast<int>(r.Integer("floors", 1, 1, 200));
+  if (const json* rooms = r.Child("rooms")) {
+    if (!rooms->is_array() || rooms->size() != 2 || !(*rooms)[0].is_number_integer() ||
+        !(*rooms)[1].is_number_integer() || (*rooms)[0].get<long long>() < 1 ||
+        (*rooms)[1].get<long long>() < 1) {
+      throw ConfigError(r.PathOf("rooms"), "expected [rooms_x, rooms_y], integers >= 1");
+    }
+    b.rooms_x = (*rooms)[0].get<int>();
+    b.rooms_y = (*rooms)[1].get<int>();
+  }
+  b.type = r.String("type", b.type, {"residential", "office", "commercial"});
+  b.walls = r.String("walls", b.walls,
+                     {"wood", "concrete_with_windows", "concrete_without_windows", "stone_blocks"});
+  r.Finish();
+  return b;
+}
+
+MobilitySpec ReadMobility(const json& v, const std::string& path) {
+  ObjectReader r(v, path);
+  MobilitySpec m;
+  m.model = r.String("model", m.model, {"static", "random_walk"});
+  m.speed = r.Number("speed", m.speed, Positive());
+  m.change_interval = r.Number("change_interval", m.change_interval, Positive());
+  r.Finish();
+  return m;
+}
+
+UeSpec ReadUe(const json& v, const std::string& path, std::size_t index, const PhyProfile& phy) {
+  ObjectReader r(v, path);
+  UeSpec ue;
+  ue.name = r.String("name", "ue" + std::to_string(index));
+  const json* position = r.Child("position");
+  if (!position) throw ConfigError(r.PathOf("position"), "is required ([x, y, z])");
+  ue.position = ReadVec3(*position, r.PathOf("position"));
+  const json* demand = r.Child("demand");
+  if (!demand) throw ConfigError(r.PathOf("demand"), "is required ({\"mbps\": R} or {\"mcs\": I})");
+  ObjectReader d(*demand, r.PathOf("demand"));
+  if (d.Has("mbps") == d.Has("mcs")) {
+    throw ConfigError(d.path(), "give exactly one of \"mbps\" or \"mcs\"");
+  }
+  if (d.Has("mbps")) {
+    ue.demand_mbps = d.RequiredNumber("mbps", Positive());
+  } else {
+    ue.demand_mcs = static_cast<int>(d.Integer("mcs", 0, 0, MaxMcs(phy.standard)));
+    ue.demand_mbps = McsDataRateMbps(phy, ue.demand_mcs);
+  }
+  d.Finish();
+  if (const json* mobility = r.Child("mobility")) {
+    ue.mobility = ReadMobility(*mobility, r.PathOf("mobility"));
+  }
+  r.Finish();
+  return ue;
+}
+
+UavSpec ReadUav(const json& v, const Venue& venue) {
+  ObjectReader r(v, "/uav");
+  UavSpec uav;
+  uav.zone = {0, venue.width, 0, venue.depth, 1.0, venue.height};
+  uav.initial = {venue.width / 2, venue.depth / 2, 10.0};
+  if (const json* p = r.Child("position")) uav.initial = ReadVec3(*p, r.PathOf("position"));
+  if (const json* zone = r.Child("zone")) {
+    ObjectReader z(*zone, r.PathOf("zone"));
+    if (const json* x = z.Child("x")) std::tie(uav.zone.xmin, uav.zone.xmax) = ReadInterval(*x, z.PathOf("x"), true);
+    if (const json* y = z.Child("y")) std::tie(uav.zone.ymin, uav.zone.ymax) = ReadInterval(*y, z.PathOf("y"), true);
+    if (const json* h = z.Child("z")) std::tie(uav.zone.zmin, uav.zone.zmax) = ReadInterval(*h, z.PathOf("z"), true);
+    z.Finish();
+  }
+  r.Finish();
+  return uav;
+}
+
+WifiSpec ReadWifi(const json& v) {
+  ObjectReader r(v, "/wifi");
+  WifiSpec w;
+  w.standard = r.String("standard", w.standard, {"802.11n", "802.11ac", "802.11ax"});
+  w.channel = static_cast<int>(r.Integer("channel", w.channel, 1, 233));
+  w.width_mhz = static_cast<int>(r.Integer("width", w.width_mhz, 20, 160));
+  if (w.width_mhz != 20 && w.width_mhz != 40 && w.width_mhz != 80 && w.width_mhz != 160) {
+    throw ConfigError(r.PathOf("width"), "must be 20, 40, 80 or 160 MHz");
+  }
+  if (w.standard == "802.11n" && w.width_mhz > 40) {
+    throw ConfigError(r.PathOf("width"), "802.11n supports 20 or 40 MHz");
+  }
+  w.guard_interval_ns = static_cast<int>(r.Integer("guard_interval", w.guard_interval_ns, 400, 3200));
+  const bool he = w.standard == "802.11ax";
+  const int gi = w.guard_interval_ns;
+  if (he ? (gi != 800 && gi != 1600 && gi != 3200) : (gi != 400 && gi != 800)) {
+    throw ConfigError(r.PathOf("guard_interval"),
+                      he ? "802.11ax guard interval must be 800, 1600 or 3200 ns"
+                         : w.standard + " guard interval must be 400 or 800 ns");
+  }
+  w.spatial_streams = static_cast<int>(r.Integer("spatial_streams", w.spatial_streams, 1, 4));
+  w.tx_power_dbm = r.Number("tx_power", w.tx_power_dbm, Between(-30, 40));
+  w.antenna_gain_dbi = r.Number("antenna_gain", w.antenna_gain_dbi, Between(-30, 30));
+  w.noise_floor_dbm = r.Number("noise_floor", w.noise_floor_dbm, Between(-140, 0));
+  const double thermal = ThermalNoiseDbm(w.width_mhz);
+  if (w.noise_floor_dbm < thermal) {
+    throw ConfigError(r.PathOf("noise_floor"),
+                      "is below the thermal noise of a " + std::to_string(w.width_mhz) +
+                          " MHz channel (" + std::to_string(thermal).substr(0, 6) + " dBm)");
+  }
+  if (const json* rm = r.Child("rate_manager")) w.rate_manager = ReadObjectSpec(*rm, r.PathOf("rate_manager"));
+  w.mode = r.String("mode", w.mode, {"adhoc", "ap_sta"});
+  w.rts_cts = r.Bool("rts_cts", w.rts_cts);
+  r.Finish();
+  return w;
+}
+
+TrafficSpec ReadTraffic(const json& v) {
+  ObjectReader r(v, "/traffic");
+  TrafficSpec t;
+  t.protocol = r.String("protocol", t.protocol, {"udp_cbr", "tcp_bulk"});
+  t.packet_size = static_cast<int>(r.Integer("packet_size", t.packet_size, 64, 65000));
+  r.Finish();
+  return t;
+}
+
+SimulationSpec ReadSimulation(const json& v) {
+  ObjectReader r(v, "/simulation");
+  SimulationSpec s;
+  s.duration = r.Number("duration", s.duration, Positive());
+  s.warmup = r.Number("warmup", s.warmup, NonNegative());
+  if (s.warmup >= s.duration) {
+    throw ConfigError(r.PathOf("warmup"), "must be shorter than the duration");
+  }
+  s.seed = static_cast<std::uint32_t>(r.Integer("seed", s.seed, 1, 4294967295LL));
+  s.run = static_cast<std::uint64_t>(r.Integer("run", static_cast<long long>(s.run), 0,
+                                               9007199254740991LL));
+  r.Finish();
+  return s;
+}
+
+json Vec3Json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+json SpecJson(const ObjectSpec& s) { return {{"type", s.type}, {"attributes", s.attributes}}; }
+
+}  // namespace
+
+json ParseJsonText(const std::string& text) {
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    // e.what() is "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    std::string what = e.what();
+    const auto at = what.find("at line");
+    throw ConfigError("", "malformed JSON " + (at == std::string::npos ? what : what.substr(at)));
+  }
+}
+
+json ReadJsonFile(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError("", "cannot open file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return ParseJsonText(buffer.str());
+}
+
+void ApplyOverrides(json& document, const std::vector<std::string>& overrides) {
+  for (const auto& item : overrides) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw ConfigError("--set " + item, "expected path=value");
+    }
+    std::string path = item.substr(0, eq);
+    const std::string text = item.substr(eq + 1);
+    if (path[0] != '/') {
+      for (auto& c : path) c = (c == '.') ? '/' : c;
+      path = "/" + path;
+    }
+    json value;
+    try {
+      value = json::parse(text);
+    } catch (const json::parse_error&) {
+      value = text;  // a bare word such as adhoc
+    }
+    try {
+      const json::json_pointer pointer(path);
+      // Creating objects on the way is fine: unknown keys are rejected by ParseScenario.
+      if (!pointer.parent_pointer().empty() && !document.contains(pointer.parent_pointer())) {
+        document[pointer.parent_pointer()] = json::object();
+      }
+      const json& parent = document[pointer.parent_pointer()];
+      if (parent.is_array()) {
+        const std::string last = pointer.back();
+        if (last.find_first_not_of("0123456789") != std::string::npos ||
+            std::stoul(last) >= parent.size()) {
+          throw ConfigError(path, "array index out of range");
+        }
+      }
+      document[pointer] = value;
+    } catch (const json::exception& e) {
+      throw ConfigError(path, std::string("cannot set: ") + e.what());
+    }
+  }
+}
+
+Scenario ParseScenario(const json& document) {
+  ObjectReader r(document, "");
+  Scenario s;
+  s.name = r.String("name", "scenario");
+  s.description = r.String("description", "");
+  if (const json* v = r.Child("venue")) s.venue = ReadVenue(*v);
+  if (const json* v = r.Child("wifi")) s.wifi = ReadWifi(*v);
+  const PhyProfile phy{s.wifi.standard, s.wifi.width_mhz, s.wifi.guard_interval_ns,
+                       s.wifi.spatial_streams};
+  if (const json* v = r.Child("buildings")) {
+    if (!v->is_array()) throw ConfigError("/buildings", "expected an array, got " + TypeName(*v));
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      s.buildings.push_back(ReadBuilding((*v)[i], JoinPath("/buildings", i), i));
+    }
+  }
+  const json* ues = r.Child("ues");
+  if (!ues) throw ConfigError("/ues", "is required (at least one UE)");
+  if (!ues->is_array() || ues->empty()) throw ConfigError("/ues", "expected a non-empty array");
+  for (std::size_t i = 0; i < ues->size(); ++i) {
+    s.ues.push_back(ReadUe((*ues)[i], JoinPath("/ues", i), i, phy));
+  }
+  if (const json* v = r.Child("uav")) {
+    s.uav = ReadUav(*v, s.venue);
+  } else {
+    s.uav = ReadUav(json::object(), s.venue);
+  }
+  if (const json* v = r.Child("traffic")) s.traffic = ReadTraffic(*v);
+  s.propagation = DefaultPropagation();
+  if (const json* v = r.Child("propagation")) s.propagation = ReadObjectSpec(*v, "/propagation");
+  if (const json* v = r.Child("simulation")) s.simulation = ReadSimulation(*v);
+  s.log_level = r.String("log_level", s.log_level, {"error", "warning", "info", "debug"});
+  r.Finish();
+  CheckScenarioGeometry(s);
+  return s;
+}
+
+json ToJson(const Scenario& s) {
+  json buildings = json::array();
+  for (const auto& b : s.buildings) {
+    buildings.push_back({{"name", b.name},
+                         {"x", {b.xmin, b.xmax}},
+                         {"y", {b.ymin, b.ymax}},
+                         {"height", b.height},
+                         {"floors", b.floors},
+                         {"rooms", {b.rooms_x, b.rooms_y}},
+                         {"type", b.type},
+                         {"walls", b.walls}});
+  }
+  json ues = json::array();
+  for (const auto& u : s.ues) {
+    json demand = u.demand_mcs >= 0 ? json{{"mcs", u.demand_mcs}} : json{{"mbps", u.demand_mbps}};
+    ues.push_back({{"name", u.name},
+                   {"position", Vec3Json(u.position)},
+                   {"demand", demand},
+                   {"mobility",
+                    {{"model", u.mobility.model},
+                     {"speed", u.mobility.speed},
+                     {"change_interval", u.mobility.change_interval}}}});
+  }
+  const Box& z = s.uav.zone;
+  return {{"name", s.name},
+          {"description", s.description},
+          {"venue", {{"width", s.venue.width}, {"depth", s.venue.depth}, {"height", s.venue.height}}},
+          {"buildings", buildings},
+          {"ues", ues},
+          {"uav",
+           {{"position", Vec3Json(s.uav.initial)},
+            {"zone", {{"x", {z.xmin, z.xmax}}, {"y", {z.ymin, z.ymax}}, {"z", {z.zmin, z.zmax}}}}}},
+          {"wifi",
+           {{"standard", s.wifi.standard},
+            {"channel", s.wifi.channel},
+            {"width", s.wifi.width_mhz},
+            {"guard_interval", s.wifi.guard_interval_ns},
+            {"spatial_streams", s.wifi.spatial_streams},
+            {"tx_power", s.wifi.tx_power_dbm},
+            {"antenna_gain", s.wifi.antenna_gain_dbi},
+            {"noise_floor", s.wifi.noise_floor_dbm},
+            {"rate_manager", SpecJson(s.wifi.rate_manager)},
+            {"mode", s.wifi.mode},
+            {"rts_cts", s.wifi.rts_cts}}},
+          {"traffic", {{"protocol", s.traffic.protocol}, {"packet_size", s.traffic.packet_size}}},
+          {"propagation", SpecJson(s.propagation)},
+          {"simulation",
+           {{"duration", s.simulation.duration},
+            {"warmup", s.simulation.warmup},
+            {"seed", s.simulation.seed},
+            {"run", s.simulation.run}}},
+          {"log_level", s.log_level}};
+}
+
+}  // namespace rlpos

@@ -1,0 +1,29 @@
+#pragma once
+// Scenario JSON -> Scenario, with every field validated. Errors are ConfigError naming the JSON
+// path (e.g. "/ues/2/position/0"). Checks that need ns-3 (TypeIds, attributes, channel
+// numbers) are done by the worker's ns-3 validation on top of this.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+// Parses a JSON document; malformed JSON becomes a ConfigError with the line and column.
+nlohmann::json ParseJsonText(const std::string& text);
+
+// Reads and parses a file; a missing or unreadable file is a ConfigError too.
+nlohmann::json ReadJsonFile(const std::string& file);
+
+// Applies "path=value" overrides. Paths are dotted ("wifi.mode", "ues.3.demand.mbps") or JSON
+// pointers ("/wifi/mode"); the value is JSON if it parses as JSON, else a string.
+void ApplyOverrides(nlohmann::json& document, const std::vector<std::string>& overrides);
+
+// Full model, validated (structure, ranges, geometry). Missing fields take the paper's defaults.
+Scenario ParseScenario(const nlohmann::json& document);
+
+// The model back to JSON, every field explicit (the effective configuration of a run).
+nlohmann::json ToJson(const Scenario& scenario);
+
+}  // namespace rlpos

@@ -1,0 +1,68 @@
+#include "metrics/run_metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace rlpos {
+namespace {
+
+TEST(FlowAccumulator, CountsOnlyTheWindow) {
+  FlowAccumulator flow({1.0, 3.0});
+  flow.OnSent(0.5);  // before the window: ignored
+  flow.OnSent(1.5);
+  flow.OnSent(2.5);
+  flow.OnSent(2.9);
+  flow.OnReceived(0.5, 1.1, 1000);  // received in window, sent before: counts for throughput
+  flow.OnReceived(1.5, 1.6, 1000);
+  flow.OnReceived(2.9, 3.2, 1000);  // arrives after the window: delivered, not throughput
+  EXPECT_EQ(flow.SentInWindow(), 3u);
+  EXPECT_EQ(flow.ReceivedInWindow(), 2u);
+  EXPECT_DOUBLE_EQ(flow.ThroughputMbps(), 2000 * 8 / 2.0 / 1e6);
+  EXPECT_NEAR(flow.MeanDelayMs(), (600.0 + 100.0) / 2, 1e-9);
+  EXPECT_NEAR(flow.LossRatio(), 1.0 / 3.0, 1e-12);  // 2.5 never arrived
+}
+
+TEST(FlowAccumulator, UndefinedWithoutPackets) {
+  FlowAccumulator flow({0.0, 1.0});
+  EXPECT_TRUE(std::isnan(flow.MeanDelayMs()));
+  EXPECT_TRUE(std::isnan(flow.LossRatio()));
+  EXPECT_DOUBLE_EQ(flow.ThroughputMbps(), 0.0);
+}
+
+TEST(Summarize, AggregatesArePacketWeighted) {
+  const MeasurementWindow window{0.0, 1.0};
+  std::vector<FlowAccumulator> flows(2, FlowAccumulator(window));
+  flows[0].OnSent(0.1);
+  flows[0].OnReceived(0.1, 0.2, 500);  // 100 ms
+  for (int i = 0; i < 3; ++i) {
+    flows[1].OnSent(0.3);
+    flows[1].OnReceived(0.3, 0.31, 500);  // 10 ms each
+  }
+  std::vector<UeMetrics> ues(2);
+  ues[0].los = true;
+  ues[0].snr_db = 30;
+  ues[0].demand.met = true;
+  ues[1].snr_db = 5;
+  const RunMetrics m = Summarize({1, 2, 3}, window, 7, flows, ues);
+  EXPECT_DOUBLE_EQ(m.aggregate_throughput_mbps, 2000 * 8 / 1e6);
+  EXPECT_NEAR(m.mean_delay_ms, (100.0 + 3 * 10.0) / 4, 1e-9);
+  EXPECT_EQ(m.n_los, 1);
+  EXPECT_EQ(m.demands_met, 1);
+  EXPECT_DOUBLE_EQ(m.min_snr_db, 5.0);
+  EXPECT_DOUBLE_EQ(m.loss_ratio, 0.0);
+  EXPECT_EQ(ToJson(m)["n_ues"], 2);
+}
+
+TEST(CheckDemand, MapsDemandToMcsToSnr) {
+  const PhyProfile phy{"802.11ac", 160, 800, 1};
+  const DemandCheck c = CheckDemand(phy, 234.0, 16.9);
+  EXPECT_EQ(c.required_mcs, 3);
+  EXPECT_DOUBLE_EQ(c.min_snr_db, 17.0);
+  EXPECT_FALSE(c.met);
+  EXPECT_TRUE(CheckDemand(phy, 234.0, 17.0).met);
+  EXPECT_FALSE(CheckDemand(phy, 5000.0, 99.0).met);
+}
+
+}  // namespace
+}  // namespace rlpos

@@ -1,0 +1,80 @@
+#include "environment/obstacle_aware_propagation_loss_model.h"
+
+#include <ns3/buildings-channel-condition-model.h>
+#include <ns3/itu-r-1411-los-propagation-loss-model.h>
+#include <ns3/itu-r-1411-nlos-over-rooftop-propagation-loss-model.h>
+#include <ns3/log.h>
+#include <ns3/mobility-model.h>
+#include <ns3/pointer.h>
+
+namespace ns3 {
+
+NS_LOG_COMPONENT_DEFINE("ObstacleAwarePropagationLossModel");
+NS_OBJECT_ENSURE_REGISTERED(ObstacleAwarePropagationLossModel);
+
+TypeId ObstacleAwarePropagationLossModel::GetTypeId() {
+  static TypeId tid =
+      TypeId("ns3::ObstacleAwarePropagationLossModel")
+          .SetParent<PropagationLossModel>()
+          .SetGroupName("Rlpos")
+          .AddConstructor<ObstacleAwarePropagationLossModel>()
+          .AddAttribute("LosModel", "Loss model applied to line-of-sight links (default ItuR1411Los).",
+                        PointerValue(),
+                        MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_losModel),
+                        MakePointerChecker<PropagationLossModel>())
+          .AddAttribute(
+              "NlosModel", "Loss model applied to links a building obstructs (default ItuR1411NlosOverRooftop).",
+              PointerValue(),
+              MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_nlosModel),
+              MakePointerChecker<PropagationLossModel>())
+          .AddAttribute("ChannelConditionModel", "Decides LoS or NLoS per link (default BuildingsChannelConditionModel).",
+                        PointerValue(),
+                        MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_conditionModel),
+                        MakePointerChecker<ChannelConditionModel>());
+  return tid;
+}
+
+ObstacleAwarePropagationLossModel::ObstacleAwarePropagationLossModel() = default;
+
+void ObstacleAwarePropagationLossModel::NotifyConstructionCompleted() {
+  // Defaults are made here, per instance: an attribute's initial value object would be shared
+  // by every instance (and so would a Frequency set on it).
+  if (!m_losModel) m_losModel = CreateObject<ItuR1411LosPropagationLossModel>();
+  if (!m_nlosModel) m_nlosModel = CreateObject<ItuR1411NlosOverRooftopPropagationLossModel>();
+  if (!m_conditionModel) m_conditionModel = CreateObject<BuildingsChannelConditionModel>();
+  PropagationLossModel::NotifyConstructionCompleted();
+}
+
+bool ObstacleAwarePropagationLossModel::IsLos(Ptr<MobilityModel> a, Ptr<MobilityModel> b) const {
+  return m_conditionModel->GetChannelCondition(a, b)->IsLos();
+}
+
+double ObstacleAwarePropagationLossModel::GetLossDb(Ptr<MobilityModel> a,
+                                                    Ptr<MobilityModel> b) const {
+  return -DoCalcRxPower(0.0, a, b);
+}
+
+double ObstacleAwarePropagationLossModel::DoCalcRxPower(double txPowerDbm, Ptr<MobilityModel> a,
+                                                        Ptr<MobilityModel> b) const {
+  const bool los = IsLos(a, b);
+  NS_LOG_DEBUG("link " << a->GetPosition() << " -> " << b->GetPosition() << ": "
+                       << (los ? "LoS" : "NLoS"));
+  // CalcRxPower (not DoCalcRxPower) so that a chained Next model of the sub-model applies too.
+  return (los ? m_losModel : m_nlosModel)->CalcRxPower(txPowerDbm, a, b);
+}
+
+int64_t ObstacleAwarePropagationLossModel::DoAssignStreams(int64_t stream) {
+  int64_t used = m_losModel->AssignStreams(stream);
+  used += m_nlosModel->AssignStreams(stream + used);
+  used += m_conditionModel->AssignStreams(stream + used);
+  return used;
+}
+
+void ObstacleAwarePropagationLossModel::DoDispose() {
+  m_losModel = nullptr;
+  m_nlosModel = nullptr;
+  m_conditionModel = nullptr;
+  PropagationLossModel::DoDispose();
+}
+
+}  // namespace ns3

@@ -1,0 +1,322 @@
+#include "environment/uav_network.h"
+
+#include <ns3/boolean.h>
+#include <ns3/building.h>
+#include <ns3/buildings-channel-condition-model.h>
+#include <ns3/buildings-helper.h>
+#include <ns3/bulk-send-helper.h>
+#include <ns3/constant-position-mobility-model.h>
+#include <ns3/core-module.h>
+#include <ns3/double.h>
+#include <ns3/inet-socket-address.h>
+#include <ns3/internet-stack-helper.h>
+#include <ns3/ipv4-address-helper.h>
+#include <ns3/mobility-helper.h>
+#include <ns3/mobility-model.h>
+#include <ns3/on-off-helper.h>
+#include <ns3/packet-sink-helper.h>
+#include <ns3/propagation-delay-model.h>
+#include <ns3/propagation-loss-model.h>
+#include <ns3/rectangle.h>
+#include <ns3/ssid.h>
+#include <ns3/wifi-helper.h>
+#include <ns3/wifi-mac-helper.h>
+#include <ns3/wifi-net-device.h>
+#include <ns3/wifi-remote-station-manager.h>
+#include <ns3/yans-wifi-channel.h>
+#include <ns3/yans-wifi-helper.h>
+#include <set>
+
+#include "config/config_error.h"
+#include "environment/ns3_object_spec.h"
+#include "environment/traffic_monitor.h"
+#include "environment/wifi_channel_plan.h"
+
+namespace rlpos {
+namespace {
+
+constexpr uint16_t kFirstPort = 9000;
+
+ns3::Vector ToNs3(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vec3 FromNs3(const ns3::Vector& v) { return {v.x, v.y, v.z}; }
+
+ns3::Building::BuildingType_t BuildingType(const std::string& type) {
+  if (type == "office") return ns3::Building::Office;
+  if (type == "commercial") return ns3::Building::Commercial;
+  return ns3::Building::Residential;
+}
+
+ns3::Building::ExtWallsType_t WallsType(const std::string& walls) {
+  if (walls == "wood") return ns3::Building::Wood;
+  if (walls == "concrete_without_windows") return ns3::Building::ConcreteWithoutWindows;
+  if (walls == "stone_blocks") return ns3::Building::StoneBlocks;
+  return ns3::Building::ConcreteWithWindows;
+}
+
+void BuildBuildings(const Scenario& s) {
+  for (const auto& b : s.buildings) {
+    auto building = ns3::CreateObject<ns3::Building>();
+    building->SetBoundaries(ns3::Box(b.xmin, b.xmax, b.ymin, b.ymax, 0.0, b.height));
+    building->SetBuildingType(BuildingType(b.type));
+    building->SetExtWallsType(WallsType(b.walls));
+    building->SetNFloors(static_cast<uint16_t>(b.floors));
+    building->SetNRoomsX(static_cast<uint16_t>(b.rooms_x));
+    building->SetNRoomsY(static_cast<uint16_t>(b.rooms_y));
+  }
+}
+
+void InstallUeMobility(const Scenario& s, ns3::NodeContainer& ues) {
+  for (std::size_t i = 0; i < s.ues.size(); ++i) {
+    const auto& ue = s.ues[i];
+    ns3::MobilityHelper mobility;
+    if (ue.mobility.model == "random_walk") {
+      mobility.SetMobilityModel(
+          "ns3::RandomWalk2dMobilityModel", "Bounds",
+          ns3::RectangleValue(ns3::Rectangle(0, s.venue.width, 0, s.venue.depth)), "Mode",
+          ns3::StringValue("Time"), "Time", ns3::TimeValue(ns3::Seconds(ue.mobility.change_interval)),
+          "Speed",
+          ns3::StringValue("ns3::ConstantRandomVariable[Constant=" +
+                           AttributeString(ue.mobility.speed) + "]"));
+    } else {
+      mobility.SetMobilityModel("ns3::ConstantPositionMobilityModel");
+    }
+    mobility.Install(ues.Get(i));
+    ues.Get(i)->GetObject<ns3::MobilityModel>()->SetPosition(ToNs3(ue.position));
+  }
+}
+
+}  // namespace
+
+struct UavNetwork::Impl {
+  Scenario scenario;
+  WifiChannelPlan plan;
+  ns3::Ptr<ns3::PropagationLossModel> loss;
+  ns3::Ptr<ns3::BuildingsChannelConditionModel> geometry;
+  ns3::NodeContainer ues;
+  ns3::Ptr<ns3::Node> uav;
+  ns3::ApplicationContainer senders;
+  ns3::ApplicationContainer sinks;
+  std::unique_ptr<TrafficMonitor> traffic;
+
+  ns3::Ptr<ns3::MobilityModel> UavMobility() const { return uav->GetObject<ns3::MobilityModel>(); }
+  void BuildChannelModels();
+  ns3::NetDeviceContainer InstallWifi();
+  void InstallApplications(ns3::Ipv4Address uav_address);
+};
+
+void UavNetwork::Impl::BuildChannelModels() {
+  std::set<const ns3::Object*> user_frequency;
+  loss = CreateFromSpec(scenario.propagation, "/propagation",
+                        ns3::PropagationLossModel::GetTypeId(), "Frequency", &user_frequency)
+             ->GetObject<ns3::PropagationLossModel>();
+  // Loss models default to their own frequency (ITU-R P.1411: 2.4 GHz): align them with the
+  // channel unless the scenario chose one.
+  SetAttributeInTree(loss, "Frequency", ns3::DoubleValue(plan.center_frequency_hz),
+                     user_frequency);
+  geometry = ns3::CreateObject<ns3::BuildingsChannelConditionModel>();
+}
+
+ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi() {
+  const WifiSpec& w = scenario.wifi;
+  // Validates the rate manager spec (type, attributes) before ns-3 would abort on it.
+  CreateFromSpec(w.rate_manager, "/wifi/rate_manager",
+                 ns3::WifiRemoteStationManager::GetTypeId());
+
+  auto channel = ns3::CreateObject<ns3::YansWifiChannel>();
+  channel->SetPropagationLossModel(loss);
+  channel->SetPropagationDelayModel(ns3::CreateObject<ns3::ConstantSpeedPropagationDelayModel>());
+
+  ns3::YansWifiPhyHelper phy;
+  phy.SetChannel(channel);
+  phy.Set("ChannelSettings", ns3::StringValue(plan.channel_settings));
+  phy.Set("TxPowerStart", ns3::DoubleValue(w.tx_power_dbm));
+  phy.Set("TxPowerEnd", ns3::DoubleValue(w.tx_power_dbm));
+  phy.Set("TxGain", ns3::DoubleValue(w.antenna_gain_dbi));
+  phy.Set("RxGain", ns3::DoubleValue(w.antenna_gain_dbi));
+  phy.Set("RxNoiseFigure", ns3::DoubleValue(plan.rx_noise_figure_db));
+  phy.Set("Antennas", ns3::UintegerValue(w.spatial_streams));
+  phy.Set("MaxSupportedTxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
+  phy.Set("MaxSupportedRxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
+
+  ns3::WifiHelper wifi;
+  wifi.SetStandard(plan.standard);
+  wifi.SetRemoteStationManager(w.rate_manager.type);
+  if (plan.standard == ns3::WIFI_STANDARD_80211ax) {
+    wifi.ConfigHeOptions("GuardInterval", ns3::TimeValue(ns3::NanoSeconds(w.guard_interval_ns)));
+  } else {
+    wifi.ConfigHtOptions("ShortGuardIntervalSupported",
+                         ns3::BooleanValue(w.guard_interval_ns == 400));
+  }
+
+  ns3::WifiMacHelper mac;
+  ns3::NetDeviceContainer devices;
+  if (w.mode == "adhoc") {
+    mac.SetType("ns3::AdhocWifiMac");
+    devices.Add(wifi.Install(phy, mac, uav));
+    devices.Add(wifi.Install(phy, mac, ues));
+  } else {
+    const ns3::Ssid ssid("rlpos-uav");
+    mac.SetType("ns3::ApWifiMac", "Ssid", ns3::SsidValue(ssid));
+    devices.Add(wifi.Install(phy, mac, uav));
+    mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(ssid));
+    devices.Add(wifi.Install(phy, mac, ues));
+  }
+  // Rate manager attributes and RTS/CTS are set per instance: Config::SetDefault would leak
+  // into every later network built in the same process.
+  for (uint32_t i = 0; i < devices.GetN(); ++i) {
+    auto manager = ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(i))->GetRemoteStationManager();
+    for (auto it = w.rate_manager.attributes.begin(); it != w.rate_manager.attributes.end(); ++it) {
+      manager->SetAttribute(it.key(), ns3::StringValue(AttributeString(*it)));
+    }
+    manager->SetAttribute("RtsCtsThreshold", ns3::UintegerValue(w.rts_cts ? 0 : 65535));
+  }
+  return devices;
+}
+
+void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
+  const bool tcp = scenario.traffic.protocol == "tcp_bulk";
+  const std::string socket = tcp ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
+  const double duration = scenario.simulation.duration;
+  // Staggered starts (drawn from the run's RNG) so that UEs do not contend in lockstep.
+  auto start = ns3::CreateObject<ns3::UniformRandomVariable>();
+  start->SetAttribute("Min", ns3::DoubleValue(0.05));
+  start->SetAttribute("Max", ns3::DoubleValue(0.15));
+  for (std::size_t i = 0; i < scenario.ues.size(); ++i) {
+    const uint16_t port = static_cast<uint16_t>(kFirstPort + i);
+    ns3::PacketSinkHelper sink(socket, ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
+    sink.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
+    ns3::ApplicationContainer sink_app = sink.Install(uav);
+    sink_app.Start(ns3::Seconds(0.0));
+    sinks.Add(sink_app);
+
+    const ns3::InetSocketAddress to(uav_address, port);
+    ns3::ApplicationContainer app;
+    if (tcp) {
+      ns3::BulkSendHelper bulk(socket, to);
+      bulk.SetAttribute("SendSize", ns3::UintegerValue(scenario.traffic.packet_size));
+      bulk.SetAttribute("MaxBytes", ns3::UintegerValue(0));
+      bulk.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
+      app = bulk.Install(ues.Get(i));
+    } else {
+      ns3::OnOffHelper onoff(socket, to);
+      onoff.SetConstantRate(ns3::DataRate(static_cast<uint64_t>(scenario.ues[i].demand_mbps * 1e6)),
+                            scenario.traffic.packet_size);
+      onoff.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
+      app = onoff.Install(ues.Get(i));
+    }
+    app.Start(ns3::Seconds(start->GetValue()));
+    app.Stop(ns3::Seconds(duration));
+    senders.Add(app);
+  }
+}
+
+UavNetwork::UavNetwork(const Scenario& scenario, const Vec3& uav_position)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.scenario = scenario;
+  ns3::Simulator::Destroy();  // a clean slate: node and building lists are global
+  ns3::RngSeedManager::SetSeed(scenario.simulation.seed);
+  ns3::RngSeedManager::SetRun(scenario.simulation.run);
+
+  m.plan = PlanWifiChannel(scenario.wifi);
+  m.BuildChannelModels();
+  BuildBuildings(scenario);
+
+  m.ues.Create(scenario.ues.size());
+  m.uav = ns3::CreateObject<ns3::Node>();
+  InstallUeMobility(scenario, m.ues);
+  ns3::MobilityHelper uav_mobility;
+  uav_mobility.SetMobilityModel("ns3::ConstantPositionMobilityModel");
+  uav_mobility.Install(m.uav);
+  m.UavMobility()->SetPosition(ToNs3(uav_position));
+  ns3::BuildingsHelper::Install(m.ues);
+  ns3::BuildingsHelper::Install(ns3::NodeContainer(m.uav));
+
+  ns3::NetDeviceContainer devices = m.InstallWifi();
+  ns3::InternetStackHelper internet;
+  internet.Install(m.uav);
+  internet.Install(m.ues);
+  ns3::Ipv4AddressHelper addresses;
+  addresses.SetBase("10.1.0.0", "255.255.0.0");
+  ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);  // UAV first: 10.1.0.1
+  m.InstallApplications(interfaces.GetAddress(0));
+  m.traffic = std::make_unique<TrafficMonitor>(m.senders, m.sinks);
+}
+
+UavNetwork::~UavNetwork() {
+  impl_->traffic.reset();
+  ns3::Simulator::Destroy();
+}
+
+const Scenario& UavNetwork::scenario() const { return impl_->scenario; }
+
+void UavNetwork::SetUavPosition(const Vec3& position) {
+  impl_->UavMobility()->SetPosition(ToNs3(position));
+}
+
+Vec3 UavNetwork::UavPosition() const { return FromNs3(impl_->UavMobility()->GetPosition()); }
+
+std::vector<LinkState> UavNetwork::Links() const {
+  const Impl& m = *impl_;
+  const WifiSpec& w = m.scenario.wifi;
+  std::vector<LinkState> links;
+  links.reserve(m.ues.GetN());
+  auto uav = m.UavMobility();
+  for (uint32_t i = 0; i < m.ues.GetN(); ++i) {
+    auto ue = m.ues.Get(i)->GetObject<ns3::MobilityModel>();
+    LinkState link;
+    link.los = m.geometry->GetChannelCondition(ue, uav)->IsLos();
+    // Uplink, as the channel computes it: sender first.
+    const double rx_dbm =
+        m.loss->CalcRxPower(w.tx_power_dbm + w.antenna_gain_dbi, ue, uav) + w.antenna_gain_dbi;
+    link.snr_db = rx_dbm - w.noise_floor_dbm;
+    links.push_back(link);
+  }
+  return links;
+}
+
+void UavNetwork::BeginMeasurement(MeasurementWindow window) { impl_->traffic->Restart(window); }
+
+void UavNetwork::RunUntil(double t) {
+  const ns3::Time target = ns3::Seconds(t);
+  if (target <= ns3::Simulator::Now()) return;
+  ns3::Simulator::Stop(target - ns3::Simulator::Now());
+  ns3::Simulator::Run();
+}
+
+double UavNetwork::Now() const { return ns3::Simulator::Now().GetSeconds(); }
+
+RunMetrics UavNetwork::Measure() const {
+  const Impl& m = *impl_;
+  const PhyProfile phy{m.scenario.wifi.standard, m.scenario.wifi.width_mhz,
+                       m.scenario.wifi.guard_interval_ns, m.scenario.wifi.spatial_streams};
+  const auto links = Links();
+  std::vector<UeMetrics> ues(links.size());
+  for (std::size_t i = 0; i < links.size(); ++i) {
+    ues[i].name = m.scenario.ues[i].name;
+    ues[i].los = links[i].los;
+    ues[i].snr_db = links[i].snr_db;
+    ues[i].demand_mbps = m.scenario.ues[i].demand_mbps;
+    ues[i].demand = CheckDemand(phy, ues[i].demand_mbps, links[i].snr_db);
+  }
+  return Summarize(UavPosition(), m.traffic->window(), m.scenario.simulation.run,
+                   m.traffic->flows(), std::move(ues));
+}
+
+RunMetrics EvaluatePosition(const Scenario& scenario, const Vec3& position,
+                            void (*on_progress)(double now, double end)) {
+  UavNetwork network(scenario, position);
+  const double end = scenario.simulation.duration;
+  network.BeginMeasurement({scenario.simulation.warmup, end});
+  // Packets still queued when traffic stops are delivered within the MAC queue's lifetime.
+  const double drain = 0.5;
+  const int slices = on_progress ? 20 : 1;
+  for (int k = 1; k <= slices; ++k) {
+    network.RunUntil(end * k / slices);
+    if (on_progress) on_progress(network.Now(), end);
+  }
+  network.RunUntil(end + drain);
+  return network.Measure();
+}
+
+}  // namespace rlpos

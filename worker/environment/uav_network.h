@@ -1,0 +1,54 @@
+#pragma once
+// The scenario built in ns-3: buildings, UEs sending to a sink on the UAV over Wi-Fi, the
+// obstacle-aware channel, and the monitors. One instance owns the ns-3 simulation: it calls
+// Simulator::Destroy when it goes away, so only one may exist at a time.
+#include <memory>
+#include <vector>
+
+#include "metrics/run_metrics.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+struct LinkState {
+  bool los = false;
+  double snr_db = 0.0;
+};
+
+class UavNetwork {
+ public:
+  // Validates the ns-3 side of the scenario (TypeIds, attributes, channel), then builds it with
+  // the UAV at `uav_position`. Throws ConfigError on a bad scenario.
+  UavNetwork(const Scenario& scenario, const Vec3& uav_position);
+  ~UavNetwork();
+  UavNetwork(const UavNetwork&) = delete;
+  UavNetwork& operator=(const UavNetwork&) = delete;
+
+  const Scenario& scenario() const;
+  void SetUavPosition(const Vec3& position);
+  Vec3 UavPosition() const;
+
+  // Geometric LoS (building geometry, whatever the loss model) and the SNR at the UAV of each
+  // UE's uplink as the channel's loss model gives it, now.
+  std::vector<LinkState> Links() const;
+
+  // Starts a new measurement window for the traffic monitor (drops what was counted before).
+  void BeginMeasurement(MeasurementWindow window);
+  // Advances the simulation to absolute time `t` (s).
+  void RunUntil(double t);
+  double Now() const;
+  // Metrics of the current window, with the link state taken now.
+  RunMetrics Measure() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Builds the scenario with the UAV fixed at `position`, runs it for the scenario's duration
+// (plus a short drain so that packets in flight at the end are not counted lost), and returns
+// the metrics over [warmup, duration]. `on_progress(simulated_s)` is called every ~5 % if set.
+RunMetrics EvaluatePosition(const Scenario& scenario, const Vec3& position,
+                            void (*on_progress)(double now, double end) = nullptr);
+
+}  // namespace rlpos

@@ -1,0 +1,22 @@
+#pragma once
+// Resolves the scenario's Wi-Fi standard/channel/width into ns-3 terms, and checks them against
+// ns-3's own channel table so a bad combination is a ConfigError, not an ns-3 abort.
+#include <ns3/wifi-phy-band.h>
+#include <ns3/wifi-standards.h>
+#include <string>
+
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+struct WifiChannelPlan {
+  ns3::WifiStandard standard;
+  ns3::WifiPhyBand band;
+  double center_frequency_hz;
+  std::string channel_settings;  // the WifiPhy "ChannelSettings" attribute value
+  double rx_noise_figure_db;     // so that thermal noise + figure = the configured noise floor
+};
+
+WifiChannelPlan PlanWifiChannel(const WifiSpec& wifi);
+
+}  // namespace rlpos

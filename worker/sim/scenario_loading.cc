@@ -1,0 +1,55 @@
+#include "sim/scenario_loading.h"
+
+#include <ns3/propagation-loss-model.h>
+#include <ns3/wifi-remote-station-manager.h>
+#include <sstream>
+
+#include "config/config_error.h"
+#include "environment/ns3_object_spec.h"
+#include "environment/wifi_channel_plan.h"
+#include "scenario/scenario_checks.h"
+#include "scenario/scenario_parser.h"
+
+namespace rlpos {
+
+void CheckScenarioAgainstNs3(const Scenario& scenario) {
+  PlanWifiChannel(scenario.wifi);
+  CreateFromSpec(scenario.propagation, "/propagation", ns3::PropagationLossModel::GetTypeId());
+  CreateFromSpec(scenario.wifi.rate_manager, "/wifi/rate_manager",
+                 ns3::WifiRemoteStationManager::GetTypeId());
+}
+
+Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides) {
+  nlohmann::json document = ReadJsonFile(file);
+  ApplyOverrides(document, overrides);
+  Scenario scenario = ParseScenario(document);
+  CheckScenarioAgainstNs3(scenario);
+  return scenario;
+}
+
+Vec3 ParsePosition(const std::string& text, const std::string& what) {
+  std::istringstream in(text);
+  Vec3 p;
+  char c1 = 0, c2 = 0;
+  in >> p.x >> c1 >> p.y >> c2 >> p.z;
+  if (in.fail() || c1 != ',' || c2 != ',' || !(in >> std::ws).eof()) {
+    throw ConfigError(what, "expected x,y,z in metres, got \"" + text + "\"");
+  }
+  return p;
+}
+
+void CheckUavPosition(const Scenario& s, const Vec3& p, const std::string& what) {
+  std::ostringstream where;
+  where << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  if (p.x < 0 || p.x > s.venue.width || p.y < 0 || p.y > s.venue.depth || p.z < 0 ||
+      p.z > s.venue.height) {
+    throw ConfigError(what, where.str() + " is outside the venue");
+  }
+  const int inside = BuildingContaining(s, p);
+  if (inside >= 0) {
+    throw ConfigError(what, where.str() + " is inside building " + std::to_string(inside) +
+                                " (\"" + s.buildings[inside].name + "\")");
+  }
+}
+
+}  // namespace rlpos

@@ -1,0 +1,22 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+// Reads FILE, applies --set overrides, parses and validates (structure, geometry and the ns-3
+// side: TypeIds, attributes, Wi-Fi channel). Throws ConfigError.
+Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides);
+
+// The ns-3 checks alone (no simulation is built).
+void CheckScenarioAgainstNs3(const Scenario& scenario);
+
+// "x,y,z" -> Vec3; throws ConfigError naming `what`.
+Vec3 ParsePosition(const std::string& text, const std::string& what);
+
+// A position the UAV may take in this scenario: inside the venue and outside every building.
+void CheckUavPosition(const Scenario& scenario, const Vec3& p, const std::string& what);
+
+}  // namespace rlpos
