@@ -1,11 +1,14 @@
 #include "environment/obstacle_aware_propagation_loss_model.h"
 
+#include <ns3/boolean.h>
 #include <ns3/buildings-channel-condition-model.h>
 #include <ns3/itu-r-1411-los-propagation-loss-model.h>
 #include <ns3/itu-r-1411-nlos-over-rooftop-propagation-loss-model.h>
 #include <ns3/log.h>
 #include <ns3/mobility-model.h>
 #include <ns3/pointer.h>
+
+#include <algorithm>
 
 namespace ns3 {
 
@@ -27,6 +30,11 @@ TypeId ObstacleAwarePropagationLossModel::GetTypeId() {
               PointerValue(),
               MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_nlosModel),
               MakePointerChecker<PropagationLossModel>())
+          .AddAttribute("NlosNeverBelowLos",
+                        "Clamp the NLoS loss to at least the LoS loss of the same link.",
+                        BooleanValue(true),
+                        MakeBooleanAccessor(&ObstacleAwarePropagationLossModel::m_nlosNeverBelowLos),
+                        MakeBooleanChecker())
           .AddAttribute("ChannelConditionModel", "Decides LoS or NLoS per link (default BuildingsChannelConditionModel).",
                         PointerValue(),
                         MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_conditionModel),
@@ -60,7 +68,12 @@ double ObstacleAwarePropagationLossModel::DoCalcRxPower(double txPowerDbm, Ptr<M
   NS_LOG_DEBUG("link " << a->GetPosition() << " -> " << b->GetPosition() << ": "
                        << (los ? "LoS" : "NLoS"));
   // CalcRxPower (not DoCalcRxPower) so that a chained Next model of the sub-model applies too.
-  return (los ? m_losModel : m_nlosModel)->CalcRxPower(txPowerDbm, a, b);
+  const double los_rx = m_losModel->CalcRxPower(txPowerDbm, a, b);
+  if (los) return los_rx;
+  const double nlos_rx = m_nlosModel->CalcRxPower(txPowerDbm, a, b);
+  // ITU-R P.1411 over-rooftop NLoS is meant for a transmitter above the rooftops; below them,
+  // at short range, its loss can fall under the LoS model's. A building in the way never helps.
+  return m_nlosNeverBelowLos ? std::min(los_rx, nlos_rx) : nlos_rx;
 }
 
 int64_t ObstacleAwarePropagationLossModel::DoAssignStreams(int64_t stream) {

@@ -31,6 +31,7 @@ class ObstacleAwarePropagationLossModel : public PropagationLossModel {
   Ptr<PropagationLossModel> m_losModel;
   Ptr<PropagationLossModel> m_nlosModel;
   Ptr<ChannelConditionModel> m_conditionModel;
+  bool m_nlosNeverBelowLos = true;
 };
 
 }  // namespace ns3

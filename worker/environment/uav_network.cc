@@ -14,6 +14,7 @@
 #include <ns3/mobility-helper.h>
 #include <ns3/mobility-model.h>
 #include <ns3/on-off-helper.h>
+#include <ns3/onoff-application.h>
 #include <ns3/packet-sink-helper.h>
 #include <ns3/propagation-delay-model.h>
 #include <ns3/propagation-loss-model.h>
@@ -95,12 +96,14 @@ struct UavNetwork::Impl {
   ns3::NodeContainer ues;
   ns3::Ptr<ns3::Node> uav;
   ns3::ApplicationContainer senders;
+  ns3::Ptr<ns3::UniformRandomVariable> start_times;
   ns3::ApplicationContainer sinks;
   std::unique_ptr<TrafficMonitor> traffic;
 
   ns3::Ptr<ns3::MobilityModel> UavMobility() const { return uav->GetObject<ns3::MobilityModel>(); }
   void BuildChannelModels();
-  ns3::NetDeviceContainer InstallWifi();
+  ns3::NetDeviceContainer InstallWifi(ns3::WifiHelper& wifi);
+  void AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices);
   void InstallApplications(ns3::Ipv4Address uav_address);
 };
 
@@ -116,7 +119,7 @@ void UavNetwork::Impl::BuildChannelModels() {
   geometry = ns3::CreateObject<ns3::BuildingsChannelConditionModel>();
 }
 
-ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi() {
+ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
   const WifiSpec& w = scenario.wifi;
   // Validates the rate manager spec (type, attributes) before ns-3 would abort on it.
   CreateFromSpec(w.rate_manager, "/wifi/rate_manager",
@@ -138,7 +141,6 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi() {
   phy.Set("MaxSupportedTxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
   phy.Set("MaxSupportedRxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
 
-  ns3::WifiHelper wifi;
   wifi.SetStandard(plan.standard);
   wifi.SetRemoteStationManager(w.rate_manager.type);
   if (plan.standard == ns3::WIFI_STANDARD_80211ax) {
@@ -173,14 +175,35 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi() {
   return devices;
 }
 
+// Fixed stream numbers for every random variable: ns-3 otherwise numbers streams from a
+// process-wide counter, and a second network built in the same process (the gym's episodes, the
+// tests) would draw different numbers for the same seed and RngRun.
+void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices) {
+  ns3::NodeContainer all(uav);
+  all.Add(ues);
+  int64_t stream = 0;
+  stream += loss->AssignStreams(stream);
+  stream += wifi.AssignStreams(devices, stream);
+  ns3::MobilityHelper mobility;
+  stream += mobility.AssignStreams(all, stream);
+  ns3::InternetStackHelper internet;
+  stream += internet.AssignStreams(all, stream);
+  for (uint32_t i = 0; i < senders.GetN(); ++i) {
+    if (auto onoff = ns3::DynamicCast<ns3::OnOffApplication>(senders.Get(i))) {
+      stream += onoff->AssignStreams(stream);
+    }
+  }
+  start_times->SetStream(stream);
+}
+
 void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
   const bool tcp = scenario.traffic.protocol == "tcp_bulk";
   const std::string socket = tcp ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
   const double duration = scenario.simulation.duration;
   // Staggered starts (drawn from the run's RNG) so that UEs do not contend in lockstep.
-  auto start = ns3::CreateObject<ns3::UniformRandomVariable>();
-  start->SetAttribute("Min", ns3::DoubleValue(0.05));
-  start->SetAttribute("Max", ns3::DoubleValue(0.15));
+  start_times = ns3::CreateObject<ns3::UniformRandomVariable>();
+  start_times->SetAttribute("Min", ns3::DoubleValue(0.05));
+  start_times->SetAttribute("Max", ns3::DoubleValue(0.15));
   for (std::size_t i = 0; i < scenario.ues.size(); ++i) {
     const uint16_t port = static_cast<uint16_t>(kFirstPort + i);
     ns3::PacketSinkHelper sink(socket, ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
@@ -204,7 +227,7 @@ void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
       onoff.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
       app = onoff.Install(ues.Get(i));
     }
-    app.Start(ns3::Seconds(start->GetValue()));
+    app.Start(ns3::Seconds(start_times->GetValue()));
     app.Stop(ns3::Seconds(duration));
     senders.Add(app);
   }
@@ -232,7 +255,8 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Vec3& uav_position)
   ns3::BuildingsHelper::Install(m.ues);
   ns3::BuildingsHelper::Install(ns3::NodeContainer(m.uav));
 
-  ns3::NetDeviceContainer devices = m.InstallWifi();
+  ns3::WifiHelper wifi;
+  ns3::NetDeviceContainer devices = m.InstallWifi(wifi);
   ns3::InternetStackHelper internet;
   internet.Install(m.uav);
   internet.Install(m.ues);
@@ -240,6 +264,7 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Vec3& uav_position)
   addresses.SetBase("10.1.0.0", "255.255.0.0");
   ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);  // UAV first: 10.1.0.1
   m.InstallApplications(interfaces.GetAddress(0));
+  m.AssignStreams(wifi, devices);
   m.traffic = std::make_unique<TrafficMonitor>(m.senders, m.sinks);
 }
 
