@@ -87,6 +87,8 @@ int main(int argc, char** argv) {
   phy.Set("ChannelSettings", StringValue("{50, 160, BAND_5GHZ, 0}"));
   phy.Set("TxPowerStart", DoubleValue(w["tx_power"]));
   phy.Set("TxPowerEnd", DoubleValue(w["tx_power"]));
+  phy.Set("TxGain", DoubleValue(w["antenna_gain"]));
+  phy.Set("RxGain", DoubleValue(w["antenna_gain"]));
   phy.Set("RxNoiseFigure", DoubleValue(w["noise_floor"].get<double>() + 174.0 - 10 * std::log10(160e6)));
   WifiHelper wifi;
   wifi.SetStandard(WIFI_STANDARD_80211ac);
@@ -105,7 +107,12 @@ int main(int argc, char** argv) {
   addresses.SetBase("10.1.0.0", "255.255.0.0");
   const Ipv4Address uav_address = addresses.Assign(devices).GetAddress(0);
 
-  ApplicationContainer sinks;
+  // Same start times and stream numbers as rlpos-sim, so both simulate the same events.
+  auto start_times = CreateObject<UniformRandomVariable>();
+  start_times->SetAttribute("Min", DoubleValue(0.05));
+  start_times->SetAttribute("Max", DoubleValue(0.15));
+  start_times->SetStream(1000000);
+  ApplicationContainer sinks, senders;
   for (uint32_t i = 0; i < ues.GetN(); ++i) {
     const uint16_t port = 9000 + i;
     PacketSinkHelper sink("ns3::UdpSocketFactory", InetSocketAddress(Ipv4Address::GetAny(), port));
@@ -118,14 +125,24 @@ int main(int argc, char** argv) {
     onoff.SetConstantRate(DataRate(static_cast<uint64_t>(mbps * 1e6)), 1400);
     onoff.SetAttribute("EnableSeqTsSizeHeader", BooleanValue(true));
     ApplicationContainer app = onoff.Install(ues.Get(i));
-    app.Start(Seconds(0.1));
+    app.Start(Seconds(start_times->GetValue()));
+    senders.Add(app);
     app.Stop(Seconds(duration));
+  }
+  NodeContainer all(uav);
+  all.Add(ues);
+  int64_t stream = loss->AssignStreams(0);
+  stream += wifi.AssignStreams(devices, stream);
+  stream += mobility.AssignStreams(all, stream);
+  stream += internet.AssignStreams(all, stream);
+  for (uint32_t i = 0; i < senders.GetN(); ++i) {
+    stream += DynamicCast<OnOffApplication>(senders.Get(i))->AssignStreams(stream);
   }
   Simulator::Stop(Seconds(duration + 0.5));
   Simulator::Run();
   uint64_t bytes = 0;
   for (uint32_t i = 0; i < sinks.GetN(); ++i) bytes += DynamicCast<PacketSink>(sinks.Get(i))->GetTotalRx();
-  std::cout << "received " << bytes * 8 / duration / 1e6 << " Mbit/s (whole run)\n";
+  std::cout << "received " << bytes << " bytes in the whole run\n";
   Simulator::Destroy();
   return 0;
 }

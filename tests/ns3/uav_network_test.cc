@@ -31,6 +31,15 @@ TEST(UavNetwork, ScenarioBAllLosBeatsTheBaseline) {
               all_los.aggregate_throughput_mbps, all_los.mean_delay_ms);
 }
 
+TEST(UavNetwork, RebuildingInOneProcessGivesTheSameRun) {
+  // The gym rebuilds the network every episode: the same seed and RngRun must give the same
+  // events however many networks the process built before.
+  const Scenario s = Load("b", {"simulation.duration=1.5", "simulation.warmup=0.5"});
+  const RunMetrics first = EvaluatePosition(s, s.uav.initial);
+  const RunMetrics second = EvaluatePosition(s, s.uav.initial);
+  EXPECT_EQ(ToJson(first), ToJson(second));
+}
+
 TEST(UavNetwork, ObstacleAwareSnrDropsBehindABuildingHybridDoesNot) {
   // Two UAV positions 25 m from ue1 (70, 60, 1.5), 25 m up: west of it in the open, east of it
   // behind the east hall (x 72-80, 15 m tall).

@@ -37,6 +37,8 @@ namespace rlpos {
 namespace {
 
 constexpr uint16_t kFirstPort = 9000;
+// Far above what AssignStreams hands out to the network's models.
+constexpr int64_t kStartTimesStream = 1000000;
 
 ns3::Vector ToNs3(const Vec3& v) { return {v.x, v.y, v.z}; }
 Vec3 FromNs3(const ns3::Vector& v) { return {v.x, v.y, v.z}; }
@@ -193,7 +195,6 @@ void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDevice
       stream += onoff->AssignStreams(stream);
     }
   }
-  start_times->SetStream(stream);
 }
 
 void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
@@ -204,6 +205,7 @@ void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
   start_times = ns3::CreateObject<ns3::UniformRandomVariable>();
   start_times->SetAttribute("Min", ns3::DoubleValue(0.05));
   start_times->SetAttribute("Max", ns3::DoubleValue(0.15));
+  start_times->SetStream(kStartTimesStream);  // drawn now, before AssignStreams runs
   for (std::size_t i = 0; i < scenario.ues.size(); ++i) {
     const uint16_t port = static_cast<uint16_t>(kFirstPort + i);
     ns3::PacketSinkHelper sink(socket, ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
