@@ -91,6 +91,44 @@ struct SimulationSpec {
   std::uint64_t run = 1;   // RngRun
 };
 
+// The gym: how the agent moves the UAV, what it sees, what it is rewarded for.
+struct RewardSpec {
+  std::string name = "paper";  // registry name (worker/gym/reward.h)
+  double w1 = 0.8;             // weight of nLoS / N
+  double w2 = 0.2;             // weight of throughput / total demand
+  double w3 = 0.0;             // weight of demands met / N (demand_aware)
+};
+
+struct EnvSpec {
+  std::string fidelity = "packet";  // packet (full ns-3) | analytic (no packets)
+  double step = 5.0;                // m per move
+  // Moves: up/down = +-z, forward/backward = +-y, right/left = +-x, stay.
+  std::vector<std::string> actions = {"up", "down", "forward", "backward", "left", "right", "stay"};
+  // x, y, z, n_los, throughput, demands_met, snr (one per UE)
+  std::vector<std::string> observations = {"x", "y", "z", "n_los"};
+  double decision_interval = 0.1;  // s between actions
+  double episode_duration = 100.0;  // s per episode
+  RewardSpec reward;
+};
+
+struct AgentSpec {
+  std::string algorithm = "dqn";
+  std::vector<int> hidden = {32, 32};
+  double learning_rate = 1e-2;
+  std::int64_t replay_capacity = 1000000;
+  int batch_size = 64;
+  double gamma = 0.9;  // not in the paper; 0.9 learned B and C reliably (README)
+  double epsilon_start = 1.0;  // the paper trains with epsilon 1 (random moves)
+  double epsilon_end = 1.0;
+  int epsilon_decay_steps = 0;
+  int target_update_interval = 100;  // steps
+  int warmup_steps = 64;             // transitions before learning starts
+  bool double_dqn = false;
+  int train_episodes = 10;
+  int eval_episodes = 1;
+  std::uint64_t seed = 1;
+};
+
 struct Scenario {
   std::string name;
   std::string description;
@@ -103,6 +141,8 @@ struct Scenario {
   ObjectSpec propagation;
   SimulationSpec simulation;
   std::string log_level = "warning";  // error | warning | info | debug
+  EnvSpec env;
+  AgentSpec agent;
 
   double TotalDemandMbps() const;
 };

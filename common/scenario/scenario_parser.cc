@@ -214,6 +214,84 @@ SimulationSpec ReadSimulation(const json& v) {
   return s;
 }
 
+std::vector<std::string> ReadStringList(const json& v, const std::string& path,
+                                        const std::vector<std::string>& allowed) {
+  if (!v.is_array() || v.empty()) throw ConfigError(path, "expected a non-empty array of strings");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    // Reuse the enum check of ObjectReader through a one-key object.
+    const json wrapper = {{"value", v[i]}};  // outlives the reader, which keeps a reference
+    ObjectReader item(wrapper, path);
+    try {
+      out.push_back(item.String("value", "", allowed));
+    } catch (const ConfigError& e) {
+      throw ConfigError(JoinPath(path, i), e.problem());
+    }
+  }
+  return out;
+}
+
+EnvSpec ReadEnv(const json& v) {
+  ObjectReader r(v, "/env");
+  EnvSpec e;
+  e.fidelity = r.String("fidelity", e.fidelity, {"packet", "analytic"});
+  e.step = r.Number("step", e.step, Positive());
+  if (const json* a = r.Child("actions")) {
+    e.actions = ReadStringList(*a, r.PathOf("actions"),
+                               {"up", "down", "forward", "backward", "left", "right", "stay"});
+  }
+  if (const json* o = r.Child("observations")) {
+    e.observations = ReadStringList(*o, r.PathOf("observations"),
+                                    {"x", "y", "z", "n_los", "throughput", "demands_met", "snr"});
+  }
+  e.decision_interval = r.Number("decision_interval", e.decision_interval, Positive());
+  e.episode_duration = r.Number("episode_duration", e.episode_duration, Positive());
+  if (e.decision_interval > e.episode_duration) {
+    throw ConfigError(r.PathOf("decision_interval"), "must not exceed the episode duration");
+  }
+  if (const json* rw = r.Child("reward")) {
+    ObjectReader w(*rw, r.PathOf("reward"));
+    e.reward.name = w.String("name", e.reward.name, {"paper", "demand_aware"});
+    e.reward.w1 = w.Number("w1", e.reward.w1, NonNegative());
+    e.reward.w2 = w.Number("w2", e.reward.w2, NonNegative());
+    e.reward.w3 = w.Number("w3", e.reward.name == "demand_aware" ? 0.2 : 0.0, NonNegative());
+    w.Finish();
+  } else if (e.reward.name == "demand_aware") {
+    e.reward.w3 = 0.2;
+  }
+  r.Finish();
+  return e;
+}
+
+AgentSpec ReadAgent(const json& v) {
+  ObjectReader r(v, "/agent");
+  AgentSpec a;
+  a.algorithm = r.String("algorithm", a.algorithm, {"dqn"});
+  if (const json* h = r.Child("hidden")) {
+    if (!h->is_array() || h->empty()) throw ConfigError(r.PathOf("hidden"), "expected [units, ...]");
+    a.hidden.clear();
+    for (std::size_t i = 0; i < h->size(); ++i) {
+      const double units = CheckedNumber((*h)[i], JoinPath(r.PathOf("hidden"), i), Between(1, 4096));
+      a.hidden.push_back(static_cast<int>(units));
+    }
+  }
+  a.learning_rate = r.Number("learning_rate", a.learning_rate, {0.0, 1.0, true});
+  a.replay_capacity = r.Integer("replay_capacity", a.replay_capacity, 1, 100000000);
+  a.batch_size = static_cast<int>(r.Integer("batch_size", a.batch_size, 1, 65536));
+  a.gamma = r.Number("gamma", a.gamma, Between(0.0, 1.0));
+  a.epsilon_start = r.Number("epsilon_start", a.epsilon_start, Between(0.0, 1.0));
+  a.epsilon_end = r.Number("epsilon_end", a.epsilon_end, Between(0.0, 1.0));
+  a.epsilon_decay_steps = static_cast<int>(r.Integer("epsilon_decay_steps", a.epsilon_decay_steps, 0, 1000000000));
+  a.target_update_interval = static_cast<int>(r.Integer("target_update_interval", a.target_update_interval, 1, 1000000000));
+  a.warmup_steps = static_cast<int>(r.Integer("warmup_steps", a.warmup_steps, 0, 1000000000));
+  a.double_dqn = r.Bool("double_dqn", a.double_dqn);
+  a.train_episodes = static_cast<int>(r.Integer("train_episodes", a.train_episodes, 1, 1000000));
+  a.eval_episodes = static_cast<int>(r.Integer("eval_episodes", a.eval_episodes, 1, 1000000));
+  a.seed = static_cast<std::uint64_t>(r.Integer("seed", static_cast<long long>(a.seed), 0, 9007199254740991LL));
+  r.Finish();
+  return a;
+}
+
 json Vec3Json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
 json SpecJson(const ObjectSpec& s) { return {{"type", s.type}, {"attributes", s.attributes}}; }
 
@@ -308,6 +386,8 @@ Scenario ParseScenario(const json& document) {
   if (const json* v = r.Child("propagation")) s.propagation = ReadObjectSpec(*v, "/propagation");
   if (const json* v = r.Child("simulation")) s.simulation = ReadSimulation(*v);
   s.log_level = r.String("log_level", s.log_level, {"error", "warning", "info", "debug"});
+  if (const json* v = r.Child("env")) s.env = ReadEnv(*v);
+  if (const json* v = r.Child("agent")) s.agent = ReadAgent(*v);
   r.Finish();
   CheckScenarioGeometry(s);
   return s;
@@ -364,7 +444,35 @@ json ToJson(const Scenario& s) {
             {"warmup", s.simulation.warmup},
             {"seed", s.simulation.seed},
             {"run", s.simulation.run}}},
-          {"log_level", s.log_level}};
+          {"log_level", s.log_level},
+          {"env",
+           {{"fidelity", s.env.fidelity},
+            {"step", s.env.step},
+            {"actions", s.env.actions},
+            {"observations", s.env.observations},
+            {"decision_interval", s.env.decision_interval},
+            {"episode_duration", s.env.episode_duration},
+            {"reward",
+             {{"name", s.env.reward.name},
+              {"w1", s.env.reward.w1},
+              {"w2", s.env.reward.w2},
+              {"w3", s.env.reward.w3}}}}},
+          {"agent",
+           {{"algorithm", s.agent.algorithm},
+            {"hidden", s.agent.hidden},
+            {"learning_rate", s.agent.learning_rate},
+            {"replay_capacity", s.agent.replay_capacity},
+            {"batch_size", s.agent.batch_size},
+            {"gamma", s.agent.gamma},
+            {"epsilon_start", s.agent.epsilon_start},
+            {"epsilon_end", s.agent.epsilon_end},
+            {"epsilon_decay_steps", s.agent.epsilon_decay_steps},
+            {"target_update_interval", s.agent.target_update_interval},
+            {"warmup_steps", s.agent.warmup_steps},
+            {"double_dqn", s.agent.double_dqn},
+            {"train_episodes", s.agent.train_episodes},
+            {"eval_episodes", s.agent.eval_episodes},
+            {"seed", s.agent.seed}}}};
 }
 
 }  // namespace rlpos

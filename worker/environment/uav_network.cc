@@ -20,12 +20,16 @@
 #include <ns3/propagation-loss-model.h>
 #include <ns3/rectangle.h>
 #include <ns3/ssid.h>
+#include <ns3/he-phy.h>
+#include <ns3/ht-phy.h>
+#include <ns3/vht-phy.h>
 #include <ns3/wifi-helper.h>
 #include <ns3/wifi-mac-helper.h>
 #include <ns3/wifi-net-device.h>
 #include <ns3/wifi-remote-station-manager.h>
 #include <ns3/yans-wifi-channel.h>
 #include <ns3/yans-wifi-helper.h>
+#include <cmath>
 #include <set>
 
 #include "config/config_error.h"
@@ -97,6 +101,7 @@ struct UavNetwork::Impl {
   ns3::Ptr<ns3::BuildingsChannelConditionModel> geometry;
   ns3::NodeContainer ues;
   ns3::Ptr<ns3::Node> uav;
+  ns3::Ptr<ns3::WifiNetDevice> uav_device;
   ns3::ApplicationContainer senders;
   ns3::Ptr<ns3::UniformRandomVariable> start_times;
   ns3::ApplicationContainer sinks;
@@ -265,6 +270,7 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Vec3& uav_position)
   ns3::Ipv4AddressHelper addresses;
   addresses.SetBase("10.1.0.0", "255.255.0.0");
   ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);  // UAV first: 10.1.0.1
+  m.uav_device = ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(0));
   m.InstallApplications(interfaces.GetAddress(0));
   m.AssignStreams(wifi, devices);
   m.traffic = std::make_unique<TrafficMonitor>(m.senders, m.sinks);
@@ -300,6 +306,40 @@ std::vector<LinkState> UavNetwork::Links() const {
     links.push_back(link);
   }
   return links;
+}
+
+std::vector<double> UavNetwork::McsSnrThresholdsDb() const {
+  const Impl& m = *impl_;
+  const WifiSpec& w = m.scenario.wifi;
+  double ber = 1e-6;  // IdealWifiManager's default BerThreshold
+  auto manager = m.uav_device->GetRemoteStationManager();
+  ns3::TypeId::AttributeInformation info;
+  if (manager->GetInstanceTypeId().LookupAttributeByName("BerThreshold", &info)) {
+    ns3::DoubleValue value;
+    manager->GetAttribute("BerThreshold", value);
+    ber = value.Get();
+  }
+  auto phy = m.uav_device->GetPhy();
+  std::vector<double> thresholds;
+  for (int mcs = 0; mcs <= MaxMcs(w.standard); ++mcs) {
+    ns3::WifiMode mode;
+    ns3::WifiPreamble preamble;
+    if (m.plan.standard == ns3::WIFI_STANDARD_80211n) {
+      mode = ns3::HtPhy::GetHtMcs(static_cast<uint8_t>(mcs + 8 * (w.spatial_streams - 1)));
+      preamble = ns3::WIFI_PREAMBLE_HT_MF;
+    } else if (m.plan.standard == ns3::WIFI_STANDARD_80211ac) {
+      mode = ns3::VhtPhy::GetVhtMcs(static_cast<uint8_t>(mcs));
+      preamble = ns3::WIFI_PREAMBLE_VHT_SU;
+    } else {
+      mode = ns3::HePhy::GetHeMcs(static_cast<uint8_t>(mcs));
+      preamble = ns3::WIFI_PREAMBLE_HE_SU;
+    }
+    const auto nss = static_cast<uint8_t>(w.spatial_streams);
+    ns3::WifiTxVector tx(mode, 0, preamble, static_cast<uint16_t>(w.guard_interval_ns), nss, nss, 0,
+                         static_cast<uint16_t>(w.width_mhz), true);
+    thresholds.push_back(10.0 * std::log10(phy->CalculateSnr(tx, ber)));
+  }
+  return thresholds;
 }
 
 void UavNetwork::BeginMeasurement(MeasurementWindow window) { impl_->traffic->Restart(window); }

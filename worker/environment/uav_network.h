@@ -32,6 +32,10 @@ class UavNetwork {
   // UE's uplink as the channel's loss model gives it, now.
   std::vector<LinkState> Links() const;
 
+  // Minimum SNR (dB) of each MCS of the configured PHY (index = MCS), as ns-3's
+  // IdealWifiManager derives it from the error rate model at its BER threshold.
+  std::vector<double> McsSnrThresholdsDb() const;
+
   // Starts a new measurement window for the traffic monitor (drops what was counted before).
   void BeginMeasurement(MeasurementWindow window);
   // Advances the simulation to absolute time `t` (s).

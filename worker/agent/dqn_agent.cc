@@ -1,0 +1,167 @@
+#include "agent/dqn_agent.h"
+
+#include <torch/torch.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace rlpos {
+namespace {
+
+torch::nn::Sequential MakeNetwork(const std::vector<int>& hidden, int in, int out) {
+  torch::nn::Sequential net;
+  int width = in;
+  for (int units : hidden) {
+    net->push_back(torch::nn::Linear(width, units));
+    net->push_back(torch::nn::ReLU());
+    width = units;
+  }
+  net->push_back(torch::nn::Linear(width, out));
+  return net;
+}
+
+void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to) {
+  torch::NoGradGuard no_grad;
+  auto source = from->parameters();
+  auto target = to->parameters();
+  for (std::size_t i = 0; i < source.size(); ++i) target[i].copy_(source[i]);
+}
+
+}  // namespace
+
+struct DqnAgent::Impl {
+  AgentSpec spec;
+  int observation_dim;
+  int action_count;
+  torch::nn::Sequential online{nullptr};
+  torch::nn::Sequential target{nullptr};
+  std::unique_ptr<torch::optim::Adam> optimizer;
+  ReplayBuffer replay;
+  EpsilonSchedule epsilon;
+  std::mt19937_64 rng;
+  std::int64_t steps = 0;
+
+  Impl(const AgentSpec& s, int obs_dim, int actions)
+      : spec(s),
+        observation_dim(obs_dim),
+        action_count(actions),
+        replay(static_cast<std::size_t>(s.replay_capacity)),
+        epsilon{s.epsilon_start, s.epsilon_end, s.epsilon_decay_steps},
+        rng(s.seed) {
+    torch::manual_seed(s.seed);  // weight initialisation
+    online = MakeNetwork(s.hidden, obs_dim, actions);
+    target = MakeNetwork(s.hidden, obs_dim, actions);
+    CopyParameters(online, target);
+    optimizer = std::make_unique<torch::optim::Adam>(
+        online->parameters(), torch::optim::AdamOptions(s.learning_rate));
+  }
+
+  torch::Tensor Batch(const std::vector<std::size_t>& indices, bool next) const {
+    torch::Tensor t = torch::empty({static_cast<long>(indices.size()), observation_dim});
+    auto a = t.accessor<float, 2>();
+    for (std::size_t r = 0; r < indices.size(); ++r) {
+      const auto& tr = replay.At(indices[r]);
+      const auto& obs = next ? tr.next_observation : tr.observation;
+      for (int c = 0; c < observation_dim; ++c) a[r][c] = obs[c];
+    }
+    return t;
+  }
+
+  double Learn() {
+    const auto indices = replay.SampleIndices(static_cast<std::size_t>(spec.batch_size), rng);
+    const long n = static_cast<long>(indices.size());
+    torch::Tensor obs = Batch(indices, false);
+    torch::Tensor next = Batch(indices, true);
+    torch::Tensor actions = torch::empty({n}, torch::kLong);
+    torch::Tensor rewards = torch::empty({n});
+    torch::Tensor not_terminal = torch::empty({n});
+    for (long r = 0; r < n; ++r) {
+      const auto& tr = replay.At(indices[r]);
+      actions[r] = tr.action;
+      rewards[r] = tr.reward;
+      not_terminal[r] = tr.terminal ? 0.0f : 1.0f;
+    }
+    torch::Tensor target_q;
+    {
+      torch::NoGradGuard no_grad;
+      torch::Tensor next_q = target->forward(next);
+      torch::Tensor best;
+      if (spec.double_dqn) {
+        // The online network picks the action, the target network values it.
+        best = next_q.gather(1, online->forward(next).argmax(1, true)).squeeze(1);
+      } else {
+        best = std::get<0>(next_q.max(1));
+      }
+      target_q = rewards + static_cast<float>(spec.gamma) * not_terminal * best;
+    }
+    torch::Tensor q = online->forward(obs).gather(1, actions.unsqueeze(1)).squeeze(1);
+    torch::Tensor loss = torch::mse_loss(q, target_q);
+    optimizer->zero_grad();
+    loss.backward();
+    optimizer->step();
+    return loss.item<double>();
+  }
+};
+
+DqnAgent::DqnAgent(const AgentSpec& spec, int observation_dim, int action_count)
+    : impl_(std::make_unique<Impl>(spec, observation_dim, action_count)) {
+  if (observation_dim <= 0 || action_count <= 0) {
+    throw std::invalid_argument("DQN needs a non-empty observation and action space");
+  }
+}
+
+DqnAgent::~DqnAgent() = default;
+
+std::vector<float> DqnAgent::QValues(const std::vector<float>& observation) const {
+  torch::NoGradGuard no_grad;
+  torch::Tensor x = torch::from_blob(const_cast<float*>(observation.data()),
+                                     {1, static_cast<long>(observation.size())}, torch::kFloat)
+                        .clone();
+  torch::Tensor q = impl_->online->forward(x).squeeze(0).contiguous();
+  return std::vector<float>(q.data_ptr<float>(), q.data_ptr<float>() + q.numel());
+}
+
+int DqnAgent::Act(const std::vector<float>& observation, bool explore) {
+  if (explore) {
+    std::uniform_real_distribution<double> coin(0.0, 1.0);
+    if (coin(impl_->rng) < Epsilon()) {
+      std::uniform_int_distribution<int> pick(0, impl_->action_count - 1);
+      return pick(impl_->rng);
+    }
+  }
+  const auto q = QValues(observation);
+  return static_cast<int>(std::max_element(q.begin(), q.end()) - q.begin());
+}
+
+double DqnAgent::Observe(Transition transition) {
+  Impl& m = *impl_;
+  m.replay.Add(std::move(transition));
+  ++m.steps;
+  double loss = -1.0;
+  if (m.steps >= m.spec.warmup_steps &&
+      m.replay.Size() >= static_cast<std::size_t>(std::min<std::int64_t>(m.spec.batch_size, 1))) {
+    loss = m.Learn();
+  }
+  if (m.steps % m.spec.target_update_interval == 0) CopyParameters(m.online, m.target);
+  return loss;
+}
+
+double DqnAgent::Epsilon() const { return impl_->epsilon.At(impl_->steps); }
+
+void DqnAgent::Save(const std::string& directory) const {
+  std::filesystem::create_directories(directory);
+  torch::save(impl_->online, directory + "/policy.pt");
+}
+
+void DqnAgent::Load(const std::string& directory) {
+  const std::string file = directory + "/policy.pt";
+  if (!std::filesystem::exists(file)) throw std::runtime_error(file + ": no such policy file");
+  try {
+    torch::load(impl_->online, file);
+  } catch (const c10::Error& e) {
+    throw std::runtime_error(file + ": not a policy of this network shape");
+  }
+  CopyParameters(impl_->online, impl_->target);
+}
+
+}  // namespace rlpos

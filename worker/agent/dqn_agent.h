@@ -1,0 +1,29 @@
+#pragma once
+// Deep Q-Network (libtorch): an MLP Q-function, experience replay, a target network, epsilon-
+// greedy behaviour; Double DQN as an option. Defaults are the paper's Table II. Seeded: the same
+// seed, spaces and transitions give the same network.
+#include <memory>
+
+#include "agent/agent.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+class DqnAgent : public Agent {
+ public:
+  DqnAgent(const AgentSpec& spec, int observation_dim, int action_count);
+  ~DqnAgent() override;
+  int Act(const std::vector<float>& observation, bool explore) override;
+  double Observe(Transition transition) override;
+  double Epsilon() const override;
+  void Save(const std::string& directory) const override;
+  void Load(const std::string& directory) override;
+  // Q-values of an observation (for tests and inspection).
+  std::vector<float> QValues(const std::vector<float>& observation) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rlpos

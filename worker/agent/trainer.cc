@@ -1,0 +1,45 @@
+#include "agent/trainer.h"
+
+namespace rlpos {
+
+EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn) {
+  const BoxSpace space = env.ObservationSpace();
+  EpisodeRecord record;
+  record.evaluation = !learn;
+  std::vector<float> obs = space.Normalise(env.Reset(seed));
+  double reward = 0.0;
+  for (;;) {
+    const int action = agent.Act(obs, learn);
+    StepResult step = env.Step(action);
+    std::vector<float> next = space.Normalise(step.observation);
+    if (learn) {
+      agent.Observe({obs, action, static_cast<float>(step.reward), next, step.terminated});
+    }
+    record.total_reward += step.reward;
+    reward = step.reward;
+    ++record.steps;
+    obs = std::move(next);
+    if (step.terminated || step.truncated) break;
+  }
+  record.epsilon = learn ? agent.Epsilon() : 0.0;
+  record.final_reward = reward;
+  record.final_info = env.LastInfo();
+  return record;
+}
+
+TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
+                  const EpisodeCallback& on_episode) {
+  TrainResult result;
+  for (int e = 0; e < spec.train_episodes + spec.eval_episodes; ++e) {
+    const bool learn = e < spec.train_episodes;
+    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), learn);
+    record.episode = e + 1;
+    if (on_episode) on_episode(record);
+    result.final_info = record.final_info;
+    result.final_reward = record.final_reward;
+    result.curve.push_back(std::move(record));
+  }
+  return result;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,40 @@
+#pragma once
+// Episodes of agent-env interaction: training (behaviour policy, learning) and evaluation
+// (greedy). The final greedy position of the evaluation episode is the RL positioner's answer.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "agent/agent.h"
+#include "gym/env.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+struct EpisodeRecord {
+  int episode = 0;
+  bool evaluation = false;
+  int steps = 0;
+  double total_reward = 0.0;
+  double epsilon = 0.0;
+  double final_reward = 0.0;
+  StepInfo final_info;
+};
+
+struct TrainResult {
+  std::vector<EpisodeRecord> curve;  // one record per episode, training then evaluation
+  StepInfo final_info;               // state at the end of the last evaluation episode
+  double final_reward = 0.0;
+};
+
+using EpisodeCallback = std::function<void(const EpisodeRecord&)>;
+
+// Runs one episode from env.Reset(seed). With `learn`, the agent explores and learns.
+EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn);
+
+// spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
+// greedy ones. `on_episode` is called after each episode (progress, learning curve).
+TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
+                  const EpisodeCallback& on_episode = nullptr);
+
+}  // namespace rlpos

@@ -1,0 +1,20 @@
+#pragma once
+// The UAV's discrete moves and the observation vector, from the scenario's env section.
+#include <string>
+#include <vector>
+
+#include "gym/env.h"
+#include "gym/spaces.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+// The position after `action` (an index into scenario.env.actions): one step in its direction,
+// clamped to the UAV's zone. A move that would end inside a building leaves the UAV where it is.
+Vec3 ApplyMove(const Scenario& scenario, int action, const Vec3& from);
+
+// Observation layout and bounds from scenario.env.observations ("snr" expands to one per UE).
+BoxSpace ObservationBounds(const Scenario& scenario);
+std::vector<double> MakeObservation(const Scenario& scenario, const StepInfo& info);
+
+}  // namespace rlpos

@@ -1,0 +1,86 @@
+#include "gym/uav_positioning_env.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "environment/uav_network.h"
+#include "gym/analytic_evaluator.h"
+#include "gym/moves.h"
+
+namespace rlpos {
+
+UavPositioningEnv::UavPositioningEnv(Scenario scenario)
+    : scenario_(std::move(scenario)), reward_(MakeReward(scenario_.env.reward)) {
+  steps_per_episode_ = static_cast<int>(
+      std::llround(scenario_.env.episode_duration / scenario_.env.decision_interval));
+  if (scenario_.env.fidelity == "analytic") {
+    analytic_ = std::make_unique<AnalyticEvaluator>(scenario_);
+  }
+}
+
+UavPositioningEnv::~UavPositioningEnv() = default;
+
+DiscreteSpace UavPositioningEnv::ActionSpace() const {
+  return {static_cast<int>(scenario_.env.actions.size())};
+}
+
+BoxSpace UavPositioningEnv::ObservationSpace() const { return ObservationBounds(scenario_); }
+
+double UavPositioningEnv::RewardOf(const StepInfo& info) const {
+  return (*reward_)({info.n_los, static_cast<int>(scenario_.ues.size()), info.throughput_mbps,
+                     scenario_.TotalDemandMbps(), info.demands_met});
+}
+
+StepInfo UavPositioningEnv::Observe() {
+  if (analytic_) return analytic_->Evaluate(position_);
+  const RunMetrics m = network_->Measure();
+  StepInfo info;
+  info.position = position_;
+  info.n_los = m.n_los;
+  info.throughput_mbps = m.aggregate_throughput_mbps;
+  info.demands_met = m.demands_met;
+  for (const auto& ue : m.ues) info.snr_db.push_back(ue.snr_db);
+  return info;
+}
+
+std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
+  position_ = scenario_.uav.initial;
+  steps_ = 0;
+  if (!analytic_) {
+    // A fresh network per episode: RngRun = seed; traffic lasts the whole episode.
+    Scenario episode = scenario_;
+    episode.simulation.run = seed;
+    const double dt = scenario_.env.decision_interval;
+    const double warmup = std::max(scenario_.simulation.warmup, dt);
+    episode.simulation.warmup = warmup;
+    episode.simulation.duration = warmup + scenario_.env.episode_duration + dt;
+    network_.reset();  // one ns-3 simulation at a time
+    network_ = std::make_unique<UavNetwork>(episode, position_);
+    network_->BeginMeasurement({warmup - dt, warmup});
+    network_->RunUntil(warmup);
+  }
+  info_ = Observe();
+  return MakeObservation(scenario_, info_);
+}
+
+StepResult UavPositioningEnv::Step(int action) {
+  if (!ActionSpace().Contains(action)) throw std::out_of_range("action out of the action space");
+  position_ = ApplyMove(scenario_, action, position_);
+  if (network_) {
+    network_->SetUavPosition(position_);
+    const double now = network_->Now();
+    const double next = now + scenario_.env.decision_interval;
+    network_->BeginMeasurement({now, next});
+    network_->RunUntil(next);
+  }
+  ++steps_;
+  info_ = Observe();
+  StepResult result;
+  result.info = info_;
+  result.observation = MakeObservation(scenario_, info_);
+  result.reward = RewardOf(info_);
+  result.truncated = steps_ >= steps_per_episode_;
+  return result;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,44 @@
+#pragma once
+// The UAV positioning environment, in-process with ns-3 (no sockets, no second process).
+// packet fidelity: the full ns-3 simulation advances one decision interval per step
+// (Simulator::Stop + Run); each episode rebuilds the network with RngRun = the reset seed.
+// analytic fidelity: no packets (AnalyticEvaluator). Episode length and interval from env.
+#include <memory>
+
+#include "gym/env.h"
+#include "gym/reward.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+class UavNetwork;
+class AnalyticEvaluator;
+
+class UavPositioningEnv : public Env {
+ public:
+  explicit UavPositioningEnv(Scenario scenario);
+  ~UavPositioningEnv() override;
+
+  DiscreteSpace ActionSpace() const override;
+  BoxSpace ObservationSpace() const override;
+  std::vector<double> Reset(std::uint64_t seed) override;
+  StepResult Step(int action) override;
+  const StepInfo& LastInfo() const override { return info_; }
+
+  const Scenario& scenario() const { return scenario_; }
+  int StepsPerEpisode() const { return steps_per_episode_; }
+  double RewardOf(const StepInfo& info) const;
+
+ private:
+  StepInfo Observe();  // the state at the current position (after the last interval)
+  Scenario scenario_;
+  std::unique_ptr<Reward> reward_;
+  std::unique_ptr<UavNetwork> network_;      // packet fidelity
+  std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
+  Vec3 position_;
+  StepInfo info_;
+  int steps_ = 0;
+  int steps_per_episode_ = 0;
+};
+
+}  // namespace rlpos

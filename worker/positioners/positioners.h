@@ -1,0 +1,36 @@
+#pragma once
+// Positioners: where each compared strategy puts the UAV.
+//   baseline  the scenario's initial position
+//   centroid  demand-weighted centroid of the UEs, at a height that clears the buildings
+//   oracle    exhaustive search of the zone grid scored with the analytic model; the best few
+//             re-scored at packet level
+//   rl        the trained policy's final greedy position (agent/trainer.h)
+#include <vector>
+
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+Vec3 BaselinePosition(const Scenario& scenario);
+
+// z = max(10 m, tallest building + 5 m), clamped to the zone; x, y clamped to the zone.
+Vec3 CentroidPosition(const Scenario& scenario);
+
+struct ScoredPosition {
+  Vec3 position;
+  double analytic_reward = 0.0;
+  double packet_reward = -1.0;  // < 0: not re-scored
+  int n_los = 0;
+  double throughput_mbps = 0.0;
+};
+
+struct OracleOptions {
+  double grid_step = 0.0;       // m; 0: the env's move step (every position the agent can reach)
+  int packet_candidates = 3;    // best analytic positions re-scored at packet level (0: none)
+  double packet_duration = 2.0;  // s per packet-level re-score
+};
+
+// Best first. Every zone grid point outside buildings is scored.
+std::vector<ScoredPosition> OracleSearch(const Scenario& scenario, const OracleOptions& options);
+
+}  // namespace rlpos

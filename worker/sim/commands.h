@@ -1,0 +1,52 @@
+#pragma once
+// The rlpos-sim subcommands. Each returns the process exit code; bad input throws ConfigError.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.h"
+
+namespace rlpos::sim {
+
+constexpr int kExitOk = 0;
+constexpr int kExitRuntime = 1;
+constexpr int kExitBadInput = 2;
+constexpr int kExitNs3Abort = 3;
+
+struct CommonOptions {
+  std::string scenario_file;
+  std::vector<std::string> overrides;  // --set path=value
+  std::string log_level;
+};
+
+// Loads the scenario with `extra` overrides first, then the user's --set ones.
+Scenario LoadScenarioFor(const CommonOptions& options, std::vector<std::string> extra);
+
+struct EvalOptions {
+  std::string position;
+  double duration = -1;
+  long long run = -1;
+  bool json = false;
+  bool progress = false;
+};
+
+struct TrainOptions {
+  std::string fidelity;  // empty: the scenario's env.fidelity
+  long long seed = -1;   // -1: the scenario's agent.seed
+  int episodes = -1;     // -1: the scenario's agent.train_episodes
+  std::string out;
+  bool json = false;
+};
+
+struct PositionOptions {
+  std::string positioner;
+  std::string policy;  // rl
+  bool json = false;
+};
+
+int RunValidate(const CommonOptions& options, bool json);
+int RunEval(const CommonOptions& options, const EvalOptions& eval);
+int RunTrain(const CommonOptions& options, const TrainOptions& train);
+int RunPosition(const CommonOptions& options, const PositionOptions& position);
+
+}  // namespace rlpos::sim

@@ -1,0 +1,47 @@
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "environment/uav_network.h"
+#include "logging/log.h"
+#include "sim/commands.h"
+#include "sim/metrics_report.h"
+#include "sim/scenario_loading.h"
+
+namespace rlpos::sim {
+namespace {
+
+std::chrono::steady_clock::time_point g_started;
+
+void ShowProgress(double now, double end) {
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - g_started).count();
+  std::fprintf(stderr, "\rsimulated %.1f / %.1f s (wall %.1f s)%s", now, end, wall,
+               now >= end ? "\n" : "");
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+int RunEval(const CommonOptions& options, const EvalOptions& eval) {
+  std::vector<std::string> extra;
+  if (eval.duration > 0) extra.push_back("simulation.duration=" + std::to_string(eval.duration));
+  if (eval.run >= 0) extra.push_back("simulation.run=" + std::to_string(eval.run));
+  const Scenario scenario = LoadScenarioFor(options, extra);
+  const Vec3 position = ParsePosition(eval.position, "--position");
+  CheckUavPosition(scenario, position, "--position");
+  Log(LogLevel::kInfo, "evaluating scenario " + scenario.name);
+  g_started = std::chrono::steady_clock::now();
+  const RunMetrics metrics =
+      EvaluatePosition(scenario, position, eval.progress ? ShowProgress : nullptr);
+  if (eval.json) {
+    nlohmann::json out = ToJson(metrics);
+    out["scenario"] = scenario.name;
+    std::cout << out.dump(2) << std::endl;
+  } else {
+    PrintMetricsTable(std::cout, scenario, metrics);
+  }
+  return 0;
+}
+
+}  // namespace rlpos::sim

@@ -1,0 +1,84 @@
+#include <fstream>
+#include <iostream>
+
+#include "agent/dqn_agent.h"
+#include "agent/trainer.h"
+#include "config/config_error.h"
+#include "gym/analytic_evaluator.h"
+#include "gym/reward.h"
+#include "gym/uav_positioning_env.h"
+#include "positioners/positioners.h"
+#include "scenario/scenario_parser.h"
+#include "sim/commands.h"
+
+namespace rlpos::sim {
+namespace {
+
+// The trained policy's greedy final position, replayed from the policy folder.
+Vec3 RlPosition(Scenario s, const std::string& policy) {
+  if (policy.empty()) throw ConfigError("--policy", "is required for the rl positioner");
+  nlohmann::json trained;
+  try {
+    trained = ReadJsonFile(policy + "/result.json");
+  } catch (const ConfigError& e) {
+    throw ConfigError("--policy", policy + "/result.json: " + e.problem());
+  }
+  s.env.fidelity = trained.value("fidelity", s.env.fidelity);
+  UavPositioningEnv env(s);
+  DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
+  agent.Load(policy);
+  const std::uint64_t run = trained.value("first_episode_run", 1ULL) +
+                            static_cast<std::uint64_t>(s.agent.train_episodes);
+  return RunEpisode(env, agent, run, false).final_info.position;
+}
+
+}  // namespace
+
+int RunPosition(const CommonOptions& options, const PositionOptions& p) {
+  const Scenario s = LoadScenarioFor(options, {});
+  Vec3 position;
+  nlohmann::json candidates = nlohmann::json::array();
+  if (p.positioner == "baseline") {
+    position = BaselinePosition(s);
+  } else if (p.positioner == "centroid") {
+    position = CentroidPosition(s);
+  } else if (p.positioner == "oracle") {
+    const auto ranked = OracleSearch(s, OracleOptions{});
+    position = ranked.front().position;
+    for (std::size_t i = 0; i < ranked.size() && i < 5; ++i) {
+      const auto& c = ranked[i];
+      candidates.push_back({{"position", {c.position.x, c.position.y, c.position.z}},
+                            {"analytic_reward", c.analytic_reward},
+                            {"packet_reward", c.packet_reward},
+                            {"n_los", c.n_los}});
+    }
+  } else {
+    position = RlPosition(s, p.policy);
+  }
+  // Every positioner is scored the same way: the analytic model at its position.
+  AnalyticEvaluator analytic(s);
+  const StepInfo info = analytic.Evaluate(position);
+  const double reward = MakeReward(s.env.reward)->operator()(
+      {info.n_los, static_cast<int>(s.ues.size()), info.throughput_mbps, s.TotalDemandMbps(),
+       info.demands_met});
+  nlohmann::json out = {{"scenario", s.name},
+                        {"positioner", p.positioner},
+                        {"position", {position.x, position.y, position.z}},
+                        {"n_los", info.n_los},
+                        {"n_ues", s.ues.size()},
+                        {"analytic_throughput_mbps", info.throughput_mbps},
+                        {"demands_met", info.demands_met},
+                        {"reward", reward}};
+  if (!candidates.empty()) out["candidates"] = candidates;
+  if (p.json) {
+    std::cout << out.dump(2) << std::endl;
+  } else {
+    std::printf("%s in %s: (%.1f, %.1f, %.1f), nLoS %d/%zu, analytic throughput %.1f Mbit/s, "
+                "reward %.4f\n",
+                p.positioner.c_str(), s.name.c_str(), position.x, position.y, position.z,
+                info.n_los, s.ues.size(), info.throughput_mbps, reward);
+  }
+  return kExitOk;
+}
+
+}  // namespace rlpos::sim

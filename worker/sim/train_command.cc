@@ -1,0 +1,103 @@
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "agent/dqn_agent.h"
+#include "agent/trainer.h"
+#include "config/config_error.h"
+#include "gym/uav_positioning_env.h"
+#include "scenario/scenario_parser.h"
+#include "sim/commands.h"
+
+namespace rlpos::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Episodes of train seed N run RngRun N*1000+1, N*1000+2, ...: never the evaluation runs.
+std::uint64_t FirstEpisodeRun(std::uint64_t seed) { return seed * 1000 + 1; }
+
+nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {
+  const Vec3& p = r.final_info.position;
+  return {{"scenario", s.name},
+          {"fidelity", s.env.fidelity},
+          {"seed", seed},
+          {"train_episodes", s.agent.train_episodes},
+          {"eval_episodes", s.agent.eval_episodes},
+          {"first_episode_run", FirstEpisodeRun(seed)},
+          {"position", {p.x, p.y, p.z}},
+          {"n_los", r.final_info.n_los},
+          {"n_ues", s.ues.size()},
+          {"throughput_mbps", r.final_info.throughput_mbps},
+          {"demands_met", r.final_info.demands_met},
+          {"reward", r.final_reward}};
+}
+
+void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
+  const Vec3& p = r.final_info.position;
+  out << r.episode << ',' << (r.evaluation ? "eval" : "train") << ',' << r.steps << ','
+      << r.total_reward << ',' << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ','
+      << r.final_reward << ',' << p.x << ',' << p.y << ',' << p.z << ',' << r.final_info.n_los
+      << ',' << r.final_info.throughput_mbps << '\n';
+}
+
+}  // namespace
+
+int RunTrain(const CommonOptions& options, const TrainOptions& t) {
+  std::vector<std::string> extra;
+  if (!t.fidelity.empty()) extra.push_back("env.fidelity=" + t.fidelity);
+  if (t.seed >= 0) extra.push_back("agent.seed=" + std::to_string(t.seed));
+  if (t.episodes > 0) extra.push_back("agent.train_episodes=" + std::to_string(t.episodes));
+  const Scenario s = LoadScenarioFor(options, extra);
+  if (fs::exists(t.out)) {
+    throw ConfigError("--out", t.out + " already exists; choose another folder or remove it");
+  }
+  // Written under a temporary name and renamed at the end: no half-written output folder.
+  const fs::path partial = t.out + ".partial";
+  std::error_code ec;
+  fs::remove_all(partial, ec);
+  if (!fs::create_directories(partial, ec) || ec) {
+    throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
+  }
+  try {
+    UavPositioningEnv env(s);
+    DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
+    std::ofstream curve(partial / "learning_curve.csv");
+    curve << "episode,phase,steps,total_reward,mean_reward,epsilon,final_reward,x,y,z,n_los,"
+             "throughput_mbps\n";
+    const int total = s.agent.train_episodes + s.agent.eval_episodes;
+    const TrainResult result =
+        Train(env, agent, s.agent, FirstEpisodeRun(s.agent.seed), [&](const EpisodeRecord& r) {
+          WriteCurveRow(curve, r);
+          const Vec3& p = r.final_info.position;
+          std::fprintf(stderr,
+                       "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
+                       "final (%.1f, %.1f, %.1f) nLoS %d\n",
+                       r.episode, total, r.evaluation ? "eval" : "train", r.steps, r.epsilon,
+                       r.total_reward, r.total_reward / std::max(1, r.steps), p.x, p.y, p.z,
+                       r.final_info.n_los);
+        });
+    curve.close();
+    agent.Save(partial.string());
+    const nlohmann::json summary = ResultJson(s, result, s.agent.seed);
+    std::ofstream(partial / "result.json") << summary.dump(2) << '\n';
+    std::ofstream(partial / "scenario.json") << ToJson(s).dump(2) << '\n';
+    fs::rename(partial, t.out);
+    if (t.json) {
+      std::cout << summary.dump(2) << std::endl;
+    } else {
+      const auto& p = result.final_info.position;
+      std::printf("trained %s (%s, seed %llu): final position (%.1f, %.1f, %.1f), nLoS %d/%zu, "
+                  "reward %.4f\npolicy, learning curve and result in %s\n",
+                  s.name.c_str(), s.env.fidelity.c_str(),
+                  static_cast<unsigned long long>(s.agent.seed), p.x, p.y, p.z,
+                  result.final_info.n_los, s.ues.size(), result.final_reward, t.out.c_str());
+    }
+  } catch (...) {
+    fs::remove_all(partial, ec);
+    throw;
+  }
+  return kExitOk;
+}
+
+}  // namespace rlpos::sim
