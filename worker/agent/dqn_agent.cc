@@ -156,11 +156,23 @@ void DqnAgent::Save(const std::string& directory) const {
 void DqnAgent::Load(const std::string& directory) {
   const std::string file = directory + "/policy.pt";
   if (!std::filesystem::exists(file)) throw std::runtime_error(file + ": no such policy file");
+  // Loaded into a scratch network first: torch::load takes any tensor shapes it finds.
+  torch::nn::Sequential loaded =
+      MakeNetwork(impl_->spec.hidden, impl_->observation_dim, impl_->action_count);
+  const auto expected = impl_->online->parameters();
   try {
-    torch::load(impl_->online, file);
-  } catch (const c10::Error& e) {
-    throw std::runtime_error(file + ": not a policy of this network shape");
+    torch::load(loaded, file);
+  } catch (const c10::Error&) {
+    throw std::runtime_error(file + ": not a policy file of this network");
   }
+  const auto got = loaded->parameters();
+  bool same = got.size() == expected.size();
+  for (std::size_t i = 0; same && i < got.size(); ++i) same = got[i].sizes() == expected[i].sizes();
+  if (!same) {
+    throw std::runtime_error(file + ": the policy's network shape differs from the scenario's "
+                                    "(observations, actions or agent.hidden changed)");
+  }
+  CopyParameters(loaded, impl_->online);
   CopyParameters(impl_->online, impl_->target);
 }
 

@@ -1,5 +1,6 @@
 #include "gym/uav_positioning_env.h"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -71,7 +72,10 @@ StepResult UavPositioningEnv::Step(int action) {
     const double now = network_->Now();
     const double next = now + scenario_.env.decision_interval;
     network_->BeginMeasurement({now, next});
+    const auto started = std::chrono::steady_clock::now();
     network_->RunUntil(next);
+    wall_in_ns3_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
   ++steps_;
   info_ = Observe();

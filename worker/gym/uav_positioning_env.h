@@ -28,6 +28,8 @@ class UavPositioningEnv : public Env {
   const Scenario& scenario() const { return scenario_; }
   int StepsPerEpisode() const { return steps_per_episode_; }
   double RewardOf(const StepInfo& info) const;
+  // Wall time spent inside ns-3's Simulator::Run so far (packet fidelity), for benchmarks.
+  double WallSecondsInNs3() const { return wall_in_ns3_; }
 
  private:
   StepInfo Observe();  // the state at the current position (after the last interval)
@@ -39,6 +41,7 @@ class UavPositioningEnv : public Env {
   StepInfo info_;
   int steps_ = 0;
   int steps_per_episode_ = 0;
+  double wall_in_ns3_ = 0.0;
 };
 
 }  // namespace rlpos
