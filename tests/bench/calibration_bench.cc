@@ -1,0 +1,81 @@
+// Agreement of the analytic throughput estimate with packet-level ns-3 over a grid of UAV
+// positions: Spearman rank correlation and median relative error.
+//   rlpos-bench-calibration SCENARIO.json [DURATION_S]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <vector>
+
+#include "environment/uav_network.h"
+#include "gym/analytic_evaluator.h"
+#include "scenario/scenario_checks.h"
+#include "sim/scenario_loading.h"
+
+namespace {
+
+std::vector<double> Ranks(const std::vector<double>& v) {
+  std::vector<std::size_t> order(v.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return v[a] < v[b]; });
+  std::vector<double> rank(v.size());
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]]) ++j;
+    for (std::size_t k = i; k <= j; ++k) rank[order[k]] = 0.5 * (i + j);  // ties: mean rank
+    i = j + 1;
+  }
+  return rank;
+}
+
+double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
+  const double ma = std::accumulate(a.begin(), a.end(), 0.0) / a.size();
+  const double mb = std::accumulate(b.begin(), b.end(), 0.0) / b.size();
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return sab / std::sqrt(saa * sbb);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S]\n");
+    return 2;
+  }
+  rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
+  s.simulation.duration = s.simulation.warmup + (argc > 2 ? std::stod(argv[2]) : 2.0);
+  std::vector<rlpos::Vec3> grid;
+  for (double z : {10.0, 30.0}) {
+    for (double x : {10.0, 30.0, 50.0, 70.0, 90.0}) {
+      for (double y : {15.0, 50.0, 85.0}) {
+        if (rlpos::BuildingContaining(s, {x, y, z}) < 0) grid.push_back({x, y, z});
+      }
+    }
+  }
+  std::vector<double> analytic, packet;
+  {
+    rlpos::AnalyticEvaluator evaluator(s);
+    for (const auto& p : grid) analytic.push_back(evaluator.Evaluate(p).throughput_mbps);
+  }
+  for (const auto& p : grid) {
+    packet.push_back(rlpos::EvaluatePosition(s, p).aggregate_throughput_mbps);
+  }
+  std::vector<double> errors;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (packet[i] > 0) errors.push_back(std::abs(analytic[i] - packet[i]) / packet[i]);
+  }
+  std::sort(errors.begin(), errors.end());
+  const double median_error = errors.empty() ? NAN : errors[errors.size() / 2];
+  std::printf("%-8s %zu positions, %.1f s each: Spearman %.3f, median |error| %.1f %%, mean "
+              "analytic %.1f vs packet %.1f Mbit/s\n",
+              s.name.c_str(), grid.size(), s.simulation.duration - s.simulation.warmup,
+              Pearson(Ranks(analytic), Ranks(packet)), 100 * median_error,
+              std::accumulate(analytic.begin(), analytic.end(), 0.0) / analytic.size(),
+              std::accumulate(packet.begin(), packet.end(), 0.0) / packet.size());
+  return 0;
+}

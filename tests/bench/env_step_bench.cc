@@ -1,0 +1,61 @@
+// Steps per second of the env in both fidelities, with the DQN agent acting and learning, and
+// the share of a packet-level step spent outside ns-3 (agent + monitors + env bookkeeping).
+//   rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS]
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "agent/dqn_agent.h"
+#include "gym/uav_positioning_env.h"
+#include "sim/scenario_loading.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Figures {
+  double steps_per_s = 0;
+  double outside_ns3_share = 0;
+};
+
+Figures Run(rlpos::Scenario s, const std::string& fidelity, int steps) {
+  s.env.fidelity = fidelity;
+  s.env.episode_duration = steps * s.env.decision_interval;
+  rlpos::UavPositioningEnv env(s);
+  rlpos::DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()),
+                        env.ActionSpace().n);
+  const auto space = env.ObservationSpace();
+  auto obs = space.Normalise(env.Reset(s.agent.seed * 1000 + 1));
+  const double ns3_before = env.WallSecondsInNs3();  // the reset's warm-up is not a step
+  const auto start = Clock::now();
+  for (int i = 0; i < steps; ++i) {
+    const int action = agent.Act(obs, true);
+    const auto r = env.Step(action);
+    auto next = space.Normalise(r.observation);
+    agent.Observe({obs, action, static_cast<float>(r.reward), next, r.terminated});
+    obs = std::move(next);
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  const double in_ns3 = env.WallSecondsInNs3() - ns3_before;
+  return {steps / wall, fidelity == "packet" ? 1.0 - in_ns3 / wall : 1.0};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS]\n");
+    return 2;
+  }
+  const rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
+  const int analytic_steps = argc > 2 ? std::stoi(argv[2]) : 2000;
+  const int packet_steps = argc > 3 ? std::stoi(argv[3]) : 50;
+  const Figures analytic = Run(s, "analytic", analytic_steps);
+  const Figures packet = Run(s, "packet", packet_steps);
+  std::printf("%-8s analytic %9.1f steps/s | packet %7.2f steps/s (%.0f ms simulated each), "
+              "%.2f %% of a packet step outside ns-3 | analytic/packet %.0fx\n",
+              s.name.c_str(), analytic.steps_per_s, packet.steps_per_s,
+              s.env.decision_interval * 1e3, 100.0 * packet.outside_ns3_share,
+              analytic.steps_per_s / packet.steps_per_s);
+  return 0;
+}

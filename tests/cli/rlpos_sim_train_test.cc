@@ -1,0 +1,94 @@
+// rlpos-sim train and position as a user runs them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/command.h"
+
+namespace rlpos::testing {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kScenarioB = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json";
+
+std::string Sim(const std::string& args) { return BuiltBinary("rlpos-sim") + " " + args; }
+
+class TrainCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    out_ = fs::temp_directory_path() / ("rlpos-train-" + std::to_string(::getpid()));
+    fs::remove_all(out_);
+  }
+  void TearDown() override { fs::remove_all(out_); }
+  fs::path out_;
+};
+
+TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
+  const auto r = RunCommand(Sim("train --scenario " + kScenarioB +
+                                " --fidelity analytic --seed 4 --episodes 2 --json --out " +
+                                out_.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto result = nlohmann::json::parse(r.out);
+  EXPECT_EQ(result["fidelity"], "analytic");
+  EXPECT_EQ(result["seed"], 4);
+  EXPECT_TRUE(fs::exists(out_ / "policy.pt"));
+  EXPECT_TRUE(fs::exists(out_ / "scenario.json"));
+  std::ifstream curve(out_ / "learning_curve.csv");
+  std::string line;
+  int rows = -1;  // header
+  while (std::getline(curve, line)) ++rows;
+  EXPECT_EQ(rows, 3);  // 2 training episodes + 1 evaluation
+  EXPECT_NE(r.err.find("episode 3/3 (eval)"), std::string::npos) << r.err;
+
+  const auto p = RunCommand(Sim("position --scenario " + kScenarioB +
+                                " --positioner rl --json --policy " + out_.string()));
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_EQ(nlohmann::json::parse(p.out)["position"], result["position"]);
+
+  // An existing output folder is refused, and left as it was.
+  const auto again = RunCommand(Sim("train --scenario " + kScenarioB +
+                                    " --fidelity analytic --episodes 1 --out " + out_.string()));
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("--out: " + out_.string() + " already exists"), std::string::npos)
+      << again.err;
+  EXPECT_TRUE(fs::exists(out_ / "policy.pt"));
+}
+
+TEST_F(TrainCommand, BadInputs) {
+  const auto no_policy = RunCommand(Sim("position --scenario " + kScenarioB + " --positioner rl"));
+  EXPECT_EQ(no_policy.exit_code, 2);
+  EXPECT_NE(no_policy.err.find("--policy: is required for the rl positioner"), std::string::npos)
+      << no_policy.err;
+  const auto missing = RunCommand(Sim("position --scenario " + kScenarioB +
+                                      " --positioner rl --policy /nonexistent"));
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("/nonexistent/result.json: cannot open file"), std::string::npos)
+      << missing.err;
+  const auto bad_agent = RunCommand(Sim("train --scenario " + kScenarioB +
+                                        " --set agent.gama=0.5 --out " + out_.string()));
+  EXPECT_EQ(bad_agent.exit_code, 2);
+  EXPECT_NE(bad_agent.err.find("/agent/gama: unknown key \"gama\"; did you mean \"gamma\"?"),
+            std::string::npos)
+      << bad_agent.err;
+  EXPECT_FALSE(fs::exists(out_));
+  EXPECT_FALSE(fs::exists(out_.string() + ".partial"));
+}
+
+TEST(PositionCommand, BaselineAndCentroid) {
+  const auto base = RunCommand(Sim("position --scenario " + kScenarioB +
+                                   " --positioner baseline --json"));
+  ASSERT_EQ(base.exit_code, 0) << base.err;
+  const auto b = nlohmann::json::parse(base.out);
+  EXPECT_EQ(b["position"], (nlohmann::json{50.0, 50.0, 25.0}));
+  EXPECT_EQ(b["n_los"], 1);
+  const auto centroid = RunCommand(Sim("position --scenario " + kScenarioB +
+                                       " --positioner centroid --json"));
+  ASSERT_EQ(centroid.exit_code, 0) << centroid.err;
+  // Equal demands: the plain centroid of the UEs, 5 m above the 30 m block.
+  EXPECT_EQ(nlohmann::json::parse(centroid.out)["position"], (nlohmann::json{47.5, 37.5, 35.0}));
+}
+
+}  // namespace
+}  // namespace rlpos::testing
