@@ -13,6 +13,7 @@
 #include <ns3/ipv4-address-helper.h>
 #include <ns3/mobility-helper.h>
 #include <ns3/mobility-model.h>
+#include <ns3/neighbor-cache-helper.h>
 #include <ns3/on-off-helper.h>
 #include <ns3/onoff-application.h>
 #include <ns3/packet-sink-helper.h>
@@ -270,6 +271,11 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Vec3& uav_position)
   ns3::Ipv4AddressHelper addresses;
   addresses.SetBase("10.1.0.0", "255.255.0.0");
   ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);  // UAV first: 10.1.0.1
+  if (scenario.wifi.mode == "adhoc") {
+    // No ARP on the air: in ad hoc mode unacknowledged broadcast ARP requests collide under
+    // saturated load and starve UEs for seconds. (AP/STA association sorts itself out.)
+    ns3::NeighborCacheHelper().PopulateNeighborCache();
+  }
   m.uav_device = ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(0));
   m.InstallApplications(interfaces.GetAddress(0));
   m.AssignStreams(wifi, devices);

@@ -1,0 +1,319 @@
+#include "campaign/campaign_spec.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "config/config_error.h"
+#include "config/did_you_mean.h"
+#include "config/object_reader.h"
+#include "scenario/scenario_parser.h"
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+
+// Far more runs than any study needs; a typo such as [1, 3000000] fails here, not in the DB.
+constexpr std::uint64_t kMaxRngRuns = 100000;
+
+std::uint64_t ReadUnsigned(const json& v, const std::string& path, std::uint64_t max) {
+  if (!v.is_number_integer()) {
+    throw ConfigError(path, "expected a non-negative integer, got " +
+                                (v.is_number() ? std::string("a fractional number") : TypeName(v)));
+  }
+  if (v.is_number_unsigned()) {
+    const auto x = v.get<std::uint64_t>();
+    if (x <= max) return x;
+    throw ConfigError(path, "must be <= " + std::to_string(max) + ", got " + std::to_string(x));
+  }
+  const auto x = v.get<long long>();
+  if (x < 0) throw ConfigError(path, "must not be negative, got " + std::to_string(x));
+  return static_cast<std::uint64_t>(x);
+}
+
+// A missing required key may just be misspelt: say so rather than only "is required".
+[[noreturn]] void MissingKey(const json& object, const std::string& parent, const std::string& key,
+                             const std::vector<std::string>& known, const std::string& hint) {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
+    if (!ClosestMatch(it.key(), {key}).empty()) {
+      throw ConfigError(JoinPath(parent, it.key()),
+                        "unknown key \"" + it.key() + "\"; did you mean \"" + key + "\"?");
+    }
+  }
+  throw ConfigError(JoinPath(parent, key), "is required" + hint);
+}
+
+const std::vector<std::string> kCampaignKeys{"name",  "scenarios", "rng_runs", "positioners",
+                                             "train", "eval",      "retries",  "job_timeout_s"};
+
+const json& NonEmptyArray(const json& v, const std::string& path) {
+  if (!v.is_array() || v.empty()) {
+    throw ConfigError(path, "expected a non-empty array, got " +
+                                (v.is_array() ? std::string("an empty array") : TypeName(v)));
+  }
+  return v;
+}
+
+// A sorted list of unique integers, rejecting duplicates (a duplicate is always a mistake here).
+std::vector<std::uint64_t> ReadUniqueList(const json& v, const std::string& path,
+                                          std::uint64_t max, bool sort) {
+  std::vector<std::uint64_t> out;
+  for (std::size_t i = 0; i < NonEmptyArray(v, path).size(); ++i) {
+    const std::uint64_t x = ReadUnsigned(v[i], JoinPath(path, i), max);
+    if (std::find(out.begin(), out.end(), x) != out.end()) {
+      throw ConfigError(JoinPath(path, i), std::to_string(x) + " is listed twice");
+    }
+    out.push_back(x);
+  }
+  if (sort) std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<std::uint64_t> ReadRngRuns(const json& v, const std::string& path) {
+  if (v.is_object()) {
+    ObjectReader r(v, path);
+    const json* list = r.Child("list");
+    if (!list) MissingKey(v, path, "list", {}, " ({\"list\": [1, 2, 5]})");
+    auto runs = ReadUniqueList(*list, r.PathOf("list"), UINT64_MAX, true);
+    r.Finish();
+    if (runs.size() > kMaxRngRuns) {
+      throw ConfigError(r.PathOf("list"), "more than " + std::to_string(kMaxRngRuns) + " runs");
+    }
+    return runs;
+  }
+  if (!v.is_array() || v.size() != 2) {
+    throw ConfigError(path, "expected [first, last] or {\"list\": [...]}, got " + TypeName(v));
+  }
+  const std::uint64_t first = ReadUnsigned(v[0], JoinPath(path, 0), UINT64_MAX);
+  const std::uint64_t last = ReadUnsigned(v[1], JoinPath(path, 1), UINT64_MAX);
+  if (last < first) throw ConfigError(path, "first must not be above last");
+  if (last - first >= kMaxRngRuns) {
+    throw ConfigError(path, "more than " + std::to_string(kMaxRngRuns) + " runs");
+  }
+  std::vector<std::uint64_t> runs;
+  for (std::uint64_t r = first; r <= last; ++r) runs.push_back(r);
+  return runs;
+}
+
+std::vector<std::string> ReadPositioners(const json& v, const std::string& path) {
+  const auto& all = AllPositioners();
+  std::vector<std::string> chosen;
+  for (std::size_t i = 0; i < NonEmptyArray(v, path).size(); ++i) {
+    const std::string item_path = JoinPath(path, i);
+    if (!v[i].is_string()) throw ConfigError(item_path, "expected a string, got " + TypeName(v[i]));
+    const std::string name = v[i].get<std::string>();
+    if (std::find(all.begin(), all.end(), name) == all.end()) {
+      std::string list;
+      for (const auto& a : all) list += (list.empty() ? "" : ", ") + a;
+      std::string message = "unknown positioner \"" + name + "\" (one of: " + list + ")";
+      const std::string hint = ClosestMatch(name, all);
+      if (!hint.empty()) message += "; did you mean \"" + hint + "\"?";
+      throw ConfigError(item_path, message);
+    }
+    if (std::find(chosen.begin(), chosen.end(), name) != chosen.end()) {
+      throw ConfigError(item_path, "\"" + name + "\" is listed twice");
+    }
+    chosen.push_back(name);
+  }
+  // Canonical order: the listing order changes no job, so it must not change the campaign id.
+  std::vector<std::string> ordered;
+  for (const auto& a : all) {
+    if (std::find(chosen.begin(), chosen.end(), a) != chosen.end()) ordered.push_back(a);
+  }
+  return ordered;
+}
+
+TrainSettings ReadTrain(const json& v) {
+  ObjectReader r(v, "/train");
+  TrainSettings train;
+  if (const json* seeds = r.Child("seeds")) {
+    // Not sorted: the first seed is the one whose evals get the plain "rl" labels.
+    train.seeds = ReadUniqueList(*seeds, r.PathOf("seeds"), UINT32_MAX, false);
+  }
+  train.fidelity = r.String("fidelity", train.fidelity, {"analytic", "packet"});
+  if (r.Has("episodes")) train.episodes = static_cast<int>(r.Integer("episodes", 0, 1, 1000000));
+  r.Finish();
+  return train;
+}
+
+EvalSettings ReadEval(const json& v) {
+  ObjectReader r(v, "/eval");
+  EvalSettings eval;
+  if (r.Has("duration")) eval.duration = r.Number("duration", 0, Positive());
+  if (r.Has("warmup")) eval.warmup = r.Number("warmup", 0, NonNegative());
+  r.Finish();
+  if (eval.duration && eval.warmup && *eval.warmup >= *eval.duration) {
+    throw ConfigError("/eval/warmup", "must be shorter than the duration");
+  }
+  return eval;
+}
+
+std::string NumberText(double x) { return json(x).dump(); }
+
+std::vector<std::string> EvalOverrides(const EvalSettings& eval) {
+  std::vector<std::string> out;
+  if (eval.duration) out.push_back("simulation.duration=" + NumberText(*eval.duration));
+  if (eval.warmup) out.push_back("simulation.warmup=" + NumberText(*eval.warmup));
+  return out;
+}
+
+CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
+                                   const std::filesystem::path& base_dir,
+                                   const EvalSettings& eval) {
+  CampaignScenario entry;
+  std::string file_path = path;  // where a problem with the file itself is reported
+  std::string set_path;
+  if (v.is_string()) {
+    entry.file = v.get<std::string>();
+  } else if (v.is_object()) {
+    ObjectReader r(v, path);
+    if (!r.Has("file")) MissingKey(v, path, "file", {"set"}, " (the scenario JSON)");
+    entry.file = r.String("file", "");
+    file_path = r.PathOf("file");
+    if (const json* set = r.Child("set")) {
+      set_path = r.PathOf("set");
+      if (!set->is_array()) throw ConfigError(set_path, "expected an array, got " + TypeName(*set));
+      for (std::size_t i = 0; i < set->size(); ++i) {
+        if (!(*set)[i].is_string()) {
+          throw ConfigError(JoinPath(set_path, i),
+                            "expected \"path=value\", got " + TypeName((*set)[i]));
+        }
+        entry.overrides.push_back((*set)[i].get<std::string>());
+      }
+    }
+    r.Finish();
+  } else {
+    throw ConfigError(path, "expected a file name or {\"file\", \"set\"}, got " + TypeName(v));
+  }
+  if (entry.file.empty()) throw ConfigError(file_path, "the file name is empty");
+
+  const std::filesystem::path file(entry.file);
+  entry.path = (file.is_absolute() ? file : std::filesystem::absolute(base_dir / file))
+                   .lexically_normal()
+                   .string();
+  std::error_code status_error;
+  if (!std::filesystem::is_regular_file(entry.path, status_error)) {
+    throw ConfigError(file_path, "scenario file \"" + entry.path + "\" does not exist");
+  }
+  try {
+    entry.document = ReadJsonFile(entry.path);
+  } catch (const ConfigError& e) {
+    throw ConfigError(file_path, "scenario file \"" + entry.path + "\": " + e.problem());
+  }
+
+  // Validate what the evals will run: the campaign's eval settings, then the entry's own
+  // overrides (which win, as later --set arguments do on the rlpos-sim command line).
+  json effective = entry.document;
+  try {
+    ApplyOverrides(effective, EvalOverrides(eval));
+  } catch (const ConfigError& e) {
+    throw ConfigError(path, entry.file + ": " + e.describe());  // e.g. not a JSON object
+  }
+  for (std::size_t i = 0; i < entry.overrides.size(); ++i) {
+    try {
+      ApplyOverrides(effective, {entry.overrides[i]});
+    } catch (const ConfigError& e) {
+      throw ConfigError(JoinPath(set_path, i), e.describe());
+    }
+  }
+  try {
+    entry.scenario = ParseScenario(effective);
+  } catch (const ConfigError& e) {
+    throw ConfigError(path, entry.file + ": " + e.describe());
+  }
+  if (entry.scenario.name.empty() || entry.scenario.name.find('/') != std::string::npos) {
+    // Job keys are "<kind>/<scenario>/...": a slash would make them ambiguous.
+    throw ConfigError(path, entry.file + ": scenario name \"" + entry.scenario.name +
+                                "\" must be non-empty and contain no '/'");
+  }
+  return entry;
+}
+
+}  // namespace
+
+const std::vector<std::string>& AllPositioners() {
+  static const std::vector<std::string> all{"baseline", "offsets", "centroid", "oracle", "rl"};
+  return all;
+}
+
+bool CampaignSpec::Uses(const std::string& positioner) const {
+  return std::find(positioners.begin(), positioners.end(), positioner) != positioners.end();
+}
+
+bool CampaignSpec::NeedsTraining() const { return Uses("rl") || Uses("offsets"); }
+
+CampaignSpec ParseCampaign(const json& document, const std::string& base_dir) {
+  ObjectReader r(document, "");
+  CampaignSpec spec;
+  if (!r.Has("name")) MissingKey(document, "", "name", kCampaignKeys, "");
+  spec.name = r.String("name", "");
+  if (spec.name.empty()) throw ConfigError("/name", "must not be empty");
+
+  if (const json* train = r.Child("train")) spec.train = ReadTrain(*train);
+  if (const json* eval = r.Child("eval")) spec.eval = ReadEval(*eval);
+
+  const json* scenarios = r.Child("scenarios");
+  if (!scenarios) {
+    MissingKey(document, "", "scenarios", kCampaignKeys, " (a list of scenario files)");
+  }
+  NonEmptyArray(*scenarios, "/scenarios");
+  for (std::size_t i = 0; i < scenarios->size(); ++i) {
+    const std::string path = JoinPath("/scenarios", i);
+    CampaignScenario entry = ReadScenarioEntry((*scenarios)[i], path, base_dir, spec.eval);
+    for (std::size_t j = 0; j < spec.scenarios.size(); ++j) {
+      if (spec.scenarios[j].scenario.name == entry.scenario.name) {
+        throw ConfigError(path, "scenario name \"" + entry.scenario.name +
+                                    "\" is already used by /scenarios/" + std::to_string(j) +
+                                    "; rename one with \"set\": [\"name=...\"]");
+      }
+    }
+    spec.scenarios.push_back(std::move(entry));
+  }
+
+  const json* runs = r.Child("rng_runs");
+  if (!runs) {
+    MissingKey(document, "", "rng_runs", kCampaignKeys, " ([first, last] or {\"list\": [...]})");
+  }
+  spec.rng_runs = ReadRngRuns(*runs, "/rng_runs");
+
+  if (const json* positioners = r.Child("positioners")) {
+    spec.positioners = ReadPositioners(*positioners, "/positioners");
+  } else {
+    spec.positioners = AllPositioners();
+  }
+  spec.retries = static_cast<int>(r.Integer("retries", spec.retries, 0, 100));
+  spec.job_timeout_s = r.Number("job_timeout_s", spec.job_timeout_s, Positive());
+  r.Finish();
+  return spec;
+}
+
+CampaignSpec ReadCampaignFile(const std::string& file) {
+  const json document = ReadJsonFile(file);
+  const std::filesystem::path folder = std::filesystem::path(file).parent_path();
+  return ParseCampaign(document, folder.empty() ? "." : folder.string());
+}
+
+json ToJson(const CampaignSpec& spec) {
+  json scenarios = json::array();
+  for (const auto& s : spec.scenarios) {
+    scenarios.push_back({{"file", s.file}, {"set", s.overrides}, {"document", s.document}});
+  }
+  json train = {
+      {"seeds", spec.train.seeds}, {"fidelity", spec.train.fidelity}, {"episodes", nullptr}};
+  if (spec.train.episodes) train["episodes"] = *spec.train.episodes;
+  json eval = {{"duration", nullptr}, {"warmup", nullptr}};
+  if (spec.eval.duration) eval["duration"] = *spec.eval.duration;
+  if (spec.eval.warmup) eval["warmup"] = *spec.eval.warmup;
+  return {{"name", spec.name},
+          {"scenarios", scenarios},
+          {"rng_runs", spec.rng_runs},
+          {"positioners", spec.positioners},
+          {"train", train},
+          {"eval", eval},
+          {"retries", spec.retries},
+          {"job_timeout_s", spec.job_timeout_s}};
+}
+
+}  // namespace rlpos

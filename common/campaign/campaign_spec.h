@@ -1,0 +1,65 @@
+#pragma once
+// The campaign model: which scenarios, runs and positioners to evaluate, and how. Parsed from a
+// campaign JSON with every field validated (ConfigError naming the JSON path); each scenario is
+// parsed and validated too, so a campaign never reaches the workers with a broken scenario.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+// The positioners a campaign may select, in canonical (report) order. "offsets" are the paper's
+// positions 1-5 around the RL position; "rl" is the trained agent's final greedy position.
+const std::vector<std::string>& AllPositioners();
+
+struct CampaignScenario {
+  std::string file;                    // as written in the campaign
+  std::string path;                    // absolute path handed to rlpos-sim (--scenario)
+  std::vector<std::string> overrides;  // "set": handed to rlpos-sim as --set, in order
+  nlohmann::json document;             // the scenario file as read (before overrides)
+  Scenario scenario;                   // parsed with the eval settings and overrides applied
+};
+
+struct TrainSettings {
+  std::vector<std::uint64_t> seeds{1};  // the first seed gives the plain "rl"/"offsetK" labels
+  std::string fidelity = "analytic";    // analytic | packet
+  std::optional<int> episodes;          // passed as --set agent.train_episodes=N when set
+};
+
+struct EvalSettings {
+  std::optional<double> duration;  // s; unset: the scenario's simulation.duration
+  std::optional<double> warmup;    // s; unset: the scenario's simulation.warmup
+};
+
+struct CampaignSpec {
+  std::string name;
+  std::vector<CampaignScenario> scenarios;
+  std::vector<std::uint64_t> rng_runs;   // sorted, unique
+  std::vector<std::string> positioners;  // canonical order, unique
+  TrainSettings train;
+  EvalSettings eval;
+  int retries = 2;               // extra attempts after the first
+  double job_timeout_s = 600.0;  // a running job older than this is failed
+
+  bool Uses(const std::string& positioner) const;
+  // True when train jobs are needed ("rl" or "offsets" selected).
+  bool NeedsTraining() const;
+};
+
+// `base_dir` is the folder scenario paths are relative to. Throws ConfigError.
+CampaignSpec ParseCampaign(const nlohmann::json& document, const std::string& base_dir);
+
+// Reads a campaign file; scenario paths are relative to its folder. Throws ConfigError; like
+// ReadJsonFile, errors about the file itself have an empty path (callers prefix the file name).
+CampaignSpec ReadCampaignFile(const std::string& file);
+
+// The canonical resolved campaign: every default explicit, runs and positioners sorted, each
+// scenario's document included, no absolute path (so the campaign id does not depend on where
+// the repository is checked out). This is what the campaign id hashes and the store keeps.
+nlohmann::json ToJson(const CampaignSpec& spec);
+
+}  // namespace rlpos

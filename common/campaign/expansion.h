@@ -1,0 +1,36 @@
+#pragma once
+// Campaign -> jobs, deterministically: the same campaign gives the same jobs, ids and order.
+//
+// Per scenario (in campaign order):
+//   train/<scenario>/seed<N>            one per train seed, if "rl" or "offsets" is selected
+//   position/<scenario>/<positioner>    baseline, centroid, oracle (those selected)
+//   eval/<scenario>/<label>/run<R>      per RngRun, per label, depending on the job giving the
+//                                       position: baseline|centroid|oracle on their position job;
+//                                       rl and offset1..offset5 on the train job.
+// Several train seeds: every seed gets its own rl/offset evals. The first seed's labels are the
+// plain "rl", "offset1".."offset5" (the paper's curves); later seeds' carry "@seed<N>"
+// ("rl@seed2", "offset3@seed2"), so adding a seed never renames the first seed's results.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "campaign/campaign_spec.h"
+#include "campaign/job.h"
+
+namespace rlpos {
+
+struct ExpandedCampaign {
+  std::string id;
+  std::string name;
+  nlohmann::json spec;  // ToJson(CampaignSpec): what the id hashes
+  int max_attempts = 3;  // 1 + retries
+  double job_timeout_s = 600.0;
+  std::vector<Job> jobs;  // every dependency comes before its dependents
+};
+
+ExpandedCampaign ExpandCampaign(const CampaignSpec& spec);
+
+// The eval label of offset position k (1..5) or of "rl" (k = 0) for the seed at `seed_index`.
+std::string EvalLabel(int k, std::size_t seed_index, std::uint64_t seed);
+
+}  // namespace rlpos

@@ -1,0 +1,23 @@
+#include "campaign/job.h"
+
+#include <stdexcept>
+
+namespace rlpos {
+
+const char* ToString(JobKind kind) {
+  switch (kind) {
+    case JobKind::kTrain: return "train";
+    case JobKind::kPosition: return "position";
+    case JobKind::kEval: return "eval";
+  }
+  return "?";
+}
+
+JobKind ParseJobKind(const std::string& text) {
+  if (text == "train") return JobKind::kTrain;
+  if (text == "position") return JobKind::kPosition;
+  if (text == "eval") return JobKind::kEval;
+  throw std::invalid_argument("unknown job kind \"" + text + "\"");
+}
+
+}  // namespace rlpos

@@ -1,0 +1,38 @@
+#include "campaign/job_argv.h"
+
+#include <charconv>
+#include <system_error>
+
+namespace rlpos {
+
+std::string FormatNumber(double x) {
+  // Shortest text that reads back as x: "50", "44.5", "0.1" (not "50.000000" nor "5e+01").
+  char buffer[32];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return error == std::errc() ? std::string(buffer, end) : std::to_string(x);
+}
+
+std::string FormatPosition(const Vec3& p) {
+  return FormatNumber(p.x) + "," + FormatNumber(p.y) + "," + FormatNumber(p.z);
+}
+
+int BindPlaceholder(std::vector<std::string>& argv, const std::string& placeholder,
+                    const std::string& value) {
+  int bound = 0;
+  for (auto& arg : argv) {
+    if (arg == placeholder) {
+      arg = value;
+      ++bound;
+    }
+  }
+  return bound;
+}
+
+bool HasUnboundPlaceholder(const std::vector<std::string>& argv) {
+  for (const auto& arg : argv) {
+    if (arg == kPositionPlaceholder || arg == kOutDirPlaceholder) return true;
+  }
+  return false;
+}
+
+}  // namespace rlpos

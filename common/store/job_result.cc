@@ -1,0 +1,72 @@
+#include "store/job_result.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+
+const json& Field(const json& result, const char* key) {
+  if (!result.is_object()) throw std::invalid_argument("result is not a JSON object");
+  if (!result.contains(key)) {
+    throw std::invalid_argument(std::string("result has no \"") + key + "\"");
+  }
+  return result[key];
+}
+
+double Finite(const json& v, const char* key) {
+  if (!v.is_number() || !std::isfinite(v.get<double>())) {
+    throw std::invalid_argument(std::string("result \"") + key + "\" is not a finite number");
+  }
+  return v.get<double>();
+}
+
+std::optional<double> NullableNumber(const json& result, const char* key) {
+  const json& v = Field(result, key);
+  if (v.is_null()) return std::nullopt;
+  return Finite(v, key);
+}
+
+int Count(const json& result, const char* key) {
+  const json& v = Field(result, key);
+  if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 1000000) {
+    throw std::invalid_argument(std::string("result \"") + key + "\" is not a count");
+  }
+  return v.get<int>();
+}
+
+}  // namespace
+
+Vec3 ProducedPosition(const json& result) {
+  const json& p = Field(result, "position");
+  if (!p.is_array() || p.size() != 3) {
+    throw std::invalid_argument("result \"position\" is not [x, y, z]");
+  }
+  return {Finite(p[0], "position"), Finite(p[1], "position"), Finite(p[2], "position")};
+}
+
+EvalResult ParseEvalResult(const json& result) {
+  EvalResult r;
+  r.position = ProducedPosition(result);
+  r.aggregate_throughput_mbps =
+      Finite(Field(result, "aggregate_throughput_mbps"), "aggregate_throughput_mbps");
+  r.mean_delay_ms = NullableNumber(result, "mean_delay_ms");
+  r.loss_ratio = NullableNumber(result, "loss_ratio");
+  r.min_snr_db = NullableNumber(result, "min_snr_db");
+  r.n_los = Count(result, "n_los");
+  r.n_ues = Count(result, "n_ues");
+  r.demands_met = Count(result, "demands_met");
+  if (result.contains("run")) {
+    const json& run = result["run"];
+    if (!run.is_number_integer() || run.get<long long>() < 0) {
+      throw std::invalid_argument("result \"run\" is not an RngRun");
+    }
+    r.run = run.get<std::uint64_t>();
+  }
+  return r;
+}
+
+}  // namespace rlpos

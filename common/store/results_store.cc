@@ -1,0 +1,518 @@
+#include "store/results_store.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "campaign/job_argv.h"
+#include "store/job_result.h"
+#include "store/schema.h"
+#include "store/sqlite_db.h"
+#include "store/store_error.h"
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+
+double SystemNow() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+std::vector<std::string> ArgvFromJson(const std::string& text, const std::string& file) {
+  try {
+    return json::parse(text).get<std::vector<std::string>>();
+  } catch (const json::exception& e) {
+    throw StoreError(file, std::string("malformed argv_json: ") + e.what());
+  }
+}
+
+CampaignProgress ReadProgress(const Statement& row) {
+  CampaignProgress p;
+  p.campaign_id = row.Text(0);
+  p.name = row.Text(1);
+  p.state = row.Text(2);
+  p.total = static_cast<int>(row.Int(3));
+  p.pending = static_cast<int>(row.Int(4));
+  p.ready = static_cast<int>(row.Int(5));
+  p.running = static_cast<int>(row.Int(6));
+  p.succeeded = static_cast<int>(row.Int(7));
+  p.failed = static_cast<int>(row.Int(8));
+  p.cancelled = static_cast<int>(row.Int(9));
+  return p;
+}
+
+constexpr const char* kProgressColumns =
+    "SELECT campaign_id, name, state, total, pending, ready, running, succeeded, failed, "
+    "cancelled FROM v_campaign_progress";
+
+}  // namespace
+
+const char* ToString(JobUpdate update) {
+  switch (update) {
+    case JobUpdate::kSucceeded: return "succeeded";
+    case JobUpdate::kRetrying: return "retrying";
+    case JobUpdate::kFailed: return "failed";
+    case JobUpdate::kStale: return "stale";
+    case JobUpdate::kUnknown: return "unknown";
+  }
+  return "?";
+}
+
+ResultsStore::ResultsStore(const std::string& file, StoreOptions options)
+    : options_(std::move(options)) {
+  if (!options_.clock) options_.clock = SystemNow;
+  db_ = std::make_unique<Database>(file, options_.read_only, options_.busy_timeout_ms);
+  if (!options_.read_only) {
+    // WAL: readers (status, report) never block the coordinator's writes, nor it them.
+    Statement mode = db_->Prepare("PRAGMA journal_mode = WAL");
+    if (!mode.Step() || mode.Text(0) != "wal") {
+      throw StoreError(file, "cannot switch to WAL mode");
+    }
+  }
+  db_->Exec("PRAGMA foreign_keys = ON");
+  MigrateSchema(*db_);
+}
+
+ResultsStore::~ResultsStore() = default;
+
+const std::string& ResultsStore::file() const { return db_->file(); }
+
+int ResultsStore::SchemaVersion() { return ReadSchemaVersion(*db_); }
+
+double ResultsStore::Now() const { return options_.clock(); }
+
+SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
+  Transaction transaction(*db_);
+  SubmitResult result{campaign.id, false, 0};
+  const std::string spec_text = campaign.spec.dump();
+  Statement existing = db_->Prepare("SELECT spec_json FROM campaigns WHERE id = ?");
+  existing.Bind(campaign.id);
+  if (existing.Step()) {
+    if (existing.Text(0) != spec_text) {
+      // 48 bits of FNV-1a make this practically impossible; refuse rather than mix campaigns.
+      throw StoreError(file(), "campaign id " + campaign.id + " is taken by another campaign");
+    }
+    Statement count = db_->Prepare("SELECT COUNT(*) FROM jobs WHERE campaign_id = ?");
+    count.Bind(campaign.id).Step();
+    result.jobs = static_cast<int>(count.Int(0));
+    return result;  // the transaction rolls back: nothing was written
+  }
+
+  const double now = Now();
+  db_->Prepare(
+         "INSERT INTO campaigns (id, name, spec_json, created_at, state, max_attempts, "
+         "job_timeout_s) VALUES (?, ?, ?, ?, 'active', ?, ?)")
+      .Bind(campaign.id)
+      .Bind(campaign.name)
+      .Bind(spec_text)
+      .Bind(now)
+      .Bind(campaign.max_attempts)
+      .Bind(campaign.job_timeout_s)
+      .Run();
+  Statement insert = db_->Prepare(
+      "INSERT INTO jobs (id, campaign_id, seq, kind, key, scenario, label, rng_run, train_seed, "
+      "depends_on, state, attempt, max_attempts, timeout_s, created_at, argv_json, "
+      "position_rule_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 1, ?, ?, ?, ?, ?)");
+  int seq = 0;
+  for (const Job& job : campaign.jobs) {
+    insert.Reset();
+    insert.Bind(job.id)
+        .Bind(campaign.id)
+        .Bind(seq++)
+        .Bind(ToString(job.kind))
+        .Bind(job.key)
+        .Bind(job.scenario)
+        .Bind(job.label)
+        .Bind(job.rng_run)
+        .Bind(job.train_seed);
+    if (job.depends_on.empty()) {
+      insert.BindNull().Bind("ready");
+    } else {
+      insert.Bind(job.depends_on).Bind("pending");
+    }
+    insert.Bind(campaign.max_attempts)
+        .Bind(campaign.job_timeout_s)
+        .Bind(now)
+        .Bind(json(job.argv).dump())
+        .Bind(ToJson(job.position).dump())
+        .Run();
+  }
+  transaction.Commit();
+  result.created = true;
+  result.jobs = static_cast<int>(campaign.jobs.size());
+  return result;
+}
+
+std::vector<ReadyJob> ResultsStore::ListReady(std::size_t limit) {
+  Statement select = db_->Prepare(
+      "SELECT j.id, j.campaign_id, j.key, j.kind, j.attempt, j.timeout_s, j.argv_json "
+      "FROM jobs j JOIN campaigns c ON c.id = j.campaign_id "
+      "WHERE j.state = 'ready' AND c.state = 'active' "
+      "ORDER BY c.created_at, c.id, j.seq LIMIT ?");
+  select.Bind(limit == 0 ? std::int64_t{-1} : static_cast<std::int64_t>(limit));
+  std::vector<ReadyJob> out;
+  while (select.Step()) {
+    ReadyJob job;
+    job.id = select.Text(0);
+    job.campaign_id = select.Text(1);
+    job.key = select.Text(2);
+    job.kind = ParseJobKind(select.Text(3));
+    job.attempt = static_cast<int>(select.Int(4));
+    job.timeout_s = select.Double(5);
+    job.argv = ArgvFromJson(select.Text(6), file());
+    out.push_back(std::move(job));
+  }
+  return out;
+}
+
+bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& worker_id,
+                               int attempt) {
+  db_->Prepare(
+         "UPDATE jobs SET state = 'running', worker_id = ?, started_at = ?, finished_at = NULL "
+         "WHERE id = ? AND attempt = ? AND state = 'ready'")
+      .Bind(worker_id)
+      .Bind(Now())
+      .Bind(job_id)
+      .Bind(attempt)
+      .Run();
+  return db_->Changes() == 1;
+}
+
+JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt,
+                                      const json& result) {
+  Transaction transaction(*db_);
+  Statement select = db_->Prepare(
+      "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run "
+      "FROM jobs WHERE id = ?");
+  select.Bind(job_id);
+  if (!select.Step()) return JobUpdate::kUnknown;
+  if (select.Text(1) != "running" || select.Int(2) != attempt) return JobUpdate::kStale;
+  const JobKind kind = ParseJobKind(select.Text(0));
+  const int max_attempts = static_cast<int>(select.Int(3));
+  const std::string campaign_id = select.Text(4);
+  const std::string scenario = select.Text(5);
+  const std::string label = select.Text(6);
+  const std::optional<std::int64_t> rng_run = select.OptionalInt(7);
+  select.Reset();  // done reading: the row is about to change
+
+  // Check the result before anything is written: a malformed one is a failed attempt.
+  EvalResult eval;
+  Vec3 produced;
+  try {
+    if (kind == JobKind::kEval) {
+      eval = ParseEvalResult(result);
+      if (eval.run && rng_run && static_cast<std::int64_t>(*eval.run) != *rng_run) {
+        throw std::invalid_argument("result is of RngRun " + std::to_string(*eval.run) +
+                                    ", the job's is " + std::to_string(*rng_run));
+      }
+    } else {
+      produced = ProducedPosition(result);
+    }
+  } catch (const std::invalid_argument& e) {
+    const JobUpdate update =
+        FailAttempt(job_id, attempt, max_attempts, std::string("malformed result: ") + e.what());
+    UpdateCampaignState(campaign_id);
+    transaction.Commit();
+    return update;
+  }
+
+  db_->Prepare(
+         "UPDATE jobs SET state = 'succeeded', finished_at = ?, result_json = ?, error = NULL "
+         "WHERE id = ? AND attempt = ? AND state = 'running'")
+      .Bind(Now())
+      .Bind(result.dump())
+      .Bind(job_id)
+      .Bind(attempt)
+      .Run();
+
+  if (kind == JobKind::kEval) {
+    // job_id is the primary key: a second row for the same job cannot exist.
+    db_->Prepare(
+           "INSERT INTO metrics (job_id, campaign_id, scenario, label, rng_run, "
+           "aggregate_throughput_mbps, mean_delay_ms, loss_ratio, n_los, n_ues, demands_met, "
+           "min_snr_db, x, y, z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+        .Bind(job_id)
+        .Bind(campaign_id)
+        .Bind(scenario)
+        .Bind(label)
+        .Bind(rng_run.value_or(0))
+        .Bind(eval.aggregate_throughput_mbps)
+        .Bind(eval.mean_delay_ms)
+        .Bind(eval.loss_ratio)
+        .Bind(eval.n_los)
+        .Bind(eval.n_ues)
+        .Bind(eval.demands_met)
+        .Bind(eval.min_snr_db)
+        .Bind(eval.position.x)
+        .Bind(eval.position.y)
+        .Bind(eval.position.z)
+        .Run();
+  } else {
+    // Bind each dependent's position now, so its argv_json shows exactly what it will run.
+    Statement dependents =
+        db_->Prepare("SELECT id, argv_json, position_rule_json FROM jobs WHERE depends_on = ?");
+    dependents.Bind(job_id);
+    std::vector<std::pair<std::string, std::vector<std::string>>> bound;
+    while (dependents.Step()) {
+      std::vector<std::string> argv = ArgvFromJson(dependents.Text(1), file());
+      PositionRule rule;
+      try {
+        rule = PositionRuleFromJson(json::parse(dependents.Text(2)));
+      } catch (const std::exception& e) {
+        throw StoreError(file(), "job " + dependents.Text(0) + ": bad position rule: " + e.what());
+      }
+      const Vec3 position = ApplyPositionRule(rule, produced);
+      BindPlaceholder(argv, kPositionPlaceholder, FormatPosition(position));
+      bound.emplace_back(dependents.Text(0), std::move(argv));
+    }
+    Statement update = db_->Prepare(
+        "UPDATE jobs SET argv_json = ?, "
+        "state = CASE state WHEN 'pending' THEN 'ready' ELSE state END WHERE id = ?");
+    for (const auto& [id, argv] : bound) {
+      update.Reset();
+      update.Bind(json(argv).dump()).Bind(id).Run();
+    }
+  }
+  UpdateCampaignState(campaign_id);
+  transaction.Commit();
+  return JobUpdate::kSucceeded;
+}
+
+JobUpdate ResultsStore::RecordFailure(const std::string& job_id, int attempt,
+                                      const std::string& error) {
+  Transaction transaction(*db_);
+  Statement select =
+      db_->Prepare("SELECT state, attempt, max_attempts, campaign_id FROM jobs WHERE id = ?");
+  select.Bind(job_id);
+  if (!select.Step()) return JobUpdate::kUnknown;
+  if (select.Text(0) != "running" || select.Int(1) != attempt) return JobUpdate::kStale;
+  const int max_attempts = static_cast<int>(select.Int(2));
+  const std::string campaign_id = select.Text(3);
+  select.Reset();
+  const JobUpdate update = FailAttempt(job_id, attempt, max_attempts, error);
+  UpdateCampaignState(campaign_id);
+  transaction.Commit();
+  return update;
+}
+
+JobUpdate ResultsStore::FailAttempt(const std::string& job_id, int attempt, int max_attempts,
+                                    const std::string& error) {
+  const double now = Now();
+  if (attempt < max_attempts) {
+    // The last error stays visible while the job waits for its next attempt.
+    db_->Prepare(
+           "UPDATE jobs SET state = 'ready', attempt = attempt + 1, worker_id = NULL, "
+           "error = ?, finished_at = ? WHERE id = ? AND attempt = ?")
+        .Bind(error)
+        .Bind(now)
+        .Bind(job_id)
+        .Bind(attempt)
+        .Run();
+    return JobUpdate::kRetrying;
+  }
+  db_->Prepare(
+         "UPDATE jobs SET state = 'failed', error = ?, finished_at = ? "
+         "WHERE id = ? AND attempt = ?")
+      .Bind(error)
+      .Bind(now)
+      .Bind(job_id)
+      .Bind(attempt)
+      .Run();
+  // Jobs waiting for this one's position can never run: fail them now, so the campaign can
+  // finish and RetryFailed brings them back together with it.
+  db_->Prepare(
+         "UPDATE jobs SET state = 'failed', error = ?, finished_at = ? "
+         "WHERE depends_on = ? AND state = 'pending'")
+      .Bind("dependency " + job_id + " failed")
+      .Bind(now)
+      .Bind(job_id)
+      .Run();
+  return JobUpdate::kFailed;
+}
+
+void ResultsStore::UpdateCampaignState(const std::string& campaign_id) {
+  db_->Prepare(
+         "UPDATE campaigns SET state = 'finished' WHERE id = ? AND state = 'active' AND NOT "
+         "EXISTS (SELECT 1 FROM jobs WHERE campaign_id = ? AND state IN "
+         "('pending', 'ready', 'running'))")
+      .Bind(campaign_id)
+      .Bind(campaign_id)
+      .Run();
+}
+
+void ResultsStore::RequireCampaign(const std::string& campaign_id) {
+  Statement select = db_->Prepare("SELECT 1 FROM campaigns WHERE id = ?");
+  select.Bind(campaign_id);
+  if (!select.Step()) throw StoreError(file(), "no campaign \"" + campaign_id + "\"");
+}
+
+std::vector<std::string> ResultsStore::RequeueWorker(const std::string& worker_id) {
+  Transaction transaction(*db_);
+  Statement select = db_->Prepare(
+      "SELECT id, attempt, max_attempts, campaign_id FROM jobs "
+      "WHERE worker_id = ? AND state = 'running' ORDER BY id");
+  select.Bind(worker_id);
+  struct Held {
+    std::string id;
+    int attempt, max_attempts;
+    std::string campaign_id;
+  };
+  std::vector<Held> held;
+  while (select.Step()) {
+    held.push_back({select.Text(0), static_cast<int>(select.Int(1)),
+                    static_cast<int>(select.Int(2)), select.Text(3)});
+  }
+  std::vector<std::string> ids;
+  for (const auto& h : held) {
+    // Charged as an attempt: a job that keeps killing its worker must not loop forever.
+    FailAttempt(h.id, h.attempt, h.max_attempts, "worker " + worker_id + " was lost");
+    UpdateCampaignState(h.campaign_id);
+    ids.push_back(h.id);
+  }
+  transaction.Commit();
+  return ids;
+}
+
+std::vector<RunningJob> ResultsStore::ListRunning() {
+  Statement select = db_->Prepare(
+      "SELECT id, campaign_id, worker_id, attempt, started_at, timeout_s FROM jobs "
+      "WHERE state = 'running' ORDER BY started_at, id");
+  std::vector<RunningJob> out;
+  while (select.Step()) {
+    out.push_back({select.Text(0), select.Text(1), select.Text(2),
+                   static_cast<int>(select.Int(3)), select.Double(4), select.Double(5)});
+  }
+  return out;
+}
+
+std::vector<RunningJob> ResultsStore::CancelCampaign(const std::string& campaign_id) {
+  Transaction transaction(*db_);
+  RequireCampaign(campaign_id);
+  Statement running = db_->Prepare(
+      "SELECT id, campaign_id, worker_id, attempt, started_at, timeout_s FROM jobs "
+      "WHERE campaign_id = ? AND state = 'running' ORDER BY id");
+  running.Bind(campaign_id);
+  std::vector<RunningJob> stopped;
+  while (running.Step()) {
+    stopped.push_back({running.Text(0), running.Text(1), running.Text(2),
+                       static_cast<int>(running.Int(3)), running.Double(4), running.Double(5)});
+  }
+  db_->Prepare(
+         "UPDATE jobs SET state = 'cancelled', finished_at = ? "
+         "WHERE campaign_id = ? AND state IN ('pending', 'ready', 'running')")
+      .Bind(Now())
+      .Bind(campaign_id)
+      .Run();
+  db_->Prepare("UPDATE campaigns SET state = 'cancelled' WHERE id = ? AND state = 'active'")
+      .Bind(campaign_id)
+      .Run();
+  transaction.Commit();
+  return stopped;
+}
+
+int ResultsStore::RetryFailed(const std::string& campaign_id) {
+  Transaction transaction(*db_);
+  RequireCampaign(campaign_id);
+  // A job whose dependency has not succeeded (it is being retried too) waits as pending.
+  // attempt + 1 makes any late result of the old attempt stale.
+  db_->Prepare(
+         "UPDATE jobs SET "
+         "state = CASE WHEN depends_on IS NULL OR "
+         "  (SELECT d.state FROM jobs d WHERE d.id = jobs.depends_on) = 'succeeded' "
+         "  THEN 'ready' ELSE 'pending' END, "
+         "max_attempts = attempt + (SELECT c.max_attempts FROM campaigns c "
+         "  WHERE c.id = jobs.campaign_id), "
+         "attempt = attempt + 1, worker_id = NULL, error = NULL, started_at = NULL, "
+         "finished_at = NULL "
+         "WHERE campaign_id = ? AND state IN ('failed', 'cancelled')")
+      .Bind(campaign_id)
+      .Run();
+  const int revived = db_->Changes();
+  if (revived > 0) {
+    db_->Prepare("UPDATE campaigns SET state = 'active' WHERE id = ?").Bind(campaign_id).Run();
+  }
+  transaction.Commit();
+  return revived;
+}
+
+CampaignProgress ResultsStore::Progress(const std::string& campaign_id) {
+  Statement select = db_->Prepare(std::string(kProgressColumns) + " WHERE campaign_id = ?");
+  select.Bind(campaign_id);
+  if (!select.Step()) throw StoreError(file(), "no campaign \"" + campaign_id + "\"");
+  return ReadProgress(select);
+}
+
+std::vector<CampaignProgress> ResultsStore::AllProgress() {
+  Statement select =
+      db_->Prepare(std::string(kProgressColumns) + " ORDER BY created_utc, campaign_id");
+  std::vector<CampaignProgress> out;
+  while (select.Step()) out.push_back(ReadProgress(select));
+  return out;
+}
+
+std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
+  Statement select = db_->Prepare(
+      "SELECT id, campaign_id, key, scenario, label, state, depends_on, kind, rng_run, "
+      "train_seed, attempt, max_attempts, worker_id, error, argv_json, result_json "
+      "FROM jobs WHERE id = ?");
+  select.Bind(job_id);
+  if (!select.Step()) return std::nullopt;
+  JobRecord r;
+  r.id = select.Text(0);
+  r.campaign_id = select.Text(1);
+  r.key = select.Text(2);
+  r.scenario = select.Text(3);
+  r.label = select.Text(4);
+  r.state = select.Text(5);
+  r.depends_on = select.OptionalText(6).value_or("");
+  r.kind = ParseJobKind(select.Text(7));
+  r.rng_run = select.OptionalInt(8);
+  r.train_seed = select.OptionalInt(9);
+  r.attempt = static_cast<int>(select.Int(10));
+  r.max_attempts = static_cast<int>(select.Int(11));
+  r.worker_id = select.OptionalText(12);
+  r.error = select.OptionalText(13);
+  r.argv = ArgvFromJson(select.Text(14), file());
+  if (const auto result = select.OptionalText(15)) r.result = json::parse(*result);
+  return r;
+}
+
+std::vector<MetricRow> ResultsStore::Metrics(const std::string& campaign_id) {
+  Statement select = db_->Prepare(
+      "SELECT job_id, scenario, positioner, rng_run, throughput_mbps, delay_ms, loss_ratio, "
+      "min_snr_db, n_los, n_ues, demands_met, x, y, z FROM v_eval_runs "
+      "WHERE campaign_id = ? ORDER BY scenario, positioner, rng_run");
+  select.Bind(campaign_id);
+  std::vector<MetricRow> out;
+  while (select.Step()) {
+    MetricRow m;
+    m.job_id = select.Text(0);
+    m.scenario = select.Text(1);
+    m.label = select.Text(2);
+    m.rng_run = select.Int(3);
+    m.aggregate_throughput_mbps = select.Double(4);
+    m.mean_delay_ms = select.OptionalDouble(5);
+    m.loss_ratio = select.OptionalDouble(6);
+    m.min_snr_db = select.OptionalDouble(7);
+    m.n_los = static_cast<int>(select.Int(8));
+    m.n_ues = static_cast<int>(select.Int(9));
+    m.demands_met = static_cast<int>(select.Int(10));
+    m.x = select.Double(11);
+    m.y = select.Double(12);
+    m.z = select.Double(13);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+void ResultsStore::AddArtifact(const std::string& job_id, const std::string& name,
+                               const std::string& path) {
+  db_->Prepare("INSERT OR REPLACE INTO artifacts (job_id, name, path) VALUES (?, ?, ?)")
+      .Bind(job_id)
+      .Bind(name)
+      .Bind(path)
+      .Run();
+}
+
+}  // namespace rlpos

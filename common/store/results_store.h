@@ -1,0 +1,146 @@
+#pragma once
+// The results store: one SQLite file (WAL mode, one writer: the coordinator) that is the source
+// of truth of campaigns, jobs and their results. Every operation is one transaction.
+//
+// Job states:  pending   waiting for its dependency to succeed
+//              ready     runnable (no dependency, or it succeeded); a failed attempt with
+//                        attempts left comes back here with attempt + 1
+//              running   assigned to a worker for one attempt
+//              succeeded / failed / cancelled   final until RetryFailed
+// Exactly-once: a result counts only for the job's current attempt while it is running, and a
+// succeeded job is final, so a late, duplicate or stale result never changes anything.
+// One ResultsStore per thread (the connection is opened without SQLite's mutex); other processes
+// may read the file at any time, and write it too, serialized by SQLite's locks.
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "campaign/expansion.h"
+
+namespace rlpos {
+
+class Database;
+
+struct StoreOptions {
+  bool read_only = false;  // for readers (status, results, report): never writes, never migrates
+  int busy_timeout_ms = 5000;
+  std::function<double()> clock;  // seconds since the Unix epoch; default: the system clock
+};
+
+struct SubmitResult {
+  std::string campaign_id;
+  bool created = false;  // false: the same campaign was already there (nothing changed)
+  int jobs = 0;          // jobs of the campaign
+};
+
+struct ReadyJob {
+  std::string id;
+  std::string campaign_id;
+  std::string key;
+  JobKind kind = JobKind::kEval;
+  int attempt = 1;
+  double timeout_s = 0;
+  std::vector<std::string> argv;  // {position} bound; {out_dir} left for the worker
+};
+
+struct RunningJob {
+  std::string id;
+  std::string campaign_id;
+  std::string worker_id;
+  int attempt = 1;
+  double started_at = 0;
+  double timeout_s = 0;
+};
+
+struct JobRecord {
+  std::string id, campaign_id, key, scenario, label, state, depends_on;
+  JobKind kind = JobKind::kEval;
+  std::optional<std::int64_t> rng_run, train_seed;
+  int attempt = 1, max_attempts = 1;
+  std::optional<std::string> worker_id, error;
+  std::vector<std::string> argv;
+  std::optional<nlohmann::json> result;
+};
+
+// What a RecordSuccess / RecordFailure did.
+enum class JobUpdate {
+  kSucceeded,  // result recorded (and metrics, for an eval job)
+  kRetrying,   // attempt failed; the job is ready again with attempt + 1
+  kFailed,     // attempt failed and none is left; dependents fail with it
+  kStale,      // ignored: not the job's current running attempt (late, duplicate, cancelled)
+  kUnknown,    // ignored: no such job
+};
+const char* ToString(JobUpdate update);
+
+struct CampaignProgress {
+  std::string campaign_id, name, state;  // state: active | cancelled | finished
+  int total = 0, pending = 0, ready = 0, running = 0, succeeded = 0, failed = 0, cancelled = 0;
+};
+
+struct MetricRow {
+  std::string job_id, scenario, label;
+  std::int64_t rng_run = 0;
+  double aggregate_throughput_mbps = 0;
+  std::optional<double> mean_delay_ms, loss_ratio, min_snr_db;  // null: no packet received
+  int n_los = 0, n_ues = 0, demands_met = 0;
+  double x = 0, y = 0, z = 0;
+};
+
+class ResultsStore {
+ public:
+  // Opens or creates the file and migrates it to the newest schema. Throws StoreError naming
+  // the file (bad path, read-only file, not a database, corrupt, newer schema).
+  explicit ResultsStore(const std::string& file, StoreOptions options = {});
+  ~ResultsStore();
+  ResultsStore(const ResultsStore&) = delete;
+  ResultsStore& operator=(const ResultsStore&) = delete;
+
+  const std::string& file() const;
+  int SchemaVersion();
+
+  // Inserts the campaign and its jobs; re-submitting the same campaign is a no-op.
+  SubmitResult Submit(const ExpandedCampaign& campaign);
+
+  // Ready jobs of active campaigns: oldest campaign first, then expansion order. 0 = no limit.
+  std::vector<ReadyJob> ListReady(std::size_t limit = 0);
+  // ready -> running for this attempt; false if the job is not ready at that attempt.
+  bool MarkRunning(const std::string& job_id, const std::string& worker_id, int attempt);
+  // A result of train/position jobs must hold "position": [x, y, z]; of eval jobs, the metrics
+  // of rlpos::ToJson(RunMetrics). A malformed result counts as a failed attempt.
+  JobUpdate RecordSuccess(const std::string& job_id, int attempt, const nlohmann::json& result);
+  JobUpdate RecordFailure(const std::string& job_id, int attempt, const std::string& error);
+  // The worker is gone: each of its running jobs fails that attempt ("worker W was lost") and
+  // goes back to ready while attempts remain. Returns the ids of the jobs it held.
+  std::vector<std::string> RequeueWorker(const std::string& worker_id);
+  std::vector<RunningJob> ListRunning();
+
+  // Cancels every unfinished job; returns the ones that were running (their workers should
+  // stop them). Throws StoreError for an unknown campaign.
+  std::vector<RunningJob> CancelCampaign(const std::string& campaign_id);
+  // Puts every failed or cancelled job back (attempt + 1, a fresh retry budget) and reactivates
+  // the campaign. Returns how many jobs it revived.
+  int RetryFailed(const std::string& campaign_id);
+
+  // Throws StoreError for an unknown campaign.
+  CampaignProgress Progress(const std::string& campaign_id);
+  std::vector<CampaignProgress> AllProgress();
+  std::optional<JobRecord> GetJob(const std::string& job_id);
+  // One row per succeeded eval job, by scenario, label, rng_run.
+  std::vector<MetricRow> Metrics(const std::string& campaign_id);
+  void AddArtifact(const std::string& job_id, const std::string& name, const std::string& path);
+
+ private:
+  double Now() const;
+  JobUpdate FailAttempt(const std::string& job_id, int attempt, int max_attempts,
+                        const std::string& error);
+  void UpdateCampaignState(const std::string& campaign_id);
+  void RequireCampaign(const std::string& campaign_id);
+
+  std::unique_ptr<Database> db_;
+  StoreOptions options_;
+};
+
+}  // namespace rlpos

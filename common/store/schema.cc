@@ -1,0 +1,165 @@
+#include "store/schema.h"
+
+#include "store/store_error.h"
+
+namespace rlpos {
+namespace {
+
+// Version 1: campaigns, jobs, metrics, artifacts and the documented views.
+// Timestamps are seconds since the Unix epoch (REAL); the views show them as UTC text.
+constexpr const char* kVersion1 = R"sql(
+CREATE TABLE campaigns (
+  id            TEXT PRIMARY KEY,
+  name          TEXT NOT NULL,
+  spec_json     TEXT NOT NULL,
+  created_at    REAL NOT NULL,
+  state         TEXT NOT NULL CHECK (state IN ('active', 'cancelled', 'finished')),
+  max_attempts  INTEGER NOT NULL CHECK (max_attempts >= 1),
+  job_timeout_s REAL NOT NULL CHECK (job_timeout_s > 0)
+);
+
+CREATE TABLE jobs (
+  id                 TEXT PRIMARY KEY,
+  campaign_id        TEXT NOT NULL REFERENCES campaigns(id),
+  seq                INTEGER NOT NULL,
+  kind               TEXT NOT NULL CHECK (kind IN ('train', 'position', 'eval')),
+  key                TEXT NOT NULL,
+  scenario           TEXT NOT NULL,
+  label              TEXT NOT NULL,
+  rng_run            INTEGER,
+  train_seed         INTEGER,
+  depends_on         TEXT REFERENCES jobs(id),
+  state              TEXT NOT NULL CHECK (state IN
+                       ('pending', 'ready', 'running', 'succeeded', 'failed', 'cancelled')),
+  attempt            INTEGER NOT NULL CHECK (attempt >= 1),
+  max_attempts       INTEGER NOT NULL CHECK (max_attempts >= 1),
+  timeout_s          REAL NOT NULL CHECK (timeout_s > 0),
+  worker_id          TEXT,
+  created_at         REAL NOT NULL,
+  started_at         REAL,
+  finished_at        REAL,
+  error              TEXT,
+  argv_json          TEXT NOT NULL,
+  position_rule_json TEXT NOT NULL,
+  result_json        TEXT,
+  UNIQUE (campaign_id, key)
+);
+CREATE INDEX jobs_by_state ON jobs(state, campaign_id, seq);
+CREATE INDEX jobs_by_dependency ON jobs(depends_on);
+CREATE INDEX jobs_by_worker ON jobs(worker_id, state);
+
+CREATE TABLE metrics (
+  job_id                    TEXT PRIMARY KEY REFERENCES jobs(id),
+  campaign_id               TEXT NOT NULL REFERENCES campaigns(id),
+  scenario                  TEXT NOT NULL,
+  label                     TEXT NOT NULL,
+  rng_run                   INTEGER NOT NULL,
+  aggregate_throughput_mbps REAL NOT NULL,
+  mean_delay_ms             REAL,
+  loss_ratio                REAL,
+  n_los                     INTEGER NOT NULL,
+  n_ues                     INTEGER NOT NULL,
+  demands_met               INTEGER NOT NULL,
+  min_snr_db                REAL,
+  x                         REAL NOT NULL,
+  y                         REAL NOT NULL,
+  z                         REAL NOT NULL
+);
+CREATE INDEX metrics_by_campaign ON metrics(campaign_id, scenario, label, rng_run);
+
+CREATE TABLE artifacts (
+  job_id TEXT NOT NULL REFERENCES jobs(id),
+  name   TEXT NOT NULL,
+  path   TEXT NOT NULL,
+  PRIMARY KEY (job_id, name)
+);
+
+CREATE VIEW v_eval_runs AS
+SELECT c.id AS campaign_id, c.name AS campaign, m.scenario, m.label AS positioner, m.rng_run,
+       m.aggregate_throughput_mbps AS throughput_mbps, m.mean_delay_ms AS delay_ms,
+       m.loss_ratio, m.n_los, m.n_ues, m.demands_met, m.min_snr_db, m.x, m.y, m.z,
+       m.job_id, datetime(j.finished_at, 'unixepoch') AS finished_utc
+FROM metrics m
+JOIN campaigns c ON c.id = m.campaign_id
+JOIN jobs j ON j.id = m.job_id;
+
+CREATE VIEW v_campaign_progress AS
+SELECT c.id AS campaign_id, c.name, c.state, datetime(c.created_at, 'unixepoch') AS created_utc,
+       COUNT(j.id) AS total,
+       COALESCE(SUM(j.state = 'pending'), 0) AS pending,
+       COALESCE(SUM(j.state = 'ready'), 0) AS ready,
+       COALESCE(SUM(j.state = 'running'), 0) AS running,
+       COALESCE(SUM(j.state = 'succeeded'), 0) AS succeeded,
+       COALESCE(SUM(j.state = 'failed'), 0) AS failed,
+       COALESCE(SUM(j.state = 'cancelled'), 0) AS cancelled
+FROM campaigns c
+LEFT JOIN jobs j ON j.campaign_id = c.id
+GROUP BY c.id;
+)sql";
+
+}  // namespace
+
+const std::vector<Migration>& Migrations() {
+  static const std::vector<Migration> migrations{{1, kVersion1}};
+  return migrations;
+}
+
+int LatestSchemaVersion() { return Migrations().back().version; }
+
+int ReadSchemaVersion(Database& db) {
+  Statement has_version =
+      db.Prepare("SELECT COUNT(*) FROM sqlite_master WHERE type = 'table' AND name = ?");
+  has_version.Bind("schema_version");
+  has_version.Step();
+  if (has_version.Int(0) == 0) {
+    Statement tables = db.Prepare("SELECT COUNT(*) FROM sqlite_master");
+    tables.Step();
+    if (tables.Int(0) > 0) {
+      throw StoreError(db.file(),
+                       "is an SQLite database but not an RLpos results store (no schema_version "
+                       "table)");
+    }
+    return 0;
+  }
+  Statement version = db.Prepare("SELECT version FROM schema_version");
+  if (!version.Step()) throw StoreError(db.file(), "schema_version table is empty");
+  const auto v = version.Int(0);
+  if (version.Step()) throw StoreError(db.file(), "schema_version table has several rows");
+  return static_cast<int>(v);
+}
+
+void MigrateSchema(Database& db) {
+  const int latest = LatestSchemaVersion();
+  const auto check = [&](int version) {
+    if (version > latest) {
+      throw StoreError(db.file(), "schema version " + std::to_string(version) +
+                                      " is newer than this build knows (" +
+                                      std::to_string(latest) + "); use a newer rlpos");
+    }
+  };
+  int version = ReadSchemaVersion(db);
+  check(version);
+  if (version == latest) return;
+  if (db.read_only()) {
+    throw StoreError(db.file(), "schema version " + std::to_string(version) +
+                                    " needs migrating to " + std::to_string(latest) +
+                                    "; open it read-write once");
+  }
+  for (const auto& migration : Migrations()) {
+    Transaction transaction(db);
+    // Re-read under the write lock: another process may have migrated meanwhile.
+    version = ReadSchemaVersion(db);
+    check(version);
+    if (migration.version <= version) continue;
+    db.Exec(migration.sql);
+    if (version == 0) {
+      db.Exec("CREATE TABLE schema_version (version INTEGER NOT NULL)");
+      db.Prepare("INSERT INTO schema_version (version) VALUES (?)").Bind(migration.version).Run();
+    } else {
+      db.Prepare("UPDATE schema_version SET version = ?").Bind(migration.version).Run();
+    }
+    transaction.Commit();
+  }
+}
+
+}  // namespace rlpos

@@ -1,0 +1,166 @@
+#include "store/sqlite_db.h"
+
+#include <sqlite3.h>
+
+#include <utility>
+
+#include "store/store_error.h"
+
+namespace rlpos {
+
+Statement::Statement(sqlite3* db, const std::string& sql, const std::string& file)
+    : db_(db), sql_(sql), file_(file) {
+  const int rc = sqlite3_prepare_v2(db_, sql.c_str(), -1, &stmt_, nullptr);
+  if (rc != SQLITE_OK) Fail(rc);
+}
+
+Statement::~Statement() { sqlite3_finalize(stmt_); }
+
+Statement::Statement(Statement&& other) noexcept
+    : db_(other.db_),
+      stmt_(std::exchange(other.stmt_, nullptr)),
+      sql_(std::move(other.sql_)),
+      file_(std::move(other.file_)),
+      next_(other.next_) {}
+
+void Statement::Fail(int rc) const {
+  std::string message = sqlite3_errmsg(db_);
+  if (message.empty() || message == "not an error") message = sqlite3_errstr(rc);
+  // The first line of the statement is enough to find it in the source.
+  const std::string first_line = sql_.substr(0, sql_.find('\n'));
+  throw StoreError(file_, message + " (in: " + first_line + ")");
+}
+
+Statement& Statement::Bind(const std::string& value) {
+  const int rc = sqlite3_bind_text(stmt_, next_++, value.data(), static_cast<int>(value.size()),
+                                   SQLITE_TRANSIENT);
+  if (rc != SQLITE_OK) Fail(rc);
+  return *this;
+}
+
+Statement& Statement::Bind(std::int64_t value) {
+  const int rc = sqlite3_bind_int64(stmt_, next_++, value);
+  if (rc != SQLITE_OK) Fail(rc);
+  return *this;
+}
+
+Statement& Statement::Bind(std::uint64_t value) {
+  // SQLite integers are signed 64-bit; RngRuns and seeds never come near 2^63.
+  return Bind(static_cast<std::int64_t>(value));
+}
+
+Statement& Statement::Bind(double value) {
+  const int rc = sqlite3_bind_double(stmt_, next_++, value);
+  if (rc != SQLITE_OK) Fail(rc);
+  return *this;
+}
+
+Statement& Statement::BindNull() {
+  const int rc = sqlite3_bind_null(stmt_, next_++);
+  if (rc != SQLITE_OK) Fail(rc);
+  return *this;
+}
+
+bool Statement::Step() {
+  const int rc = sqlite3_step(stmt_);
+  if (rc == SQLITE_ROW) return true;
+  if (rc == SQLITE_DONE) return false;
+  Fail(rc);
+}
+
+void Statement::Run() {
+  while (Step()) {
+  }
+}
+
+void Statement::Reset() {
+  sqlite3_reset(stmt_);
+  sqlite3_clear_bindings(stmt_);
+  next_ = 1;
+}
+
+bool Statement::IsNull(int column) const {
+  return sqlite3_column_type(stmt_, column) == SQLITE_NULL;
+}
+
+std::int64_t Statement::Int(int column) const { return sqlite3_column_int64(stmt_, column); }
+
+double Statement::Double(int column) const { return sqlite3_column_double(stmt_, column); }
+
+std::string Statement::Text(int column) const {
+  const auto* text = sqlite3_column_text(stmt_, column);
+  if (!text) return {};
+  return std::string(reinterpret_cast<const char*>(text),
+                     static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column)));
+}
+
+std::optional<std::string> Statement::OptionalText(int column) const {
+  if (IsNull(column)) return std::nullopt;
+  return Text(column);
+}
+
+std::optional<std::int64_t> Statement::OptionalInt(int column) const {
+  if (IsNull(column)) return std::nullopt;
+  return Int(column);
+}
+
+std::optional<double> Statement::OptionalDouble(int column) const {
+  if (IsNull(column)) return std::nullopt;
+  return Double(column);
+}
+
+Database::Database(const std::string& file, bool read_only, int busy_timeout_ms)
+    : file_(file), read_only_(read_only) {
+  const int flags = read_only ? SQLITE_OPEN_READONLY
+                              : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+  const int rc = sqlite3_open_v2(file.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+  if (rc != SQLITE_OK) {
+    const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw StoreError(file, "cannot open: " + message);
+  }
+  sqlite3_extended_result_codes(db_, 1);
+  sqlite3_busy_timeout(db_, busy_timeout_ms);
+  // SQLite silently falls back to read-only on a write-protected file; the store would then
+  // fail on its first write with a less helpful message.
+  if (!read_only && sqlite3_db_readonly(db_, "main") == 1) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw StoreError(file, "the file is read-only; the results store needs write access");
+  }
+}
+
+Database::~Database() { sqlite3_close(db_); }
+
+void Database::Exec(const std::string& sql) {
+  char* error = nullptr;
+  const int rc = sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error);
+  if (rc != SQLITE_OK) {
+    const std::string message = error ? error : sqlite3_errstr(rc);
+    sqlite3_free(error);
+    throw StoreError(file_, message);
+  }
+}
+
+Statement Database::Prepare(const std::string& sql) { return Statement(db_, sql, file_); }
+
+int Database::Changes() const { return sqlite3_changes(db_); }
+
+Transaction::Transaction(Database& db) : db_(db) { db_.Exec("BEGIN IMMEDIATE"); }
+
+Transaction::~Transaction() {
+  if (done_) return;
+  try {
+    db_.Exec("ROLLBACK");
+  } catch (const StoreError&) {
+    // Already rolled back by SQLite (e.g. after SQLITE_FULL); nothing left to undo.
+  }
+}
+
+void Transaction::Commit() {
+  db_.Exec("COMMIT");
+  done_ = true;
+}
+
+}  // namespace rlpos

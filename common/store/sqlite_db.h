@@ -1,0 +1,96 @@
+#pragma once
+// Thin RAII wrappers over the SQLite C API. Every SQLite error becomes a StoreError naming the
+// database file and, where there is one, the statement that failed.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+struct sqlite3;
+struct sqlite3_stmt;
+
+namespace rlpos {
+
+class Statement {
+ public:
+  Statement(sqlite3* db, const std::string& sql, const std::string& file);
+  ~Statement();
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+  Statement(Statement&& other) noexcept;
+  Statement& operator=(Statement&&) = delete;
+
+  // Binds the next parameter (1, 2, ... in call order).
+  Statement& Bind(const std::string& value);
+  Statement& Bind(const char* value) { return Bind(std::string(value)); }
+  Statement& Bind(std::int64_t value);
+  Statement& Bind(int value) { return Bind(static_cast<std::int64_t>(value)); }
+  Statement& Bind(std::uint64_t value);
+  Statement& Bind(double value);
+  Statement& BindNull();
+  template <typename T>
+  Statement& Bind(const std::optional<T>& value) {
+    return value ? Bind(*value) : BindNull();
+  }
+
+  // Runs one step: true when a row is available, false when done.
+  bool Step();
+  // Steps to completion (statements without rows).
+  void Run();
+  // Clears bindings and rewinds, for reuse with new parameters.
+  void Reset();
+
+  bool IsNull(int column) const;
+  std::int64_t Int(int column) const;
+  double Double(int column) const;
+  std::string Text(int column) const;
+  std::optional<std::string> OptionalText(int column) const;
+  std::optional<std::int64_t> OptionalInt(int column) const;
+  std::optional<double> OptionalDouble(int column) const;
+
+ private:
+  [[noreturn]] void Fail(int rc) const;
+  sqlite3* db_;
+  sqlite3_stmt* stmt_ = nullptr;
+  std::string sql_;
+  std::string file_;
+  int next_ = 1;
+};
+
+class Database {
+ public:
+  // Opens (read-write: creating it if missing) with a busy timeout. Throws StoreError.
+  Database(const std::string& file, bool read_only, int busy_timeout_ms);
+  ~Database();
+  Database(const Database&) = delete;
+  Database& operator=(const Database&) = delete;
+
+  const std::string& file() const { return file_; }
+  bool read_only() const { return read_only_; }
+  // Runs constant SQL with no parameters (schema, pragmas). Throws StoreError.
+  void Exec(const std::string& sql);
+  Statement Prepare(const std::string& sql);
+  // Rows changed by the last INSERT/UPDATE/DELETE.
+  int Changes() const;
+
+ private:
+  sqlite3* db_ = nullptr;
+  std::string file_;
+  bool read_only_;
+};
+
+// BEGIN IMMEDIATE ... COMMIT, rolled back if not committed (an exception left the scope).
+// IMMEDIATE takes the write lock up front, so a read-then-write never fails half-way on a lock.
+class Transaction {
+ public:
+  explicit Transaction(Database& db);
+  ~Transaction();
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  void Commit();
+
+ private:
+  Database& db_;
+  bool done_ = false;
+};
+
+}  // namespace rlpos

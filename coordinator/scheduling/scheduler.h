@@ -1,0 +1,36 @@
+#pragma once
+// One scheduling step of the coordinator over the results store, with no DDS: the daemon calls
+// Tick() when workers report or jobs finish (and on a timer), publishes the assignments, and
+// tells the workers of timed-out jobs to stop them. The store stays the source of truth: every
+// decision is written to it before the daemon acts on it.
+#include <string>
+#include <vector>
+
+#include "scheduling/assignment.h"
+#include "scheduling/timeouts.h"
+#include "store/results_store.h"
+
+namespace rlpos {
+
+struct TickResult {
+  std::vector<TimedOut> timed_out;  // failed in the store: their workers should stop them
+  std::vector<Assignment> assigned;  // marked running in the store: send them to the workers
+};
+
+class Scheduler {
+ public:
+  explicit Scheduler(ResultsStore& store) : store_(store) {}
+
+  // Fails timed-out jobs, then assigns ready jobs to `live_workers`. A worker's busy count is
+  // the larger of what it reported and what the store has running on it.
+  TickResult Tick(const std::vector<WorkerSlots>& live_workers, double now);
+
+  // The worker's lease was lost: its running jobs go back to ready (or fail when out of
+  // attempts). Returns their ids.
+  std::vector<std::string> WorkerLost(const std::string& worker_id);
+
+ private:
+  ResultsStore& store_;
+};
+
+}  // namespace rlpos

@@ -1,0 +1,214 @@
+#include "campaign/expansion.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "campaign/campaign_id.h"
+#include "campaign/job_argv.h"
+#include "test_support.h"
+
+namespace rlpos {
+namespace {
+
+using testing::FindJob;
+using testing::MiniCampaign;
+using testing::MiniSpec;
+using testing::SourcePath;
+
+TEST(CampaignId, Fnv1aKnownValues) {
+  EXPECT_EQ(Fnv1a64(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(Fnv1a64("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(Fnv1a64("foobar"), 0x85944171f73967e8ull);
+}
+
+TEST(CampaignId, TwelveHexDigitsStableAcrossParses) {
+  const std::string id = CampaignId(MiniSpec());
+  EXPECT_EQ(id.size(), 12u);
+  EXPECT_EQ(id.find_first_not_of("0123456789abcdef"), std::string::npos) << id;
+  EXPECT_EQ(CampaignId(MiniSpec()), id);
+}
+
+TEST(CampaignId, ChangesWithEveryInputThatChangesJobs) {
+  const CampaignSpec base = MiniSpec();
+  const std::string id = CampaignId(base);
+  CampaignSpec more_runs = base;
+  more_runs.rng_runs.push_back(3);
+  EXPECT_NE(CampaignId(more_runs), id);
+  CampaignSpec other_set = base;
+  other_set.scenarios[0].overrides.push_back("wifi.mode=adhoc");
+  EXPECT_NE(CampaignId(other_set), id);
+  CampaignSpec other_scenario = base;  // same file name, other content
+  other_scenario.scenarios[0].document["wifi"]["tx_power"] = 17;
+  EXPECT_NE(CampaignId(other_scenario), id);
+  CampaignSpec other_timeout = base;
+  other_timeout.job_timeout_s = 301;
+  EXPECT_NE(CampaignId(other_timeout), id);
+}
+
+TEST(CampaignId, IgnoresTheCheckoutLocation) {
+  CampaignSpec moved = MiniSpec();
+  for (auto& s : moved.scenarios) s.path = "/elsewhere/" + s.file;
+  EXPECT_EQ(CampaignId(moved), CampaignId(MiniSpec()));
+}
+
+TEST(Expansion, SameCampaignSameJobs) {
+  const ExpandedCampaign a = MiniCampaign();
+  const ExpandedCampaign b = MiniCampaign();
+  ASSERT_EQ(a.jobs.size(), b.jobs.size());
+  for (std::size_t i = 0; i < a.jobs.size(); ++i) {
+    EXPECT_EQ(a.jobs[i].id, b.jobs[i].id);
+    EXPECT_EQ(a.jobs[i].depends_on, b.jobs[i].depends_on);
+    EXPECT_EQ(a.jobs[i].argv, b.jobs[i].argv);
+  }
+  EXPECT_EQ(a.id, CampaignId(MiniSpec()));
+  EXPECT_EQ(a.max_attempts, 2);  // retries 1
+  EXPECT_DOUBLE_EQ(a.job_timeout_s, 300.0);
+}
+
+TEST(Expansion, KeysIdsAndKinds) {
+  const ExpandedCampaign c = MiniCampaign();
+  std::map<JobKind, int> kinds;
+  std::set<std::string> ids;
+  for (const auto& job : c.jobs) {
+    ++kinds[job.kind];
+    EXPECT_EQ(job.id, c.id + "/" + job.key);
+    EXPECT_TRUE(ids.insert(job.id).second) << "duplicate " << job.id;
+  }
+  EXPECT_EQ(kinds[JobKind::kTrain], 2);      // B, C x seed 1
+  EXPECT_EQ(kinds[JobKind::kPosition], 6);   // B, C x baseline, centroid, oracle
+  EXPECT_EQ(kinds[JobKind::kEval], 2 * 2 * 9);
+  const Job& train = FindJob(c, "train/B/seed1");
+  EXPECT_EQ(train.kind, JobKind::kTrain);
+  EXPECT_EQ(train.train_seed, 1u);
+  EXPECT_TRUE(train.depends_on.empty());
+  const Job& eval = FindJob(c, "eval/C/offset5/run2");
+  EXPECT_EQ(eval.scenario, "C");
+  EXPECT_EQ(eval.label, "offset5");
+  EXPECT_EQ(eval.rng_run, 2u);
+  EXPECT_EQ(eval.train_seed, 1u);
+  EXPECT_EQ(eval.position.offset, 5);
+  const std::vector<std::string> labels{"baseline", "centroid", "oracle", "rl", "offset1",
+                                        "offset2", "offset3", "offset4", "offset5"};
+  for (const auto& label : labels) EXPECT_NO_THROW(FindJob(c, "eval/B/" + label + "/run1"));
+}
+
+TEST(Expansion, DagEdges) {
+  const ExpandedCampaign c = MiniCampaign();
+  EXPECT_EQ(FindJob(c, "eval/B/rl/run1").depends_on, c.id + "/train/B/seed1");
+  EXPECT_EQ(FindJob(c, "eval/B/offset3/run2").depends_on, c.id + "/train/B/seed1");
+  EXPECT_EQ(FindJob(c, "eval/C/baseline/run1").depends_on, c.id + "/position/C/baseline");
+  EXPECT_EQ(FindJob(c, "eval/C/oracle/run2").depends_on, c.id + "/position/C/oracle");
+  EXPECT_TRUE(FindJob(c, "position/B/centroid").depends_on.empty());
+  // Every dependency is a producer listed before its dependents (the store relies on it).
+  std::map<std::string, JobKind> seen;
+  for (const auto& job : c.jobs) {
+    if (job.kind == JobKind::kEval) {
+      ASSERT_TRUE(seen.count(job.depends_on)) << job.key;
+      EXPECT_NE(seen[job.depends_on], JobKind::kEval);
+    } else {
+      EXPECT_TRUE(job.depends_on.empty());
+    }
+    seen[job.id] = job.kind;
+  }
+}
+
+TEST(Expansion, EvalArgv) {
+  const ExpandedCampaign c = MiniCampaign();
+  const std::string b = SourcePath("campaigns/scenarios/b.json");
+  EXPECT_EQ(FindJob(c, "eval/B/baseline/run2").argv,
+            (std::vector<std::string>{"rlpos-sim", "eval", "--scenario", b, "--position",
+                                      "{position}", "--run", "2", "--duration", "2", "--json",
+                                      "--no-progress", "--set", "simulation.warmup=0.5"}));
+  EXPECT_EQ(FindJob(c, "position/B/oracle").argv,
+            (std::vector<std::string>{"rlpos-sim", "position", "--scenario", b, "--positioner",
+                                      "oracle", "--json"}));
+  EXPECT_EQ(FindJob(c, "train/B/seed1").argv,
+            (std::vector<std::string>{"rlpos-sim", "train", "--scenario", b, "--seed", "1",
+                                      "--fidelity", "analytic", "--out", "{out_dir}", "--json"}));
+}
+
+TEST(Expansion, OverridesAndEpisodesBecomeSetArguments) {
+  CampaignSpec spec = MiniSpec();
+  spec.scenarios[0].overrides = {"simulation.duration=5"};
+  spec.train.episodes = 25;
+  spec.train.fidelity = "packet";
+  const ExpandedCampaign c = ExpandCampaign(spec);
+  const std::string b = SourcePath("campaigns/scenarios/b.json");
+  EXPECT_EQ(FindJob(c, "train/B/seed1").argv,
+            (std::vector<std::string>{"rlpos-sim", "train", "--scenario", b, "--seed", "1",
+                                      "--fidelity", "packet", "--out", "{out_dir}", "--json",
+                                      "--set", "agent.train_episodes=25", "--set",
+                                      "simulation.duration=5"}));
+  // The scenario's own --set comes last so that it wins over the campaign's eval settings.
+  const auto eval = FindJob(c, "eval/B/rl/run1").argv;
+  ASSERT_GE(eval.size(), 2u);
+  EXPECT_EQ(eval[eval.size() - 2], "--set");
+  EXPECT_EQ(eval.back(), "simulation.duration=5");
+  EXPECT_EQ(FindJob(c, "position/B/baseline").argv.back(), "simulation.duration=5");
+  EXPECT_EQ(FindJob(c, "eval/C/rl/run1").argv.back(), "simulation.warmup=0.5");
+}
+
+TEST(Expansion, SeveralTrainSeeds) {
+  CampaignSpec spec = MiniSpec();
+  spec.train.seeds = {7, 2};
+  const ExpandedCampaign c = ExpandCampaign(spec);
+  // The first listed seed keeps the plain labels; the others are suffixed.
+  EXPECT_EQ(FindJob(c, "eval/B/rl/run1").depends_on, c.id + "/train/B/seed7");
+  EXPECT_EQ(FindJob(c, "eval/B/offset2/run1").train_seed, 7u);
+  const Job& later = FindJob(c, "eval/B/rl@seed2/run1");
+  EXPECT_EQ(later.label, "rl@seed2");
+  EXPECT_EQ(later.depends_on, c.id + "/train/B/seed2");
+  EXPECT_EQ(FindJob(c, "eval/B/offset4@seed2/run2").position.offset, 4);
+  EXPECT_EQ(FindJob(c, "train/B/seed2").label, "rl@seed2");
+  EXPECT_EQ(c.jobs.size(), 2u * (3 + 2 + 2 * (3 + 2 * 6)));
+}
+
+TEST(Expansion, PositionerSubsets) {
+  CampaignSpec spec = MiniSpec();
+  spec.positioners = {"baseline"};
+  ExpandedCampaign c = ExpandCampaign(spec);
+  EXPECT_EQ(c.jobs.size(), 2u * (1 + 2));  // no training without rl/offsets
+  EXPECT_THROW(FindJob(c, "train/B/seed1"), std::out_of_range);
+
+  spec.positioners = {"offsets"};
+  c = ExpandCampaign(spec);
+  EXPECT_EQ(c.jobs.size(), 2u * (1 + 2 * 5));
+  EXPECT_NO_THROW(FindJob(c, "train/C/seed1"));
+  EXPECT_THROW(FindJob(c, "eval/C/rl/run1"), std::out_of_range);
+}
+
+TEST(Expansion, OffsetRulesCarryTheScenarioGeometry) {
+  const ExpandedCampaign c = MiniCampaign();
+  const PositionRule& rule = FindJob(c, "eval/B/offset1/run1").position;
+  EXPECT_EQ(rule.offset, 1);
+  EXPECT_DOUBLE_EQ(rule.distance, 10.0);
+  // Scenario B: zone x, y in [0, 100], z in [5, 60]; five buildings.
+  EXPECT_DOUBLE_EQ(rule.geometry.bounds.zmin, 5.0);
+  EXPECT_DOUBLE_EQ(rule.geometry.bounds.zmax, 60.0);
+  EXPECT_DOUBLE_EQ(rule.geometry.bounds.xmax, 100.0);
+  EXPECT_EQ(rule.geometry.obstacles.size(), 5u);
+  EXPECT_EQ(FindJob(c, "eval/B/rl/run1").position.offset, 0);
+}
+
+TEST(JobArgv, NumbersReadBackExactly) {
+  EXPECT_EQ(FormatNumber(50), "50");
+  EXPECT_EQ(FormatNumber(44.5), "44.5");
+  EXPECT_EQ(FormatNumber(0.1), "0.1");
+  EXPECT_EQ(FormatNumber(-3.25), "-3.25");
+  EXPECT_EQ(std::stod(FormatNumber(1.0 / 3.0)), 1.0 / 3.0);
+  EXPECT_EQ(FormatPosition({50, 35.5, 10}), "50,35.5,10");
+}
+
+TEST(JobArgv, Placeholders) {
+  std::vector<std::string> argv = FindJob(MiniCampaign(), "train/B/seed1").argv;
+  EXPECT_TRUE(HasUnboundPlaceholder(argv));
+  EXPECT_EQ(BindPlaceholder(argv, kPositionPlaceholder, "1,2,3"), 0);
+  EXPECT_EQ(BindPlaceholder(argv, kOutDirPlaceholder, "/tmp/job"), 1);
+  EXPECT_FALSE(HasUnboundPlaceholder(argv));
+  EXPECT_EQ(argv[9], "/tmp/job");
+}
+
+}  // namespace
+}  // namespace rlpos

@@ -1,0 +1,361 @@
+#include "store/results_store.h"
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include "store/store_error.h"
+#include "test_support.h"
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+using testing::EvalResult;
+using testing::FindJob;
+using testing::PositionResult;
+
+// A store on a temp file with a clock the test moves.
+class StoreTest : public ::testing::Test {
+ protected:
+  StoreTest()
+      : campaign_(testing::MiniCampaign()),
+        store_(dir_.File("rlpos.db"), Options()) {}
+
+  StoreOptions Options() {
+    StoreOptions options;
+    options.clock = [this] { return now_; };
+    return options;
+  }
+  std::string Id(const std::string& key) const { return campaign_.id + "/" + key; }
+  JobRecord Job(const std::string& key) {
+    const auto job = store_.GetJob(Id(key));
+    if (!job) throw std::out_of_range("no job " + key);
+    return *job;
+  }
+  // Runs a job's current attempt on `worker` and returns that attempt.
+  int Start(const std::string& key, const std::string& worker = "w1") {
+    const int attempt = Job(key).attempt;
+    EXPECT_TRUE(store_.MarkRunning(Id(key), worker, attempt)) << key;
+    return attempt;
+  }
+  // One value from SQL, through the C API (what a user's own query sees).
+  std::string Query(const std::string& sql) {
+    sqlite3* db = nullptr;
+    sqlite3_open_v2(dir_.File("rlpos.db").c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+    sqlite3_stmt* stmt = nullptr;
+    std::string out = "<error>";
+    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) == SQLITE_OK) {
+      out = "<no row>";
+      if (sqlite3_step(stmt) == SQLITE_ROW) {
+        const auto* text = sqlite3_column_text(stmt, 0);
+        out = text ? reinterpret_cast<const char*>(text) : "<null>";
+      }
+    } else {
+      out = sqlite3_errmsg(db);
+    }
+    sqlite3_finalize(stmt);
+    sqlite3_close(db);
+    return out;
+  }
+
+  testing::TempDir dir_;
+  double now_ = 1000.0;
+  ExpandedCampaign campaign_;
+  ResultsStore store_;
+};
+
+TEST_F(StoreTest, SubmitIsIdempotent) {
+  const SubmitResult first = store_.Submit(campaign_);
+  EXPECT_TRUE(first.created);
+  EXPECT_EQ(first.campaign_id, campaign_.id);
+  EXPECT_EQ(first.jobs, 44);
+  now_ += 50;
+  const SubmitResult again = store_.Submit(testing::MiniCampaign());
+  EXPECT_FALSE(again.created);
+  EXPECT_EQ(again.campaign_id, campaign_.id);
+  EXPECT_EQ(again.jobs, 44);
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs"), "44");
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM campaigns"), "1");
+  EXPECT_EQ(Query("SELECT created_at FROM campaigns"), "1000.0");
+}
+
+TEST_F(StoreTest, ProducersStartReadyEvalsPending) {
+  store_.Submit(campaign_);
+  const CampaignProgress p = store_.Progress(campaign_.id);
+  EXPECT_EQ(p.name, "mini");
+  EXPECT_EQ(p.state, "active");
+  EXPECT_EQ(p.total, 44);
+  EXPECT_EQ(p.ready, 8);  // 2 scenarios x (train + 3 positions)
+  EXPECT_EQ(p.pending, 36);
+  const auto ready = store_.ListReady();
+  ASSERT_EQ(ready.size(), 8u);
+  EXPECT_EQ(ready[0].id, Id("position/B/baseline"));  // expansion order
+  EXPECT_EQ(ready[0].attempt, 1);
+  EXPECT_DOUBLE_EQ(ready[0].timeout_s, 300.0);
+  EXPECT_EQ(ready[0].argv, FindJob(campaign_, "position/B/baseline").argv);
+  EXPECT_EQ(store_.ListReady(3).size(), 3u);
+}
+
+TEST_F(StoreTest, ProducerSuccessBindsPositionsOfItsEvals) {
+  store_.Submit(campaign_);
+  const int attempt = Start("train/B/seed1");
+  EXPECT_EQ(store_.RecordSuccess(Id("train/B/seed1"), attempt, PositionResult(50, 35, 10)),
+            JobUpdate::kSucceeded);
+  const auto position_of = [this](const std::string& key) {
+    const auto argv = Job(key).argv;
+    return argv[5];  // rlpos-sim eval --scenario FILE --position X
+  };
+  EXPECT_EQ(Job("eval/B/rl/run1").state, "ready");
+  EXPECT_EQ(position_of("eval/B/rl/run1"), "50,35,10");
+  EXPECT_EQ(position_of("eval/B/offset1/run2"), "60,35,10");
+  EXPECT_EQ(position_of("eval/B/offset3/run1"), "50,44.5,10");  // stops before the tower
+  EXPECT_EQ(position_of("eval/B/offset5/run1"), "50,35,20");
+  // Other scenarios and positioners still wait.
+  EXPECT_EQ(Job("eval/C/rl/run1").state, "pending");
+  EXPECT_EQ(Job("eval/B/baseline/run1").state, "pending");
+  EXPECT_EQ(position_of("eval/B/baseline/run1"), "{position}");
+  EXPECT_EQ(store_.Progress(campaign_.id).ready, 7 + 2 * 6);
+}
+
+TEST_F(StoreTest, StaleAttemptsAreIgnored) {
+  store_.Submit(campaign_);
+  const std::string job = Id("position/B/baseline");
+  // Not running yet: no result counts.
+  EXPECT_EQ(store_.RecordSuccess(job, 1, PositionResult(50, 50, 25)), JobUpdate::kStale);
+  EXPECT_FALSE(store_.MarkRunning(job, "w1", 2));  // not its attempt
+  const int attempt = Start("position/B/baseline");
+  EXPECT_FALSE(store_.MarkRunning(job, "w2", attempt));  // already running
+  EXPECT_EQ(store_.RecordSuccess(job, attempt + 1, PositionResult(50, 50, 25)),
+            JobUpdate::kStale);
+  EXPECT_EQ(store_.RecordFailure(job, attempt - 1, "old"), JobUpdate::kStale);
+  EXPECT_EQ(Job("position/B/baseline").state, "running");
+  EXPECT_EQ(Job("position/B/baseline").worker_id, "w1");
+  EXPECT_EQ(store_.RecordSuccess("nope/x", 1, PositionResult(1, 1, 1)), JobUpdate::kUnknown);
+  EXPECT_EQ(store_.RecordFailure("nope/x", 1, "x"), JobUpdate::kUnknown);
+
+  // A result of an attempt that was retried since is stale too.
+  EXPECT_EQ(store_.RecordFailure(job, attempt, "crashed"), JobUpdate::kRetrying);
+  EXPECT_EQ(store_.RecordSuccess(job, attempt, PositionResult(50, 50, 25)), JobUpdate::kStale);
+  EXPECT_EQ(Job("position/B/baseline").state, "ready");
+}
+
+TEST_F(StoreTest, SuccessCountsExactlyOnce) {
+  store_.Submit(campaign_);
+  store_.MarkRunning(Id("position/B/baseline"), "w1", 1);
+  store_.RecordSuccess(Id("position/B/baseline"), 1, PositionResult(50, 50, 25));
+  const std::string eval = Id("eval/B/baseline/run2");
+  const int attempt = Start("eval/B/baseline/run2");
+  EXPECT_EQ(store_.RecordSuccess(eval, attempt, EvalResult(2, 120.5, 3.25)),
+            JobUpdate::kSucceeded);
+  // A duplicate delivery of the same result, a different one, or a late failure: all ignored.
+  EXPECT_EQ(store_.RecordSuccess(eval, attempt, EvalResult(2, 120.5, 3.25)), JobUpdate::kStale);
+  EXPECT_EQ(store_.RecordSuccess(eval, attempt, EvalResult(2, 999.0, 1.0)), JobUpdate::kStale);
+  EXPECT_EQ(store_.RecordFailure(eval, attempt, "late"), JobUpdate::kStale);
+  EXPECT_FALSE(store_.MarkRunning(eval, "w2", attempt));
+  EXPECT_EQ(Job("eval/B/baseline/run2").state, "succeeded");
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM metrics"), "1");
+  EXPECT_EQ(Query("SELECT aggregate_throughput_mbps FROM metrics"), "120.5");
+  EXPECT_EQ(store_.Progress(campaign_.id).succeeded, 2);
+  EXPECT_EQ(store_.RetryFailed(campaign_.id), 0);  // nothing failed: succeeded jobs stay
+  EXPECT_EQ(Job("eval/B/baseline/run2").state, "succeeded");
+}
+
+TEST_F(StoreTest, MetricsRowHoldsTheEvalResult) {
+  store_.Submit(campaign_);
+  store_.MarkRunning(Id("position/C/oracle"), "w1", 1);
+  store_.RecordSuccess(Id("position/C/oracle"), 1, PositionResult(50, 35, 10));
+  Start("eval/C/oracle/run1");
+  json result = EvalResult(1, 80.25, 0.0);
+  result["mean_delay_ms"] = nullptr;  // nothing received: undefined, not zero
+  result["position"] = {50.0, 35.0, 10.0};
+  ASSERT_EQ(store_.RecordSuccess(Id("eval/C/oracle/run1"), 1, result), JobUpdate::kSucceeded);
+  const auto rows = store_.Metrics(campaign_.id);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].scenario, "C");
+  EXPECT_EQ(rows[0].label, "oracle");
+  EXPECT_EQ(rows[0].rng_run, 1);
+  EXPECT_DOUBLE_EQ(rows[0].aggregate_throughput_mbps, 80.25);
+  EXPECT_FALSE(rows[0].mean_delay_ms.has_value());
+  EXPECT_DOUBLE_EQ(*rows[0].loss_ratio, 0.01);
+  EXPECT_DOUBLE_EQ(*rows[0].min_snr_db, 12.5);
+  EXPECT_EQ(rows[0].n_los, 4);
+  EXPECT_EQ(rows[0].n_ues, 4);
+  EXPECT_EQ(rows[0].demands_met, 3);
+  EXPECT_DOUBLE_EQ(rows[0].y, 35.0);
+  EXPECT_EQ(Job("eval/C/oracle/run1").result->at("aggregate_throughput_mbps"), 80.25);
+}
+
+TEST_F(StoreTest, RetriesUntilExhaustedThenFailsWithDependents) {
+  store_.Submit(campaign_);
+  const std::string train = Id("train/C/seed1");
+  ASSERT_EQ(Job("train/C/seed1").max_attempts, 2);  // mini: retries 1
+  store_.MarkRunning(train, "w1", 1);
+  EXPECT_EQ(store_.RecordFailure(train, 1, "exit code 3: ns-3 aborted"), JobUpdate::kRetrying);
+  JobRecord job = Job("train/C/seed1");
+  EXPECT_EQ(job.state, "ready");
+  EXPECT_EQ(job.attempt, 2);
+  EXPECT_EQ(job.error, "exit code 3: ns-3 aborted");
+  EXPECT_FALSE(job.worker_id.has_value());
+  store_.MarkRunning(train, "w2", 2);
+  EXPECT_EQ(store_.RecordFailure(train, 2, "exit code 1: out of memory"), JobUpdate::kFailed);
+  job = Job("train/C/seed1");
+  EXPECT_EQ(job.state, "failed");
+  EXPECT_EQ(job.attempt, 2);
+  EXPECT_EQ(job.error, "exit code 1: out of memory");
+  // Its 12 evals (rl + 5 offsets, 2 runs) can never run.
+  EXPECT_EQ(Job("eval/C/offset2/run2").state, "failed");
+  EXPECT_EQ(Job("eval/C/offset2/run2").error, "dependency " + train + " failed");
+  EXPECT_EQ(store_.Progress(campaign_.id).failed, 13);
+  EXPECT_EQ(Job("eval/B/rl/run1").state, "pending");  // other scenario untouched
+}
+
+TEST_F(StoreTest, MalformedResultIsAFailedAttempt) {
+  store_.Submit(campaign_);
+  store_.MarkRunning(Id("position/B/centroid"), "w1", 1);
+  EXPECT_EQ(store_.RecordSuccess(Id("position/B/centroid"), 1, {{"n_los", 2}}),
+            JobUpdate::kRetrying);
+  EXPECT_EQ(Job("position/B/centroid").error, "malformed result: result has no \"position\"");
+  store_.MarkRunning(Id("position/B/centroid"), "w1", 2);
+  store_.RecordSuccess(Id("position/B/centroid"), 2, PositionResult(40, 40, 10));
+  Start("eval/B/centroid/run1");
+  // An eval result of the wrong run is a wiring bug, not data.
+  EXPECT_EQ(store_.RecordSuccess(Id("eval/B/centroid/run1"), 1, EvalResult(2, 10, 1)),
+            JobUpdate::kRetrying);
+  EXPECT_EQ(Job("eval/B/centroid/run1").error,
+            "malformed result: result is of RngRun 2, the job's is 1");
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM metrics"), "0");
+}
+
+TEST_F(StoreTest, LostWorkerJobsGoBack) {
+  store_.Submit(campaign_);
+  Start("train/B/seed1", "w1");
+  Start("position/B/oracle", "w1");
+  Start("position/C/oracle", "w2");
+  const auto requeued = store_.RequeueWorker("w1");
+  EXPECT_EQ(requeued,
+            (std::vector<std::string>{Id("position/B/oracle"), Id("train/B/seed1")}));
+  const JobRecord job = Job("train/B/seed1");
+  EXPECT_EQ(job.state, "ready");
+  EXPECT_EQ(job.attempt, 2);
+  EXPECT_EQ(job.error, "worker w1 was lost");
+  EXPECT_EQ(Job("position/C/oracle").state, "running");
+  // The lost worker's result, should it still arrive, is stale.
+  EXPECT_EQ(store_.RecordSuccess(Id("train/B/seed1"), 1, PositionResult(1, 1, 10)),
+            JobUpdate::kStale);
+  EXPECT_TRUE(store_.RequeueWorker("w1").empty());
+  const auto running = store_.ListRunning();
+  ASSERT_EQ(running.size(), 1u);
+  EXPECT_EQ(running[0].worker_id, "w2");
+  EXPECT_DOUBLE_EQ(running[0].started_at, 1000.0);
+}
+
+TEST_F(StoreTest, CancelThenRetry) {
+  store_.Submit(campaign_);
+  store_.MarkRunning(Id("position/B/baseline"), "w1", 1);
+  store_.RecordSuccess(Id("position/B/baseline"), 1, PositionResult(50, 50, 25));
+  Start("eval/B/baseline/run1", "w1");
+  Start("train/B/seed1", "w2");
+
+  const auto stopped = store_.CancelCampaign(campaign_.id);
+  ASSERT_EQ(stopped.size(), 2u);
+  EXPECT_EQ(stopped[0].id, Id("eval/B/baseline/run1"));
+  EXPECT_EQ(stopped[0].worker_id, "w1");
+  CampaignProgress p = store_.Progress(campaign_.id);
+  EXPECT_EQ(p.state, "cancelled");
+  EXPECT_EQ(p.succeeded, 1);
+  EXPECT_EQ(p.cancelled, 43);
+  EXPECT_TRUE(store_.ListReady().empty());
+  EXPECT_EQ(store_.RecordSuccess(Id("train/B/seed1"), 1, PositionResult(1, 1, 10)),
+            JobUpdate::kStale);
+
+  EXPECT_EQ(store_.RetryFailed(campaign_.id), 43);
+  p = store_.Progress(campaign_.id);
+  EXPECT_EQ(p.state, "active");
+  EXPECT_EQ(p.succeeded, 1);
+  // Producers and the baseline evals (their position is known) are ready; the rest wait.
+  EXPECT_EQ(p.ready, 7 + 2);
+  EXPECT_EQ(p.pending, 43 - 9);
+  const JobRecord train = Job("train/B/seed1");
+  EXPECT_EQ(train.attempt, 2);
+  EXPECT_EQ(train.max_attempts, 3);  // a fresh budget: attempt 2 plus one retry
+  EXPECT_EQ(Job("eval/B/baseline/run1").argv[5], "50,50,25");
+  EXPECT_THROW(store_.CancelCampaign("000000000000"), StoreError);
+  EXPECT_THROW(store_.RetryFailed("000000000000"), StoreError);
+}
+
+TEST_F(StoreTest, RetryBringsFailedDependencyAndDependentsBack) {
+  store_.Submit(campaign_);
+  for (int attempt = 1; attempt <= 2; ++attempt) {
+    store_.MarkRunning(Id("train/B/seed1"), "w1", attempt);
+    store_.RecordFailure(Id("train/B/seed1"), attempt, "boom");
+  }
+  ASSERT_EQ(Job("eval/B/rl/run1").state, "failed");
+  EXPECT_EQ(store_.RetryFailed(campaign_.id), 13);
+  EXPECT_EQ(Job("train/B/seed1").state, "ready");
+  EXPECT_EQ(Job("train/B/seed1").attempt, 3);
+  EXPECT_EQ(Job("eval/B/rl/run1").state, "pending");
+  EXPECT_FALSE(Job("eval/B/rl/run1").error.has_value());
+}
+
+TEST_F(StoreTest, CampaignFinishesAndViewsAnswer) {
+  store_.Submit(campaign_);
+  int evals = 0;
+  for (int round = 0; round < 3; ++round) {
+    for (const auto& job : store_.ListReady()) {
+      ASSERT_TRUE(store_.MarkRunning(job.id, "w1", job.attempt));
+      const JobRecord record = *store_.GetJob(job.id);
+      const json result = job.kind == JobKind::kEval
+                              ? EvalResult(static_cast<std::uint64_t>(*record.rng_run),
+                                           100.0 + static_cast<double>(*record.rng_run), 2.0)
+                              : PositionResult(50, 35, 10);
+      ASSERT_EQ(store_.RecordSuccess(job.id, job.attempt, result), JobUpdate::kSucceeded);
+      evals += job.kind == JobKind::kEval ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(evals, 36);
+  const CampaignProgress p = store_.Progress(campaign_.id);
+  EXPECT_EQ(p.state, "finished");
+  EXPECT_EQ(p.succeeded, 44);
+  EXPECT_EQ(store_.AllProgress().size(), 1u);
+  EXPECT_EQ(store_.Metrics(campaign_.id).size(), 36u);
+
+  // The README's example queries, as a user would type them.
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM v_eval_runs WHERE scenario = 'B' AND positioner = 'rl'"),
+            "2");
+  EXPECT_EQ(Query("SELECT ROUND(AVG(throughput_mbps), 2) FROM v_eval_runs "
+                  "WHERE scenario = 'C' AND positioner = 'offset1'"),
+            "101.5");
+  EXPECT_EQ(Query("SELECT succeeded || '/' || total FROM v_campaign_progress "
+                  "WHERE name = 'mini'"),
+            "44/44");
+  EXPECT_EQ(Query("SELECT throughput_mbps FROM v_eval_runs WHERE scenario = 'B' "
+                  "AND positioner = 'baseline' AND rng_run = 2"),
+            "102.0");
+}
+
+TEST_F(StoreTest, ListReadyOldestCampaignFirst) {
+  store_.Submit(campaign_);
+  CampaignSpec other = testing::MiniSpec();
+  other.name = "later";
+  now_ += 10;
+  const SubmitResult second = store_.Submit(ExpandCampaign(other));
+  ASSERT_TRUE(second.created);
+  const auto ready = store_.ListReady();
+  ASSERT_EQ(ready.size(), 16u);
+  EXPECT_EQ(ready[0].campaign_id, campaign_.id);
+  EXPECT_EQ(ready[8].campaign_id, second.campaign_id);
+  // A cancelled campaign's jobs are not offered.
+  store_.CancelCampaign(campaign_.id);
+  EXPECT_EQ(store_.ListReady().size(), 8u);
+}
+
+TEST_F(StoreTest, Artifacts) {
+  store_.Submit(campaign_);
+  store_.AddArtifact(Id("train/B/seed1"), "policy", "/tmp/out/policy.pt");
+  store_.AddArtifact(Id("train/B/seed1"), "policy", "/tmp/out2/policy.pt");  // replaces
+  EXPECT_EQ(Query("SELECT path FROM artifacts WHERE name = 'policy'"), "/tmp/out2/policy.pt");
+  EXPECT_THROW(store_.AddArtifact("no/such/job", "x", "y"), StoreError);  // foreign key
+}
+
+}  // namespace
+}  // namespace rlpos
