@@ -178,7 +178,9 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
     for (auto it = w.rate_manager.attributes.begin(); it != w.rate_manager.attributes.end(); ++it) {
       manager->SetAttribute(it.key(), ns3::StringValue(AttributeString(*it)));
     }
-    manager->SetAttribute("RtsCtsThreshold", ns3::UintegerValue(w.rts_cts ? 0 : 65535));
+    // Off keeps ns-3's own threshold (larger than any PSDU): 65535 would still protect long
+    // A-MPDUs with RTS/CTS.
+    if (w.rts_cts) manager->SetAttribute("RtsCtsThreshold", ns3::UintegerValue(0));
   }
   return devices;
 }
