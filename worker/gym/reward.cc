@@ -45,19 +45,25 @@ std::map<std::string, RewardFactory>& Registry() {
 
 }  // namespace
 
+RewardInput RewardInputOf(const Scenario& s, int n_los, double throughput_mbps, int demands_met) {
+  return {n_los, static_cast<int>(s.ues.size()), throughput_mbps, s.TotalDemandMbps(), demands_met};
+}
+
 void RegisterReward(const std::string& name, RewardFactory factory) {
   Registry()[name] = std::move(factory);
 }
 
 std::vector<std::string> RewardNames() {
   std::vector<std::string> names;
-  for (const auto& [name, factory] : Registry()) names.push_back(name);
+  for (const auto& [name, factory] : Registry())
+    names.push_back(name);
   return names;
 }
 
 std::unique_ptr<Reward> MakeReward(const RewardSpec& spec) {
   const auto it = Registry().find(spec.name);
-  if (it == Registry().end()) throw std::invalid_argument("unknown reward \"" + spec.name + "\"");
+  if (it == Registry().end())
+    throw std::invalid_argument("unknown reward \"" + spec.name + "\"");
   return it->second(spec);
 }
 

@@ -24,6 +24,10 @@ class Reward {
   virtual double operator()(const RewardInput& in) const = 0;
 };
 
+// The reward's input for a UAV state in `scenario` (N and the total demand come from it).
+RewardInput RewardInputOf(const Scenario& scenario, int n_los, double throughput_mbps,
+                          int demands_met);
+
 using RewardFactory = std::function<std::unique_ptr<Reward>(const RewardSpec&)>;
 
 void RegisterReward(const std::string& name, RewardFactory factory);

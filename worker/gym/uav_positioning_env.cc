@@ -25,22 +25,25 @@ DiscreteSpace UavPositioningEnv::ActionSpace() const {
   return {static_cast<int>(scenario_.env.actions.size())};
 }
 
-BoxSpace UavPositioningEnv::ObservationSpace() const { return ObservationBounds(scenario_); }
+BoxSpace UavPositioningEnv::ObservationSpace() const {
+  return ObservationBounds(scenario_);
+}
 
 double UavPositioningEnv::RewardOf(const StepInfo& info) const {
-  return (*reward_)({info.n_los, static_cast<int>(scenario_.ues.size()), info.throughput_mbps,
-                     scenario_.TotalDemandMbps(), info.demands_met});
+  return (*reward_)(RewardInputOf(scenario_, info.n_los, info.throughput_mbps, info.demands_met));
 }
 
 StepInfo UavPositioningEnv::Observe() {
-  if (analytic_) return analytic_->Evaluate(position_);
+  if (analytic_)
+    return analytic_->Evaluate(position_);
   const RunMetrics m = network_->Measure();
   StepInfo info;
   info.position = position_;
   info.n_los = m.n_los;
   info.throughput_mbps = m.aggregate_throughput_mbps;
   info.demands_met = m.demands_met;
-  for (const auto& ue : m.ues) info.snr_db.push_back(ue.snr_db);
+  for (const auto& ue : m.ues)
+    info.snr_db.push_back(ue.snr_db);
   return info;
 }
 
@@ -65,7 +68,8 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
 }
 
 StepResult UavPositioningEnv::Step(int action) {
-  if (!ActionSpace().Contains(action)) throw std::out_of_range("action out of the action space");
+  if (!ActionSpace().Contains(action))
+    throw std::out_of_range("action out of the action space");
   position_ = ApplyMove(scenario_, action, position_);
   if (network_) {
     network_->SetUavPosition(position_);

@@ -9,17 +9,10 @@
 #include "scenario/scenario_checks.h"
 
 namespace rlpos {
-namespace {
 
-double RewardOf(const Reward& reward, const Scenario& s, int n_los, double throughput,
-                int demands_met) {
-  return reward({n_los, static_cast<int>(s.ues.size()), throughput, s.TotalDemandMbps(),
-                 demands_met});
+Vec3 BaselinePosition(const Scenario& s) {
+  return s.uav.initial;
 }
-
-}  // namespace
-
-Vec3 BaselinePosition(const Scenario& s) { return s.uav.initial; }
 
 Vec3 CentroidPosition(const Scenario& s) {
   double wx = 0, wy = 0, w = 0;
@@ -29,12 +22,14 @@ Vec3 CentroidPosition(const Scenario& s) {
     w += ue.demand_mbps;
   }
   double tallest = 0.0;
-  for (const auto& b : s.buildings) tallest = std::max(tallest, b.height);
+  for (const auto& b : s.buildings)
+    tallest = std::max(tallest, b.height);
   const Box& z = s.uav.zone;
   Vec3 p{std::clamp(wx / w, z.xmin, z.xmax), std::clamp(wy / w, z.ymin, z.ymax),
          std::clamp(std::max(10.0, tallest + 5.0), z.zmin, z.zmax)};
   // Above a building lower than the chosen height the point is free; inside one, climb.
-  while (BuildingContaining(s, p) >= 0 && p.z < z.zmax) p.z = std::min(p.z + 1.0, z.zmax);
+  while (BuildingContaining(s, p) >= 0 && p.z < z.zmax)
+    p.z = std::min(p.z + 1.0, z.zmax);
   return p;
 }
 
@@ -48,8 +43,10 @@ std::vector<ScoredPosition> OracleSearch(const Scenario& s, const OracleOptions&
     // The grid the agent moves on: from the initial position in steps, within the zone.
     auto axis = [&](double start, double lo, double hi) {
       std::vector<double> values;
-      for (double v = start; v >= lo - 1e-9; v -= step) values.push_back(v);
-      for (double v = start + step; v <= hi + 1e-9; v += step) values.push_back(v);
+      for (double v = start; v >= lo - 1e-9; v -= step)
+        values.push_back(v);
+      for (double v = start + step; v <= hi + 1e-9; v += step)
+        values.push_back(v);
       values.push_back(lo);
       values.push_back(hi);
       std::sort(values.begin(), values.end());
@@ -62,11 +59,12 @@ std::vector<ScoredPosition> OracleSearch(const Scenario& s, const OracleOptions&
       for (double y : axis(s.uav.initial.y, z.ymin, z.ymax)) {
         for (double h : axis(s.uav.initial.z, z.zmin, z.zmax)) {
           const Vec3 p{x, y, h};
-          if (BuildingContaining(s, p) >= 0) continue;
+          if (BuildingContaining(s, p) >= 0)
+            continue;
           const StepInfo info = analytic.Evaluate(p);
-          scored.push_back({p, RewardOf(*reward, s, info.n_los, info.throughput_mbps,
-                                        info.demands_met),
-                            -1.0, info.n_los, info.throughput_mbps});
+          scored.push_back(
+              {p, (*reward)(RewardInputOf(s, info.n_los, info.throughput_mbps, info.demands_met)),
+               -1.0, info.n_los, info.throughput_mbps});
         }
       }
     }
@@ -81,7 +79,7 @@ std::vector<ScoredPosition> OracleSearch(const Scenario& s, const OracleOptions&
     for (int i = 0; i < k; ++i) {
       const RunMetrics m = EvaluatePosition(shortened, scored[i].position);
       scored[i].packet_reward =
-          RewardOf(*reward, s, m.n_los, m.aggregate_throughput_mbps, m.demands_met);
+          (*reward)(RewardInputOf(s, m.n_los, m.aggregate_throughput_mbps, m.demands_met));
     }
     std::stable_sort(scored.begin(), scored.begin() + k, [](const auto& a, const auto& b) {
       return a.packet_reward > b.packet_reward;

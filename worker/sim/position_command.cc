@@ -16,7 +16,8 @@ namespace {
 
 // The trained policy's greedy final position, replayed from the policy folder.
 Vec3 RlPosition(Scenario s, const std::string& policy) {
-  if (policy.empty()) throw ConfigError("--policy", "is required for the rl positioner");
+  if (policy.empty())
+    throw ConfigError("--policy", "is required for the rl positioner");
   nlohmann::json trained;
   try {
     trained = ReadJsonFile(policy + "/result.json");
@@ -27,8 +28,8 @@ Vec3 RlPosition(Scenario s, const std::string& policy) {
   UavPositioningEnv env(s);
   DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
   agent.Load(policy);
-  const std::uint64_t run = trained.value("first_episode_run", 1ULL) +
-                            static_cast<std::uint64_t>(s.agent.train_episodes);
+  const std::uint64_t run =
+      trained.value("first_episode_run", 1ULL) + static_cast<std::uint64_t>(s.agent.train_episodes);
   return RunEpisode(env, agent, run, false).final_info.position;
 }
 
@@ -58,9 +59,8 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
   // Every positioner is scored the same way: the analytic model at its position.
   AnalyticEvaluator analytic(s);
   const StepInfo info = analytic.Evaluate(position);
-  const double reward = MakeReward(s.env.reward)->operator()(
-      {info.n_los, static_cast<int>(s.ues.size()), info.throughput_mbps, s.TotalDemandMbps(),
-       info.demands_met});
+  const double reward = (*MakeReward(s.env.reward))(
+      RewardInputOf(s, info.n_los, info.throughput_mbps, info.demands_met));
   nlohmann::json out = {{"scenario", s.name},
                         {"positioner", p.positioner},
                         {"position", {position.x, position.y, position.z}},
@@ -69,14 +69,16 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
                         {"analytic_throughput_mbps", info.throughput_mbps},
                         {"demands_met", info.demands_met},
                         {"reward", reward}};
-  if (!candidates.empty()) out["candidates"] = candidates;
+  if (!candidates.empty())
+    out["candidates"] = candidates;
   if (p.json) {
     std::cout << out.dump(2) << std::endl;
   } else {
-    std::printf("%s in %s: (%.1f, %.1f, %.1f), nLoS %d/%zu, analytic throughput %.1f Mbit/s, "
-                "reward %.4f\n",
-                p.positioner.c_str(), s.name.c_str(), position.x, position.y, position.z,
-                info.n_los, s.ues.size(), info.throughput_mbps, reward);
+    std::printf(
+        "%s in %s: (%.1f, %.1f, %.1f), nLoS %d/%zu, analytic throughput %.1f Mbit/s, "
+        "reward %.4f\n",
+        p.positioner.c_str(), s.name.c_str(), position.x, position.y, position.z, info.n_los,
+        s.ues.size(), info.throughput_mbps, reward);
   }
   return kExitOk;
 }
