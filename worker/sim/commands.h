@@ -48,5 +48,7 @@ int RunValidate(const CommonOptions& options, bool json);
 int RunEval(const CommonOptions& options, const EvalOptions& eval);
 int RunTrain(const CommonOptions& options, const TrainOptions& train);
 int RunPosition(const CommonOptions& options, const PositionOptions& position);
+// The rl positioner: the trained policy's greedy final position (from the RL module).
+Vec3 RlPosition(const Scenario& scenario, const std::string& policy);
 
 }  // namespace rlpos::sim

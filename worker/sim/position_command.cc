@@ -1,39 +1,14 @@
 #include <fstream>
 #include <iostream>
 
-#include "agent/dqn_agent.h"
-#include "agent/trainer.h"
 #include "config/config_error.h"
 #include "gym/analytic_evaluator.h"
 #include "gym/reward.h"
-#include "gym/uav_positioning_env.h"
 #include "positioners/positioners.h"
 #include "scenario/scenario_parser.h"
 #include "sim/commands.h"
 
 namespace rlpos::sim {
-namespace {
-
-// The trained policy's greedy final position, replayed from the policy folder.
-Vec3 RlPosition(Scenario s, const std::string& policy) {
-  if (policy.empty())
-    throw ConfigError("--policy", "is required for the rl positioner");
-  nlohmann::json trained;
-  try {
-    trained = ReadJsonFile(policy + "/result.json");
-  } catch (const ConfigError& e) {
-    throw ConfigError("--policy", policy + "/result.json: " + e.problem());
-  }
-  s.env.fidelity = trained.value("fidelity", s.env.fidelity);
-  UavPositioningEnv env(s);
-  DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
-  agent.Load(policy);
-  const std::uint64_t run =
-      trained.value("first_episode_run", 1ULL) + static_cast<std::uint64_t>(s.agent.train_episodes);
-  return RunEpisode(env, agent, run, false).final_info.position;
-}
-
-}  // namespace
 
 int RunPosition(const CommonOptions& options, const PositionOptions& p) {
   const Scenario s = LoadScenarioFor(options, {});

@@ -7,7 +7,7 @@
 #include "config/config_error.h"
 #include "gym/uav_positioning_env.h"
 #include "scenario/scenario_parser.h"
-#include "sim/commands.h"
+#include "sim/rl_commands.h"
 
 namespace rlpos::sim {
 namespace {
@@ -43,7 +43,7 @@ void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
 
 }  // namespace
 
-int RunTrain(const CommonOptions& options, const TrainOptions& t) {
+int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   std::vector<std::string> extra;
   if (!t.fidelity.empty()) extra.push_back("env.fidelity=" + t.fidelity);
   if (t.seed >= 0) extra.push_back("agent.seed=" + std::to_string(t.seed));

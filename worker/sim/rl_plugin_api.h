@@ -1,0 +1,20 @@
+#pragma once
+// The RL commands (train, the rl positioner) live in a module loaded on demand, so that
+// validate and eval, which a campaign runs hundreds of times, never load libtorch: its
+// start-up alone costs more than 0.5 s per process.
+#include <string>
+
+#include "scenario/scenario.h"
+#include "sim/commands.h"
+
+namespace rlpos::sim {
+
+struct RlCommands {
+  int (*train)(const CommonOptions& options, const TrainOptions& train);
+  Vec3 (*policy_position)(const Scenario& scenario, const std::string& policy);
+};
+
+}  // namespace rlpos::sim
+
+// The module's one entry point (looked up by name with dlsym).
+extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v1();

@@ -1,0 +1,48 @@
+// rlpos-sim's side of the RL module: finds it next to the binary (../lib) and forwards to it.
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <climits>
+#include <stdexcept>
+#include <string>
+
+#include "sim/rl_plugin_api.h"
+
+namespace rlpos::sim {
+namespace {
+
+std::string ModulePath() {
+  char exe[PATH_MAX];
+  const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n <= 0)
+    throw std::runtime_error("cannot locate the rlpos-sim binary (/proc/self/exe)");
+  std::string dir(exe, static_cast<std::size_t>(n));
+  dir = dir.substr(0, dir.rfind('/'));
+  return dir + "/../lib/librlpos_rl_commands.so";
+}
+
+const RlCommands& Load() {
+  static const RlCommands* commands = [] {
+    const std::string path = ModulePath();
+    void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!module)
+      throw std::runtime_error("cannot load the RL commands: " + std::string(dlerror()));
+    auto entry = reinterpret_cast<const RlCommands* (*)()>(dlsym(module, "rlpos_rl_commands_v1"));
+    if (!entry)
+      throw std::runtime_error(path + ": no rlpos_rl_commands_v1 entry point");
+    return entry();
+  }();
+  return *commands;
+}
+
+}  // namespace
+
+int RunTrain(const CommonOptions& options, const TrainOptions& train) {
+  return Load().train(options, train);
+}
+
+Vec3 RlPosition(const Scenario& scenario, const std::string& policy) {
+  return Load().policy_position(scenario, policy);
+}
+
+}  // namespace rlpos::sim

@@ -1,0 +1,36 @@
+#include "agent/dqn_agent.h"
+#include "agent/trainer.h"
+#include "config/config_error.h"
+#include "gym/uav_positioning_env.h"
+#include "scenario/scenario_parser.h"
+#include "sim/rl_commands.h"
+#include "sim/rl_plugin_api.h"
+
+namespace rlpos::sim {
+
+Vec3 PolicyPosition(const Scenario& scenario, const std::string& policy) {
+  Scenario s = scenario;
+  if (policy.empty())
+    throw ConfigError("--policy", "is required for the rl positioner");
+  nlohmann::json trained;
+  try {
+    trained = ReadJsonFile(policy + "/result.json");
+  } catch (const ConfigError& e) {
+    throw ConfigError("--policy", policy + "/result.json: " + e.problem());
+  }
+  s.env.fidelity = trained.value("fidelity", s.env.fidelity);
+  UavPositioningEnv env(s);
+  DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
+  agent.Load(policy);
+  const std::uint64_t run =
+      trained.value("first_episode_run", 1ULL) + static_cast<std::uint64_t>(s.agent.train_episodes);
+  return RunEpisode(env, agent, run, false).final_info.position;
+}
+
+}  // namespace rlpos::sim
+
+extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v1() {
+  static const rlpos::sim::RlCommands commands{rlpos::sim::TrainCommand,
+                                               rlpos::sim::PolicyPosition};
+  return &commands;
+}
