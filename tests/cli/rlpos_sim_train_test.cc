@@ -90,5 +90,22 @@ TEST(PositionCommand, BaselineAndCentroid) {
   EXPECT_EQ(nlohmann::json::parse(centroid.out)["position"], (nlohmann::json{47.5, 37.5, 35.0}));
 }
 
+TEST(PositionCommand, OffsetsAroundAGivenPosition) {
+  const auto east = RunCommand(Sim("position --scenario " + kScenarioB +
+                                   " --positioner offsets --offset 1 --from 50,35,10 --json"));
+  ASSERT_EQ(east.exit_code, 0) << east.err;
+  EXPECT_EQ(nlohmann::json::parse(east.out)["position"], (nlohmann::json{60.0, 35.0, 10.0}));
+  const auto bad = RunCommand(Sim("position --scenario " + kScenarioB +
+                                  " --positioner offsets --offset 6 --from 50,35,10"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--offset: is required for the offsets positioner: 1 to 5"),
+            std::string::npos)
+      << bad.err;
+  const auto no_centre =
+      RunCommand(Sim("position --scenario " + kScenarioB + " --positioner offsets --offset 2"));
+  EXPECT_EQ(no_centre.exit_code, 2);
+  EXPECT_NE(no_centre.err.find("--from: give exactly one of"), std::string::npos) << no_centre.err;
+}
+
 }  // namespace
 }  // namespace rlpos::testing

@@ -40,7 +40,9 @@ struct TrainOptions {
 
 struct PositionOptions {
   std::string positioner;
-  std::string policy;  // rl
+  std::string policy;  // rl, or offsets around the rl position
+  std::string from;    // offsets: around this x,y,z instead
+  int offset = 0;      // offsets: which of positions 1-5
   bool json = false;
 };
 

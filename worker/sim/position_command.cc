@@ -1,12 +1,14 @@
 #include <fstream>
 #include <iostream>
 
+#include "campaign/offsets.h"
 #include "config/config_error.h"
 #include "gym/analytic_evaluator.h"
 #include "gym/reward.h"
 #include "positioners/positioners.h"
 #include "scenario/scenario_parser.h"
 #include "sim/commands.h"
+#include "sim/scenario_loading.h"
 
 namespace rlpos::sim {
 
@@ -28,6 +30,15 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
                             {"packet_reward", c.packet_reward},
                             {"n_los", c.n_los}});
     }
+  } else if (p.positioner == "offsets") {
+    if (p.offset < 1 || p.offset > kOffsetCount) {
+      throw ConfigError("--offset", "is required for the offsets positioner: 1 to 5");
+    }
+    if (p.from.empty() == p.policy.empty()) {
+      throw ConfigError("--from", "give exactly one of --from x,y,z or --policy DIR (the centre)");
+    }
+    const Vec3 center = p.from.empty() ? RlPosition(s, p.policy) : ParsePosition(p.from, "--from");
+    position = OffsetPosition(center, p.offset, OffsetGeometryOf(s));
   } else {
     position = RlPosition(s, p.policy);
   }

@@ -5,9 +5,10 @@
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <iostream>
-#include <unistd.h>
 
 #include "config/config_error.h"
 #include "sim/abort_guard.h"
@@ -18,8 +19,9 @@ namespace {
 using rlpos::sim::CommonOptions;
 
 void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
-  command->add_option("--set", options.overrides,
-                      "Override a scenario field: path=value (e.g. wifi.mode=adhoc); repeatable")
+  command
+      ->add_option("--set", options.overrides,
+                   "Override a scenario field: path=value (e.g. wifi.mode=adhoc); repeatable")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   command->add_option("--log-level", options.log_level, "error|warning|info|debug")
@@ -56,7 +58,8 @@ int main(int argc, char** argv) {
                  "Progress on stderr (default: on a TTY)");
   AddScenarioOverrides(eval, options);
 
-  auto* train = app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
+  auto* train =
+      app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
   TrainOptions train_options;
   train->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
   train->add_option("--fidelity", train_options.fidelity, "packet|analytic (default: env.fidelity)")
@@ -72,10 +75,16 @@ int main(int argc, char** argv) {
   auto* position = app.add_subcommand("position", "Where a positioner puts the UAV");
   PositionOptions position_options;
   position->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
-  position->add_option("--positioner", position_options.positioner, "baseline|centroid|oracle|rl")
+  position
+      ->add_option("--positioner", position_options.positioner,
+                   "baseline|centroid|oracle|rl|offsets")
       ->required()
-      ->check(CLI::IsMember({"baseline", "centroid", "oracle", "rl"}));
-  position->add_option("--policy", position_options.policy, "Folder written by train (rl)");
+      ->check(CLI::IsMember({"baseline", "centroid", "oracle", "rl", "offsets"}));
+  position->add_option("--policy", position_options.policy,
+                       "Folder written by train (rl; offsets around the rl position)");
+  position->add_option("--from", position_options.from, "offsets: around this x,y,z");
+  position->add_option("--offset", position_options.offset,
+                       "offsets: position 1-5 (10 m towards +x, -x, +y, -y, +z)");
   position->add_flag("--json", position_options.json, "Print the result as JSON");
   AddScenarioOverrides(position, options);
 
@@ -89,9 +98,12 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*validate) return RunValidate(options, validate_json);
-    if (*train) return RunTrain(options, train_options);
-    if (*position) return RunPosition(options, position_options);
+    if (*validate)
+      return RunValidate(options, validate_json);
+    if (*train)
+      return RunTrain(options, train_options);
+    if (*position)
+      return RunPosition(options, position_options);
     return RunEval(options, eval_options);
   } catch (const rlpos::ConfigError& e) {
     const bool cli = e.path().rfind("--", 0) == 0;
