@@ -146,7 +146,8 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
 
 std::vector<ReadyJob> ResultsStore::ListReady(std::size_t limit) {
   Statement select = db_->Prepare(
-      "SELECT j.id, j.campaign_id, j.key, j.kind, j.attempt, j.timeout_s, j.argv_json "
+      "SELECT j.id, j.campaign_id, j.key, j.kind, j.attempt, j.timeout_s, j.argv_json, "
+      "j.scenario "
       "FROM jobs j JOIN campaigns c ON c.id = j.campaign_id "
       "WHERE j.state = 'ready' AND c.state = 'active' "
       "ORDER BY c.created_at, c.id, j.seq LIMIT ?");
@@ -161,6 +162,7 @@ std::vector<ReadyJob> ResultsStore::ListReady(std::size_t limit) {
     job.attempt = static_cast<int>(select.Int(4));
     job.timeout_s = select.Double(5);
     job.argv = ArgvFromJson(select.Text(6), file());
+    job.scenario = select.Text(7);
     out.push_back(std::move(job));
   }
   return out;
@@ -481,8 +483,11 @@ std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
 std::vector<MetricRow> ResultsStore::Metrics(const std::string& campaign_id) {
   Statement select = db_->Prepare(
       "SELECT job_id, scenario, positioner, rng_run, throughput_mbps, delay_ms, loss_ratio, "
-      "min_snr_db, n_los, n_ues, demands_met, x, y, z FROM v_eval_runs "
-      "WHERE campaign_id = ? ORDER BY scenario, positioner, rng_run");
+      "min_snr_db, n_los, n_ues, demands_met, x, y, z FROM v_eval_runs v "
+      "WHERE campaign_id = ? "
+      // Scenarios in campaign order (their first job), not by name.
+      "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
+      "AND j.scenario = v.scenario), positioner, rng_run");
   select.Bind(campaign_id);
   std::vector<MetricRow> out;
   while (select.Step()) {

@@ -40,6 +40,7 @@ struct ReadyJob {
   std::string id;
   std::string campaign_id;
   std::string key;
+  std::string scenario;  // the scenario's name
   JobKind kind = JobKind::kEval;
   int attempt = 1;
   double timeout_s = 0;
@@ -89,6 +90,27 @@ struct MetricRow {
   double x = 0, y = 0, z = 0;
 };
 
+// A worker as the coordinator last saw it (DDS liveliness decides alive/lost).
+struct WorkerRecord {
+  std::string id, host;
+  std::int64_t pid = 0;
+  int slots = 1, busy = 0;
+  std::string state = "alive";  // alive | lost | stopped
+  double first_seen = 0, last_seen = 0;
+};
+
+struct CampaignTiming {
+  double created_at = 0;
+  std::optional<double> first_started_at, last_finished_at;
+  int finished = 0;  // succeeded, failed or cancelled
+};
+
+struct FailedJob {
+  std::string key;
+  int attempts = 0;
+  std::string error;
+};
+
 class ResultsStore {
  public:
   // Opens or creates the file and migrates it to the newest schema. Throws StoreError naming
@@ -128,8 +150,20 @@ class ResultsStore {
   CampaignProgress Progress(const std::string& campaign_id);
   std::vector<CampaignProgress> AllProgress();
   std::optional<JobRecord> GetJob(const std::string& job_id);
-  // One row per succeeded eval job, by scenario, label, rng_run.
+  // One row per succeeded eval job, by scenario (campaign order), label, rng_run.
   std::vector<MetricRow> Metrics(const std::string& campaign_id);
+  // Workers: UpsertWorker sets alive and last_seen = now; SetWorkerState marks it lost or
+  // stopped (no-op for an unknown id); MarkAllWorkersLost is the coordinator's start (it knows
+  // nothing alive until DDS tells it).
+  void UpsertWorker(const WorkerRecord& worker);
+  void SetWorkerState(const std::string& worker_id, const std::string& state);
+  void MarkAllWorkersLost();
+  std::vector<WorkerRecord> ListWorkers();
+  // Throw StoreError for an unknown campaign.
+  CampaignTiming Timing(const std::string& campaign_id);
+  std::vector<FailedJob> FailedJobs(const std::string& campaign_id);
+  std::optional<nlohmann::json> CampaignSpecJson(const std::string& campaign_id);
+
   void AddArtifact(const std::string& job_id, const std::string& name, const std::string& path);
 
  private:

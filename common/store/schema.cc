@@ -97,10 +97,25 @@ LEFT JOIN jobs j ON j.campaign_id = c.id
 GROUP BY c.id;
 )sql";
 
+// Version 2: the workers the coordinator has seen, so that `status` (another process) can show
+// which are alive.
+constexpr const char* kVersion2 = R"sql(
+CREATE TABLE workers (
+  id         TEXT PRIMARY KEY,
+  host       TEXT NOT NULL,
+  pid        INTEGER NOT NULL,
+  slots      INTEGER NOT NULL CHECK (slots >= 1),
+  busy       INTEGER NOT NULL CHECK (busy >= 0),
+  state      TEXT NOT NULL CHECK (state IN ('alive', 'lost', 'stopped')),
+  first_seen REAL NOT NULL,
+  last_seen  REAL NOT NULL
+);
+)sql";
+
 }  // namespace
 
 const std::vector<Migration>& Migrations() {
-  static const std::vector<Migration> migrations{{1, kVersion1}};
+  static const std::vector<Migration> migrations{{1, kVersion1}, {2, kVersion2}};
   return migrations;
 }
 

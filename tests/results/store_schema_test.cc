@@ -70,10 +70,10 @@ TEST(StoreSchema, NewFileGetsTheLatestSchemaInWalMode) {
   sqlite3_prepare_v2(db,
                      "SELECT COUNT(*) FROM sqlite_master WHERE name IN ('campaigns', 'jobs', "
                      "'metrics', 'artifacts', 'schema_version', 'v_eval_runs', "
-                     "'v_campaign_progress')",
+                     "'v_campaign_progress', 'workers')",
                      -1, &stmt, nullptr);
   ASSERT_EQ(sqlite3_step(stmt), SQLITE_ROW);
-  EXPECT_EQ(sqlite3_column_int(stmt, 0), 7);
+  EXPECT_EQ(sqlite3_column_int(stmt, 0), 8);
   sqlite3_finalize(stmt);
   sqlite3_close(db);
 }

@@ -1,0 +1,93 @@
+// What `status` and `run` show while a campaign runs: workers, timings, failed jobs.
+#include "store/results_store.h"
+#include "store/sqlite_db.h"
+
+namespace rlpos {
+
+void ResultsStore::UpsertWorker(const WorkerRecord& worker) {
+  const double now = Now();
+  db_->Prepare(
+         "INSERT INTO workers (id, host, pid, slots, busy, state, first_seen, last_seen) "
+         "VALUES (?, ?, ?, ?, ?, 'alive', ?, ?) "
+         "ON CONFLICT(id) DO UPDATE SET host = excluded.host, pid = excluded.pid, "
+         "slots = excluded.slots, busy = excluded.busy, state = 'alive', "
+         "last_seen = excluded.last_seen")
+      .Bind(worker.id)
+      .Bind(worker.host)
+      .Bind(worker.pid)
+      .Bind(worker.slots)
+      .Bind(worker.busy)
+      .Bind(now)
+      .Bind(now)
+      .Run();
+}
+
+void ResultsStore::SetWorkerState(const std::string& worker_id, const std::string& state) {
+  db_->Prepare("UPDATE workers SET state = ?, busy = 0, last_seen = ? WHERE id = ?")
+      .Bind(state)
+      .Bind(Now())
+      .Bind(worker_id)
+      .Run();
+}
+
+void ResultsStore::MarkAllWorkersLost() {
+  db_->Prepare("UPDATE workers SET state = 'lost', busy = 0 WHERE state = 'alive'").Run();
+}
+
+std::vector<WorkerRecord> ResultsStore::ListWorkers() {
+  Statement select = db_->Prepare(
+      "SELECT id, host, pid, slots, busy, state, first_seen, last_seen FROM workers "
+      "ORDER BY state = 'alive' DESC, id");
+  std::vector<WorkerRecord> out;
+  while (select.Step()) {
+    WorkerRecord w;
+    w.id = select.Text(0);
+    w.host = select.Text(1);
+    w.pid = select.Int(2);
+    w.slots = static_cast<int>(select.Int(3));
+    w.busy = static_cast<int>(select.Int(4));
+    w.state = select.Text(5);
+    w.first_seen = select.Double(6);
+    w.last_seen = select.Double(7);
+    out.push_back(std::move(w));
+  }
+  return out;
+}
+
+std::optional<nlohmann::json> ResultsStore::CampaignSpecJson(const std::string& campaign_id) {
+  Statement select = db_->Prepare("SELECT spec_json FROM campaigns WHERE id = ?");
+  select.Bind(campaign_id);
+  if (!select.Step()) return std::nullopt;
+  return nlohmann::json::parse(select.Text(0));
+}
+
+CampaignTiming ResultsStore::Timing(const std::string& campaign_id) {
+  RequireCampaign(campaign_id);
+  Statement select = db_->Prepare(
+      "SELECT c.created_at, MIN(j.started_at), MAX(j.finished_at), "
+      "COALESCE(SUM(j.state IN ('succeeded', 'failed', 'cancelled')), 0) "
+      "FROM campaigns c LEFT JOIN jobs j ON j.campaign_id = c.id WHERE c.id = ?");
+  select.Bind(campaign_id);
+  select.Step();
+  CampaignTiming t;
+  t.created_at = select.Double(0);
+  t.first_started_at = select.OptionalDouble(1);
+  t.last_finished_at = select.OptionalDouble(2);
+  t.finished = static_cast<int>(select.Int(3));
+  return t;
+}
+
+std::vector<FailedJob> ResultsStore::FailedJobs(const std::string& campaign_id) {
+  RequireCampaign(campaign_id);
+  Statement select = db_->Prepare(
+      "SELECT key, attempt, COALESCE(error, '') FROM jobs "
+      "WHERE campaign_id = ? AND state = 'failed' ORDER BY seq");
+  select.Bind(campaign_id);
+  std::vector<FailedJob> out;
+  while (select.Step()) {
+    out.push_back({select.Text(0), static_cast<int>(select.Int(1)), select.Text(2)});
+  }
+  return out;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,63 @@
+#include "cli/campaign_client.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <random>
+#include <thread>
+
+#include "dds/topics.h"
+#include "dds/wait_set.h"
+
+namespace rlpos {
+namespace {
+
+std::string NewRequestId() {
+  char host[256] = {0};
+  gethostname(host, sizeof host - 1);
+  std::random_device random;
+  return std::string(host) + "-" + std::to_string(getpid()) + "-" + std::to_string(random());
+}
+
+}  // namespace
+
+std::string DescribeDds(const DdsOptions& options) {
+  std::string text = "DDS domain " + std::to_string(options.domain);
+  if (!options.loopback_tag.empty()) text += ", loopback tag " + options.loopback_tag;
+  return text;
+}
+
+msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignRequest request,
+                                       double timeout_s) {
+  using Clock = std::chrono::steady_clock;
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(timeout_s));
+  const auto no_answer = [&] {
+    return NoCoordinatorError("no coordinator answered on " + DescribeDds(dds) + " within " +
+                              std::to_string(static_cast<int>(timeout_s)) +
+                              " s (is rlpos-coordinator running there?)");
+  };
+  Participant participant(dds);
+  Reader<msg::CampaignReply> replies(participant);
+  Writer<msg::CampaignRequest> requests(participant);
+  WaitSet wait_set(participant);
+  wait_set.Attach(replies.handle());
+  // The request topic is volatile: write only once the coordinator's reader is matched, and
+  // its reply writer matched to us, or the request or its answer would be lost.
+  while (requests.MatchedReaders() == 0 || replies.MatchedWriters() == 0) {
+    if (Clock::now() >= deadline) throw no_answer();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  request.request_id = NewRequestId();
+  requests.Write(request);
+  while (Clock::now() < deadline) {
+    const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+    wait_set.Wait(std::max(0.0, std::min(left, 0.5)));
+    for (const auto& r : replies.Take()) {
+      if (r.valid && r.data.request_id == request.request_id) return r.data;
+    }
+  }
+  throw no_answer();
+}
+
+}  // namespace rlpos

@@ -1,0 +1,27 @@
+#pragma once
+// rlpos-campaign's side of the campaign requests: send one request to the coordinator over DDS
+// and wait for its reply. The coordinator is the only writer of the database, so submit,
+// cancel and retry go through it.
+#include <stdexcept>
+#include <string>
+
+#include "dds/messages.h"
+#include "dds/participant.h"
+
+namespace rlpos {
+
+// No coordinator answered in time (exit code 4 of rlpos-campaign).
+class NoCoordinatorError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// "DDS domain 0" or "DDS domain 7, loopback tag T".
+std::string DescribeDds(const DdsOptions& options);
+
+// Fills in request_id; throws NoCoordinatorError when no coordinator is matched or answers
+// within `timeout_s`.
+msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignRequest request,
+                                       double timeout_s);
+
+}  // namespace rlpos

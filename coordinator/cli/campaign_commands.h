@@ -1,0 +1,46 @@
+#pragma once
+// The subcommands of rlpos-campaign. Each returns the process exit code; errors are thrown
+// (rlpos_campaign.cc turns them into one line and the code below).
+#include <string>
+
+#include "campaign/expansion.h"
+#include "dds/dds_config.h"
+
+namespace rlpos {
+
+// Exit codes of rlpos-campaign.
+enum ExitCode {
+  kExitOk = 0,
+  kExitFailure = 1,        // runtime failure (a daemon would not start, I/O, DDS)
+  kExitBadInput = 2,       // usage, campaign file, database, unknown campaign id
+  kExitJobsFailed = 3,     // run: the campaign finished but some jobs failed
+  kExitNoCoordinator = 4,  // submit, cancel, retry: no coordinator answered
+  kExitInterrupted = 130,  // run: stopped by SIGINT/SIGTERM (resume with the same command)
+};
+
+struct RunOptions {
+  std::string campaign_file;
+  int workers = 1;
+  int slots_per_worker = 1;
+  std::string db = "results/rlpos.db";
+  std::string report_dir;  // default results/reports/<campaign id>
+  bool progress = true;    // redraw a progress bar (a TTY) or print a line now and then
+  int domain = -1;         // -1: derived from the tag
+  std::string tag;         // DDS discovery tag; default: random (rlpos-run-<pid>-<hex>)
+  std::string log_dir;     // default results/logs/<tag>
+};
+
+int RunCampaign(const RunOptions& options);
+int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, double timeout_s);
+int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
+int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
+int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch,
+               double period_s);
+int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format);
+int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
+                        const std::string& out_dir);
+
+// The campaign file, validated and expanded; throws ConfigError (the caller names the file).
+ExpandedCampaign LoadCampaign(const std::string& campaign_file);
+
+}  // namespace rlpos

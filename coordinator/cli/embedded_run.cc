@@ -1,0 +1,208 @@
+// rlpos-campaign run: the embedded default. Starts rlpos-coordinator and N rlpos-workers as
+// child processes on a private loopback-only DDS domain (a random discovery tag), submits the
+// campaign over DDS like `submit` does, follows it in the database with a progress bar,
+// restarts a daemon that dies, and at the end prints the summary and writes the report.
+#include <unistd.h>
+
+#include <chrono>
+#include <functional>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <thread>
+
+#include "campaign/expanded_campaign_json.h"
+#include "campaign/expansion.h"
+#include "cli/campaign_client.h"
+#include "cli/campaign_commands.h"
+#include "cli/progress_text.h"
+#include "process/child_process.h"
+#include "process/executable_path.h"
+#include "process/stop_signal.h"
+#include "reporting/campaign_summary.h"
+#include "reporting/report_writer.h"
+#include "reporting/results_format.h"
+#include "store/results_store.h"
+
+namespace rlpos {
+namespace fs = std::filesystem;
+
+namespace {
+
+double WallNow() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+std::string NewTag() {
+  std::random_device random;
+  char tag[48];
+  std::snprintf(tag, sizeof tag, "rlpos-run-%d-%08x", static_cast<int>(getpid()), random());
+  return tag;
+}
+
+// A daemon of the run: its command line (per restart: a restarted worker takes a new id, so
+// that the coordinator sees the old one's lease run out), its log, and restarts when it dies.
+class Daemon {
+ public:
+  using CommandLine = std::function<std::vector<std::string>(int restart)>;
+  Daemon(std::string name, CommandLine argv, std::string log)
+      : name_(std::move(name)), argv_(std::move(argv)), log_(std::move(log)) {}
+
+  void Start() {
+    const std::string log = restarts_ == 0 ? log_ : log_ + "." + std::to_string(restarts_);
+    process_ = std::make_unique<ChildProcess>(argv_(restarts_), "/dev/null", log);
+  }
+  // Restarts it if it ended; returns a line saying so, or "".
+  std::string KeepAlive(int max_restarts) {
+    if (!process_ || !process_->Poll()) return "";
+    const std::string how = Describe(process_->exit_status());
+    if (restarts_ >= max_restarts) {
+      throw std::runtime_error(name_ + " ended (" + how + ") " + std::to_string(restarts_) +
+                               " times; see " + log_);
+    }
+    ++restarts_;
+    Start();
+    return name_ + " ended (" + how + "); restarted";
+  }
+  void Stop(double grace_s) {
+    if (process_) process_->Kill(grace_s);
+  }
+
+ private:
+  std::string name_;
+  CommandLine argv_;
+  std::string log_;
+  int restarts_ = 0;
+  std::unique_ptr<ChildProcess> process_;
+};
+
+class ProgressPrinter {
+ public:
+  explicit ProgressPrinter(bool enabled)
+      : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0) {}
+  void Show(const std::string& line, bool final) {
+    if (!enabled_) return;
+    if (tty_) {
+      std::cerr << "\r\033[K" << line << (final ? "\n" : "") << std::flush;
+      return;
+    }
+    // Not a terminal (CI, a log file): a line when something changed, at most every 10 s.
+    const auto now = std::chrono::steady_clock::now();
+    if (!final && (line == last_ || now - last_time_ < std::chrono::seconds(10))) return;
+    std::cerr << line << "\n";
+    last_ = line;
+    last_time_ = now;
+  }
+  void Note(const std::string& text) {
+    if (tty_ && enabled_) std::cerr << "\r\033[K";
+    std::cerr << "rlpos-campaign: " << text << "\n";
+  }
+
+ private:
+  bool enabled_, tty_;
+  std::string last_;
+  std::chrono::steady_clock::time_point last_time_{};
+};
+
+}  // namespace
+
+int RunCampaign(const RunOptions& options) {
+  // Bad input stops here, before anything starts.
+  const ExpandedCampaign campaign = LoadCampaign(options.campaign_file);
+  const std::string bin = ExecutableDir();
+  const std::string tag = options.tag.empty() ? NewTag() : options.tag;
+  DdsOptions dds;
+  dds.loopback_tag = tag;
+  dds.domain = options.domain >= 0 ? options.domain
+                                   : 1 + static_cast<int>(std::hash<std::string>{}(tag) % 200);
+  CheckDdsOptions(dds);
+  const fs::path db_dir = fs::absolute(options.db).parent_path();
+  const fs::path log_dir = options.log_dir.empty() ? db_dir / "logs" / tag : fs::path(options.log_dir);
+  fs::create_directories(log_dir);
+  const auto dds_args = DdsArgs(dds);
+
+  std::vector<std::unique_ptr<Daemon>> daemons;
+  std::vector<std::string> coordinator{bin + "/rlpos-coordinator", "--db", options.db,
+                                       "--log-level", "info"};
+  coordinator.insert(coordinator.end(), dds_args.begin(), dds_args.end());
+  daemons.push_back(std::make_unique<Daemon>(
+      "rlpos-coordinator", [coordinator](int) { return coordinator; },
+      (log_dir / "coordinator.log").string()));
+  for (int i = 0; i < options.workers; ++i) {
+    const std::string name = "w" + std::to_string(i);
+    const auto command_line = [&, name](int restart) {
+      const std::string id = tag + "-" + name + (restart > 0 ? "." + std::to_string(restart) : "");
+      std::vector<std::string> worker{bin + "/rlpos-worker", "--id", id, "--slots",
+                                      std::to_string(options.slots_per_worker), "--work-dir",
+                                      (db_dir / "work" / tag / id).string(), "--log-level",
+                                      "info"};
+      worker.insert(worker.end(), dds_args.begin(), dds_args.end());
+      return worker;
+    };
+    daemons.push_back(std::make_unique<Daemon>("rlpos-worker " + tag + "-" + name, command_line,
+                                               (log_dir / (name + ".log")).string()));
+  }
+  ProgressPrinter printer(options.progress);
+  const auto stop_all = [&] {
+    // Workers first, so that the coordinator does not see them as lost on the way out.
+    for (std::size_t i = daemons.size(); i-- > 0;) daemons[i]->Stop(i == 0 ? 5.0 : 3.0);
+  };
+  try {
+    for (auto& d : daemons) d->Start();
+    printer.Note("running " + campaign.name + " (" + std::to_string(campaign.jobs.size()) +
+                 " jobs) on " + std::to_string(options.workers) + " worker(s); " +
+                 DescribeDds(dds) + "; logs in " + log_dir.string());
+    msg::CampaignRequest request;
+    request.kind = msg::RequestKind::kSubmit;
+    request.campaign_json = ToJson(campaign).dump();
+    const msg::CampaignReply reply = SendCampaignRequest(dds, request, 60.0);
+    if (!reply.ok) throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
+    std::cout << "campaign " << reply.campaign_id << "\n" << std::flush;
+
+    StoreOptions read_only;
+    read_only.read_only = true;
+    ResultsStore store(options.db, read_only);
+    for (;;) {
+      if (StopRequested()) {
+        stop_all();
+        printer.Note("interrupted; run the same command again to resume");
+        return kExitInterrupted;
+      }
+      for (auto& d : daemons) {
+        const std::string note = d->KeepAlive(5);
+        if (!note.empty()) printer.Note(note);
+      }
+      const CampaignProgress progress = store.Progress(reply.campaign_id);
+      const bool settled = IsSettled(progress);
+      const auto eta = EstimateRemainingSeconds(progress, store.Timing(reply.campaign_id),
+                                                WallNow());
+      printer.Show(ProgressLine(progress, settled ? std::nullopt : eta), settled);
+      if (settled) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    }
+    stop_all();
+
+    const CampaignProgress progress = store.Progress(reply.campaign_id);
+    std::cout << FormatSummaryText(SummarizeCampaign(store, reply.campaign_id));
+    const std::string report_dir =
+        options.report_dir.empty() ? (db_dir / "reports" / reply.campaign_id).string()
+                                   : options.report_dir;
+    ReportOptions report_options;
+    report_options.plot_script = DefaultPlotScript(bin);
+    const ReportResult report = WriteReport(store, reply.campaign_id, report_dir, report_options);
+    for (const auto& w : report.warnings) printer.Note("warning: " + w);
+    std::cout << "report: " << report_dir << "\n";
+    for (const auto& f : store.FailedJobs(reply.campaign_id)) {
+      printer.Note("failed: " + f.key + " after " + std::to_string(f.attempts) +
+                   " attempt(s): " + f.error);
+    }
+    return progress.failed > 0 ? kExitJobsFailed : kExitOk;
+  } catch (...) {
+    stop_all();
+    throw;
+  }
+}
+
+}  // namespace rlpos

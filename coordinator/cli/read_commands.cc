@@ -1,0 +1,85 @@
+// status, results, report: read the database (read-only; the coordinator may be running).
+#include <chrono>
+#include <iostream>
+#include <thread>
+
+#include "cli/campaign_commands.h"
+#include "cli/progress_text.h"
+#include "process/executable_path.h"
+#include "process/stop_signal.h"
+#include "reporting/campaign_summary.h"
+#include "reporting/report_writer.h"
+#include "reporting/results_format.h"
+#include "store/results_store.h"
+#include "store/store_error.h"
+
+namespace rlpos {
+namespace {
+
+double WallNow() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+StoreOptions ReadOnly() {
+  StoreOptions options;
+  options.read_only = true;
+  return options;
+}
+
+}  // namespace
+
+int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch,
+               double period_s) {
+  for (;;) {
+    ResultsStore store(db, ReadOnly());
+    std::vector<CampaignProgress> campaigns;
+    if (campaign_id.empty()) {
+      campaigns = store.AllProgress();
+    } else {
+      campaigns.push_back(store.Progress(campaign_id));
+    }
+    std::vector<CampaignTiming> timings;
+    for (const auto& c : campaigns) timings.push_back(store.Timing(c.campaign_id));
+    std::cout << FormatStatus(campaigns, timings, store.ListWorkers(), WallNow());
+    for (const auto& c : campaigns) {
+      for (const auto& f : store.FailedJobs(c.campaign_id)) {
+        std::cout << "  failed: " << f.key << " after " << f.attempts
+                  << " attempt(s): " << f.error << "\n";
+      }
+    }
+    bool settled = true;
+    for (const auto& c : campaigns) settled = settled && IsSettled(c);
+    if (!watch || settled || StopRequested()) return kExitOk;
+    std::cout << std::flush;
+    std::this_thread::sleep_for(std::chrono::duration<double>(period_s));
+    std::cout << "\n";
+  }
+}
+
+int ShowResults(const std::string& db, const std::string& campaign_id,
+                const std::string& format) {
+  ResultsStore store(db, ReadOnly());
+  const auto summary = SummarizeCampaign(store, campaign_id);
+  if (format == "csv") {
+    std::cout << FormatSummaryCsv(summary);
+  } else if (format == "json") {
+    std::cout << SummaryToJson(summary).dump(2) << "\n";
+  } else {
+    std::cout << FormatSummaryText(summary);
+  }
+  return kExitOk;
+}
+
+int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
+                        const std::string& out_dir) {
+  ResultsStore store(db, ReadOnly());
+  ReportOptions options;
+  options.plot_script = DefaultPlotScript(ExecutableDir());
+  const ReportResult result = WriteReport(store, campaign_id, out_dir, options);
+  for (const auto& w : result.warnings) std::cerr << "rlpos-campaign: warning: " << w << "\n";
+  for (const auto& f : result.files) std::cout << f << "\n";
+  return kExitOk;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,59 @@
+// submit, cancel, retry: requests to the coordinator over DDS.
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "campaign/campaign_spec.h"
+#include "campaign/expanded_campaign_json.h"
+#include "campaign/expansion.h"
+#include "cli/campaign_client.h"
+#include "cli/campaign_commands.h"
+
+namespace rlpos {
+namespace {
+
+// A refusal by the coordinator (unknown campaign id, ...) is bad input on our side.
+int Refused(const msg::CampaignReply& reply) {
+  std::cerr << "rlpos-campaign: error: the coordinator refused: " << reply.message << "\n";
+  return kExitBadInput;
+}
+
+}  // namespace
+
+ExpandedCampaign LoadCampaign(const std::string& campaign_file) {
+  return ExpandCampaign(ReadCampaignFile(campaign_file));
+}
+
+int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, double timeout_s) {
+  const ExpandedCampaign campaign = LoadCampaign(campaign_file);
+  msg::CampaignRequest request;
+  request.kind = msg::RequestKind::kSubmit;
+  request.campaign_json = ToJson(campaign).dump();
+  const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
+  if (!reply.ok) return Refused(reply);
+  std::cout << reply.campaign_id << "\n";
+  std::cerr << (reply.created ? "submitted " : "already submitted ") << campaign.name << ": "
+            << reply.jobs << " jobs\n";
+  return kExitOk;
+}
+
+int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s) {
+  msg::CampaignRequest request;
+  request.kind = msg::RequestKind::kCancel;
+  request.campaign_id = campaign_id;
+  const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
+  if (!reply.ok) return Refused(reply);
+  std::cerr << "cancelled " << campaign_id << " (" << reply.jobs << " running job(s) stopped)\n";
+  return kExitOk;
+}
+
+int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s) {
+  msg::CampaignRequest request;
+  request.kind = msg::RequestKind::kRetry;
+  request.campaign_id = campaign_id;
+  const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
+  if (!reply.ok) return Refused(reply);
+  std::cerr << "retrying " << reply.jobs << " job(s) of " << campaign_id << "\n";
+  return kExitOk;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,127 @@
+// rlpos-campaign: run the paper's experiment campaigns and read their results.
+//   run CAMPAIGN.json [--workers N] [--db FILE]   embedded coordinator + N workers (loopback)
+//   submit CAMPAIGN.json                          to a running rlpos-coordinator (DDS)
+//   status [ID] [--watch] [--db FILE]             jobs by state, workers, progress, ETA
+//   results ID [--format table|csv|json] [--db FILE]
+//   report ID --out DIR [--db FILE]
+//   cancel ID | retry ID                          via the coordinator (DDS)
+// Exit codes: see ExitCode in campaign_commands.h (0 ok, 1 failure, 2 bad input, 3 some jobs
+// failed, 4 no coordinator answered, 130 interrupted).
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <thread>
+
+#include "cli/campaign_client.h"
+#include "cli/campaign_commands.h"
+#include "config/config_error.h"
+#include "process/stop_signal.h"
+#include "store/store_error.h"
+
+namespace {
+
+void AddDdsOptions(CLI::App* command, rlpos::DdsOptions& dds, double& timeout_s) {
+  command->add_option("--domain", dds.domain, "DDS domain id of the coordinator (default 0)")
+      ->check(CLI::Range(0, 230));
+  command->add_option("--loopback", dds.loopback_tag,
+                      "Loopback-only DDS with this discovery tag (as the coordinator was started)");
+  command->add_option("--dds-config", dds.config, "Cyclone DDS XML or file:// URI");
+  command->add_option("--timeout", timeout_s, "Seconds to wait for the coordinator (default 10)")
+      ->check(CLI::PositiveNumber);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace rlpos;
+  CLI::App app{"rlpos-campaign: run RLpos experiment campaigns and read their results"};
+  app.require_subcommand(1);
+  std::string db = "results/rlpos.db";
+  const auto add_db = [&db](CLI::App* command) {
+    command->add_option("--db", db, "Results database (default: results/rlpos.db)");
+  };
+
+  RunOptions run_options;
+  run_options.workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  auto* run = app.add_subcommand("run", "Run a campaign here: coordinator + workers on loopback");
+  run->add_option("campaign", run_options.campaign_file, "Campaign JSON")->required();
+  run->add_option("--workers", run_options.workers, "Local workers (default: the number of cores)")
+      ->check(CLI::Range(1, 256));
+  run->add_option("--slots", run_options.slots_per_worker, "Jobs per worker at once (default 1)")
+      ->check(CLI::Range(1, 256));
+  add_db(run);
+  run->add_option("--report", run_options.report_dir,
+                  "Report folder (default: reports/<campaign id> next to the database)");
+  run->add_option("--tag", run_options.tag, "DDS discovery tag (default: a random one)");
+  run->add_flag("!--no-progress", run_options.progress, "No progress bar");
+
+  std::string campaign_file, campaign_id, format = "table", out_dir;
+  DdsOptions dds;
+  double timeout_s = 10;
+  auto* submit = app.add_subcommand("submit", "Submit a campaign to a running coordinator");
+  submit->add_option("campaign", campaign_file, "Campaign JSON")->required();
+  AddDdsOptions(submit, dds, timeout_s);
+
+  bool watch = false;
+  double period_s = 2;
+  auto* status = app.add_subcommand("status", "Jobs by state, workers alive, progress and ETA");
+  status->add_option("id", campaign_id, "Campaign id (default: every campaign)");
+  status->add_flag("--watch", watch, "Refresh until the campaigns are settled");
+  status->add_option("--period", period_s, "Seconds between refreshes (default 2)")
+      ->check(CLI::PositiveNumber);
+  add_db(status);
+
+  auto* results = app.add_subcommand("results", "Per scenario and positioner: median, mean, CI");
+  results->add_option("id", campaign_id, "Campaign id")->required();
+  results->add_option("--format", format, "table|csv|json (default table)")
+      ->check(CLI::IsMember({"table", "csv", "json"}));
+  add_db(results);
+
+  auto* report = app.add_subcommand("report", "Write CSV, Markdown and PNG plots of a campaign");
+  report->add_option("id", campaign_id, "Campaign id")->required();
+  report->add_option("--out", out_dir, "Report folder")->required();
+  add_db(report);
+
+  auto* cancel = app.add_subcommand("cancel", "Cancel a campaign's unfinished jobs");
+  cancel->add_option("id", campaign_id, "Campaign id")->required();
+  AddDdsOptions(cancel, dds, timeout_s);
+  auto* retry = app.add_subcommand("retry", "Run a campaign's failed jobs again");
+  retry->add_option("id", campaign_id, "Campaign id")->required();
+  AddDdsOptions(retry, dds, timeout_s);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+  }
+  const std::string file = run->parsed() ? run_options.campaign_file : campaign_file;
+  try {
+    CheckDdsOptions(dds);
+    InstallStopSignalHandlers();
+    if (run->parsed()) {
+      run_options.db = db;
+      return RunCampaign(run_options);
+    }
+    if (submit->parsed()) return SubmitCampaign(campaign_file, dds, timeout_s);
+    if (status->parsed()) return ShowStatus(db, campaign_id, watch, period_s);
+    if (results->parsed()) return ShowResults(db, campaign_id, format);
+    if (report->parsed()) return WriteCampaignReport(db, campaign_id, out_dir);
+    if (cancel->parsed()) return CancelCampaign(campaign_id, dds, timeout_s);
+    if (retry->parsed()) return RetryCampaign(campaign_id, dds, timeout_s);
+  } catch (const ConfigError& e) {
+    std::cerr << "rlpos-campaign: error: " << file << ": " << e.describe() << "\n";
+    return kExitBadInput;
+  } catch (const StoreError& e) {
+    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const NoCoordinatorError& e) {
+    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
+    return kExitNoCoordinator;
+  } catch (const std::exception& e) {
+    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
+    return kExitFailure;
+  }
+  return kExitFailure;
+}

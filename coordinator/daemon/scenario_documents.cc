@@ -1,0 +1,27 @@
+#include "daemon/scenario_documents.h"
+
+#include <stdexcept>
+
+#include "config/config_error.h"
+#include "scenario/scenario_parser.h"
+
+namespace rlpos {
+
+std::map<std::string, std::string> ScenarioDocumentsByName(const nlohmann::json& campaign_spec) {
+  std::map<std::string, std::string> out;
+  if (!campaign_spec.contains("scenarios") || !campaign_spec["scenarios"].is_array()) return out;
+  for (const auto& entry : campaign_spec["scenarios"]) {
+    try {
+      nlohmann::json document = entry.at("document");
+      nlohmann::json named = document;
+      ApplyOverrides(named, entry.at("set").get<std::vector<std::string>>());
+      // The parser's default name when the document has none.
+      out[named.value("name", std::string("scenario"))] = document.dump();
+    } catch (const std::exception&) {
+      // A worker then uses the --scenario path as is (same machine, same files).
+    }
+  }
+  return out;
+}
+
+}  // namespace rlpos

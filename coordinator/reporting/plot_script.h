@@ -1,0 +1,27 @@
+#pragma once
+// The report's figures are drawn by scripts/plot_campaign.py (Python 3 + matplotlib) from the
+// curve CSVs, because C++ has no plotting library worth the dependency. Plots are optional: a
+// missing script, interpreter or matplotlib is reported as a warning, never thrown.
+#include <string>
+#include <vector>
+
+namespace rlpos {
+
+struct PlotRequest {
+  std::string script;          // plot_campaign.py
+  std::string python;          // interpreter; empty: "python3", then /usr/bin/python3
+  std::string throughput_csv;  // FormatThroughputCcdfCsv output
+  std::string delay_csv;       // FormatDelayCdfCsv output
+  std::string out_dir;         // where the PNGs go
+  std::string title;           // e.g. the campaign name
+};
+
+struct PlotOutcome {
+  std::vector<std::string> files;     // PNGs the script wrote
+  std::vector<std::string> warnings;  // why plots are missing, if they are
+};
+
+// Runs the script with each interpreter in turn until one has matplotlib.
+PlotOutcome DrawPlots(const PlotRequest& request);
+
+}  // namespace rlpos

@@ -1,0 +1,49 @@
+#include "reporting/report_writer.h"
+
+#include <filesystem>
+
+#include "reporting/atomic_file.h"
+#include "reporting/campaign_summary.h"
+#include "reporting/distribution_curves.h"
+#include "reporting/plot_script.h"
+#include "reporting/report_markdown.h"
+#include "reporting/results_format.h"
+
+namespace rlpos {
+
+ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
+                         const std::string& out_dir, const ReportOptions& options) {
+  const CampaignProgress progress = store.Progress(campaign_id);  // StoreError when unknown
+  const std::vector<MetricRow> rows = store.Metrics(campaign_id);
+  const std::vector<PositionerSummary> summary = SummarizeRuns(rows);
+  const std::vector<CurvePoint> throughput = ThroughputCcdf(rows);
+  const std::vector<CurvePoint> delay = DelayCdf(rows);
+
+  CreateReportDir(out_dir);
+  ReportResult result;
+  const auto write = [&](const std::string& name, const std::string& content) {
+    const std::string path = (std::filesystem::path(out_dir) / name).string();
+    WriteFileAtomically(path, content);
+    result.files.push_back(path);
+    return path;
+  };
+  write("summary.csv", FormatSummaryCsv(summary));
+  write("summary.md", FormatReportMarkdown(progress, summary));
+  const std::string throughput_csv =
+      write("throughput_ccdf.csv", FormatThroughputCcdfCsv(throughput));
+  const std::string delay_csv = write("delay_cdf.csv", FormatDelayCdfCsv(delay));
+
+  if (options.plot_script.empty() || (throughput.empty() && delay.empty()))
+    return result;
+  const PlotOutcome plots = DrawPlots(
+      {options.plot_script, options.python, throughput_csv, delay_csv, out_dir, progress.name});
+  result.files.insert(result.files.end(), plots.files.begin(), plots.files.end());
+  result.warnings.insert(result.warnings.end(), plots.warnings.begin(), plots.warnings.end());
+  return result;
+}
+
+std::string DefaultPlotScript(const std::string& exe_dir) {
+  return (std::filesystem::path(exe_dir) / ".." / "share" / "rlpos" / "plot_campaign.py").string();
+}
+
+}  // namespace rlpos

@@ -1,0 +1,215 @@
+#include "reporting/results_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "reporting/csv_cells.h"
+
+namespace rlpos {
+namespace {
+
+// --- Tables (text, Markdown): rounded, "-" for absent ---
+
+struct Column {
+  const char* title;
+  bool left_aligned;
+};
+
+const std::vector<Column>& TableColumns() {
+  static const std::vector<Column> columns{
+      {"scenario", true},        {"positioner", true},   {"runs", false},
+      {"median Mbit/s", false},  {"mean Mbit/s", false}, {"ci95 Mbit/s", false},
+      {"delay ms", false},       {"ci95 ms", false},     {"no delay", false},
+      {"nLoS/N", false},         {"demands met", false}, {"thr vs base %", false},
+      {"delay vs base %", false}};
+  return columns;
+}
+
+std::string Fixed(double value, int decimals, bool sign = false) {
+  if (!std::isfinite(value))
+    return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, sign ? "%+.*f" : "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string Fixed(const std::optional<double>& value, int decimals, bool sign = false) {
+  return value ? Fixed(*value, decimals, sign) : "-";
+}
+
+std::string Compact(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+std::vector<std::string> TableRow(const PositionerSummary& s) {
+  return {s.scenario,
+          s.positioner,
+          std::to_string(s.runs),
+          Fixed(s.throughput_median_mbps, 2),
+          Fixed(s.throughput_mean_mbps, 2),
+          Fixed(s.throughput_ci95_mbps, 2),
+          Fixed(s.delay_mean_ms, 3),
+          Fixed(s.delay_ci95_ms, 3),
+          std::to_string(s.delay_null_runs),
+          Fixed(s.nlos_ratio_mean, 2),
+          Fixed(s.demands_met_mean, 1) + "/" + Compact(s.ues_mean),
+          Fixed(s.throughput_change_pct, 1, true),
+          Fixed(s.delay_change_pct, 1, true)};
+}
+
+std::string Pad(const std::string& text, std::size_t width, bool left) {
+  const std::string fill(width > text.size() ? width - text.size() : 0, ' ');
+  return left ? text + fill : fill + text;
+}
+
+std::string MarkdownCell(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|')
+      out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+// --- CSV and JSON: unrounded ---
+
+struct Field {
+  const char* name;
+  std::optional<double> (*number)(const PositionerSummary&);  // null for text fields
+  std::string PositionerSummary::*text = nullptr;             // the text fields
+  bool count = false;                                         // an integer in JSON
+};
+
+std::optional<double> Finite(double value) {
+  return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
+}
+std::optional<double> Finite(const std::optional<double>& value) {
+  return value ? Finite(*value) : std::nullopt;
+}
+
+const std::vector<Field>& Fields() {
+  using S = PositionerSummary;
+  static const std::vector<Field> fields{
+      {"scenario", nullptr, &S::scenario},
+      {"positioner", nullptr, &S::positioner},
+      {"runs", [](const S& s) { return Finite(s.runs); }, nullptr, true},
+      {"throughput_median_mbps", [](const S& s) { return Finite(s.throughput_median_mbps); }},
+      {"throughput_mean_mbps", [](const S& s) { return Finite(s.throughput_mean_mbps); }},
+      {"throughput_ci95_mbps", [](const S& s) { return Finite(s.throughput_ci95_mbps); }},
+      {"delay_runs", [](const S& s) { return Finite(s.delay_runs); }, nullptr, true},
+      {"delay_null_runs", [](const S& s) { return Finite(s.delay_null_runs); }, nullptr, true},
+      {"delay_mean_ms", [](const S& s) { return Finite(s.delay_mean_ms); }},
+      {"delay_ci95_ms", [](const S& s) { return Finite(s.delay_ci95_ms); }},
+      {"nlos_ratio_mean", [](const S& s) { return Finite(s.nlos_ratio_mean); }},
+      {"demands_met_mean", [](const S& s) { return Finite(s.demands_met_mean); }},
+      {"ues_mean", [](const S& s) { return Finite(s.ues_mean); }},
+      {"throughput_change_pct", [](const S& s) { return Finite(s.throughput_change_pct); }},
+      {"delay_change_pct", [](const S& s) { return Finite(s.delay_change_pct); }},
+  };
+  return fields;
+}
+
+}  // namespace
+
+std::string FormatSummaryText(const std::vector<PositionerSummary>& summary) {
+  const auto& columns = TableColumns();
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& s : summary)
+    rows.push_back(TableRow(s));
+  std::vector<std::size_t> widths;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    std::size_t width = std::string(columns[c].title).size();
+    for (const auto& row : rows)
+      width = std::max(width, row[c].size());
+    widths.push_back(width);
+  }
+  const auto line = [&](const std::vector<std::string>& cells) {
+    std::string out;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (c > 0)
+        out += "  ";
+      out += Pad(cells[c], widths[c], columns[c].left_aligned);
+    }
+    while (!out.empty() && out.back() == ' ')
+      out.pop_back();
+    return out + "\n";
+  };
+  std::vector<std::string> titles, rules;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    titles.push_back(columns[c].title);
+    rules.push_back(std::string(widths[c], '-'));
+  }
+  std::string out = line(titles) + line(rules);
+  for (const auto& row : rows)
+    out += line(row);
+  return out;
+}
+
+std::string FormatSummaryMarkdown(const std::vector<PositionerSummary>& summary) {
+  const auto& columns = TableColumns();
+  std::string header = "|", rule = "|";
+  for (const auto& column : columns) {
+    header += std::string(" ") + column.title + " |";
+    rule += column.left_aligned ? "---|" : "---:|";
+  }
+  std::string out = header + "\n" + rule + "\n";
+  for (const auto& s : summary) {
+    out += "|";
+    for (const auto& cell : TableRow(s))
+      out += " " + MarkdownCell(cell) + " |";
+    out += "\n";
+  }
+  return out;
+}
+
+const std::vector<std::string>& SummaryCsvColumns() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& field : Fields())
+      out.push_back(field.name);
+    return out;
+  }();
+  return names;
+}
+
+std::string FormatSummaryCsv(const std::vector<PositionerSummary>& summary) {
+  std::string out = CsvLine(SummaryCsvColumns());
+  for (const auto& s : summary) {
+    std::vector<std::string> cells;
+    for (const auto& field : Fields()) {
+      cells.push_back(field.number ? CsvNumber(field.number(s)) : CsvText(s.*field.text));
+    }
+    out += CsvLine(cells);
+  }
+  return out;
+}
+
+nlohmann::json SummaryToJson(const std::vector<PositionerSummary>& summary) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& s : summary) {
+    nlohmann::json row = nlohmann::json::object();
+    for (const auto& field : Fields()) {
+      if (!field.number) {
+        row[field.name] = s.*field.text;
+        continue;
+      }
+      const std::optional<double> value = field.number(s);
+      if (!value) {
+        row[field.name] = nullptr;
+      } else if (field.count) {
+        row[field.name] = static_cast<long long>(*value);
+      } else {
+        row[field.name] = *value;
+      }
+    }
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+}  // namespace rlpos

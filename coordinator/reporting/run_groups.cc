@@ -1,0 +1,83 @@
+#include "reporting/run_groups.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "campaign/campaign_spec.h"
+
+namespace rlpos {
+namespace {
+
+// Plain labels in report order.
+const std::vector<std::string>& CanonicalLabels() {
+  static const std::vector<std::string> labels = [] {
+    std::vector<std::string> out;
+    for (const auto& positioner : AllPositioners()) {
+      if (positioner == "offsets") {
+        for (int k = 1; k <= 5; ++k)
+          out.push_back("offset" + std::to_string(k));
+      } else {
+        out.push_back(positioner);
+      }
+    }
+    return out;
+  }();
+  return labels;
+}
+
+// (rank of the plain label, seed: 0 for the plain label itself, the label) for sorting.
+std::tuple<std::size_t, std::uint64_t, std::string> SortKey(const std::string& label) {
+  const auto at = label.find('@');
+  const std::string plain = label.substr(0, at);
+  const auto& canonical = CanonicalLabels();
+  const auto it = std::find(canonical.begin(), canonical.end(), plain);
+  const std::size_t rank = static_cast<std::size_t>(it - canonical.begin());  // end: unknown
+  std::uint64_t seed = 0;
+  if (at != std::string::npos) {
+    const std::string suffix = label.substr(at + 1);
+    const std::string digits = suffix.rfind("seed", 0) == 0 ? suffix.substr(4) : "";
+    const bool numeric =
+        !digits.empty() && digits.size() < 19 &&
+        std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(c) != 0; });
+    seed = numeric ? std::stoull(digits) + 1 : std::numeric_limits<std::uint64_t>::max();
+  }
+  return {rank, seed, label};
+}
+
+}  // namespace
+
+bool ReportLabelLess(const std::string& a, const std::string& b) {
+  return SortKey(a) < SortKey(b);
+}
+
+std::vector<RunGroup> GroupRuns(const std::vector<MetricRow>& rows) {
+  std::vector<std::string> scenarios;
+  std::map<std::string, std::map<std::string, std::vector<const MetricRow*>>> by_scenario;
+  for (const auto& row : rows) {
+    auto found = by_scenario.find(row.scenario);
+    if (found == by_scenario.end()) {
+      scenarios.push_back(row.scenario);
+      found =
+          by_scenario.emplace(row.scenario, std::map<std::string, std::vector<const MetricRow*>>{})
+              .first;
+    }
+    found->second[row.label].push_back(&row);
+  }
+  std::vector<RunGroup> out;
+  for (const auto& scenario : scenarios) {
+    auto& labels = by_scenario[scenario];
+    std::vector<std::string> order;
+    for (const auto& entry : labels)
+      order.push_back(entry.first);
+    std::sort(order.begin(), order.end(), ReportLabelLess);
+    for (const auto& label : order)
+      out.push_back({scenario, label, std::move(labels[label])});
+  }
+  return out;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,49 @@
+#include "dds/dds_config.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace rlpos {
+
+std::string LoopbackConfigXml(const std::string& tag, double lease_s) {
+  char lease[32];
+  std::snprintf(lease, sizeof lease, "%.3fs", lease_s);
+  // The tag only holds [A-Za-z0-9._-] (callers make it), so it needs no XML escaping.
+  return std::string("<CycloneDDS><Domain Id=\"any\">") +
+         "<General><Interfaces><NetworkInterface name=\"lo\" multicast=\"true\"/></Interfaces>"
+         "<AllowMulticast>true</AllowMulticast></General>"
+         "<Discovery><Tag>" + tag + "</Tag>"
+         "<Peers><Peer Address=\"127.0.0.1\"/></Peers>"
+         "<LeaseDuration>" + lease + "</LeaseDuration></Discovery>"
+         "</Domain></CycloneDDS>";
+}
+
+std::vector<std::string> DdsArgs(const DdsOptions& options) {
+  std::vector<std::string> args{"--domain", std::to_string(options.domain)};
+  if (!options.loopback_tag.empty()) {
+    args.insert(args.end(), {"--loopback", options.loopback_tag});
+  }
+  if (!options.config.empty()) args.insert(args.end(), {"--dds-config", options.config});
+  return args;
+}
+
+void CheckDdsOptions(const DdsOptions& options) {
+  // Cyclone's default port mapping (7400 + 250 * domain) runs out above 232.
+  if (options.domain < 0 || options.domain > 230) {
+    throw std::invalid_argument("--domain: must be in 0..230, got " +
+                                std::to_string(options.domain));
+  }
+  if (!options.config.empty() && !options.loopback_tag.empty()) {
+    throw std::invalid_argument("--loopback and --dds-config exclude each other");
+  }
+  for (char c : options.loopback_tag) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '.' || c == '_' || c == '-';
+    if (!ok) {
+      throw std::invalid_argument("--loopback: the tag may hold only letters, digits, '.', '_' "
+                                  "and '-', got \"" + options.loopback_tag + "\"");
+    }
+  }
+}
+
+}  // namespace rlpos
