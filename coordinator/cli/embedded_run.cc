@@ -19,6 +19,7 @@
 #include "cli/progress_text.h"
 #include "process/child_process.h"
 #include "process/executable_path.h"
+#include "process/file_lock.h"
 #include "process/stop_signal.h"
 #include "reporting/campaign_summary.h"
 #include "reporting/report_writer.h"
@@ -119,6 +120,16 @@ int RunCampaign(const RunOptions& options) {
                                    : 1 + static_cast<int>(std::hash<std::string>{}(tag) % 200);
   CheckDdsOptions(dds);
   const fs::path db_dir = fs::absolute(options.db).parent_path();
+  fs::create_directories(db_dir);
+  {
+    // The coordinator would refuse a database another coordinator owns; say so up front.
+    try {
+      ExclusiveFileLock probe(options.db + ".coordinator.lock");
+    } catch (const std::runtime_error& e) {
+      throw std::invalid_argument(options.db + " is in use by another coordinator (" +
+                                  e.what() + "); use another --db, or `submit` to that one");
+    }
+  }
   const fs::path log_dir = options.log_dir.empty() ? db_dir / "logs" / tag : fs::path(options.log_dir);
   fs::create_directories(log_dir);
   const auto dds_args = DdsArgs(dds);

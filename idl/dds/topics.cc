@@ -50,7 +50,12 @@ struct Traits<msg::WorkerStatus> {
     dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
     dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
     // Automatic liveliness rides on the participant's lease (short in the loopback config).
-    if (writer) dds_qset_liveliness(qos, DDS_LIVELINESS_AUTOMATIC, DDS_INFINITY);
+    if (writer) {
+      dds_qset_liveliness(qos, DDS_LIVELINESS_AUTOMATIC, DDS_INFINITY);
+      // A worker that stops cleanly disposes its status itself; a lost one must show as
+      // no-writers, and Cyclone would otherwise dispose on its behalf.
+      dds_qset_writer_data_lifecycle(qos, false);
+    }
   }
   struct Holder {
     C c{};

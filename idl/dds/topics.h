@@ -2,7 +2,9 @@
 // Typed readers and writers of the rlpos topics. Each message type has its topic name and QoS
 // fixed in topics.cc (the contract between the daemons):
 //   WorkerStatus     reliable, transient-local, keep last 1, automatic liveliness (lease from
-//                    the participant's config); disposed when the worker stops cleanly
+//                    the participant's config); the worker disposes it when it stops
+//                    cleanly, so that readers tell "stopped" (disposed) from "lost" (no
+//                    writers)
 //   JobAssignment    reliable, transient-local, keep last 1; a coordinator that stops does NOT
 //                    dispose its assignments (a restart must not stop the workers' jobs)
 //   JobEvent         reliable, transient-local (the worker keeps its last event per job, so a

@@ -146,6 +146,9 @@ void WorkerDaemon::Run() {
   }
   for (auto& [id, job] : running_) job->Stop();
   running_.clear();
+  msg::WorkerStatus key;
+  key.worker_id = options_.id;
+  dds_->status.Dispose(key);  // "stopped", not "lost"
 }
 
 }  // namespace rlpos

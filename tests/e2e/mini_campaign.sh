@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The README's main command: campaigns/mini.json on 2 local workers completes, every job
+# succeeds exactly once, the metrics are plausible, and the report is written.
+source "$(dirname "$0")/lib.sh"
+DB=$WORK/rlpos.db
+"$CAMPAIGN" run "$SRC/campaigns/mini.json" --workers 2 --db "$DB" --tag "$TAG" \
+  >"$WORK/out.txt" 2>"$WORK/err.txt" || { cat "$WORK/err.txt" >&2; fail "run exited $?"; }
+ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
+[ -n "$ID" ] || fail "run printed no campaign id"
+
+expect_complete "$DB" 44
+expect_eq "eval jobs" "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE kind = 'eval'")" 36
+# Plausible: throughput within what one 802.11ac UAV can carry, nLoS within 0..N, delays
+# positive; the RL position sees every UE of B (the paper's point) and beats the baseline.
+expect_eq "implausible rows" "$(sql "$DB" "SELECT COUNT(*) FROM v_eval_runs WHERE
+  throughput_mbps <= 1 OR throughput_mbps > 1000 OR n_los < 0 OR n_los > n_ues OR
+  (delay_ms IS NOT NULL AND delay_ms <= 0)")" 0
+expect_eq "B rl nLoS" "$(sql "$DB" "SELECT MIN(n_los) FROM v_eval_runs
+  WHERE scenario = 'B' AND positioner = 'rl'")" 4
+expect_eq "rl above baseline in B and C" "$(sql "$DB" "SELECT COUNT(*) FROM (
+  SELECT scenario, AVG(CASE WHEN positioner = 'rl' THEN throughput_mbps END) AS rl,
+         AVG(CASE WHEN positioner = 'baseline' THEN throughput_mbps END) AS base
+  FROM v_eval_runs GROUP BY scenario) WHERE rl > base")" 2
+
+REPORT=$WORK/reports/$ID
+for f in summary.csv summary.md throughput_ccdf.csv delay_cdf.csv; do
+  [ -s "$REPORT/$f" ] || fail "report file $f missing"
+done
+if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  for f in throughput_ccdf_B.png delay_cdf_C.png; do
+    [ -s "$REPORT/$f" ] || fail "plot $f missing"
+  done
+fi
+grep -q '^B  *rl ' "$WORK/out.txt" || fail "summary table has no B rl row"
+
+# The read commands on the finished campaign.
+"$CAMPAIGN" status "$ID" --db "$DB" | grep -q "36\|44 total" || fail "status"
+expect_eq "results csv rows" "$("$CAMPAIGN" results "$ID" --db "$DB" --format csv | wc -l)" 19
+"$CAMPAIGN" results "$ID" --db "$DB" --format json | python3 -c 'import json,sys; json.load(sys.stdin)' \
+  || fail "results json"
+echo "ok: mini campaign $ID"

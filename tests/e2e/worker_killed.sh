@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# A worker killed (SIGKILL) in the middle of a job: its lease runs out, the job goes back to
+# the queue, the runner starts a new worker, and the campaign completes with no job lost or
+# counted twice.
+source "$(dirname "$0")/lib.sh"
+DB=$WORK/rlpos.db
+"$CAMPAIGN" run "$SRC/tests/e2e/campaigns/kill.json" --workers 2 --db "$DB" --tag "$TAG" \
+  --no-progress >"$WORK/out.txt" 2>"$WORK/err.txt" &
+RUN=$!
+BG_PIDS+=("$RUN")
+running_on_w0() {
+  [ -f "$DB" ] && [ "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE state = 'running'
+    AND kind = 'eval' AND worker_id = '$TAG-w0'" 2>/dev/null)" = 1 ]
+}
+wait_until 240 running_on_w0 || fail "no eval job ever ran on worker w0"
+sleep 0.5
+JOB=$(sql "$DB" "SELECT id FROM jobs WHERE state = 'running' AND worker_id = '$TAG-w0'")
+# `status` from another terminal while it runs.
+"$CAMPAIGN" status --db "$DB" | grep -q "running" || fail "status shows nothing running"
+pkill -KILL -f -- "rlpos-worker --id $TAG-w0 " || fail "could not kill worker w0"
+wait "$RUN" || { cat "$WORK/err.txt" >&2; fail "run exited non-zero"; }
+
+expect_complete "$DB" 12
+expect_eq "attempt of the killed job" "$(sql "$DB" "SELECT attempt FROM jobs WHERE id = '$JOB'")" 2
+grep -q "rlpos-worker $TAG-w0 ended (signal 9" "$WORK/err.txt" || fail "the runner did not restart w0"
+expect_eq "killed worker state" "$(sql "$DB" "SELECT state FROM workers WHERE id = '$TAG-w0'")" lost
+echo "ok: killed worker's job $JOB ran again"
