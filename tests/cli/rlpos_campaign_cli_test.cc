@@ -1,0 +1,123 @@
+// rlpos-campaign's bad inputs as a user meets them: one line naming what and where, the
+// documented exit code, nothing on stdout, and nothing written (no database, no report).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli/command.h"
+
+namespace rlpos::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RlposCampaignCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char dir[] = "/tmp/rlpos-campaign-cli-XXXXXX";
+    ASSERT_NE(mkdtemp(dir), nullptr);
+    dir_ = dir;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Write(const std::string& name, const std::string& text) {
+    const std::string path = dir_ + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+  }
+  CommandResult Campaign(const std::string& args) {
+    return RunCommand("cd " + dir_ + " && " + BuiltBinary("rlpos-campaign") + " " + args);
+  }
+  // A campaign over the shipped scenario B with `extra` fields.
+  std::string CampaignJson(const std::string& extra) {
+    return R"({"name": "t", "scenarios": [")" + std::string(RLPOS_SOURCE_DIR) +
+           R"(/campaigns/scenarios/b.json"], "rng_runs": [1, 2])" + extra + "}";
+  }
+  void ExpectOneLineError(const CommandResult& r, int exit_code, const std::string& fragment) {
+    EXPECT_EQ(r.exit_code, exit_code) << r.err;
+    EXPECT_TRUE(r.out.empty()) << "stdout must stay empty on failure: " << r.out;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err;
+    EXPECT_EQ(r.err.find("rlpos-campaign: error: "), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  }
+  // Nothing half-written: no database, no logs, no reports.
+  void ExpectNothingWritten() { EXPECT_FALSE(fs::exists(dir_ + "/results")) << dir_; }
+
+  // A loopback tag nobody else uses: the request must find no coordinator.
+  std::string LonelyDds() {
+    return "--loopback rlpos-cli-test-" + std::to_string(getpid()) + " --timeout 1";
+  }
+
+  std::string dir_;
+};
+
+TEST_F(RlposCampaignCli, MissingCampaignFile) {
+  ExpectOneLineError(Campaign("run nowhere.json"), 2, "nowhere.json: /: cannot open file");
+  ExpectNothingWritten();
+}
+
+TEST_F(RlposCampaignCli, MalformedJson) {
+  const auto file = Write("bad.json", "{\"name\": \"x\",");
+  ExpectOneLineError(Campaign("run " + file), 2, "bad.json: /: malformed JSON at line");
+  ExpectNothingWritten();
+}
+
+TEST_F(RlposCampaignCli, UnknownKeySuggestsTheRightOne) {
+  const auto file = Write("k.json", CampaignJson(", \"retris\": 2"));
+  ExpectOneLineError(Campaign("run " + file), 2, "k.json: /retris: unknown key \"retris\"; did you mean \"retries\"?");
+  ExpectNothingWritten();
+}
+
+TEST_F(RlposCampaignCli, OutOfRangeValue) {
+  const auto file = Write("r.json", CampaignJson(", \"job_timeout_s\": -5"));
+  ExpectOneLineError(Campaign("run " + file), 2, "r.json: /job_timeout_s:");
+  ExpectNothingWritten();
+}
+
+TEST_F(RlposCampaignCli, BrokenScenarioIsRefusedBeforeAnythingStarts) {
+  // A building outside the venue, via the campaign's per-scenario overrides.
+  const auto file = Write(
+      "s.json", R"({"name": "t", "scenarios": [{"file": ")" + std::string(RLPOS_SOURCE_DIR) +
+                    R"(/campaigns/scenarios/b.json", "set": ["buildings.0.x=[45, 500]"]}],
+                    "rng_runs": [1, 1]})");
+  const auto r = Campaign("run " + file);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("s.json: /scenarios/0"), std::string::npos) << r.err;
+  ExpectNothingWritten();
+}
+
+TEST_F(RlposCampaignCli, SubmitWithNoCoordinator) {
+  const auto r = Campaign("submit " + std::string(RLPOS_SOURCE_DIR) + "/campaigns/mini.json " +
+                          LonelyDds());
+  ExpectOneLineError(r, 4, "no coordinator answered on DDS domain 0, loopback tag rlpos-cli-test-");
+}
+
+TEST_F(RlposCampaignCli, CancelAndRetryWithNoCoordinator) {
+  ExpectOneLineError(Campaign("cancel abc " + LonelyDds()), 4, "no coordinator answered");
+  ExpectOneLineError(Campaign("retry abc " + LonelyDds()), 4, "no coordinator answered");
+}
+
+TEST_F(RlposCampaignCli, BadDdsOptions) {
+  EXPECT_EQ(Campaign("cancel abc --domain 999").exit_code, 2);
+  ExpectOneLineError(Campaign("cancel abc --loopback 'a b'"), 2, "--loopback: the tag may hold");
+  ExpectOneLineError(Campaign("cancel abc --loopback x --dds-config y"), 2,
+                     "--loopback and --dds-config exclude each other");
+}
+
+TEST_F(RlposCampaignCli, ReadCommandsOnAMissingDatabase) {
+  ExpectOneLineError(Campaign("status --db none.db"), 2, "results store none.db: cannot open");
+  ExpectOneLineError(Campaign("results abc --db none.db"), 2, "results store none.db");
+  EXPECT_FALSE(fs::exists(dir_ + "/none.db"));
+}
+
+TEST_F(RlposCampaignCli, UsageErrors) {
+  EXPECT_EQ(Campaign("").exit_code, 2);
+  EXPECT_EQ(Campaign("run").exit_code, 2);
+  EXPECT_EQ(Campaign("results abc --format xml").exit_code, 2);
+  EXPECT_EQ(Campaign("run x.json --workers 0").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace rlpos::testing
