@@ -1,8 +1,12 @@
 #pragma once
-// The analytic throughput estimate of the "analytic" fidelity: no packets, only the PHY rate of
-// each UE's link and a share of airtime. 802.11 DCF gives stations equal transmit opportunities,
-// so when the channel cannot carry every demand, throughput is shared fairly (the "performance
-// anomaly": a slow station slows everyone) - water-filling over the airtime each bit costs.
+// The analytic throughput estimate of the "analytic" fidelity: no packets, only each UE's link
+// (PHY rate and MPDU error rate) and a share of the channel. 802.11 DCF gives backlogged stations
+// equal transmit opportunities, each carrying a full A-MPDU, so when the channel cannot carry
+// every demand the accesses are shared fairly (the "performance anomaly": a slow station holds
+// the channel longest per access and slows everyone) - water-filling over the channel time each
+// access costs. That cost includes the contention of the stations that want the channel at once
+// (idle backoff slots and collisions, dcf_contention.h), which is what makes a crowded channel
+// carry far less than its PHY rates suggest.
 #include <vector>
 
 namespace rlpos {
@@ -10,16 +14,33 @@ namespace rlpos {
 struct AirtimeLink {
   double demand_mbps = 0.0;
   double phy_rate_mbps = 0.0;  // 0: the link carries nothing
+  // Probability that an MPDU sent at this rate arrives (1 - PER at the link's SNR); lost MPDUs
+  // are sent again in a later A-MPDU, so they cost airtime without carrying data.
+  double mpdu_success = 1.0;
 };
 
 struct AirtimeEstimate {
   std::vector<double> throughput_mbps;
   double aggregate_mbps = 0.0;
-  double airtime_demanded = 0.0;  // airtime the demands would need (1 = the whole channel)
+  double airtime_demanded = 0.0;  // channel time the demands would need (1 = the whole channel)
+  double contenders = 0.0;        // effective number of stations contending for the channel
 };
 
-// MAC efficiency at a PHY rate: payload time of a full A-MPDU of `packet_size`-byte packets over
-// that plus the per-access overhead (DIFS, mean backoff, preamble, SIFS, BlockAck).
+// One channel access of a backlogged station: a full A-MPDU and what it costs.
+struct Access {
+  double mpdus = 0.0;           // MPDUs in the A-MPDU (Block Ack window, A-MPDU and PPDU limits)
+  double ppdu_us = 0.0;         // data PPDU (preamble + A-MPDU)
+  double busy_us = 0.0;         // AIFS + PPDU + SIFS + BlockAck: the channel time of a success
+  double delivered_mbit = 0.0;  // payload that arrives, after MPDU losses
+};
+
+// Bytes of one A-MPDU subframe carrying a `packet_size`-byte UDP payload (headers, delimiter, FCS).
+int MpduBytes(int packet_size);
+
+Access FullAccess(double phy_rate_mbps, int packet_size, double mpdu_success = 1.0);
+
+// MAC efficiency of a station alone on the channel at a PHY rate: payload time of a full A-MPDU
+// of `packet_size`-byte packets over the access's channel time plus the mean backoff.
 double MacEfficiency(double phy_rate_mbps, int packet_size);
 
 AirtimeEstimate EstimateAirtimeThroughput(const std::vector<AirtimeLink>& links, int packet_size);

@@ -10,7 +10,8 @@ namespace {
 // p = 1/2: tau = 2 / (1 + W + p W sum_{k<m} (2p)^k), W = CWmin + 1, m backoff stages.
 double Tau(double p, double w, int stages) {
   double sum = 0.0, term = 1.0;
-  for (int k = 0; k < stages; ++k, term *= 2 * p) sum += term;
+  for (int k = 0; k < stages; ++k, term *= 2 * p)
+    sum += term;
   return 2.0 / (1.0 + w + p * w * sum);
 }
 

@@ -8,16 +8,21 @@ namespace rlpos {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // JSON has no NaN: an undefined metric (no packet) is written as null.
-nlohmann::json Number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+nlohmann::json Number(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
+}
 }  // namespace
 
 void FlowAccumulator::OnSent(double sent_at) {
-  if (window_.Holds(sent_at)) ++sent_;
+  if (window_.Holds(sent_at))
+    ++sent_;
 }
 
 void FlowAccumulator::OnReceived(double sent_at, double received_at, std::uint64_t bytes) {
-  if (window_.Holds(sent_at)) ++delivered_of_sent_;
-  if (!window_.Holds(received_at)) return;
+  if (window_.Holds(sent_at))
+    ++delivered_of_sent_;
+  if (!window_.Holds(received_at))
+    return;
   ++received_packets_;
   received_bytes_ += bytes;
   delay_sum_s_ += received_at - sent_at;

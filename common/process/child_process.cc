@@ -101,6 +101,10 @@ bool ChildProcess::Poll() {
   return done_;
 }
 
+void ChildProcess::Terminate() {
+  if (!done_) ::kill(-pid_, SIGTERM);
+}
+
 void ChildProcess::Kill(double grace_s) {
   if (done_) return;
   ::kill(-pid_, SIGTERM);

@@ -31,6 +31,8 @@ class ChildProcess {
   // Non-blocking; true once the child has ended (then exit_status() is valid).
   bool Poll();
   const ChildExit& exit_status() const { return exit_; }
+  // SIGTERM to the group without waiting (stop several children at once, then Kill each).
+  void Terminate();
   // SIGTERM to the group, then SIGKILL if it has not ended after `grace_s`; waits for it.
   void Kill(double grace_s = 1.0);
   pid_t pid() const { return pid_; }

@@ -67,6 +67,9 @@ class Daemon {
     Start();
     return name_ + " ended (" + how + "); restarted";
   }
+  void Terminate() {
+    if (process_) process_->Terminate();
+  }
   void Stop(double grace_s) {
     if (process_) process_->Kill(grace_s);
   }
@@ -157,8 +160,10 @@ int RunCampaign(const RunOptions& options) {
   }
   ProgressPrinter printer(options.progress);
   const auto stop_all = [&] {
-    // Workers first, so that the coordinator does not see them as lost on the way out.
-    for (std::size_t i = daemons.size(); i-- > 0;) daemons[i]->Stop(i == 0 ? 5.0 : 3.0);
+    // Workers first (all at once), so that the coordinator sees them stop, not get lost.
+    for (std::size_t i = 1; i < daemons.size(); ++i) daemons[i]->Terminate();
+    for (std::size_t i = 1; i < daemons.size(); ++i) daemons[i]->Stop(3.0);
+    daemons[0]->Stop(5.0);
   };
   try {
     for (auto& d : daemons) d->Start();

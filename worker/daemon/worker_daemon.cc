@@ -135,7 +135,7 @@ void WorkerDaemon::Run() {
   auto next_progress = std::chrono::steady_clock::now();
   while (!StopRequested()) {
     // Children are polled, not waited for: a short wait keeps job ends prompt.
-    dds_->wait_set.Wait(running_.empty() ? 0.5 : 0.05);
+    dds_->wait_set.Wait(running_.empty() ? 0.2 : 0.05);
     TakeAssignments();
     PollJobs();
     if (std::chrono::steady_clock::now() >= next_progress) {
