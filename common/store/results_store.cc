@@ -171,7 +171,8 @@ std::vector<ReadyJob> ResultsStore::ListReady(std::size_t limit) {
 bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& worker_id,
                                int attempt) {
   db_->Prepare(
-         "UPDATE jobs SET state = 'running', worker_id = ?, started_at = ?, finished_at = NULL "
+         "UPDATE jobs SET state = 'running', worker_id = ?, started_at = ?, finished_at = NULL, "
+         "progress = NULL "
          "WHERE id = ? AND attempt = ? AND state = 'ready'")
       .Bind(worker_id)
       .Bind(Now())

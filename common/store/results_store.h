@@ -99,6 +99,14 @@ struct WorkerRecord {
   double first_seen = 0, last_seen = 0;
 };
 
+// A running job as `status` shows it.
+struct RunningJobView {
+  std::string key, worker_id;
+  int attempt = 1;
+  double started_at = 0;
+  std::string progress;  // the child's latest progress line ("" if none yet)
+};
+
 struct CampaignTiming {
   double created_at = 0;
   std::optional<double> first_started_at, last_finished_at;
@@ -159,7 +167,11 @@ class ResultsStore {
   void SetWorkerState(const std::string& worker_id, const std::string& state);
   void MarkAllWorkersLost();
   std::vector<WorkerRecord> ListWorkers();
+  // Keeps the latest progress line of a running attempt (ignored otherwise); cleared when the
+  // attempt ends.
+  void SetProgress(const std::string& job_id, int attempt, const std::string& line);
   // Throw StoreError for an unknown campaign.
+  std::vector<RunningJobView> RunningJobs(const std::string& campaign_id);
   CampaignTiming Timing(const std::string& campaign_id);
   std::vector<FailedJob> FailedJobs(const std::string& campaign_id);
   std::optional<nlohmann::json> CampaignSpecJson(const std::string& campaign_id);

@@ -61,6 +61,29 @@ std::optional<nlohmann::json> ResultsStore::CampaignSpecJson(const std::string& 
   return nlohmann::json::parse(select.Text(0));
 }
 
+void ResultsStore::SetProgress(const std::string& job_id, int attempt, const std::string& line) {
+  db_->Prepare("UPDATE jobs SET progress = ? WHERE id = ? AND attempt = ? AND state = 'running'")
+      .Bind(line)
+      .Bind(job_id)
+      .Bind(attempt)
+      .Run();
+}
+
+std::vector<RunningJobView> ResultsStore::RunningJobs(const std::string& campaign_id) {
+  RequireCampaign(campaign_id);
+  Statement select = db_->Prepare(
+      "SELECT key, COALESCE(worker_id, ''), attempt, COALESCE(started_at, 0), "
+      "COALESCE(progress, '') FROM jobs WHERE campaign_id = ? AND state = 'running' "
+      "ORDER BY started_at, seq");
+  select.Bind(campaign_id);
+  std::vector<RunningJobView> out;
+  while (select.Step()) {
+    out.push_back({select.Text(0), select.Text(1), static_cast<int>(select.Int(2)),
+                   select.Double(3), select.Text(4)});
+  }
+  return out;
+}
+
 CampaignTiming ResultsStore::Timing(const std::string& campaign_id) {
   RequireCampaign(campaign_id);
   Statement select = db_->Prepare(

@@ -97,9 +97,11 @@ LEFT JOIN jobs j ON j.campaign_id = c.id
 GROUP BY c.id;
 )sql";
 
-// Version 2: the workers the coordinator has seen, so that `status` (another process) can show
-// which are alive.
+// Version 2: the workers the coordinator has seen, and the latest progress line of each running
+// job, so that `status` (another process) can show them.
 constexpr const char* kVersion2 = R"sql(
+ALTER TABLE jobs ADD COLUMN progress TEXT;
+
 CREATE TABLE workers (
   id         TEXT PRIMARY KEY,
   host       TEXT NOT NULL,

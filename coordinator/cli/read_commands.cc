@@ -43,6 +43,11 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
     for (const auto& c : campaigns) timings.push_back(store.Timing(c.campaign_id));
     std::cout << FormatStatus(campaigns, timings, store.ListWorkers(), WallNow());
     for (const auto& c : campaigns) {
+      for (const auto& j : store.RunningJobs(c.campaign_id)) {
+        std::cout << "  running: " << j.key << " #" << j.attempt << " on " << j.worker_id
+                  << " for " << FormatDuration(WallNow() - j.started_at)
+                  << (j.progress.empty() ? "" : ": " + j.progress) << "\n";
+      }
       for (const auto& f : store.FailedJobs(c.campaign_id)) {
         std::cout << "  failed: " << f.key << " after " << f.attempts
                   << " attempt(s): " << f.error << "\n";

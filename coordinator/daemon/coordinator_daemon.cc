@@ -152,6 +152,7 @@ void CoordinatorDaemon::HandleJobEvents() {
     if (e.state == msg::JobState::kStarted || e.state == msg::JobState::kProgress) {
       Log(LogLevel::kDebug, key + " on " + e.worker_id + ": " +
                                 (e.message.empty() ? std::string("started") : e.message));
+      if (e.state == msg::JobState::kProgress) store_.SetProgress(e.job_id, e.attempt, e.message);
       continue;
     }
     JobUpdate update = JobUpdate::kUnknown;
