@@ -63,5 +63,5 @@ printf '%-28s %10.1f\n' "rlpos-campaign run" "$runner" "xargs -P $n (2 waves)" "
 printf 'runner / xargs: %.3f (%+.1f %%)\n' "$(echo "$runner / $xargs_s" | bc -l)" \
   "$(echo "100 * ($runner - $xargs_s) / $xargs_s" | bc -l)"
 printf 'dispatch gap per job (result in -> next job assigned, same worker): %s ms\n' "$gap"
-printf 'runner start-up to stop, amortised per job: %.2f s\n' \
+printf 'makespan difference per job: %+.2f s\n' \
   "$(echo "($runner - $xargs_s) / $jobs" | bc -l)"

@@ -1,9 +1,12 @@
 #include "campaign/campaign_spec.h"
 
+#include "campaign/job_argv.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <set>
 
+#include "campaign/job_argv.h"
 #include "config/config_error.h"
 #include "config/did_you_mean.h"
 #include "config/object_reader.h"
@@ -150,15 +153,6 @@ EvalSettings ReadEval(const json& v) {
   return eval;
 }
 
-std::string NumberText(double x) { return json(x).dump(); }
-
-std::vector<std::string> EvalOverrides(const EvalSettings& eval) {
-  std::vector<std::string> out;
-  if (eval.duration) out.push_back("simulation.duration=" + NumberText(*eval.duration));
-  if (eval.warmup) out.push_back("simulation.warmup=" + NumberText(*eval.warmup));
-  return out;
-}
-
 CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
                                    const std::filesystem::path& base_dir,
                                    const EvalSettings& eval) {
@@ -293,6 +287,13 @@ CampaignSpec ReadCampaignFile(const std::string& file) {
   const json document = ReadJsonFile(file);
   const std::filesystem::path folder = std::filesystem::path(file).parent_path();
   return ParseCampaign(document, folder.empty() ? "." : folder.string());
+}
+
+std::vector<std::string> EvalOverrides(const EvalSettings& eval) {
+  std::vector<std::string> out;
+  if (eval.duration) out.push_back("simulation.duration=" + FormatNumber(*eval.duration));
+  if (eval.warmup) out.push_back("simulation.warmup=" + FormatNumber(*eval.warmup));
+  return out;
 }
 
 json ToJson(const CampaignSpec& spec) {

@@ -57,6 +57,11 @@ CampaignSpec ParseCampaign(const nlohmann::json& document, const std::string& ba
 // ReadJsonFile, errors about the file itself have an empty path (callers prefix the file name).
 CampaignSpec ReadCampaignFile(const std::string& file);
 
+// The campaign's eval settings as --set overrides ("simulation.duration=D",
+// "simulation.warmup=W"): what every job's scenario is validated with, before the scenario
+// entry's own overrides.
+std::vector<std::string> EvalOverrides(const EvalSettings& eval);
+
 // The canonical resolved campaign: every default explicit, runs and positioners sorted, each
 // scenario's document included, no absolute path (so the campaign id does not depend on where
 // the repository is checked out). This is what the campaign id hashes and the store keeps.

@@ -21,13 +21,18 @@ std::vector<std::string> TrainArgv(const CampaignSpec& spec, const CampaignScena
   if (spec.train.episodes) {
     AppendOverrides(argv, {"agent.train_episodes=" + std::to_string(*spec.train.episodes)});
   }
+  // The scenario as the campaign validated it (a packet-level env simulates with these too).
+  AppendOverrides(argv, EvalOverrides(spec.eval));
   AppendOverrides(argv, s.overrides);
   return argv;
 }
 
-std::vector<std::string> PositionArgv(const CampaignScenario& s, const std::string& positioner) {
+std::vector<std::string> PositionArgv(const CampaignSpec& spec, const CampaignScenario& s,
+                                      const std::string& positioner) {
   std::vector<std::string> argv{kSimBinary,     "position", "--scenario", s.path,
                                 "--positioner", positioner, "--json"};
+  // The oracle re-scores its best positions at packet level with the eval settings.
+  AppendOverrides(argv, EvalOverrides(spec.eval));
   AppendOverrides(argv, s.overrides);
   return argv;
 }
@@ -91,7 +96,7 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
       job.key = "position/" + name + "/" + positioner;
       job.scenario = name;
       job.label = positioner;
-      job.argv = PositionArgv(s, positioner);
+      job.argv = PositionArgv(spec, s, positioner);
       sources.push_back({positioner, job.key, std::nullopt, {}});
       add(std::move(job));
     }

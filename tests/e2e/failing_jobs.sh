@@ -8,6 +8,7 @@ set +e
   --no-progress >"$WORK/out.txt" 2>"$WORK/err.txt"
 CODE=$?
 set -e
+sqlite3 "$DB" "SELECT key, state, attempt, error FROM jobs" >&2
 expect_eq "exit code" "$CODE" 3
 expect_eq "B eval" "$(sql "$DB" "SELECT state FROM jobs WHERE key = 'eval/B/baseline/run1'")" succeeded
 expect_eq "aborting eval" "$(sql "$DB" "SELECT state || ' ' || attempt FROM jobs

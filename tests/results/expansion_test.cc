@@ -123,10 +123,13 @@ TEST(Expansion, EvalArgv) {
                                       "--no-progress", "--set", "simulation.warmup=0.5"}));
   EXPECT_EQ(FindJob(c, "position/B/oracle").argv,
             (std::vector<std::string>{"rlpos-sim", "position", "--scenario", b, "--positioner",
-                                      "oracle", "--json"}));
+                                      "oracle", "--json", "--set", "simulation.duration=2",
+                                      "--set", "simulation.warmup=0.5"}));
   EXPECT_EQ(FindJob(c, "train/B/seed1").argv,
             (std::vector<std::string>{"rlpos-sim", "train", "--scenario", b, "--seed", "1",
-                                      "--fidelity", "analytic", "--out", "{out_dir}", "--json"}));
+                                      "--fidelity", "analytic", "--out", "{out_dir}", "--json",
+                                      "--set", "simulation.duration=2", "--set",
+                                      "simulation.warmup=0.5"}));
 }
 
 TEST(Expansion, OverridesAndEpisodesBecomeSetArguments) {
@@ -140,7 +143,8 @@ TEST(Expansion, OverridesAndEpisodesBecomeSetArguments) {
             (std::vector<std::string>{"rlpos-sim", "train", "--scenario", b, "--seed", "1",
                                       "--fidelity", "packet", "--out", "{out_dir}", "--json",
                                       "--set", "agent.train_episodes=25", "--set",
-                                      "simulation.duration=5"}));
+                                      "simulation.duration=2", "--set", "simulation.warmup=0.5",
+                                      "--set", "simulation.duration=5"}));
   // The scenario's own --set comes last so that it wins over the campaign's eval settings.
   const auto eval = FindJob(c, "eval/B/rl/run1").argv;
   ASSERT_GE(eval.size(), 2u);

@@ -1,0 +1,89 @@
+#pragma once
+// Shared helpers of the DDS tests. Every participant of these tests is loopback-only with a tag
+// of its own (network hygiene: never the default config, never another run's traffic).
+#include <chrono>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "dds/dds_config.h"
+#include "dds/topics.h"
+
+namespace rlpos {
+
+// Readable gtest failures.
+inline void PrintTo(InstanceState state, std::ostream* os) {
+  *os << (state == InstanceState::kAlive      ? "kAlive"
+          : state == InstanceState::kDisposed ? "kDisposed"
+                                              : "kNoWriters");
+}
+
+}  // namespace rlpos
+
+namespace rlpos::testing {
+
+// A fresh loopback tag "rlpos-test-<pid>-<n>" on domain 1 + pid % 200.
+DdsOptions TestOptions();
+
+// This test binary, for starting it again as a second DDS process.
+std::string SelfExecutable();
+
+// The flag that makes the test binary a child writer instead of running the tests:
+//   rlpos_dds_tests --rlpos-child-writer DOMAIN TAG WORKER_ID
+// It writes a WorkerStatus {WORKER_ID, host "child", its pid, 3 slots, 1 busy, jobs {"j#1"}},
+// prints "ready", then waits; SIGTERM makes it dispose the status and exit 0 (a clean stop),
+// SIGKILL leaves it to the lease (a lost worker). It exits 3 by itself after 60 s.
+inline constexpr char kChildWriterFlag[] = "--rlpos-child-writer";
+int RunChildWriter(int argc, char** argv);
+
+// Takes from `reader` every 10 ms until a sample satisfies `match` or `timeout_s` passed.
+// Samples taken before it are appended to `skipped` when given.
+template <typename M, typename P>
+std::optional<Received<M>> AwaitSample(Reader<M>& reader, P match, double timeout_s = 5.0,
+                                       std::vector<Received<M>>* skipped = nullptr) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  for (;;) {
+    for (auto& r : reader.Take()) {
+      if (match(r))
+        return std::move(r);
+      if (skipped)
+        skipped->push_back(std::move(r));
+    }
+    if (std::chrono::steady_clock::now() >= deadline)
+      return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
+// The valid samples taken until `count` of them arrived or `timeout_s` passed.
+template <typename M>
+std::vector<M> AwaitData(Reader<M>& reader, std::size_t count, double timeout_s = 5.0) {
+  std::vector<M> out;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (out.size() < count && std::chrono::steady_clock::now() < deadline) {
+    for (auto& r : reader.Take()) {
+      if (r.valid)
+        out.push_back(std::move(r.data));
+    }
+    if (out.size() < count)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return out;
+}
+
+// Calls `done` every 10 ms until it returns true or `timeout_s` passed; returns its last answer.
+template <typename F>
+bool WaitFor(F done, double timeout_s = 5.0) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  for (;;) {
+    if (done())
+      return true;
+    if (std::chrono::steady_clock::now() >= deadline)
+      return done();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
+}  // namespace rlpos::testing
