@@ -1,10 +1,12 @@
 // Agreement of the analytic throughput estimate with packet-level ns-3 over a grid of UAV
 // positions: Spearman rank correlation and median relative error.
-//   rlpos-bench-calibration SCENARIO.json [DURATION_S]
+//   rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]
+// --positions also prints each position's analytic and packet-level throughput.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "environment/uav_network.h"
@@ -21,8 +23,10 @@ std::vector<double> Ranks(const std::vector<double>& v) {
   std::vector<double> rank(v.size());
   for (std::size_t i = 0; i < order.size();) {
     std::size_t j = i;
-    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]]) ++j;
-    for (std::size_t k = i; k <= j; ++k) rank[order[k]] = 0.5 * (i + j);  // ties: mean rank
+    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]])
+      ++j;
+    for (std::size_t k = i; k <= j; ++k)
+      rank[order[k]] = 0.5 * (i + j);  // ties: mean rank
     i = j + 1;
   }
   return rank;
@@ -44,7 +48,8 @@ double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S]\n");
+    std::fprintf(stderr,
+                 "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]\n");
     return 2;
   }
   rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
@@ -53,29 +58,38 @@ int main(int argc, char** argv) {
   for (double z : {10.0, 30.0}) {
     for (double x : {10.0, 30.0, 50.0, 70.0, 90.0}) {
       for (double y : {15.0, 50.0, 85.0}) {
-        if (rlpos::BuildingContaining(s, {x, y, z}) < 0) grid.push_back({x, y, z});
+        if (rlpos::BuildingContaining(s, {x, y, z}) < 0)
+          grid.push_back({x, y, z});
       }
     }
   }
   std::vector<double> analytic, packet;
   {
     rlpos::AnalyticEvaluator evaluator(s);
-    for (const auto& p : grid) analytic.push_back(evaluator.Evaluate(p).throughput_mbps);
+    for (const auto& p : grid)
+      analytic.push_back(evaluator.Evaluate(p).throughput_mbps);
   }
   for (const auto& p : grid) {
     packet.push_back(rlpos::EvaluatePosition(s, p).aggregate_throughput_mbps);
   }
+  const bool per_position = argc > 3 && std::string(argv[3]) == "--positions";
   std::vector<double> errors;
   for (std::size_t i = 0; i < grid.size(); ++i) {
-    if (packet[i] > 0) errors.push_back(std::abs(analytic[i] - packet[i]) / packet[i]);
+    if (per_position) {
+      std::printf("(%4.0f, %4.0f, %4.0f)  analytic %7.1f  packet %7.1f Mbit/s\n", grid[i].x,
+                  grid[i].y, grid[i].z, analytic[i], packet[i]);
+    }
+    if (packet[i] > 0)
+      errors.push_back(std::abs(analytic[i] - packet[i]) / packet[i]);
   }
   std::sort(errors.begin(), errors.end());
   const double median_error = errors.empty() ? NAN : errors[errors.size() / 2];
-  std::printf("%-8s %zu positions, %.1f s each: Spearman %.3f, median |error| %.1f %%, mean "
-              "analytic %.1f vs packet %.1f Mbit/s\n",
-              s.name.c_str(), grid.size(), s.simulation.duration - s.simulation.warmup,
-              Pearson(Ranks(analytic), Ranks(packet)), 100 * median_error,
-              std::accumulate(analytic.begin(), analytic.end(), 0.0) / analytic.size(),
-              std::accumulate(packet.begin(), packet.end(), 0.0) / packet.size());
+  std::printf(
+      "%-8s %zu positions, %.1f s each: Spearman %.3f, median |error| %.1f %%, mean "
+      "analytic %.1f vs packet %.1f Mbit/s\n",
+      s.name.c_str(), grid.size(), s.simulation.duration - s.simulation.warmup,
+      Pearson(Ranks(analytic), Ranks(packet)), 100 * median_error,
+      std::accumulate(analytic.begin(), analytic.end(), 0.0) / analytic.size(),
+      std::accumulate(packet.begin(), packet.end(), 0.0) / packet.size());
   return 0;
 }

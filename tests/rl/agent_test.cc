@@ -86,6 +86,21 @@ AgentSpec SmallSpec(std::uint64_t seed) {
   return spec;
 }
 
+TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
+  const AgentSpec spec;
+  // Table II of the paper.
+  EXPECT_EQ(spec.hidden, (std::vector<int>{32, 32}));
+  EXPECT_DOUBLE_EQ(spec.learning_rate, 1e-2);
+  EXPECT_EQ(spec.batch_size, 64);
+  EXPECT_DOUBLE_EQ(spec.epsilon_start, 1.0);
+  EXPECT_DOUBLE_EQ(spec.epsilon_end, 1.0);
+  EXPECT_EQ(spec.train_episodes, 10);
+  // Not the paper's: the target network is refreshed once per paper episode (100 s / 0.1 s),
+  // which is what let scenario A's greedy policy beat the baseline (README, RL).
+  EXPECT_EQ(spec.target_update_interval, 1000);
+  EXPECT_FALSE(spec.double_dqn);
+}
+
 TEST(DqnAgent, LearnsTheChain) {
   ChainEnv env;
   const AgentSpec spec = SmallSpec(3);

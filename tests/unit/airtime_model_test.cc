@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace rlpos {
 namespace {
 
@@ -15,6 +17,16 @@ TEST(AirtimeModel, EfficiencyFallsWithRate) {
   EXPECT_EQ(MacEfficiency(0.0, 1400), 0.0);
 }
 
+TEST(AirtimeModel, FullAccessRespectsTheAggregationLimits) {
+  EXPECT_EQ(MpduBytes(1400), 1464);
+  // MCS 9 at 160 MHz: the 65535-byte A-MPDU limit (44 MPDUs); MCS 0: the 5.484 ms PPDU limit.
+  EXPECT_DOUBLE_EQ(FullAccess(780, 1400).mpdus, 44);
+  EXPECT_DOUBLE_EQ(FullAccess(58.5, 1400).mpdus, 27);
+  EXPECT_LT(FullAccess(58.5, 1400).ppdu_us, 5484 + 40 + 1e-9);
+  EXPECT_NEAR(FullAccess(780, 1400, 0.25).delivered_mbit,
+              0.25 * FullAccess(780, 1400).delivered_mbit, 1e-12);
+}
+
 TEST(AirtimeModel, UnsaturatedChannelCarriesEveryDemand) {
   const auto e = EstimateAirtimeThroughput({{58.5, 780}, {58.5, 526.5}, {10, 0}}, 1400);
   EXPECT_DOUBLE_EQ(e.throughput_mbps[0], 58.5);
@@ -22,18 +34,45 @@ TEST(AirtimeModel, UnsaturatedChannelCarriesEveryDemand) {
   EXPECT_DOUBLE_EQ(e.throughput_mbps[2], 0.0);  // no link
   EXPECT_DOUBLE_EQ(e.aggregate_mbps, 117.0);
   EXPECT_LT(e.airtime_demanded, 1.0);
+  // At a load of a fifth of the channel the other station is rarely there to collide with.
+  EXPECT_GT(e.contenders, 1.0);
+  EXPECT_LT(e.contenders, 1.5);
 }
 
-TEST(AirtimeModel, SaturatedChannelIsSharedFairly) {
-  // Two UEs wanting 1000 Mbit/s each, capacities c1, c2: equal shares T with T/c1 + T/c2 = 1.
+TEST(AirtimeModel, SaturatedStationsGetEqualAccesses) {
+  // DCF gives backlogged stations equal transmit opportunities, each a full A-MPDU: throughputs
+  // are in the ratio of what one A-MPDU carries, and the slow one holds the channel longest.
   const auto e = EstimateAirtimeThroughput({{1000, 780}, {1000, 58.5}}, 1400);
-  const double c1 = 780 * MacEfficiency(780, 1400);
-  const double c2 = 58.5 * MacEfficiency(58.5, 1400);
-  const double share = 1.0 / (1.0 / c1 + 1.0 / c2);
-  EXPECT_NEAR(e.throughput_mbps[0], share, 1e-6);
-  EXPECT_NEAR(e.throughput_mbps[1], share, 1e-6);
-  // The slow station drags the fast one below its own capacity: the performance anomaly.
-  EXPECT_LT(e.aggregate_mbps, c1);
+  const Access fast = FullAccess(780, 1400), slow = FullAccess(58.5, 1400);
+  EXPECT_NEAR(e.throughput_mbps[0] / e.throughput_mbps[1],
+              fast.delivered_mbit / slow.delivered_mbit, 1e-6);
+  EXPECT_NEAR(e.contenders, 2.0, 1e-12);
+  // The performance anomaly: the fast station ends far below what it carries alone.
+  const auto alone = EstimateAirtimeThroughput({{1000, 780}}, 1400);
+  EXPECT_NEAR(alone.aggregate_mbps, 780 * MacEfficiency(780, 1400), 1e-6);
+  EXPECT_LT(e.throughput_mbps[0], 0.3 * alone.aggregate_mbps);
+}
+
+TEST(AirtimeModel, ContentionCostsACrowdedChannel) {
+  // Twenty saturated stations at one rate: the accesses are shared, but collisions waste a share
+  // of the channel that one station alone would not.
+  const std::vector<AirtimeLink> crowd(20, AirtimeLink{1000, 780});
+  const auto e = EstimateAirtimeThroughput(crowd, 1400);
+  const double alone = EstimateAirtimeThroughput({{1000, 780}}, 1400).aggregate_mbps;
+  EXPECT_NEAR(e.contenders, 20.0, 1e-12);
+  EXPECT_LT(e.aggregate_mbps, 0.85 * alone);
+  EXPECT_GT(e.aggregate_mbps, 0.5 * alone);
+  EXPECT_NEAR(e.throughput_mbps[0], e.throughput_mbps[19], 1e-9);
+}
+
+TEST(AirtimeModel, LostMpdusCostAirtime) {
+  const double clean = EstimateAirtimeThroughput({{1000, 780, 1.0}}, 1400).aggregate_mbps;
+  const double lossy = EstimateAirtimeThroughput({{1000, 780, 0.6}}, 1400).aggregate_mbps;
+  EXPECT_NEAR(lossy, 0.6 * clean, 1e-9);
+  // A link that loses every MPDU carries nothing and does not contend.
+  const auto dead = EstimateAirtimeThroughput({{1000, 780, 0.0}, {100, 780, 1.0}}, 1400);
+  EXPECT_DOUBLE_EQ(dead.throughput_mbps[0], 0.0);
+  EXPECT_DOUBLE_EQ(dead.throughput_mbps[1], 100.0);
 }
 
 TEST(AirtimeModel, SmallDemandsAreMetBeforeSharing) {

@@ -8,6 +8,9 @@
 #include <ns3/constant-position-mobility-model.h>
 #include <ns3/core-module.h>
 #include <ns3/double.h>
+#include <ns3/error-rate-model.h>
+#include <ns3/he-phy.h>
+#include <ns3/ht-phy.h>
 #include <ns3/inet-socket-address.h>
 #include <ns3/internet-stack-helper.h>
 #include <ns3/ipv4-address-helper.h>
@@ -21,8 +24,6 @@
 #include <ns3/propagation-loss-model.h>
 #include <ns3/rectangle.h>
 #include <ns3/ssid.h>
-#include <ns3/he-phy.h>
-#include <ns3/ht-phy.h>
 #include <ns3/vht-phy.h>
 #include <ns3/wifi-helper.h>
 #include <ns3/wifi-mac-helper.h>
@@ -30,6 +31,7 @@
 #include <ns3/wifi-remote-station-manager.h>
 #include <ns3/yans-wifi-channel.h>
 #include <ns3/yans-wifi-helper.h>
+
 #include <cmath>
 #include <set>
 
@@ -44,20 +46,31 @@ namespace {
 constexpr uint16_t kFirstPort = 9000;
 // Far above what AssignStreams hands out to the network's models.
 constexpr int64_t kStartTimesStream = 1000000;
+// ns-3.37's default for HT/VHT/HE, named so that the analytic fidelity can build the same one.
+constexpr char kErrorRateModel[] = "ns3::TableBasedErrorRateModel";
 
-ns3::Vector ToNs3(const Vec3& v) { return {v.x, v.y, v.z}; }
-Vec3 FromNs3(const ns3::Vector& v) { return {v.x, v.y, v.z}; }
+ns3::Vector ToNs3(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
+Vec3 FromNs3(const ns3::Vector& v) {
+  return {v.x, v.y, v.z};
+}
 
 ns3::Building::BuildingType_t BuildingType(const std::string& type) {
-  if (type == "office") return ns3::Building::Office;
-  if (type == "commercial") return ns3::Building::Commercial;
+  if (type == "office")
+    return ns3::Building::Office;
+  if (type == "commercial")
+    return ns3::Building::Commercial;
   return ns3::Building::Residential;
 }
 
 ns3::Building::ExtWallsType_t WallsType(const std::string& walls) {
-  if (walls == "wood") return ns3::Building::Wood;
-  if (walls == "concrete_without_windows") return ns3::Building::ConcreteWithoutWindows;
-  if (walls == "stone_blocks") return ns3::Building::StoneBlocks;
+  if (walls == "wood")
+    return ns3::Building::Wood;
+  if (walls == "concrete_without_windows")
+    return ns3::Building::ConcreteWithoutWindows;
+  if (walls == "stone_blocks")
+    return ns3::Building::StoneBlocks;
   return ns3::Building::ConcreteWithWindows;
 }
 
@@ -81,10 +94,10 @@ void InstallUeMobility(const Scenario& s, ns3::NodeContainer& ues) {
       mobility.SetMobilityModel(
           "ns3::RandomWalk2dMobilityModel", "Bounds",
           ns3::RectangleValue(ns3::Rectangle(0, s.venue.width, 0, s.venue.depth)), "Mode",
-          ns3::StringValue("Time"), "Time", ns3::TimeValue(ns3::Seconds(ue.mobility.change_interval)),
-          "Speed",
-          ns3::StringValue("ns3::ConstantRandomVariable[Constant=" +
-                           AttributeString(ue.mobility.speed) + "]"));
+          ns3::StringValue("Time"), "Time",
+          ns3::TimeValue(ns3::Seconds(ue.mobility.change_interval)), "Speed",
+          ns3::StringValue(
+              "ns3::ConstantRandomVariable[Constant=" + AttributeString(ue.mobility.speed) + "]"));
     } else {
       mobility.SetMobilityModel("ns3::ConstantPositionMobilityModel");
     }
@@ -103,6 +116,7 @@ struct UavNetwork::Impl {
   ns3::NodeContainer ues;
   ns3::Ptr<ns3::Node> uav;
   ns3::Ptr<ns3::WifiNetDevice> uav_device;
+  ns3::Ptr<ns3::ErrorRateModel> error_model;  // a twin of the PHYs' own (kErrorRateModel)
   ns3::ApplicationContainer senders;
   ns3::Ptr<ns3::UniformRandomVariable> start_times;
   ns3::ApplicationContainer sinks;
@@ -113,7 +127,27 @@ struct UavNetwork::Impl {
   ns3::NetDeviceContainer InstallWifi(ns3::WifiHelper& wifi);
   void AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices);
   void InstallApplications(ns3::Ipv4Address uav_address);
+  ns3::WifiTxVector TxVector(int mcs) const;  // single-user, the configured PHY
 };
+
+ns3::WifiTxVector UavNetwork::Impl::TxVector(int mcs) const {
+  const WifiSpec& w = scenario.wifi;
+  ns3::WifiMode mode;
+  ns3::WifiPreamble preamble;
+  if (plan.standard == ns3::WIFI_STANDARD_80211n) {
+    mode = ns3::HtPhy::GetHtMcs(static_cast<uint8_t>(mcs + 8 * (w.spatial_streams - 1)));
+    preamble = ns3::WIFI_PREAMBLE_HT_MF;
+  } else if (plan.standard == ns3::WIFI_STANDARD_80211ac) {
+    mode = ns3::VhtPhy::GetVhtMcs(static_cast<uint8_t>(mcs));
+    preamble = ns3::WIFI_PREAMBLE_VHT_SU;
+  } else {
+    mode = ns3::HePhy::GetHeMcs(static_cast<uint8_t>(mcs));
+    preamble = ns3::WIFI_PREAMBLE_HE_SU;
+  }
+  const auto nss = static_cast<uint8_t>(w.spatial_streams);
+  return ns3::WifiTxVector(mode, 0, preamble, static_cast<uint16_t>(w.guard_interval_ns), nss, nss,
+                           0, static_cast<uint16_t>(w.width_mhz), true);
+}
 
 void UavNetwork::Impl::BuildChannelModels() {
   std::set<const ns3::Object*> user_frequency;
@@ -122,16 +156,14 @@ void UavNetwork::Impl::BuildChannelModels() {
              ->GetObject<ns3::PropagationLossModel>();
   // Loss models default to their own frequency (ITU-R P.1411: 2.4 GHz): align them with the
   // channel unless the scenario chose one.
-  SetAttributeInTree(loss, "Frequency", ns3::DoubleValue(plan.center_frequency_hz),
-                     user_frequency);
+  SetAttributeInTree(loss, "Frequency", ns3::DoubleValue(plan.center_frequency_hz), user_frequency);
   geometry = ns3::CreateObject<ns3::BuildingsChannelConditionModel>();
 }
 
 ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
   const WifiSpec& w = scenario.wifi;
   // Validates the rate manager spec (type, attributes) before ns-3 would abort on it.
-  CreateFromSpec(w.rate_manager, "/wifi/rate_manager",
-                 ns3::WifiRemoteStationManager::GetTypeId());
+  CreateFromSpec(w.rate_manager, "/wifi/rate_manager", ns3::WifiRemoteStationManager::GetTypeId());
 
   auto channel = ns3::CreateObject<ns3::YansWifiChannel>();
   channel->SetPropagationLossModel(loss);
@@ -149,6 +181,7 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
   phy.Set("MaxSupportedTxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
   phy.Set("MaxSupportedRxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
 
+  phy.SetErrorRateModel(kErrorRateModel);
   wifi.SetStandard(plan.standard);
   wifi.SetRemoteStationManager(w.rate_manager.type);
   if (plan.standard == ns3::WIFI_STANDARD_80211ax) {
@@ -180,7 +213,8 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
     }
     // Off keeps ns-3's own threshold (larger than any PSDU): 65535 would still protect long
     // A-MPDUs with RTS/CTS.
-    if (w.rts_cts) manager->SetAttribute("RtsCtsThreshold", ns3::UintegerValue(0));
+    if (w.rts_cts)
+      manager->SetAttribute("RtsCtsThreshold", ns3::UintegerValue(0));
   }
   return devices;
 }
@@ -188,7 +222,8 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
 // Fixed stream numbers for every random variable: ns-3 otherwise numbers streams from a
 // process-wide counter, and a second network built in the same process (the gym's episodes, the
 // tests) would draw different numbers for the same seed and RngRun.
-void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices) {
+void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi,
+                                     const ns3::NetDeviceContainer& devices) {
   ns3::NodeContainer all(uav);
   all.Add(ues);
   int64_t stream = 0;
@@ -253,6 +288,7 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Vec3& uav_position)
 
   m.plan = PlanWifiChannel(scenario.wifi);
   m.BuildChannelModels();
+  m.error_model = ns3::ObjectFactory(kErrorRateModel).Create<ns3::ErrorRateModel>();
   BuildBuildings(scenario);
 
   m.ues.Create(scenario.ues.size());
@@ -289,13 +325,17 @@ UavNetwork::~UavNetwork() {
   ns3::Simulator::Destroy();
 }
 
-const Scenario& UavNetwork::scenario() const { return impl_->scenario; }
+const Scenario& UavNetwork::scenario() const {
+  return impl_->scenario;
+}
 
 void UavNetwork::SetUavPosition(const Vec3& position) {
   impl_->UavMobility()->SetPosition(ToNs3(position));
 }
 
-Vec3 UavNetwork::UavPosition() const { return FromNs3(impl_->UavMobility()->GetPosition()); }
+Vec3 UavNetwork::UavPosition() const {
+  return FromNs3(impl_->UavMobility()->GetPosition());
+}
 
 std::vector<LinkState> UavNetwork::Links() const {
   const Impl& m = *impl_;
@@ -330,36 +370,33 @@ std::vector<double> UavNetwork::McsSnrThresholdsDb() const {
   auto phy = m.uav_device->GetPhy();
   std::vector<double> thresholds;
   for (int mcs = 0; mcs <= MaxMcs(w.standard); ++mcs) {
-    ns3::WifiMode mode;
-    ns3::WifiPreamble preamble;
-    if (m.plan.standard == ns3::WIFI_STANDARD_80211n) {
-      mode = ns3::HtPhy::GetHtMcs(static_cast<uint8_t>(mcs + 8 * (w.spatial_streams - 1)));
-      preamble = ns3::WIFI_PREAMBLE_HT_MF;
-    } else if (m.plan.standard == ns3::WIFI_STANDARD_80211ac) {
-      mode = ns3::VhtPhy::GetVhtMcs(static_cast<uint8_t>(mcs));
-      preamble = ns3::WIFI_PREAMBLE_VHT_SU;
-    } else {
-      mode = ns3::HePhy::GetHeMcs(static_cast<uint8_t>(mcs));
-      preamble = ns3::WIFI_PREAMBLE_HE_SU;
-    }
-    const auto nss = static_cast<uint8_t>(w.spatial_streams);
-    ns3::WifiTxVector tx(mode, 0, preamble, static_cast<uint16_t>(w.guard_interval_ns), nss, nss, 0,
-                         static_cast<uint16_t>(w.width_mhz), true);
-    thresholds.push_back(10.0 * std::log10(phy->CalculateSnr(tx, ber)));
+    thresholds.push_back(10.0 * std::log10(phy->CalculateSnr(m.TxVector(mcs), ber)));
   }
   return thresholds;
 }
 
-void UavNetwork::BeginMeasurement(MeasurementWindow window) { impl_->traffic->Restart(window); }
+double UavNetwork::MpduSuccessRate(int mcs, double snr_db, int mpdu_bytes) const {
+  const ns3::WifiTxVector tx = impl_->TxVector(mcs);
+  return impl_->error_model->GetChunkSuccessRate(tx.GetMode(), tx, std::pow(10.0, snr_db / 10),
+                                                 static_cast<uint64_t>(mpdu_bytes) * 8,
+                                                 tx.GetNss());
+}
+
+void UavNetwork::BeginMeasurement(MeasurementWindow window) {
+  impl_->traffic->Restart(window);
+}
 
 void UavNetwork::RunUntil(double t) {
   const ns3::Time target = ns3::Seconds(t);
-  if (target <= ns3::Simulator::Now()) return;
+  if (target <= ns3::Simulator::Now())
+    return;
   ns3::Simulator::Stop(target - ns3::Simulator::Now());
   ns3::Simulator::Run();
 }
 
-double UavNetwork::Now() const { return ns3::Simulator::Now().GetSeconds(); }
+double UavNetwork::Now() const {
+  return ns3::Simulator::Now().GetSeconds();
+}
 
 RunMetrics UavNetwork::Measure() const {
   const Impl& m = *impl_;
@@ -388,7 +425,8 @@ RunMetrics EvaluatePosition(const Scenario& scenario, const Vec3& position,
   const int slices = on_progress ? 20 : 1;
   for (int k = 1; k <= slices; ++k) {
     network.RunUntil(end * k / slices);
-    if (on_progress) on_progress(network.Now(), end);
+    if (on_progress)
+      on_progress(network.Now(), end);
   }
   network.RunUntil(end + drain);
   return network.Measure();

@@ -36,6 +36,10 @@ class UavNetwork {
   // IdealWifiManager derives it from the error rate model at its BER threshold.
   std::vector<double> McsSnrThresholdsDb() const;
 
+  // Probability that an MPDU of `mpdu_bytes` sent at `mcs` arrives at `snr_db`, from the error
+  // rate model the PHYs use (what a link loses to retransmissions at the rate it was given).
+  double MpduSuccessRate(int mcs, double snr_db, int mpdu_bytes) const;
+
   // Starts a new measurement window for the traffic monitor (drops what was counted before).
   void BeginMeasurement(MeasurementWindow window);
   // Advances the simulation to absolute time `t` (s).

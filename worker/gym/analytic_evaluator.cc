@@ -22,6 +22,7 @@ StepInfo AnalyticEvaluator::Evaluate(const Vec3& position) {
   StepInfo info;
   info.position = position;
   std::vector<AirtimeLink> airtime(links.size());
+  const int mpdu_bytes = MpduBytes(scenario_.traffic.packet_size);
   for (std::size_t i = 0; i < links.size(); ++i) {
     info.n_los += links[i].los ? 1 : 0;
     info.snr_db.push_back(links[i].snr_db);
@@ -31,9 +32,16 @@ StepInfo AnalyticEvaluator::Evaluate(const Vec3& position) {
            links[i].snr_db >= thresholds_db_[mcs + 1]) {
       ++mcs;
     }
-    airtime[i] = {scenario_.ues[i].demand_mbps, mcs >= 0 ? McsDataRateMbps(phy, mcs) : 0.0};
+    airtime[i].demand_mbps = scenario_.ues[i].demand_mbps;
+    if (mcs >= 0) {
+      // IdealWifiManager's thresholds only bound the bit error rate: near a threshold a
+      // 1.4 kB MPDU still fails often enough that retransmissions eat a visible share.
+      airtime[i].phy_rate_mbps = McsDataRateMbps(phy, mcs);
+      airtime[i].mpdu_success = network_->MpduSuccessRate(mcs, links[i].snr_db, mpdu_bytes);
+    }
   }
-  const AirtimeEstimate estimate = EstimateAirtimeThroughput(airtime, scenario_.traffic.packet_size);
+  const AirtimeEstimate estimate =
+      EstimateAirtimeThroughput(airtime, scenario_.traffic.packet_size);
   info.throughput_mbps = estimate.aggregate_mbps;
   ue_throughput_ = estimate.throughput_mbps;
   return info;
