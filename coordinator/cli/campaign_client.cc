@@ -28,7 +28,8 @@ std::string DescribeDds(const DdsOptions& options) {
 }
 
 msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignRequest request,
-                                       double timeout_s) {
+                                       double timeout_s,
+                                       const std::function<void()>& while_waiting) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(timeout_s));
@@ -46,13 +47,15 @@ msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignReque
   // its reply writer matched to us, or the request or its answer would be lost.
   while (requests.MatchedReaders() == 0 || replies.MatchedWriters() == 0) {
     if (Clock::now() >= deadline) throw no_answer();
+    if (while_waiting) while_waiting();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   request.request_id = NewRequestId();
   requests.Write(request);
   while (Clock::now() < deadline) {
     const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
-    wait_set.Wait(std::max(0.0, std::min(left, 0.5)));
+    wait_set.Wait(std::max(0.0, std::min(left, 0.1)));
+    if (while_waiting) while_waiting();
     for (const auto& r : replies.Take()) {
       if (r.valid && r.data.request_id == request.request_id) return r.data;
     }

@@ -2,6 +2,7 @@
 // rlpos-campaign's side of the campaign requests: send one request to the coordinator over DDS
 // and wait for its reply. The coordinator is the only writer of the database, so submit,
 // cancel and retry go through it.
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -20,8 +21,10 @@ class NoCoordinatorError : public std::runtime_error {
 std::string DescribeDds(const DdsOptions& options);
 
 // Fills in request_id; throws NoCoordinatorError when no coordinator is matched or answers
-// within `timeout_s`.
+// within `timeout_s`. `while_waiting` is called every few tens of ms while it waits (the
+// embedded runner checks there that its coordinator is still alive; it may throw).
 msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignRequest request,
-                                       double timeout_s);
+                                       double timeout_s,
+                                       const std::function<void()>& while_waiting = {});
 
 }  // namespace rlpos

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <functional>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <random>
@@ -31,6 +32,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The last non-empty line of a daemon's log, for an error message.
+std::string TailOfFile(const std::string& file) {
+  std::ifstream in(file);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    if (!line.empty()) last = line;
+  }
+  return last.empty() ? "see " + file : last;
+}
+
 double WallNow() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
       .count();
@@ -54,6 +65,13 @@ class Daemon {
   void Start() {
     const std::string log = restarts_ == 0 ? log_ : log_ + "." + std::to_string(restarts_);
     process_ = std::make_unique<ChildProcess>(argv_(restarts_), "/dev/null", log);
+  }
+  // Throws if it ended (before it was ever up: no point in restarting).
+  void RequireRunning() {
+    if (process_ && process_->Poll()) {
+      throw std::runtime_error(name_ + " ended at start-up (" + Describe(process_->exit_status()) +
+                               "): " + TailOfFile(log_));
+    }
   }
   // Restarts it if it ended; returns a line saying so, or "".
   std::string KeepAlive(int max_restarts) {
@@ -124,6 +142,8 @@ int RunCampaign(const RunOptions& options) {
   CheckDdsOptions(dds);
   const fs::path db_dir = fs::absolute(options.db).parent_path();
   fs::create_directories(db_dir);
+  // A database that cannot be opened or migrated is bad input: say so before starting anything.
+  { ResultsStore check(options.db); }
   {
     // The coordinator would refuse a database another coordinator owns; say so up front.
     try {
@@ -173,7 +193,10 @@ int RunCampaign(const RunOptions& options) {
     msg::CampaignRequest request;
     request.kind = msg::RequestKind::kSubmit;
     request.campaign_json = ToJson(campaign).dump();
-    const msg::CampaignReply reply = SendCampaignRequest(dds, request, 60.0);
+    const msg::CampaignReply reply = SendCampaignRequest(dds, request, 60.0, [&] {
+      if (StopRequested()) throw std::runtime_error("interrupted before the campaign started");
+      for (auto& d : daemons) d->RequireRunning();
+    });
     if (!reply.ok) throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
     std::cout << "campaign " << reply.campaign_id << "\n" << std::flush;
 

@@ -112,6 +112,14 @@ TEST_F(RlposCampaignCli, ReadCommandsOnAMissingDatabase) {
   EXPECT_FALSE(fs::exists(dir_ + "/none.db"));
 }
 
+TEST_F(RlposCampaignCli, RunWithADatabaseThatCannotBeOpened) {
+  fs::create_directories(dir_ + "/results/a-folder");
+  const auto r = Campaign("run " + std::string(RLPOS_SOURCE_DIR) +
+                          "/campaigns/mini.json --db results/a-folder");
+  ExpectOneLineError(r, 2, "results store results/a-folder: cannot open");
+  EXPECT_FALSE(fs::exists(dir_ + "/results/logs")) << "no daemon may have started";
+}
+
 TEST_F(RlposCampaignCli, UsageErrors) {
   EXPECT_EQ(Campaign("").exit_code, 2);
   EXPECT_EQ(Campaign("run").exit_code, 2);
