@@ -14,17 +14,14 @@
 #include "cli/campaign_client.h"
 #include "cli/campaign_commands.h"
 #include "config/config_error.h"
+#include "dds/dds_cli_options.h"
 #include "process/stop_signal.h"
 #include "store/store_error.h"
 
 namespace {
 
-void AddDdsOptions(CLI::App* command, rlpos::DdsOptions& dds, double& timeout_s) {
-  command->add_option("--domain", dds.domain, "DDS domain id of the coordinator (default 0)")
-      ->check(CLI::Range(0, 230));
-  command->add_option("--loopback", dds.loopback_tag,
-                      "Loopback-only DDS with this discovery tag (as the coordinator was started)");
-  command->add_option("--dds-config", dds.config, "Cyclone DDS XML or file:// URI");
+void AddRequestOptions(CLI::App* command, rlpos::DdsOptions& dds, double& timeout_s) {
+  rlpos::AddDdsOptions(command, dds);
   command->add_option("--timeout", timeout_s, "Seconds to wait for the coordinator (default 10)")
       ->check(CLI::PositiveNumber);
 }
@@ -59,7 +56,7 @@ int main(int argc, char** argv) {
   double timeout_s = 10;
   auto* submit = app.add_subcommand("submit", "Submit a campaign to a running coordinator");
   submit->add_option("campaign", campaign_file, "Campaign JSON")->required();
-  AddDdsOptions(submit, dds, timeout_s);
+  AddRequestOptions(submit, dds, timeout_s);
 
   bool watch = false;
   double period_s = 2;
@@ -83,10 +80,10 @@ int main(int argc, char** argv) {
 
   auto* cancel = app.add_subcommand("cancel", "Cancel a campaign's unfinished jobs");
   cancel->add_option("id", campaign_id, "Campaign id")->required();
-  AddDdsOptions(cancel, dds, timeout_s);
+  AddRequestOptions(cancel, dds, timeout_s);
   auto* retry = app.add_subcommand("retry", "Run a campaign's failed jobs again");
   retry->add_option("id", campaign_id, "Campaign id")->required();
-  AddDdsOptions(retry, dds, timeout_s);
+  AddRequestOptions(retry, dds, timeout_s);
 
   try {
     app.parse(argc, argv);

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "daemon/coordinator_daemon.h"
+#include "dds/dds_cli_options.h"
 #include "logging/log.h"
 #include "process/stop_signal.h"
 
@@ -20,10 +21,7 @@ int main(int argc, char** argv) {
   DdsOptions dds;
   std::string log_level = "info";
   app.add_option("--db", options.db_file, "Results database (default: results/rlpos.db)");
-  app.add_option("--domain", dds.domain, "DDS domain id")->check(CLI::Range(0, 230));
-  app.add_option("--loopback", dds.loopback_tag,
-                 "Loopback-only DDS with this discovery tag (the embedded runner's)");
-  app.add_option("--dds-config", dds.config, "Cyclone DDS XML or file:// URI");
+  AddDdsOptions(&app, dds);
   app.add_option("--grace", options.restart_grace_s,
                  "Seconds to wait for workers after a start before requeuing their jobs")
       ->check(CLI::NonNegativeNumber);

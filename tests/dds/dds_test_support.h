@@ -11,6 +11,8 @@
 #include "dds/dds_config.h"
 #include "dds/topics.h"
 
+#include "support/wait_for.h"
+
 namespace rlpos {
 
 // Readable gtest failures.
@@ -71,19 +73,6 @@ std::vector<M> AwaitData(Reader<M>& reader, std::size_t count, double timeout_s 
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return out;
-}
-
-// Calls `done` every 10 ms until it returns true or `timeout_s` passed; returns its last answer.
-template <typename F>
-bool WaitFor(F done, double timeout_s = 5.0) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  for (;;) {
-    if (done())
-      return true;
-    if (std::chrono::steady_clock::now() >= deadline)
-      return done();
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
 }
 
 }  // namespace rlpos::testing

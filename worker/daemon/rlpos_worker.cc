@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "daemon/worker_daemon.h"
+#include "dds/dds_cli_options.h"
 #include "logging/log.h"
 #include "process/executable_path.h"
 #include "process/stop_signal.h"
@@ -27,10 +28,7 @@ int main(int argc, char** argv) {
   app.add_option("--id", options.id, "Worker id, unique on the domain (default: host-pid)");
   app.add_option("--work-dir", options.work_dir,
                  "Folder of the jobs' files (default: results/work/<id>)");
-  app.add_option("--domain", dds.domain, "DDS domain id")->check(CLI::Range(0, 230));
-  app.add_option("--loopback", dds.loopback_tag,
-                 "Loopback-only DDS with this discovery tag (the embedded runner's)");
-  app.add_option("--dds-config", dds.config, "Cyclone DDS XML or file:// URI");
+  AddDdsOptions(&app, dds);
   app.add_option("--sim", options.sim_binary, "rlpos-sim to run (default: the sibling binary)");
   app.add_option("--log-level", log_level, "error|warning|info|debug")
       ->check(CLI::IsMember({"error", "warning", "info", "debug"}));
