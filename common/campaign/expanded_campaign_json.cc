@@ -18,8 +18,10 @@ json ToJson(const Job& job) {
             {"depends_on", job.depends_on},
             {"position", ToJson(job.position)},
             {"argv", job.argv}};
-  if (job.rng_run) j["rng_run"] = *job.rng_run;
-  if (job.train_seed) j["train_seed"] = *job.train_seed;
+  if (job.rng_run)
+    j["rng_run"] = *job.rng_run;
+  if (job.train_seed)
+    j["train_seed"] = *job.train_seed;
   return j;
 }
 
@@ -37,7 +39,8 @@ T Field(const json& j, const char* name, const std::string& where) {
 
 std::optional<std::uint64_t> OptionalUnsigned(const json& j, const char* name,
                                               const std::string& where) {
-  if (!j.contains(name) || j.at(name).is_null()) return std::nullopt;
+  if (!j.contains(name) || j.at(name).is_null())
+    return std::nullopt;
   return Field<std::uint64_t>(j, name, where);
 }
 
@@ -68,7 +71,8 @@ Job JobFromJson(const json& j, const std::string& where) {
 
 json ToJson(const ExpandedCampaign& campaign) {
   json jobs = json::array();
-  for (const auto& job : campaign.jobs) jobs.push_back(ToJson(job));
+  for (const auto& job : campaign.jobs)
+    jobs.push_back(ToJson(job));
   return {{"id", campaign.id},
           {"name", campaign.name},
           {"spec", campaign.spec},
@@ -85,12 +89,14 @@ ExpandedCampaign ExpandedCampaignFromJson(const json& j) {
   c.spec = Field<json>(j, "spec", where);
   c.max_attempts = Field<int>(j, "max_attempts", where);
   c.job_timeout_s = Field<double>(j, "job_timeout_s", where);
-  if (c.max_attempts < 1) throw std::invalid_argument(where + ": \"max_attempts\" must be >= 1");
+  if (c.max_attempts < 1)
+    throw std::invalid_argument(where + ": \"max_attempts\" must be >= 1");
   if (!(c.job_timeout_s > 0)) {
     throw std::invalid_argument(where + ": \"job_timeout_s\" must be > 0");
   }
   const json jobs = Field<json>(j, "jobs", where);
-  if (!jobs.is_array()) throw std::invalid_argument(where + ": \"jobs\" is not an array");
+  if (!jobs.is_array())
+    throw std::invalid_argument(where + ": \"jobs\" is not an array");
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     c.jobs.push_back(JobFromJson(jobs[i], where + "/jobs/" + std::to_string(i)));
   }

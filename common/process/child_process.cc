@@ -1,8 +1,8 @@
 #include "process/child_process.h"
 
 #include <fcntl.h>
-#include <sys/prctl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,20 +28,23 @@ ChildExit FromWaitStatus(int status) {
 
 int OpenOutput(const std::string& file) {
   const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(file + ": " + std::strerror(errno));
+  if (fd < 0)
+    throw std::runtime_error(file + ": " + std::strerror(errno));
   return fd;
 }
 
 }  // namespace
 
 std::string Describe(const ChildExit& exit) {
-  if (exit.exited) return "exit code " + std::to_string(exit.code);
+  if (exit.exited)
+    return "exit code " + std::to_string(exit.code);
   return "signal " + std::to_string(exit.signal) + " (" + strsignal(exit.signal) + ")";
 }
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::string& stdout_file,
                            const std::string& stderr_file) {
-  if (argv.empty()) throw std::runtime_error("empty command line");
+  if (argv.empty())
+    throw std::runtime_error("empty command line");
   const int out = OpenOutput(stdout_file);
   int err = -1;
   try {
@@ -52,7 +55,8 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   }
   // Everything the child needs is prepared before fork: after it only async-signal-safe calls.
   std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  for (const auto& a : argv)
+    args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   const pid_t parent = ::getpid();
   pid_ = ::fork();
@@ -66,11 +70,13 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
     ::setpgid(0, 0);  // its own group: a kill reaches whatever it starts, never the parent
     // Dies with its parent: a killed worker leaves no job running unseen.
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) ::_exit(127);  // the parent died before prctl
+    if (::getppid() != parent)
+      ::_exit(127);  // the parent died before prctl
     ::dup2(out, STDOUT_FILENO);
     ::dup2(err, STDERR_FILENO);
     const int devnull = ::open("/dev/null", O_RDONLY);
-    if (devnull >= 0) ::dup2(devnull, STDIN_FILENO);
+    if (devnull >= 0)
+      ::dup2(devnull, STDIN_FILENO);
     ::execv(args[0], args.data());
     const char* reason = std::strerror(errno);
     const char prefix[] = "cannot run ";
@@ -87,11 +93,13 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
 }
 
 ChildProcess::~ChildProcess() {
-  if (!done_) Kill(0.2);
+  if (!done_)
+    Kill(0.2);
 }
 
 bool ChildProcess::Poll() {
-  if (done_) return true;
+  if (done_)
+    return true;
   int status = 0;
   const pid_t r = ::waitpid(pid_, &status, WNOHANG);
   if (r == pid_) {
@@ -102,16 +110,18 @@ bool ChildProcess::Poll() {
 }
 
 void ChildProcess::Terminate() {
-  if (!done_) ::kill(-pid_, SIGTERM);
+  if (!done_)
+    ::kill(-pid_, SIGTERM);
 }
 
 void ChildProcess::Kill(double grace_s) {
-  if (done_) return;
+  if (done_)
+    return;
   ::kill(-pid_, SIGTERM);
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_s);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_s);
   while (std::chrono::steady_clock::now() < deadline) {
-    if (Poll()) break;
+    if (Poll())
+      break;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   ::kill(-pid_, SIGKILL);  // the rest of the group too, even if the leader ended

@@ -3,8 +3,9 @@
 // its own process group with stdout and stderr going to files, polled without blocking, killed
 // with its whole group.
 // An ns-3 abort, a crash or a hang of the child never touches its parent.
-#include <string>
 #include <sys/types.h>
+
+#include <string>
 #include <vector>
 
 namespace rlpos {

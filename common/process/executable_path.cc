@@ -8,7 +8,8 @@ namespace rlpos {
 std::string ExecutableDir() {
   std::error_code error;
   const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error) throw std::runtime_error("/proc/self/exe: " + error.message());
+  if (error)
+    throw std::runtime_error("/proc/self/exe: " + error.message());
   return exe.parent_path().string();
 }
 

@@ -7,7 +7,9 @@ namespace {
 
 volatile std::sig_atomic_t g_stop = 0;
 
-void OnStopSignal(int) { g_stop = 1; }
+void OnStopSignal(int) {
+  g_stop = 1;
+}
 
 }  // namespace
 
@@ -19,8 +21,12 @@ void InstallStopSignalHandlers() {
   sigaction(SIGINT, &action, nullptr);
 }
 
-bool StopRequested() { return g_stop != 0; }
+bool StopRequested() {
+  return g_stop != 0;
+}
 
-void RequestStop() { g_stop = 1; }
+void RequestStop() {
+  g_stop = 1;
+}
 
 }  // namespace rlpos

@@ -57,7 +57,8 @@ std::vector<WorkerRecord> ResultsStore::ListWorkers() {
 std::optional<nlohmann::json> ResultsStore::CampaignSpecJson(const std::string& campaign_id) {
   Statement select = db_->Prepare("SELECT spec_json FROM campaigns WHERE id = ?");
   select.Bind(campaign_id);
-  if (!select.Step()) return std::nullopt;
+  if (!select.Step())
+    return std::nullopt;
   return nlohmann::json::parse(select.Text(0));
 }
 

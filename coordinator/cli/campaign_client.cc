@@ -23,7 +23,8 @@ std::string NewRequestId() {
 
 std::string DescribeDds(const DdsOptions& options) {
   std::string text = "DDS domain " + std::to_string(options.domain);
-  if (!options.loopback_tag.empty()) text += ", loopback tag " + options.loopback_tag;
+  if (!options.loopback_tag.empty())
+    text += ", loopback tag " + options.loopback_tag;
   return text;
 }
 
@@ -46,8 +47,10 @@ msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignReque
   // The request topic is volatile: write only once the coordinator's reader is matched, and
   // its reply writer matched to us, or the request or its answer would be lost.
   while (requests.MatchedReaders() == 0 || replies.MatchedWriters() == 0) {
-    if (Clock::now() >= deadline) throw no_answer();
-    if (while_waiting) while_waiting();
+    if (Clock::now() >= deadline)
+      throw no_answer();
+    if (while_waiting)
+      while_waiting();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   request.request_id = NewRequestId();
@@ -55,9 +58,11 @@ msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignReque
   while (Clock::now() < deadline) {
     const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
     wait_set.Wait(std::max(0.0, std::min(left, 0.1)));
-    if (while_waiting) while_waiting();
+    if (while_waiting)
+      while_waiting();
     for (const auto& r : replies.Take()) {
-      if (r.valid && r.data.request_id == request.request_id) return r.data;
+      if (r.valid && r.data.request_id == request.request_id)
+        return r.data;
     }
   }
   throw no_answer();

@@ -27,6 +27,7 @@ struct RunOptions {
   bool progress = true;    // redraw a progress bar (a TTY) or print a line now and then
   int domain = -1;         // -1: derived from the tag
   std::string tag;         // DDS discovery tag; default: random (rlpos-run-<pid>-<hex>)
+  bool dry_run = false;    // print the campaign id and its jobs by scenario and kind; run nothing
   std::string log_dir;     // default results/logs/<tag>
 };
 
@@ -34,8 +35,7 @@ int RunCampaign(const RunOptions& options);
 int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, double timeout_s);
 int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
-int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch,
-               double period_s);
+int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch, double period_s);
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format);
 int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
                         const std::string& out_dir);

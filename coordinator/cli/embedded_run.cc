@@ -5,16 +5,18 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <random>
 #include <thread>
 
 #include "campaign/expanded_campaign_json.h"
 #include "campaign/expansion.h"
+#include "campaign/job_argv.h"
 #include "cli/campaign_client.h"
 #include "cli/campaign_commands.h"
 #include "cli/progress_text.h"
@@ -37,14 +39,14 @@ std::string TailOfFile(const std::string& file) {
   std::ifstream in(file);
   std::string line, last;
   while (std::getline(in, line)) {
-    if (!line.empty()) last = line;
+    if (!line.empty())
+      last = line;
   }
   return last.empty() ? "see " + file : last;
 }
 
 double WallNow() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 std::string NewTag() {
@@ -75,7 +77,8 @@ class Daemon {
   }
   // Restarts it if it ended; returns a line saying so, or "".
   std::string KeepAlive(int max_restarts) {
-    if (!process_ || !process_->Poll()) return "";
+    if (!process_ || !process_->Poll())
+      return "";
     const std::string how = Describe(process_->exit_status());
     if (restarts_ >= max_restarts) {
       throw std::runtime_error(name_ + " ended (" + how + ") " + std::to_string(restarts_) +
@@ -86,10 +89,12 @@ class Daemon {
     return name_ + " ended (" + how + "); restarted";
   }
   void Terminate() {
-    if (process_) process_->Terminate();
+    if (process_)
+      process_->Terminate();
   }
   void Stop(double grace_s) {
-    if (process_) process_->Kill(grace_s);
+    if (process_)
+      process_->Kill(grace_s);
   }
 
  private:
@@ -102,23 +107,25 @@ class Daemon {
 
 class ProgressPrinter {
  public:
-  explicit ProgressPrinter(bool enabled)
-      : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0) {}
+  explicit ProgressPrinter(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0) {}
   void Show(const std::string& line, bool final) {
-    if (!enabled_) return;
+    if (!enabled_)
+      return;
     if (tty_) {
       std::cerr << "\r\033[K" << line << (final ? "\n" : "") << std::flush;
       return;
     }
     // Not a terminal (CI, a log file): a line when something changed, at most every 10 s.
     const auto now = std::chrono::steady_clock::now();
-    if (!final && (line == last_ || now - last_time_ < std::chrono::seconds(10))) return;
+    if (!final && (line == last_ || now - last_time_ < std::chrono::seconds(10)))
+      return;
     std::cerr << line << "\n";
     last_ = line;
     last_time_ = now;
   }
   void Note(const std::string& text) {
-    if (tty_ && enabled_) std::cerr << "\r\033[K";
+    if (tty_ && enabled_)
+      std::cerr << "\r\033[K";
     std::cerr << "rlpos-campaign: " << text << "\n";
   }
 
@@ -128,11 +135,34 @@ class ProgressPrinter {
   std::chrono::steady_clock::time_point last_time_{};
 };
 
+// What a campaign would run: its id and its jobs per scenario and kind.
+void PrintPlan(const ExpandedCampaign& campaign) {
+  std::map<std::string, std::map<std::string, int>> counts;  // scenario -> kind -> jobs
+  std::vector<std::string> order;
+  for (const auto& job : campaign.jobs) {
+    if (!counts.count(job.scenario))
+      order.push_back(job.scenario);
+    ++counts[job.scenario][ToString(job.kind)];
+  }
+  std::cout << "campaign " << campaign.id << " (" << campaign.name << "): " << campaign.jobs.size()
+            << " jobs, " << campaign.max_attempts << " attempt(s) each at most, timeout "
+            << FormatNumber(campaign.job_timeout_s) << " s\n";
+  for (const auto& scenario : order) {
+    auto& c = counts[scenario];
+    std::cout << "  " << scenario << ": " << c["train"] << " train, " << c["position"]
+              << " position, " << c["eval"] << " eval\n";
+  }
+}
+
 }  // namespace
 
 int RunCampaign(const RunOptions& options) {
   // Bad input stops here, before anything starts.
   const ExpandedCampaign campaign = LoadCampaign(options.campaign_file);
+  if (options.dry_run) {
+    PrintPlan(campaign);
+    return kExitOk;
+  }
   const std::string bin = ExecutableDir();
   const std::string tag = options.tag.empty() ? NewTag() : options.tag;
   DdsOptions dds;
@@ -149,11 +179,12 @@ int RunCampaign(const RunOptions& options) {
     try {
       ExclusiveFileLock probe(options.db + ".coordinator.lock");
     } catch (const std::runtime_error& e) {
-      throw std::invalid_argument(options.db + " is in use by another coordinator (" +
-                                  e.what() + "); use another --db, or `submit` to that one");
+      throw std::invalid_argument(options.db + " is in use by another coordinator (" + e.what() +
+                                  "); use another --db, or `submit` to that one");
     }
   }
-  const fs::path log_dir = options.log_dir.empty() ? db_dir / "logs" / tag : fs::path(options.log_dir);
+  const fs::path log_dir =
+      options.log_dir.empty() ? db_dir / "logs" / tag : fs::path(options.log_dir);
   fs::create_directories(log_dir);
   const auto dds_args = DdsArgs(dds);
 
@@ -168,9 +199,14 @@ int RunCampaign(const RunOptions& options) {
     const std::string name = "w" + std::to_string(i);
     const auto command_line = [&, name](int restart) {
       const std::string id = tag + "-" + name + (restart > 0 ? "." + std::to_string(restart) : "");
-      std::vector<std::string> worker{bin + "/rlpos-worker", "--id", id, "--slots",
-                                      std::to_string(options.slots_per_worker), "--work-dir",
-                                      (db_dir / "work" / tag / id).string(), "--log-level",
+      std::vector<std::string> worker{bin + "/rlpos-worker",
+                                      "--id",
+                                      id,
+                                      "--slots",
+                                      std::to_string(options.slots_per_worker),
+                                      "--work-dir",
+                                      (db_dir / "work" / tag / id).string(),
+                                      "--log-level",
                                       "info"};
       worker.insert(worker.end(), dds_args.begin(), dds_args.end());
       return worker;
@@ -181,12 +217,15 @@ int RunCampaign(const RunOptions& options) {
   ProgressPrinter printer(options.progress);
   const auto stop_all = [&] {
     // Workers first (all at once), so that the coordinator sees them stop, not get lost.
-    for (std::size_t i = 1; i < daemons.size(); ++i) daemons[i]->Terminate();
-    for (std::size_t i = 1; i < daemons.size(); ++i) daemons[i]->Stop(3.0);
+    for (std::size_t i = 1; i < daemons.size(); ++i)
+      daemons[i]->Terminate();
+    for (std::size_t i = 1; i < daemons.size(); ++i)
+      daemons[i]->Stop(3.0);
     daemons[0]->Stop(5.0);
   };
   try {
-    for (auto& d : daemons) d->Start();
+    for (auto& d : daemons)
+      d->Start();
     printer.Note("running " + campaign.name + " (" + std::to_string(campaign.jobs.size()) +
                  " jobs) on " + std::to_string(options.workers) + " worker(s); " +
                  DescribeDds(dds) + "; logs in " + log_dir.string());
@@ -194,10 +233,13 @@ int RunCampaign(const RunOptions& options) {
     request.kind = msg::RequestKind::kSubmit;
     request.campaign_json = ToJson(campaign).dump();
     const msg::CampaignReply reply = SendCampaignRequest(dds, request, 60.0, [&] {
-      if (StopRequested()) throw std::runtime_error("interrupted before the campaign started");
-      for (auto& d : daemons) d->RequireRunning();
+      if (StopRequested())
+        throw std::runtime_error("interrupted before the campaign started");
+      for (auto& d : daemons)
+        d->RequireRunning();
     });
-    if (!reply.ok) throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
+    if (!reply.ok)
+      throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
     std::cout << "campaign " << reply.campaign_id << "\n" << std::flush;
 
     StoreOptions read_only;
@@ -211,27 +253,30 @@ int RunCampaign(const RunOptions& options) {
       }
       for (auto& d : daemons) {
         const std::string note = d->KeepAlive(5);
-        if (!note.empty()) printer.Note(note);
+        if (!note.empty())
+          printer.Note(note);
       }
       const CampaignProgress progress = store.Progress(reply.campaign_id);
       const bool settled = IsSettled(progress);
-      const auto eta = EstimateRemainingSeconds(progress, store.Timing(reply.campaign_id),
-                                                WallNow());
+      const auto eta =
+          EstimateRemainingSeconds(progress, store.Timing(reply.campaign_id), WallNow());
       printer.Show(ProgressLine(progress, settled ? std::nullopt : eta), settled);
-      if (settled) break;
+      if (settled)
+        break;
       std::this_thread::sleep_for(std::chrono::milliseconds(300));
     }
     stop_all();
 
     const CampaignProgress progress = store.Progress(reply.campaign_id);
     std::cout << FormatSummaryText(SummarizeCampaign(store, reply.campaign_id));
-    const std::string report_dir =
-        options.report_dir.empty() ? (db_dir / "reports" / reply.campaign_id).string()
-                                   : options.report_dir;
+    const std::string report_dir = options.report_dir.empty()
+                                       ? (db_dir / "reports" / reply.campaign_id).string()
+                                       : options.report_dir;
     ReportOptions report_options;
     report_options.plot_script = DefaultPlotScript(bin);
     const ReportResult report = WriteReport(store, reply.campaign_id, report_dir, report_options);
-    for (const auto& w : report.warnings) printer.Note("warning: " + w);
+    for (const auto& w : report.warnings)
+      printer.Note("warning: " + w);
     std::cout << "report: " << report_dir << "\n";
     for (const auto& f : store.FailedJobs(reply.campaign_id)) {
       printer.Note("failed: " + f.key + " after " + std::to_string(f.attempts) +

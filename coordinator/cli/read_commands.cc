@@ -17,8 +17,7 @@ namespace rlpos {
 namespace {
 
 double WallNow() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 StoreOptions ReadOnly() {
@@ -29,8 +28,7 @@ StoreOptions ReadOnly() {
 
 }  // namespace
 
-int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch,
-               double period_s) {
+int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch, double period_s) {
   for (;;) {
     ResultsStore store(db, ReadOnly());
     std::vector<CampaignProgress> campaigns;
@@ -40,30 +38,32 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
       campaigns.push_back(store.Progress(campaign_id));
     }
     std::vector<CampaignTiming> timings;
-    for (const auto& c : campaigns) timings.push_back(store.Timing(c.campaign_id));
+    for (const auto& c : campaigns)
+      timings.push_back(store.Timing(c.campaign_id));
     std::cout << FormatStatus(campaigns, timings, store.ListWorkers(), WallNow());
     for (const auto& c : campaigns) {
       for (const auto& j : store.RunningJobs(c.campaign_id)) {
-        std::cout << "  running: " << j.key << " #" << j.attempt << " on " << j.worker_id
-                  << " for " << FormatDuration(WallNow() - j.started_at)
+        std::cout << "  running: " << j.key << " #" << j.attempt << " on " << j.worker_id << " for "
+                  << FormatDuration(WallNow() - j.started_at)
                   << (j.progress.empty() ? "" : ": " + j.progress) << "\n";
       }
       for (const auto& f : store.FailedJobs(c.campaign_id)) {
-        std::cout << "  failed: " << f.key << " after " << f.attempts
-                  << " attempt(s): " << f.error << "\n";
+        std::cout << "  failed: " << f.key << " after " << f.attempts << " attempt(s): " << f.error
+                  << "\n";
       }
     }
     bool settled = true;
-    for (const auto& c : campaigns) settled = settled && IsSettled(c);
-    if (!watch || settled || StopRequested()) return kExitOk;
+    for (const auto& c : campaigns)
+      settled = settled && IsSettled(c);
+    if (!watch || settled || StopRequested())
+      return kExitOk;
     std::cout << std::flush;
     std::this_thread::sleep_for(std::chrono::duration<double>(period_s));
     std::cout << "\n";
   }
 }
 
-int ShowResults(const std::string& db, const std::string& campaign_id,
-                const std::string& format) {
+int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format) {
   ResultsStore store(db, ReadOnly());
   const auto summary = SummarizeCampaign(store, campaign_id);
   if (format == "csv") {
@@ -82,8 +82,10 @@ int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
   ReportOptions options;
   options.plot_script = DefaultPlotScript(ExecutableDir());
   const ReportResult result = WriteReport(store, campaign_id, out_dir, options);
-  for (const auto& w : result.warnings) std::cerr << "rlpos-campaign: warning: " << w << "\n";
-  for (const auto& f : result.files) std::cout << f << "\n";
+  for (const auto& w : result.warnings)
+    std::cerr << "rlpos-campaign: warning: " << w << "\n";
+  for (const auto& f : result.files)
+    std::cout << f << "\n";
   return kExitOk;
 }
 

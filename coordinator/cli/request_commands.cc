@@ -29,7 +29,8 @@ int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, doub
   request.kind = msg::RequestKind::kSubmit;
   request.campaign_json = ToJson(campaign).dump();
   const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
-  if (!reply.ok) return Refused(reply);
+  if (!reply.ok)
+    return Refused(reply);
   std::cout << reply.campaign_id << "\n";
   std::cerr << (reply.created ? "submitted " : "already submitted ") << campaign.name << ": "
             << reply.jobs << " jobs\n";
@@ -41,7 +42,8 @@ int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double
   request.kind = msg::RequestKind::kCancel;
   request.campaign_id = campaign_id;
   const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
-  if (!reply.ok) return Refused(reply);
+  if (!reply.ok)
+    return Refused(reply);
   std::cerr << "cancelled " << campaign_id << " (" << reply.jobs << " running job(s) stopped)\n";
   return kExitOk;
 }
@@ -51,7 +53,8 @@ int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double 
   request.kind = msg::RequestKind::kRetry;
   request.campaign_id = campaign_id;
   const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
-  if (!reply.ok) return Refused(reply);
+  if (!reply.ok)
+    return Refused(reply);
   std::cerr << "retrying " << reply.jobs << " job(s) of " << campaign_id << "\n";
   return kExitOk;
 }

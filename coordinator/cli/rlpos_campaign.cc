@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
                   "Report folder (default: reports/<campaign id> next to the database)");
   run->add_option("--tag", run_options.tag, "DDS discovery tag (default: a random one)");
   run->add_flag("!--no-progress", run_options.progress, "No progress bar");
+  run->add_flag("--dry-run", run_options.dry_run,
+                "Print the campaign id and its jobs per scenario; run nothing");
 
   std::string campaign_file, campaign_id, format = "table", out_dir;
   DdsOptions dds;
@@ -98,12 +100,18 @@ int main(int argc, char** argv) {
       run_options.db = db;
       return RunCampaign(run_options);
     }
-    if (submit->parsed()) return SubmitCampaign(campaign_file, dds, timeout_s);
-    if (status->parsed()) return ShowStatus(db, campaign_id, watch, period_s);
-    if (results->parsed()) return ShowResults(db, campaign_id, format);
-    if (report->parsed()) return WriteCampaignReport(db, campaign_id, out_dir);
-    if (cancel->parsed()) return CancelCampaign(campaign_id, dds, timeout_s);
-    if (retry->parsed()) return RetryCampaign(campaign_id, dds, timeout_s);
+    if (submit->parsed())
+      return SubmitCampaign(campaign_file, dds, timeout_s);
+    if (status->parsed())
+      return ShowStatus(db, campaign_id, watch, period_s);
+    if (results->parsed())
+      return ShowResults(db, campaign_id, format);
+    if (report->parsed())
+      return WriteCampaignReport(db, campaign_id, out_dir);
+    if (cancel->parsed())
+      return CancelCampaign(campaign_id, dds, timeout_s);
+    if (retry->parsed())
+      return RetryCampaign(campaign_id, dds, timeout_s);
   } catch (const ConfigError& e) {
     std::cerr << "rlpos-campaign: error: " << file << ": " << e.describe() << "\n";
     return kExitBadInput;

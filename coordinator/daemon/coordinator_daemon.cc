@@ -43,13 +43,13 @@ CoordinatorDaemon::CoordinatorDaemon(CoordinatorOptions options, const DdsOption
 CoordinatorDaemon::~CoordinatorDaemon() = default;
 
 double CoordinatorDaemon::Now() const {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 void CoordinatorDaemon::HandleRequests() {
   for (const auto& r : dds_->requests.Take()) {
-    if (!r.valid) continue;
+    if (!r.valid)
+      continue;
     msg::CampaignReply reply;
     reply.request_id = r.data.request_id;
     try {
@@ -62,14 +62,15 @@ void CoordinatorDaemon::HandleRequests() {
           reply.jobs = result.jobs;
           reply.created = result.created;
           Log(LogLevel::kInfo, std::string(result.created ? "accepted" : "already have") +
-                                   " campaign " + campaign.name + " (" + result.campaign_id +
-                                   ", " + std::to_string(result.jobs) + " jobs)");
+                                   " campaign " + campaign.name + " (" + result.campaign_id + ", " +
+                                   std::to_string(result.jobs) + " jobs)");
           break;
         }
         case msg::RequestKind::kCancel: {
           reply.campaign_id = r.data.campaign_id;
           const auto stopped = store_.CancelCampaign(r.data.campaign_id);
-          for (const auto& job : stopped) Withdraw(job.id);
+          for (const auto& job : stopped)
+            Withdraw(job.id);
           reply.jobs = static_cast<int>(stopped.size());
           Log(LogLevel::kInfo, "cancelled campaign " + r.data.campaign_id);
           break;
@@ -77,8 +78,8 @@ void CoordinatorDaemon::HandleRequests() {
         case msg::RequestKind::kRetry: {
           reply.campaign_id = r.data.campaign_id;
           reply.jobs = store_.RetryFailed(r.data.campaign_id);
-          Log(LogLevel::kInfo, "retrying " + std::to_string(reply.jobs) + " job(s) of " +
-                                   r.data.campaign_id);
+          Log(LogLevel::kInfo,
+              "retrying " + std::to_string(reply.jobs) + " job(s) of " + r.data.campaign_id);
           break;
         }
       }
@@ -108,12 +109,13 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
       record.busy = r.data.busy;
       store_.UpsertWorker(record);
       if (is_new) {
-        Log(LogLevel::kInfo, "worker " + id + " joined (" + std::to_string(r.data.slots) +
-                                 " slot(s))");
+        Log(LogLevel::kInfo,
+            "worker " + id + " joined (" + std::to_string(r.data.slots) + " slot(s))");
         // After a restart: a worker that is back gets its running jobs again (it ignores
         // attempts it already has), in case an assignment was lost with the old coordinator.
         for (const auto& job : store_.ListRunning()) {
-          if (job.worker_id != id || published_.count(job.id)) continue;
+          if (job.worker_id != id || published_.count(job.id))
+            continue;
           if (const auto record_of = store_.GetJob(job.id)) {
             ReadyJob ready;
             ready.id = record_of->id;
@@ -130,13 +132,15 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
       }
       continue;
     }
-    if (r.valid || r.state == InstanceState::kAlive) continue;
+    if (r.valid || r.state == InstanceState::kAlive)
+      continue;
     // Disposed: it stopped cleanly; no writers: its lease ran out (killed, or its host is gone).
     const bool stopped = r.state == InstanceState::kDisposed;
     live_.erase(id);
     store_.SetWorkerState(id, stopped ? "stopped" : "lost");
     const auto requeued = scheduler_.WorkerLost(id);
-    for (const auto& job_id : requeued) published_.erase(job_id);
+    for (const auto& job_id : requeued)
+      published_.erase(job_id);
     Log(LogLevel::kWarning, "worker " + id + (stopped ? " stopped" : " lost") +
                                 (requeued.empty() ? ""
                                                   : "; " + std::to_string(requeued.size()) +
@@ -146,13 +150,15 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
 
 void CoordinatorDaemon::HandleJobEvents() {
   for (const auto& r : dds_->events.Take()) {
-    if (!r.valid) continue;
+    if (!r.valid)
+      continue;
     const msg::JobEvent& e = r.data;
     const std::string key = e.job_id + "#" + std::to_string(e.attempt);
     if (e.state == msg::JobState::kStarted || e.state == msg::JobState::kProgress) {
       Log(LogLevel::kDebug, key + " on " + e.worker_id + ": " +
                                 (e.message.empty() ? std::string("started") : e.message));
-      if (e.state == msg::JobState::kProgress) store_.SetProgress(e.job_id, e.attempt, e.message);
+      if (e.state == msg::JobState::kProgress)
+        store_.SetProgress(e.job_id, e.attempt, e.message);
       continue;
     }
     JobUpdate update = JobUpdate::kUnknown;
@@ -163,7 +169,8 @@ void CoordinatorDaemon::HandleJobEvents() {
       } catch (const nlohmann::json::exception&) {
         update = store_.RecordFailure(e.job_id, e.attempt, "the result is not JSON");
       }
-      if (update == JobUpdate::kUnknown) update = store_.RecordSuccess(e.job_id, e.attempt, result);
+      if (update == JobUpdate::kUnknown)
+        update = store_.RecordSuccess(e.job_id, e.attempt, result);
     } else {
       update = store_.RecordFailure(e.job_id, e.attempt, e.message);
     }
@@ -172,7 +179,8 @@ void CoordinatorDaemon::HandleJobEvents() {
             (e.state == msg::JobState::kFailed ? " (" + e.message + ")" : ""));
     // Settled: the assignment of this attempt goes. A stale event leaves a newer one alone.
     const auto it = published_.find(e.job_id);
-    if (it != published_.end() && it->second == e.attempt) Withdraw(e.job_id);
+    if (it != published_.end() && it->second == e.attempt)
+      Withdraw(e.job_id);
   }
 }
 
@@ -180,7 +188,8 @@ void CoordinatorDaemon::AfterGrace() {
   grace_over_ = true;
   std::set<std::string> gone;
   for (const auto& job : store_.ListRunning()) {
-    if (!live_.count(job.worker_id)) gone.insert(job.worker_id);
+    if (!live_.count(job.worker_id))
+      gone.insert(job.worker_id);
   }
   for (const auto& worker_id : gone) {
     const auto requeued = scheduler_.WorkerLost(worker_id);
@@ -215,8 +224,9 @@ const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campai
   auto it = documents_.find(campaign_id);
   if (it == documents_.end()) {
     const auto spec = store_.CampaignSpecJson(campaign_id);
-    it = documents_.emplace(campaign_id, spec ? ScenarioDocumentsByName(*spec)
-                                              : std::map<std::string, std::string>{})
+    it = documents_
+             .emplace(campaign_id,
+                      spec ? ScenarioDocumentsByName(*spec) : std::map<std::string, std::string>{})
              .first;
   }
   static const std::string kNone;
@@ -226,18 +236,20 @@ const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campai
 
 void CoordinatorDaemon::Schedule() {
   std::vector<WorkerSlots> workers;
-  for (const auto& [id, w] : live_) workers.push_back(w.slots);
+  for (const auto& [id, w] : live_)
+    workers.push_back(w.slots);
   const TickResult tick = scheduler_.Tick(workers, Now());
   for (const auto& t : tick.timed_out) {
-    Log(LogLevel::kWarning, t.job.id + "#" + std::to_string(t.job.attempt) + " on " +
-                                t.job.worker_id + ": " + t.error);
+    Log(LogLevel::kWarning,
+        t.job.id + "#" + std::to_string(t.job.attempt) + " on " + t.job.worker_id + ": " + t.error);
     Withdraw(t.job.id);
   }
   for (const auto& a : tick.assigned) {
     Publish(a.job, a.worker_id);
-    if (auto it = live_.find(a.worker_id); it != live_.end()) ++it->second.slots.busy;
-    Log(LogLevel::kDebug, "assigned " + a.job.id + "#" + std::to_string(a.job.attempt) +
-                              " to " + a.worker_id);
+    if (auto it = live_.find(a.worker_id); it != live_.end())
+      ++it->second.slots.busy;
+    Log(LogLevel::kDebug,
+        "assigned " + a.job.id + "#" + std::to_string(a.job.attempt) + " to " + a.worker_id);
   }
 }
 
@@ -250,7 +262,8 @@ void CoordinatorDaemon::Run() {
     HandleRequests();
     HandleWorkerStatuses();
     HandleJobEvents();
-    if (!grace_over_ && Now() - started_ >= options_.restart_grace_s) AfterGrace();
+    if (!grace_over_ && Now() - started_ >= options_.restart_grace_s)
+      AfterGrace();
     Schedule();
   }
   Log(LogLevel::kInfo, "coordinator stopping");

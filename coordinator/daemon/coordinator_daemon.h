@@ -23,8 +23,8 @@ namespace rlpos {
 
 struct CoordinatorOptions {
   std::string db_file;
-  double tick_s = 0.25;           // scheduling period when nothing arrives
-  double restart_grace_s = 5.0;   // wait for workers after start before judging running jobs
+  double tick_s = 0.25;          // scheduling period when nothing arrives
+  double restart_grace_s = 5.0;  // wait for workers after start before judging running jobs
 };
 
 class CoordinatorDaemon {

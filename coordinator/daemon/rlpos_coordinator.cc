@@ -14,8 +14,9 @@
 
 int main(int argc, char** argv) {
   using namespace rlpos;
-  CLI::App app{"rlpos-coordinator: assigns campaign jobs to rlpos-workers over DDS and keeps "
-               "the results in SQLite"};
+  CLI::App app{
+      "rlpos-coordinator: assigns campaign jobs to rlpos-workers over DDS and keeps "
+      "the results in SQLite"};
   CoordinatorOptions options;
   options.db_file = "results/rlpos.db";
   DdsOptions dds;
@@ -42,7 +43,8 @@ int main(int argc, char** argv) {
   InstallStopSignalHandlers();
   try {
     const auto folder = std::filesystem::path(options.db_file).parent_path();
-    if (!folder.empty()) std::filesystem::create_directories(folder);
+    if (!folder.empty())
+      std::filesystem::create_directories(folder);
     CoordinatorDaemon daemon(options, dds);
     daemon.Run();
   } catch (const std::exception& e) {

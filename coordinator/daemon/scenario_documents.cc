@@ -9,7 +9,8 @@ namespace rlpos {
 
 std::map<std::string, std::string> ScenarioDocumentsByName(const nlohmann::json& campaign_spec) {
   std::map<std::string, std::string> out;
-  if (!campaign_spec.contains("scenarios") || !campaign_spec["scenarios"].is_array()) return out;
+  if (!campaign_spec.contains("scenarios") || !campaign_spec["scenarios"].is_array())
+    return out;
   for (const auto& entry : campaign_spec["scenarios"]) {
     try {
       nlohmann::json document = entry.at("document");

@@ -12,9 +12,13 @@ std::string LoopbackConfigXml(const std::string& tag, double lease_s) {
   return std::string("<CycloneDDS><Domain Id=\"any\">") +
          "<General><Interfaces><NetworkInterface name=\"lo\" multicast=\"true\"/></Interfaces>"
          "<AllowMulticast>true</AllowMulticast></General>"
-         "<Discovery><Tag>" + tag + "</Tag>"
+         "<Discovery><Tag>" +
+         tag +
+         "</Tag>"
          "<Peers><Peer Address=\"127.0.0.1\"/></Peers>"
-         "<LeaseDuration>" + lease + "</LeaseDuration></Discovery>"
+         "<LeaseDuration>" +
+         lease +
+         "</LeaseDuration></Discovery>"
          "</Domain></CycloneDDS>";
 }
 
@@ -23,7 +27,8 @@ std::vector<std::string> DdsArgs(const DdsOptions& options) {
   if (!options.loopback_tag.empty()) {
     args.insert(args.end(), {"--loopback", options.loopback_tag});
   }
-  if (!options.config.empty()) args.insert(args.end(), {"--dds-config", options.config});
+  if (!options.config.empty())
+    args.insert(args.end(), {"--dds-config", options.config});
   return args;
 }
 
@@ -40,8 +45,10 @@ void CheckDdsOptions(const DdsOptions& options) {
     const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                     c == '.' || c == '_' || c == '-';
     if (!ok) {
-      throw std::invalid_argument("--loopback: the tag may hold only letters, digits, '.', '_' "
-                                  "and '-', got \"" + options.loopback_tag + "\"");
+      throw std::invalid_argument(
+          "--loopback: the tag may hold only letters, digits, '.', '_' "
+          "and '-', got \"" +
+          options.loopback_tag + "\"");
     }
   }
 }

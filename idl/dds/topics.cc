@@ -11,18 +11,25 @@ namespace {
 
 using QosPtr = std::unique_ptr<dds_qos_t, void (*)(dds_qos_t*)>;
 
-QosPtr NewQos() { return QosPtr(dds_create_qos(), dds_delete_qos); }
+QosPtr NewQos() {
+  return QosPtr(dds_create_qos(), dds_delete_qos);
+}
 
 // Writing borrows the C++ strings: dds_write serializes before returning, so pointers into
 // them stay valid for as long as Cyclone looks at them.
-char* Borrow(const std::string& s) { return const_cast<char*>(s.c_str()); }
-std::string Copy(const char* s) { return s ? std::string(s) : std::string(); }
+char* Borrow(const std::string& s) {
+  return const_cast<char*>(s.c_str());
+}
+std::string Copy(const char* s) {
+  return s ? std::string(s) : std::string();
+}
 
 struct BorrowedStrings {
   std::vector<char*> pointers;
   dds_sequence_string Sequence(const std::vector<std::string>& strings) {
     pointers.clear();
-    for (const auto& s : strings) pointers.push_back(Borrow(s));
+    for (const auto& s : strings)
+      pointers.push_back(Borrow(s));
     dds_sequence_string seq{};
     seq._maximum = seq._length = static_cast<uint32_t>(pointers.size());
     seq._buffer = pointers.empty() ? nullptr : pointers.data();
@@ -33,7 +40,8 @@ struct BorrowedStrings {
 
 std::vector<std::string> Copy(const dds_sequence_string& seq) {
   std::vector<std::string> out;
-  for (uint32_t i = 0; i < seq._length; ++i) out.push_back(Copy(seq._buffer[i]));
+  for (uint32_t i = 0; i < seq._length; ++i)
+    out.push_back(Copy(seq._buffer[i]));
   return out;
 }
 
@@ -72,7 +80,8 @@ struct Traits<msg::WorkerStatus> {
   static msg::WorkerStatus FromC(const C& c, bool valid) {
     msg::WorkerStatus m;
     m.worker_id = Copy(c.worker_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.host = Copy(c.host);
     m.pid = c.pid;
     m.slots = c.slots;
@@ -91,7 +100,8 @@ struct Traits<msg::JobAssignment> {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
     dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
     dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
-    if (writer) dds_qset_writer_data_lifecycle(qos, false);
+    if (writer)
+      dds_qset_writer_data_lifecycle(qos, false);
   }
   struct Holder {
     C c{};
@@ -109,7 +119,8 @@ struct Traits<msg::JobAssignment> {
   static msg::JobAssignment FromC(const C& c, bool valid) {
     msg::JobAssignment m;
     m.job_id = Copy(c.job_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.attempt = c.attempt;
     m.worker_id = Copy(c.worker_id);
     m.campaign_id = Copy(c.campaign_id);
@@ -148,7 +159,8 @@ struct Traits<msg::JobEvent> {
   static msg::JobEvent FromC(const C& c, bool valid) {
     msg::JobEvent m;
     m.job_id = Copy(c.job_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.attempt = c.attempt;
     m.worker_id = Copy(c.worker_id);
     m.state = static_cast<msg::JobState>(c.state);
@@ -180,7 +192,8 @@ struct Traits<msg::CampaignRequest> {
   static msg::CampaignRequest FromC(const C& c, bool valid) {
     msg::CampaignRequest m;
     m.request_id = Copy(c.request_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.kind = static_cast<msg::RequestKind>(c.kind);
     m.campaign_id = Copy(c.campaign_id);
     m.campaign_json = Copy(c.campaign_json);
@@ -212,7 +225,8 @@ struct Traits<msg::CampaignReply> {
   static msg::CampaignReply FromC(const C& c, bool valid) {
     msg::CampaignReply m;
     m.request_id = Copy(c.request_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.ok = c.ok;
     m.campaign_id = Copy(c.campaign_id);
     m.jobs = c.jobs;
@@ -224,8 +238,8 @@ struct Traits<msg::CampaignReply> {
 
 template <typename M>
 std::int32_t CreateTopic(Participant& participant) {
-  return CheckDds(dds_create_topic(participant.handle(), Traits<M>::Descriptor(),
-                                   Traits<M>::kTopic, nullptr, nullptr),
+  return CheckDds(dds_create_topic(participant.handle(), Traits<M>::Descriptor(), Traits<M>::kTopic,
+                                   nullptr, nullptr),
                   std::string("DDS topic ") + Traits<M>::kTopic);
 }
 
@@ -308,8 +322,10 @@ std::vector<Received<M>> Reader<M>::Take() {
       r.data = Traits<M>::FromC(c, r.valid);
       out.push_back(std::move(r));
     }
-    if (n > 0) dds_return_loan(reader_, samples, n);
-    if (static_cast<std::size_t>(n) < kBatch) return out;
+    if (n > 0)
+      dds_return_loan(reader_, samples, n);
+    if (static_cast<std::size_t>(n) < kBatch)
+      return out;
   }
 }
 

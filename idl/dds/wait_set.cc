@@ -8,7 +8,9 @@ WaitSet::WaitSet(Participant& participant) {
   waitset_ = CheckDds(dds_create_waitset(participant.handle()), "DDS wait set");
 }
 
-WaitSet::~WaitSet() { dds_delete(waitset_); }
+WaitSet::~WaitSet() {
+  dds_delete(waitset_);
+}
 
 void WaitSet::Attach(std::int32_t reader) {
   // The condition belongs to the reader, so it goes when the reader does.

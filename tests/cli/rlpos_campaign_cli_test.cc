@@ -66,7 +66,8 @@ TEST_F(RlposCampaignCli, MalformedJson) {
 
 TEST_F(RlposCampaignCli, UnknownKeySuggestsTheRightOne) {
   const auto file = Write("k.json", CampaignJson(", \"retris\": 2"));
-  ExpectOneLineError(Campaign("run " + file), 2, "k.json: /retris: unknown key \"retris\"; did you mean \"retries\"?");
+  ExpectOneLineError(Campaign("run " + file), 2,
+                     "k.json: /retris: unknown key \"retris\"; did you mean \"retries\"?");
   ExpectNothingWritten();
 }
 
@@ -78,9 +79,9 @@ TEST_F(RlposCampaignCli, OutOfRangeValue) {
 
 TEST_F(RlposCampaignCli, BrokenScenarioIsRefusedBeforeAnythingStarts) {
   // A building outside the venue, via the campaign's per-scenario overrides.
-  const auto file = Write(
-      "s.json", R"({"name": "t", "scenarios": [{"file": ")" + std::string(RLPOS_SOURCE_DIR) +
-                    R"(/campaigns/scenarios/b.json", "set": ["buildings.0.x=[45, 500]"]}],
+  const auto file =
+      Write("s.json", R"({"name": "t", "scenarios": [{"file": ")" + std::string(RLPOS_SOURCE_DIR) +
+                          R"(/campaigns/scenarios/b.json", "set": ["buildings.0.x=[45, 500]"]}],
                     "rng_runs": [1, 1]})");
   const auto r = Campaign("run " + file);
   EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -89,8 +90,8 @@ TEST_F(RlposCampaignCli, BrokenScenarioIsRefusedBeforeAnythingStarts) {
 }
 
 TEST_F(RlposCampaignCli, SubmitWithNoCoordinator) {
-  const auto r = Campaign("submit " + std::string(RLPOS_SOURCE_DIR) + "/campaigns/mini.json " +
-                          LonelyDds());
+  const auto r =
+      Campaign("submit " + std::string(RLPOS_SOURCE_DIR) + "/campaigns/mini.json " + LonelyDds());
   ExpectOneLineError(r, 4, "no coordinator answered on DDS domain 0, loopback tag rlpos-cli-test-");
 }
 
@@ -118,6 +119,16 @@ TEST_F(RlposCampaignCli, RunWithADatabaseThatCannotBeOpened) {
                           "/campaigns/mini.json --db results/a-folder");
   ExpectOneLineError(r, 2, "results store results/a-folder: cannot open");
   EXPECT_FALSE(fs::exists(dir_ + "/results/logs")) << "no daemon may have started";
+}
+
+TEST_F(RlposCampaignCli, DryRunPrintsThePlanAndWritesNothing) {
+  const auto r =
+      Campaign("run " + std::string(RLPOS_SOURCE_DIR) + "/campaigns/paper.json --dry-run");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // A, B, C x RngRun 1-30 x 9 eval labels, plus 1 train and 3 position jobs per scenario.
+  EXPECT_NE(r.out.find("(paper): 822 jobs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  B: 1 train, 3 position, 270 eval"), std::string::npos) << r.out;
+  ExpectNothingWritten();
 }
 
 TEST_F(RlposCampaignCli, UsageErrors) {

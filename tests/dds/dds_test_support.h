@@ -10,7 +10,6 @@
 
 #include "dds/dds_config.h"
 #include "dds/topics.h"
-
 #include "support/wait_for.h"
 
 namespace rlpos {

@@ -21,7 +21,8 @@ std::string SafeComponent(const std::string& part) {
                     c == '.' || c == '_' || c == '-' || c == '@';
     out += ok ? c : '_';
   }
-  if (out.empty() || out == "." || out == "..") out = "_" + out;
+  if (out.empty() || out == "." || out == "..")
+    out = "_" + out;
   return out;
 }
 
@@ -34,7 +35,8 @@ std::string ReadFile(const std::string& file) {
 
 std::string Trim(const std::string& s) {
   const auto begin = s.find_first_not_of(" \t\r\n");
-  if (begin == std::string::npos) return "";
+  if (begin == std::string::npos)
+    return "";
   return s.substr(begin, s.find_last_not_of(" \t\r\n") - begin + 1);
 }
 
@@ -43,18 +45,21 @@ std::string Trim(const std::string& s) {
 std::string AttemptFolder(const std::string& work_dir, const std::string& job_id, int attempt) {
   fs::path folder(work_dir);
   std::stringstream parts(job_id);
-  for (std::string part; std::getline(parts, part, '/');) folder /= SafeComponent(part);
+  for (std::string part; std::getline(parts, part, '/');)
+    folder /= SafeComponent(part);
   return (folder / ("attempt" + std::to_string(attempt))).string();
 }
 
 std::vector<std::string> BindJobArgv(const JobAttemptSpec& spec, const std::string& folder,
                                      const std::string& sim_binary) {
   std::vector<std::string> argv = spec.argv;
-  if (!argv.empty() && argv[0] == kSimBinary) argv[0] = sim_binary;
+  if (!argv.empty() && argv[0] == kSimBinary)
+    argv[0] = sim_binary;
   BindPlaceholder(argv, kOutDirPlaceholder, (fs::path(folder) / "out").string());
   if (!spec.scenario_document.empty()) {
     for (std::size_t i = 1; i + 1 < argv.size(); ++i) {
-      if (argv[i] == "--scenario") argv[i + 1] = (fs::path(folder) / "scenario.json").string();
+      if (argv[i] == "--scenario")
+        argv[i + 1] = (fs::path(folder) / "scenario.json").string();
     }
   }
   return argv;
@@ -66,13 +71,17 @@ std::string TailOfLog(const std::string& file, int lines, std::size_t max_chars)
   for (std::string line; std::getline(text, line);) {
     // Progress bars redraw with '\r': the text after the last one is what is on screen.
     line = Trim(line);
-    if (const auto cr = line.rfind('\r'); cr != std::string::npos) line = Trim(line.substr(cr + 1));
-    if (!line.empty()) kept.push_back(line);
+    if (const auto cr = line.rfind('\r'); cr != std::string::npos)
+      line = Trim(line.substr(cr + 1));
+    if (!line.empty())
+      kept.push_back(line);
   }
   const std::size_t first = kept.size() > static_cast<std::size_t>(lines) ? kept.size() - lines : 0;
   std::string out;
-  for (std::size_t i = first; i < kept.size(); ++i) out += (out.empty() ? "" : " | ") + kept[i];
-  if (out.size() > max_chars) out = "..." + out.substr(out.size() - max_chars);
+  for (std::size_t i = first; i < kept.size(); ++i)
+    out += (out.empty() ? "" : " | ") + kept[i];
+  if (out.size() > max_chars)
+    out = "..." + out.substr(out.size() - max_chars);
   return out;
 }
 
@@ -82,30 +91,36 @@ JobAttempt::JobAttempt(JobAttemptSpec spec, const std::string& work_dir,
   std::error_code error;
   fs::remove_all(folder_, error);  // a leftover of an earlier worker with this id
   fs::create_directories(folder_, error);
-  if (error) throw std::runtime_error(folder_ + ": " + error.message());
+  if (error)
+    throw std::runtime_error(folder_ + ": " + error.message());
   if (!spec_.scenario_document.empty()) {
     std::ofstream out(fs::path(folder_) / "scenario.json");
     out << spec_.scenario_document;
-    if (!out) throw std::runtime_error(folder_ + "/scenario.json: cannot write");
+    if (!out)
+      throw std::runtime_error(folder_ + "/scenario.json: cannot write");
   }
   const auto argv = BindJobArgv(spec_, folder_, sim_binary);
   {
     std::ofstream command(fs::path(folder_) / "command.txt");
-    for (const auto& a : argv) command << a << '\n';
+    for (const auto& a : argv)
+      command << a << '\n';
   }
   started_ = std::chrono::steady_clock::now();
   child_ = std::make_unique<ChildProcess>(argv, (fs::path(folder_) / "stdout.json").string(),
                                           (fs::path(folder_) / "stderr.log").string());
 }
 
-std::string JobAttempt::Key() const { return spec_.job_id + "#" + std::to_string(spec_.attempt); }
+std::string JobAttempt::Key() const {
+  return spec_.job_id + "#" + std::to_string(spec_.attempt);
+}
 
 std::optional<JobOutcome> JobAttempt::Poll() {
   JobOutcome outcome;
   if (!child_->Poll()) {
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-    if (spec_.timeout_s <= 0 || elapsed <= spec_.timeout_s) return std::nullopt;
+    if (spec_.timeout_s <= 0 || elapsed <= spec_.timeout_s)
+      return std::nullopt;
     child_->Kill();
     outcome.error = "timed out after " + FormatNumber(spec_.timeout_s) + " s";
     return outcome;
@@ -123,12 +138,14 @@ std::optional<JobOutcome> JobAttempt::Poll() {
     return outcome;
   }
   const std::string tail = TailOfLog(stderr_file);
-  outcome.error = (tail.empty() ? std::string("rlpos-sim failed") : tail) + " [" +
-                  Describe(exit) + "]";
+  outcome.error =
+      (tail.empty() ? std::string("rlpos-sim failed") : tail) + " [" + Describe(exit) + "]";
   return outcome;
 }
 
-void JobAttempt::Stop() { child_->Kill(); }
+void JobAttempt::Stop() {
+  child_->Kill();
+}
 
 std::string JobAttempt::ProgressLine() const {
   return TailOfLog((fs::path(folder_) / "stderr.log").string(), 1, 200);

@@ -42,9 +42,12 @@ int main(int argc, char** argv) {
     CheckDdsOptions(dds);
     char host[256] = {0};
     gethostname(host, sizeof host - 1);
-    if (options.id.empty()) options.id = std::string(host) + "-" + std::to_string(getpid());
-    if (options.work_dir.empty()) options.work_dir = "results/work/" + options.id;
-    if (options.sim_binary.empty()) options.sim_binary = ExecutableDir() + "/rlpos-sim";
+    if (options.id.empty())
+      options.id = std::string(host) + "-" + std::to_string(getpid());
+    if (options.work_dir.empty())
+      options.work_dir = "results/work/" + options.id;
+    if (options.sim_binary.empty())
+      options.sim_binary = ExecutableDir() + "/rlpos-sim";
     if (!std::filesystem::exists(options.sim_binary)) {
       std::cerr << "rlpos-worker: error: " << options.sim_binary << ": no such file\n";
       return 2;

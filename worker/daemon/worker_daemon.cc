@@ -37,7 +37,8 @@ void WorkerDaemon::PublishStatus() {
   status.pid = getpid();
   status.slots = options_.slots;
   status.busy = static_cast<int>(running_.size());
-  for (const auto& [id, job] : running_) status.jobs.push_back(job->Key());
+  for (const auto& [id, job] : running_)
+    status.jobs.push_back(job->Key());
   dds_->status.Write(status);
 }
 
@@ -48,9 +49,11 @@ void WorkerDaemon::TakeAssignments() {
     if (!r.valid) {
       // Disposed: the coordinator withdrew the job (cancelled, timed out, or its result is in).
       // A coordinator that merely went away (no writers) leaves our jobs running.
-      if (r.state != InstanceState::kDisposed) continue;
+      if (r.state != InstanceState::kDisposed)
+        continue;
       const auto it = running_.find(job_id);
-      if (it == running_.end()) continue;
+      if (it == running_.end())
+        continue;
       Log(LogLevel::kInfo, "stopping " + it->second->Key() + " (withdrawn by the coordinator)");
       it->second->Stop();
       running_.erase(it);
@@ -58,9 +61,11 @@ void WorkerDaemon::TakeAssignments() {
       changed = true;
       continue;
     }
-    if (r.data.worker_id != options_.id) continue;
+    if (r.data.worker_id != options_.id)
+      continue;
     const std::string key = job_id + "#" + std::to_string(r.data.attempt);
-    if (!seen_.insert(key).second) continue;  // republished after a coordinator restart
+    if (!seen_.insert(key).second)
+      continue;  // republished after a coordinator restart
     if (const auto it = running_.find(job_id); it != running_.end()) {
       // A newer attempt of a job we still run: the old one is out of date.
       it->second->Stop();
@@ -73,8 +78,7 @@ void WorkerDaemon::TakeAssignments() {
     event.attempt = r.data.attempt;
     event.worker_id = options_.id;
     try {
-      running_[job_id] =
-          std::make_unique<JobAttempt>(spec, options_.work_dir, options_.sim_binary);
+      running_[job_id] = std::make_unique<JobAttempt>(spec, options_.work_dir, options_.sim_binary);
       event.state = msg::JobState::kStarted;
       Log(LogLevel::kInfo, "started " + key);
     } catch (const std::exception& e) {
@@ -85,7 +89,8 @@ void WorkerDaemon::TakeAssignments() {
     dds_->events.Write(event);
     changed = true;
   }
-  if (changed) PublishStatus();
+  if (changed)
+    PublishStatus();
 }
 
 void WorkerDaemon::PollJobs() {
@@ -110,13 +115,15 @@ void WorkerDaemon::PollJobs() {
     it = running_.erase(it);
     changed = true;
   }
-  if (changed) PublishStatus();
+  if (changed)
+    PublishStatus();
 }
 
 void WorkerDaemon::ReportProgress() {
   for (const auto& [job_id, job] : running_) {
     const std::string line = job->ProgressLine();
-    if (line.empty() || progress_sent_[job_id] == line) continue;
+    if (line.empty() || progress_sent_[job_id] == line)
+      continue;
     progress_sent_[job_id] = line;
     msg::JobEvent event;
     event.job_id = job_id;
@@ -130,8 +137,8 @@ void WorkerDaemon::ReportProgress() {
 
 void WorkerDaemon::Run() {
   PublishStatus();
-  Log(LogLevel::kInfo, "worker " + options_.id + " ready with " +
-                           std::to_string(options_.slots) + " slot(s)");
+  Log(LogLevel::kInfo,
+      "worker " + options_.id + " ready with " + std::to_string(options_.slots) + " slot(s)");
   auto next_progress = std::chrono::steady_clock::now();
   while (!StopRequested()) {
     // Children are polled, not waited for: a short wait keeps job ends prompt.
@@ -144,7 +151,8 @@ void WorkerDaemon::Run() {
           std::chrono::duration<double>(options_.progress_period_s));
     }
   }
-  for (auto& [id, job] : running_) job->Stop();
+  for (auto& [id, job] : running_)
+    job->Stop();
   running_.clear();
   msg::WorkerStatus key;
   key.worker_id = options_.id;

@@ -13,10 +13,10 @@
 namespace rlpos {
 
 struct WorkerOptions {
-  std::string id;           // unique on the DDS domain
+  std::string id;  // unique on the DDS domain
   int slots = 1;
-  std::string work_dir;     // attempt folders go below
-  std::string sim_binary;   // rlpos-sim
+  std::string work_dir;    // attempt folders go below
+  std::string sim_binary;  // rlpos-sim
   double progress_period_s = 2.0;
 };
 
@@ -38,7 +38,7 @@ class WorkerDaemon {
   Participant participant_;
   std::unique_ptr<Endpoints> dds_;
   std::map<std::string, std::unique_ptr<JobAttempt>> running_;  // by job id
-  std::map<std::string, std::string> progress_sent_;             // by job id
+  std::map<std::string, std::string> progress_sent_;            // by job id
   std::set<std::string> seen_;  // "<job id>#<attempt>" this worker started: never run twice
 };
 
