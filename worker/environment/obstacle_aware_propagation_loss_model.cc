@@ -9,6 +9,7 @@
 #include <ns3/pointer.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace ns3 {
 
@@ -67,6 +68,11 @@ double ObstacleAwarePropagationLossModel::DoCalcRxPower(double txPowerDbm, Ptr<M
   const bool los = IsLos(a, b);
   NS_LOG_DEBUG("link " << a->GetPosition() << " -> " << b->GetPosition() << ": "
                        << (los ? "LoS" : "NLoS"));
+  // The sub-models always see the higher end first, so that the link is reciprocal. ns-3.37's
+  // ItuR1411NlosOverRooftop is not: below the rooftops it takes the first node's height where
+  // ITU-R P.1411 has the rooftop height (kd = 18 - 15 dhb / hr), and a UE 1.5 m up transmitting
+  // to a UAV under the roofs lost ~20 dB less than the UAV transmitting back.
+  if (b->GetPosition().z > a->GetPosition().z) std::swap(a, b);
   // CalcRxPower (not DoCalcRxPower) so that a chained Next model of the sub-model applies too.
   const double los_rx = m_losModel->CalcRxPower(txPowerDbm, a, b);
   if (los) return los_rx;
