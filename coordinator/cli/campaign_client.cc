@@ -8,15 +8,14 @@
 
 #include "dds/topics.h"
 #include "dds/wait_set.h"
+#include "process/host_name.h"
 
 namespace rlpos {
 namespace {
 
 std::string NewRequestId() {
-  char host[256] = {0};
-  gethostname(host, sizeof host - 1);
   std::random_device random;
-  return std::string(host) + "-" + std::to_string(getpid()) + "-" + std::to_string(random());
+  return HostName() + "-" + std::to_string(getpid()) + "-" + std::to_string(random());
 }
 
 }  // namespace

@@ -17,6 +17,15 @@ int Refused(const msg::CampaignReply& reply) {
   return kExitBadInput;
 }
 
+// cancel and retry: a request that names an existing campaign.
+msg::CampaignReply RequestOnCampaign(msg::RequestKind kind, const std::string& campaign_id,
+                                     const DdsOptions& dds, double timeout_s) {
+  msg::CampaignRequest request;
+  request.kind = kind;
+  request.campaign_id = campaign_id;
+  return SendCampaignRequest(dds, request, timeout_s);
+}
+
 }  // namespace
 
 ExpandedCampaign LoadCampaign(const std::string& campaign_file) {
@@ -38,23 +47,15 @@ int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, doub
 }
 
 int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s) {
-  msg::CampaignRequest request;
-  request.kind = msg::RequestKind::kCancel;
-  request.campaign_id = campaign_id;
-  const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
-  if (!reply.ok)
-    return Refused(reply);
+  const auto reply = RequestOnCampaign(msg::RequestKind::kCancel, campaign_id, dds, timeout_s);
+  if (!reply.ok) return Refused(reply);
   std::cerr << "cancelled " << campaign_id << " (" << reply.jobs << " running job(s) stopped)\n";
   return kExitOk;
 }
 
 int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s) {
-  msg::CampaignRequest request;
-  request.kind = msg::RequestKind::kRetry;
-  request.campaign_id = campaign_id;
-  const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
-  if (!reply.ok)
-    return Refused(reply);
+  const auto reply = RequestOnCampaign(msg::RequestKind::kRetry, campaign_id, dds, timeout_s);
+  if (!reply.ok) return Refused(reply);
   std::cerr << "retrying " << reply.jobs << " job(s) of " << campaign_id << "\n";
   return kExitOk;
 }

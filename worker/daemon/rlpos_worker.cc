@@ -14,6 +14,7 @@
 #include "dds/dds_cli_options.h"
 #include "logging/log.h"
 #include "process/executable_path.h"
+#include "process/host_name.h"
 #include "process/stop_signal.h"
 
 int main(int argc, char** argv) {
@@ -40,10 +41,7 @@ int main(int argc, char** argv) {
   try {
     SetLogLevel(ParseLogLevel(log_level));
     CheckDdsOptions(dds);
-    char host[256] = {0};
-    gethostname(host, sizeof host - 1);
-    if (options.id.empty())
-      options.id = std::string(host) + "-" + std::to_string(getpid());
+    if (options.id.empty()) options.id = HostName() + "-" + std::to_string(getpid());
     if (options.work_dir.empty())
       options.work_dir = "results/work/" + options.id;
     if (options.sim_binary.empty())

@@ -7,6 +7,7 @@
 #include "dds/topics.h"
 #include "dds/wait_set.h"
 #include "logging/log.h"
+#include "process/host_name.h"
 #include "process/stop_signal.h"
 
 namespace rlpos {
@@ -31,9 +32,7 @@ WorkerDaemon::~WorkerDaemon() = default;
 void WorkerDaemon::PublishStatus() {
   msg::WorkerStatus status;
   status.worker_id = options_.id;
-  char host[256] = {0};
-  gethostname(host, sizeof host - 1);
-  status.host = host;
+  status.host = HostName();
   status.pid = getpid();
   status.slots = options_.slots;
   status.busy = static_cast<int>(running_.size());
