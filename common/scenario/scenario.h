@@ -108,6 +108,9 @@ struct EnvSpec {
   std::vector<std::string> observations = {"x", "y", "z", "n_los"};
   double decision_interval = 0.1;   // s between actions
   double episode_duration = 100.0;  // s per episode
+  // Moves into a wall of the zone or a building are masked out (not only clamped): otherwise
+  // a policy can press "up" at the ceiling for the whole episode (README, RL).
+  bool action_mask = true;
   RewardSpec reward;
 };
 
@@ -126,6 +129,10 @@ struct AgentSpec {
   int target_update_interval = 1000;
   int warmup_steps = 64;  // transitions before learning starts
   bool double_dqn = false;
+  // Rewards standardised by the running mean and standard deviation of those seen before the
+  // TD targets use them. It leaves the greedy policy of a never-terminating env (ours) as it
+  // is and lets the network resolve rewards 1 % apart (scenario A; README, RL).
+  bool normalise_rewards = true;
   int train_episodes = 10;
   int eval_episodes = 1;
   std::uint64_t seed = 1;

@@ -246,6 +246,7 @@ EnvSpec ReadEnv(const json& v) {
   }
   e.decision_interval = r.Number("decision_interval", e.decision_interval, Positive());
   e.episode_duration = r.Number("episode_duration", e.episode_duration, Positive());
+  e.action_mask = r.Bool("action_mask", e.action_mask);
   if (e.decision_interval > e.episode_duration) {
     throw ConfigError(r.PathOf("decision_interval"), "must not exceed the episode duration");
   }
@@ -285,6 +286,7 @@ AgentSpec ReadAgent(const json& v) {
   a.target_update_interval = static_cast<int>(r.Integer("target_update_interval", a.target_update_interval, 1, 1000000000));
   a.warmup_steps = static_cast<int>(r.Integer("warmup_steps", a.warmup_steps, 0, 1000000000));
   a.double_dqn = r.Bool("double_dqn", a.double_dqn);
+  a.normalise_rewards = r.Bool("normalise_rewards", a.normalise_rewards);
   a.train_episodes = static_cast<int>(r.Integer("train_episodes", a.train_episodes, 1, 1000000));
   a.eval_episodes = static_cast<int>(r.Integer("eval_episodes", a.eval_episodes, 1, 1000000));
   a.seed = static_cast<std::uint64_t>(r.Integer("seed", static_cast<long long>(a.seed), 0, 9007199254740991LL));
@@ -452,6 +454,7 @@ json ToJson(const Scenario& s) {
             {"observations", s.env.observations},
             {"decision_interval", s.env.decision_interval},
             {"episode_duration", s.env.episode_duration},
+            {"action_mask", s.env.action_mask},
             {"reward",
              {{"name", s.env.reward.name},
               {"w1", s.env.reward.w1},
@@ -470,6 +473,7 @@ json ToJson(const Scenario& s) {
             {"target_update_interval", s.agent.target_update_interval},
             {"warmup_steps", s.agent.warmup_steps},
             {"double_dqn", s.agent.double_dqn},
+            {"normalise_rewards", s.agent.normalise_rewards},
             {"train_episodes", s.agent.train_episodes},
             {"eval_episodes", s.agent.eval_episodes},
             {"seed", s.agent.seed}}}};

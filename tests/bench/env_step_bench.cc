@@ -28,12 +28,15 @@ Figures Run(rlpos::Scenario s, const std::string& fidelity, int steps) {
   auto obs = space.Normalise(env.Reset(s.agent.seed * 1000 + 1));
   const double ns3_before = env.WallSecondsInNs3();  // the reset's warm-up is not a step
   const auto start = Clock::now();
+  auto mask = env.ValidActions();
   for (int i = 0; i < steps; ++i) {
-    const int action = agent.Act(obs, true);
+    const int action = agent.Act(obs, mask, true);
     const auto r = env.Step(action);
     auto next = space.Normalise(r.observation);
-    agent.Observe({obs, action, static_cast<float>(r.reward), next, r.terminated});
+    auto next_mask = env.ValidActions();
+    agent.Observe({obs, action, static_cast<float>(r.reward), next, r.terminated, next_mask});
     obs = std::move(next);
+    mask = std::move(next_mask);
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   const double in_ns3 = env.WallSecondsInNs3() - ns3_before;

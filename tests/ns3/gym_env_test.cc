@@ -35,6 +35,39 @@ TEST(GymEnv, AnalyticResetStepTruncate) {
   EXPECT_THROW(env.Step(7), std::out_of_range);
 }
 
+std::vector<std::string> Masked(const Scenario& s, const ActionMask& mask) {
+  std::vector<std::string> out;
+  for (std::size_t a = 0; a < mask.size(); ++a) {
+    if (!mask[a]) out.push_back(s.env.actions[a]);
+  }
+  return out;
+}
+
+TEST(GymEnv, MovesIntoWallsAndBuildingsAreMaskedStayIsNot) {
+  using Names = std::vector<std::string>;
+  // The baseline (50, 50, 25) is 5 m above the tower: "down" would end on its roof.
+  const Scenario above_tower = LoadB({"env.fidelity=analytic"});
+  UavPositioningEnv env(above_tower);
+  env.Reset(1);
+  EXPECT_EQ(Masked(above_tower, env.ValidActions()), Names{"down"});
+  const Scenario ceiling = LoadB({"env.fidelity=analytic", "uav.position=[20,20,60]"});
+  UavPositioningEnv at_ceiling(ceiling);
+  at_ceiling.Reset(1);
+  EXPECT_EQ(Masked(ceiling, at_ceiling.ValidActions()), Names{"up"});
+  at_ceiling.Step(Action(ceiling, "down"));  // away from the wall: nothing masked
+  EXPECT_TRUE(Masked(ceiling, at_ceiling.ValidActions()).empty());
+  const Scenario corner = LoadB({"env.fidelity=analytic", "uav.position=[0,0,5]"});
+  UavPositioningEnv at_corner(corner);
+  at_corner.Reset(1);
+  EXPECT_EQ(Masked(corner, at_corner.ValidActions()), (Names{"down", "backward", "left"}));
+  // Without the mask the walls only clamp: every action stays allowed.
+  const Scenario unmasked =
+      LoadB({"env.fidelity=analytic", "uav.position=[0,0,5]", "env.action_mask=false"});
+  UavPositioningEnv clamped(unmasked);
+  clamped.Reset(1);
+  EXPECT_TRUE(clamped.ValidActions().empty());
+}
+
 TEST(GymEnv, PacketStepsAdvanceNs3AndMeasureTheInterval) {
   const Scenario s = LoadB({"env.fidelity=packet", "env.episode_duration=0.5",
                             "env.decision_interval=0.25", "simulation.warmup=0.5"});

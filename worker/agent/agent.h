@@ -11,8 +11,9 @@ namespace rlpos {
 class Agent {
  public:
   virtual ~Agent() = default;
-  // An action for `observation` (already normalised); `explore` enables the behaviour policy.
-  virtual int Act(const std::vector<float>& observation, bool explore) = 0;
+  // An action for `observation` (already normalised) among those `mask` allows; `explore`
+  // enables the behaviour policy.
+  virtual int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) = 0;
   // Learns from one transition (stores it, maybe trains). Returns the loss, or < 0 if no update.
   virtual double Observe(Transition transition) = 0;
   virtual double Epsilon() const = 0;

@@ -2,8 +2,11 @@
 
 #include <torch/torch.h>
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
+
+#include "agent/running_moments.h"
 
 namespace rlpos {
 namespace {
@@ -18,6 +21,18 @@ torch::nn::Sequential MakeNetwork(const std::vector<int>& hidden, int in, int ou
   }
   net->push_back(torch::nn::Linear(width, out));
   return net;
+}
+
+// Adds -inf to the Q-values of actions a row's mask forbids, so that max and argmax skip them.
+torch::Tensor MaskPenalty(const std::vector<const ActionMask*>& masks, int actions) {
+  torch::Tensor penalty = torch::zeros({static_cast<long>(masks.size()), actions});
+  auto p = penalty.accessor<float, 2>();
+  for (std::size_t r = 0; r < masks.size(); ++r) {
+    for (int a = 0; a < actions; ++a) {
+      if (!Allowed(*masks[r], a)) p[static_cast<long>(r)][a] = -INFINITY;
+    }
+  }
+  return penalty;
 }
 
 void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to) {
@@ -40,6 +55,7 @@ struct DqnAgent::Impl {
   EpsilonSchedule epsilon;
   std::mt19937_64 rng;
   std::int64_t steps = 0;
+  RunningMoments reward_moments;
 
   Impl(const AgentSpec& s, int obs_dim, int actions)
       : spec(s),
@@ -75,22 +91,29 @@ struct DqnAgent::Impl {
     torch::Tensor actions = torch::empty({n}, torch::kLong);
     torch::Tensor rewards = torch::empty({n});
     torch::Tensor not_terminal = torch::empty({n});
+    std::vector<const ActionMask*> next_masks;
+    bool masked = false;
     for (long r = 0; r < n; ++r) {
       const auto& tr = replay.At(indices[r]);
       actions[r] = tr.action;
-      rewards[r] = tr.reward;
+      rewards[r] = spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
       not_terminal[r] = tr.terminal ? 0.0f : 1.0f;
+      next_masks.push_back(&tr.next_mask);
+      masked = masked || !tr.next_mask.empty();
     }
     torch::Tensor target_q;
     {
       torch::NoGradGuard no_grad;
       torch::Tensor next_q = target->forward(next);
+      const torch::Tensor penalty =
+          masked ? MaskPenalty(next_masks, action_count) : torch::zeros_like(next_q);
       torch::Tensor best;
       if (spec.double_dqn) {
         // The online network picks the action, the target network values it.
-        best = next_q.gather(1, online->forward(next).argmax(1, true)).squeeze(1);
+        const torch::Tensor pick = (online->forward(next) + penalty).argmax(1, true);
+        best = next_q.gather(1, pick).squeeze(1);
       } else {
-        best = std::get<0>(next_q.max(1));
+        best = std::get<0>((next_q + penalty).max(1));
       }
       target_q = rewards + static_cast<float>(spec.gamma) * not_terminal * best;
     }
@@ -121,20 +144,30 @@ std::vector<float> DqnAgent::QValues(const std::vector<float>& observation) cons
   return std::vector<float>(q.data_ptr<float>(), q.data_ptr<float>() + q.numel());
 }
 
-int DqnAgent::Act(const std::vector<float>& observation, bool explore) {
+int DqnAgent::Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) {
+  std::vector<int> allowed;
+  for (int a = 0; a < impl_->action_count; ++a) {
+    if (Allowed(mask, a)) allowed.push_back(a);
+  }
+  if (allowed.empty()) throw std::invalid_argument("the action mask allows no action");
   if (explore) {
     std::uniform_real_distribution<double> coin(0.0, 1.0);
     if (coin(impl_->rng) < Epsilon()) {
-      std::uniform_int_distribution<int> pick(0, impl_->action_count - 1);
-      return pick(impl_->rng);
+      std::uniform_int_distribution<std::size_t> pick(0, allowed.size() - 1);
+      return allowed[pick(impl_->rng)];
     }
   }
   const auto q = QValues(observation);
-  return static_cast<int>(std::max_element(q.begin(), q.end()) - q.begin());
+  int best = allowed.front();
+  for (int a : allowed) {
+    if (q[a] > q[best]) best = a;
+  }
+  return best;
 }
 
 double DqnAgent::Observe(Transition transition) {
   Impl& m = *impl_;
+  m.reward_moments.Add(transition.reward);
   m.replay.Add(std::move(transition));
   ++m.steps;
   double loss = -1.0;

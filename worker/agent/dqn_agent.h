@@ -13,7 +13,7 @@ class DqnAgent : public Agent {
  public:
   DqnAgent(const AgentSpec& spec, int observation_dim, int action_count);
   ~DqnAgent() override;
-  int Act(const std::vector<float>& observation, bool explore) override;
+  int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) override;
   double Observe(Transition transition) override;
   double Epsilon() const override;
   void Save(const std::string& directory) const override;

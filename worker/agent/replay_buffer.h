@@ -4,6 +4,8 @@
 #include <random>
 #include <vector>
 
+#include "gym/spaces.h"
+
 namespace rlpos {
 
 struct Transition {
@@ -12,6 +14,7 @@ struct Transition {
   float reward = 0.0f;
   std::vector<float> next_observation;
   bool terminal = false;  // no bootstrap from next_observation (truncation is not terminal)
+  ActionMask next_mask;   // actions allowed after the step (the bootstrap maximises over them)
 };
 
 class ReplayBuffer {

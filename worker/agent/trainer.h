@@ -28,13 +28,18 @@ struct TrainResult {
 };
 
 using EpisodeCallback = std::function<void(const EpisodeRecord&)>;
+// Called after every step: step number (from 1), the action taken and what it led to.
+using StepCallback = std::function<void(int step, int action, const StepResult&)>;
 
 // Runs one episode from env.Reset(seed). With `learn`, the agent explores and learns.
-EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn);
+EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
+                         const StepCallback& on_step = nullptr);
 
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
-// greedy ones. `on_episode` is called after each episode (progress, learning curve).
+// greedy ones. `on_episode` is called after each episode (progress, learning curve),
+// `on_eval_step` after each step of the evaluation episodes (the flown trajectory).
 TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
-                  const EpisodeCallback& on_episode = nullptr);
+                  const EpisodeCallback& on_episode = nullptr,
+                  const StepCallback& on_eval_step = nullptr);
 
 }  // namespace rlpos

@@ -34,6 +34,8 @@ class Env {
   virtual StepResult Step(int action) = 0;
   // The info of the state after the last Reset/Step.
   virtual const StepInfo& LastInfo() const = 0;
+  // The actions allowed in the current state; empty (the default) allows all.
+  virtual ActionMask ValidActions() const { return {}; }
 };
 
 }  // namespace rlpos

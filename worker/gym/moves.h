@@ -11,6 +11,7 @@ namespace rlpos {
 
 // The position after `action` (an index into scenario.env.actions): one step in its direction,
 // clamped to the UAV's zone. A move that would end inside a building leaves the UAV where it is.
+// (With env.action_mask the agent never picks a move that leaves it where it is.)
 Vec3 ApplyMove(const Scenario& scenario, int action, const Vec3& from);
 
 // Observation layout and bounds from scenario.env.observations ("snr" expands to one per UE).

@@ -1,6 +1,7 @@
 #pragma once
 // Gymnasium-style spaces: Discrete(n) and Box(low, high).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace rlpos {
@@ -9,6 +10,13 @@ struct DiscreteSpace {
   int n = 0;
   bool Contains(int action) const { return action >= 0 && action < n; }
 };
+
+// Which actions of a Discrete space may be taken now (Gymnasium's "action_mask": 1 allowed,
+// 0 not). Empty: every action is allowed.
+using ActionMask = std::vector<std::uint8_t>;
+inline bool Allowed(const ActionMask& mask, int action) {
+  return mask.empty() || mask[static_cast<std::size_t>(action)] != 0;
+}
 
 struct BoxSpace {
   std::vector<double> low;

@@ -29,6 +29,21 @@ BoxSpace UavPositioningEnv::ObservationSpace() const {
   return ObservationBounds(scenario_);
 }
 
+ActionMask UavPositioningEnv::ValidActions() const {
+  if (!scenario_.env.action_mask) return {};
+  const auto& actions = scenario_.env.actions;
+  ActionMask mask(actions.size(), 0);
+  bool moves = false;
+  for (std::size_t a = 0; a < actions.size(); ++a) {
+    const Vec3 to = ApplyMove(scenario_, static_cast<int>(a), position_);
+    const bool changes = to.x != position_.x || to.y != position_.y || to.z != position_.z;
+    mask[a] = actions[a] == "stay" || changes;
+    moves = moves || changes;
+  }
+  if (!moves) return {};
+  return mask;
+}
+
 double UavPositioningEnv::RewardOf(const StepInfo& info) const {
   return (*reward_)(RewardInputOf(scenario_, info.n_los, info.throughput_mbps, info.demands_met));
 }

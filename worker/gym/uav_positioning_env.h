@@ -24,6 +24,9 @@ class UavPositioningEnv : public Env {
   std::vector<double> Reset(std::uint64_t seed) override;
   StepResult Step(int action) override;
   const StepInfo& LastInfo() const override { return info_; }
+  // With env.action_mask: "stay" and every move that changes the position (not into a wall of
+  // the zone or a building). Without it, or if nothing moves, every action.
+  ActionMask ValidActions() const override;
 
   const Scenario& scenario() const { return scenario_; }
   int StepsPerEpisode() const { return steps_per_episode_; }

@@ -65,6 +65,16 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     std::ofstream curve(partial / "learning_curve.csv");
     curve << "episode,phase,steps,total_reward,mean_reward,epsilon,final_reward,x,y,z,n_los,"
              "throughput_mbps\n";
+    std::ofstream trajectory(partial / "trajectory.csv");
+    trajectory << "episode,step,action,x,y,z,n_los,throughput_mbps,reward\n";
+    int eval_episode = s.agent.train_episodes;
+    const auto write_step = [&](int step, int action, const StepResult& r) {
+      if (step == 1) ++eval_episode;
+      const Vec3& p = r.info.position;
+      trajectory << eval_episode << ',' << step << ',' << s.env.actions[action] << ',' << p.x
+                 << ',' << p.y << ',' << p.z << ',' << r.info.n_los << ','
+                 << r.info.throughput_mbps << ',' << r.reward << '\n';
+    };
     const int total = s.agent.train_episodes + s.agent.eval_episodes;
     const TrainResult result =
         Train(env, agent, s.agent, FirstEpisodeRun(s.agent.seed), [&](const EpisodeRecord& r) {
@@ -76,8 +86,9 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
                        r.episode, total, r.evaluation ? "eval" : "train", r.steps, r.epsilon,
                        r.total_reward, r.total_reward / std::max(1, r.steps), p.x, p.y, p.z,
                        r.final_info.n_los);
-        });
+        }, write_step);
     curve.close();
+    trajectory.close();
     agent.Save(partial.string());
     const nlohmann::json summary = ResultJson(s, result, s.agent.seed);
     std::ofstream(partial / "result.json") << summary.dump(2) << '\n';

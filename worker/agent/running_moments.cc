@@ -1,0 +1,23 @@
+#include "agent/running_moments.h"
+
+#include <cmath>
+
+namespace rlpos {
+
+void RunningMoments::Add(double x) {
+  ++count_;
+  const double delta = x - mean_;
+  mean_ += delta / static_cast<double>(count_);
+  m2_ += delta * (x - mean_);
+}
+
+double RunningMoments::StdDev() const {
+  return count_ > 1 ? std::sqrt(m2_ / static_cast<double>(count_ - 1)) : 0.0;
+}
+
+float RunningMoments::Standardise(double x) const {
+  const double sd = StdDev();
+  return static_cast<float>(sd > 1e-12 ? (x - mean_) / sd : x - mean_);
+}
+
+}  // namespace rlpos
