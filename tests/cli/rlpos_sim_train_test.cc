@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
@@ -40,6 +41,21 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   int rows = -1;  // header
   while (std::getline(curve, line)) ++rows;
   EXPECT_EQ(rows, 3);  // 2 training episodes + 1 evaluation
+  // The evaluation episode's flight, one row per step; it ends at the result's position.
+  std::ifstream trajectory(out_ / "trajectory.csv");
+  std::getline(trajectory, line);
+  EXPECT_EQ(line, "episode,step,action,x,y,z,n_los,throughput_mbps,reward");
+  std::string last;
+  rows = 0;
+  while (std::getline(trajectory, line)) ++rows, last = line;
+  EXPECT_EQ(rows, 1000);  // 100 s of 0.1 s decisions
+  const auto& p_end = result["position"];
+  const std::string end = "3,1000,";
+  EXPECT_EQ(last.rfind(end, 0), 0u) << last;
+  std::ostringstream xyz;
+  xyz << "," << p_end[0].get<double>() << "," << p_end[1].get<double>() << ","
+      << p_end[2].get<double>() << ",";
+  EXPECT_NE(last.find(xyz.str()), std::string::npos) << last << " vs " << xyz.str();
   EXPECT_NE(r.err.find("episode 3/3 (eval)"), std::string::npos) << r.err;
 
   const auto p = RunCommand(Sim("position --scenario " + kScenarioB +
