@@ -2,6 +2,7 @@
 
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -24,12 +25,15 @@ torch::nn::Sequential MakeNetwork(const std::vector<int>& hidden, int in, int ou
 }
 
 // Adds -inf to the Q-values of actions a row's mask forbids, so that max and argmax skip them.
+// A mask that forbids everything is taken as no mask (a max over nothing has no value).
 torch::Tensor MaskPenalty(const std::vector<const ActionMask*>& masks, int actions) {
   torch::Tensor penalty = torch::zeros({static_cast<long>(masks.size()), actions});
   auto p = penalty.accessor<float, 2>();
   for (std::size_t r = 0; r < masks.size(); ++r) {
+    const ActionMask& mask = *masks[r];
+    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; })) continue;
     for (int a = 0; a < actions; ++a) {
-      if (!Allowed(*masks[r], a)) p[static_cast<long>(r)][a] = -INFINITY;
+      if (!Allowed(mask, a)) p[static_cast<long>(r)][a] = -INFINITY;
     }
   }
   return penalty;
