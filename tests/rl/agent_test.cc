@@ -111,7 +111,8 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   // Not the paper's: the target network is refreshed once per paper episode (100 s / 0.1 s),
   // which is what let scenario A's greedy policy beat the baseline (README, RL).
   EXPECT_EQ(spec.target_update_interval, 1000);
-  EXPECT_FALSE(spec.double_dqn);
+  // Not the paper's either: Double DQN and standardised rewards (README, RL).
+  EXPECT_TRUE(spec.double_dqn);
   EXPECT_TRUE(spec.normalise_rewards);
 }
 
