@@ -55,10 +55,10 @@ int main(int argc, char** argv) {
   const int packet_steps = argc > 3 ? std::stoi(argv[3]) : 50;
   const Figures analytic = Run(s, "analytic", analytic_steps);
   const Figures packet = Run(s, "packet", packet_steps);
-  std::printf("%-8s analytic %9.1f steps/s | packet %7.2f steps/s (%.0f ms simulated each), "
-              "%.2f %% of a packet step outside ns-3 | analytic/packet %.0fx\n",
-              s.name.c_str(), analytic.steps_per_s, packet.steps_per_s,
-              s.env.decision_interval * 1e3, 100.0 * packet.outside_ns3_share,
-              analytic.steps_per_s / packet.steps_per_s);
+  std::printf(
+      "%-8s analytic %9.1f steps/s | packet %7.2f steps/s (%.0f ms simulated each), "
+      "%.2f %% of a packet step outside ns-3 | analytic/packet %.0fx\n",
+      s.name.c_str(), analytic.steps_per_s, packet.steps_per_s, s.env.decision_interval * 1e3,
+      100.0 * packet.outside_ns3_share, analytic.steps_per_s / packet.steps_per_s);
   return 0;
 }

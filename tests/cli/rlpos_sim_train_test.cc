@@ -3,8 +3,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "cli/command.h"
 
@@ -14,7 +14,9 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kScenarioB = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json";
 
-std::string Sim(const std::string& args) { return BuiltBinary("rlpos-sim") + " " + args; }
+std::string Sim(const std::string& args) {
+  return BuiltBinary("rlpos-sim") + " " + args;
+}
 
 class TrainCommand : public ::testing::Test {
  protected:
@@ -27,9 +29,9 @@ class TrainCommand : public ::testing::Test {
 };
 
 TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
-  const auto r = RunCommand(Sim("train --scenario " + kScenarioB +
-                                " --fidelity analytic --seed 4 --episodes 2 --json --out " +
-                                out_.string()));
+  const auto r =
+      RunCommand(Sim("train --scenario " + kScenarioB +
+                     " --fidelity analytic --seed 4 --episodes 2 --json --out " + out_.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto result = nlohmann::json::parse(r.out);
   EXPECT_EQ(result["fidelity"], "analytic");
@@ -39,7 +41,8 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   std::ifstream curve(out_ / "learning_curve.csv");
   std::string line;
   int rows = -1;  // header
-  while (std::getline(curve, line)) ++rows;
+  while (std::getline(curve, line))
+    ++rows;
   EXPECT_EQ(rows, 3);  // 2 training episodes + 1 evaluation
   // The evaluation episode's flight, one row per step; it ends at the result's position.
   std::ifstream trajectory(out_ / "trajectory.csv");
@@ -47,7 +50,8 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   EXPECT_EQ(line, "episode,step,action,x,y,z,n_los,throughput_mbps,reward");
   std::string last;
   rows = 0;
-  while (std::getline(trajectory, line)) ++rows, last = line;
+  while (std::getline(trajectory, line))
+    ++rows, last = line;
   EXPECT_EQ(rows, 1000);  // 100 s of 0.1 s decisions
   const auto& p_end = result["position"];
   const std::string end = "3,1000,";
@@ -77,13 +81,13 @@ TEST_F(TrainCommand, BadInputs) {
   EXPECT_EQ(no_policy.exit_code, 2);
   EXPECT_NE(no_policy.err.find("--policy: is required for the rl positioner"), std::string::npos)
       << no_policy.err;
-  const auto missing = RunCommand(Sim("position --scenario " + kScenarioB +
-                                      " --positioner rl --policy /nonexistent"));
+  const auto missing = RunCommand(
+      Sim("position --scenario " + kScenarioB + " --positioner rl --policy /nonexistent"));
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("/nonexistent/result.json: cannot open file"), std::string::npos)
       << missing.err;
-  const auto bad_agent = RunCommand(Sim("train --scenario " + kScenarioB +
-                                        " --set agent.gama=0.5 --out " + out_.string()));
+  const auto bad_agent = RunCommand(
+      Sim("train --scenario " + kScenarioB + " --set agent.gama=0.5 --out " + out_.string()));
   EXPECT_EQ(bad_agent.exit_code, 2);
   EXPECT_NE(bad_agent.err.find("/agent/gama: unknown key \"gama\"; did you mean \"gamma\"?"),
             std::string::npos)
@@ -93,14 +97,14 @@ TEST_F(TrainCommand, BadInputs) {
 }
 
 TEST(PositionCommand, BaselineAndCentroid) {
-  const auto base = RunCommand(Sim("position --scenario " + kScenarioB +
-                                   " --positioner baseline --json"));
+  const auto base =
+      RunCommand(Sim("position --scenario " + kScenarioB + " --positioner baseline --json"));
   ASSERT_EQ(base.exit_code, 0) << base.err;
   const auto b = nlohmann::json::parse(base.out);
   EXPECT_EQ(b["position"], (nlohmann::json{50.0, 50.0, 25.0}));
   EXPECT_EQ(b["n_los"], 1);
-  const auto centroid = RunCommand(Sim("position --scenario " + kScenarioB +
-                                       " --positioner centroid --json"));
+  const auto centroid =
+      RunCommand(Sim("position --scenario " + kScenarioB + " --positioner centroid --json"));
   ASSERT_EQ(centroid.exit_code, 0) << centroid.err;
   // Equal demands: the plain centroid of the UEs, 5 m above the 30 m block.
   EXPECT_EQ(nlohmann::json::parse(centroid.out)["position"], (nlohmann::json{47.5, 37.5, 35.0}));

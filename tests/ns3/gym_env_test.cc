@@ -25,11 +25,13 @@ TEST(GymEnv, AnalyticResetStepTruncate) {
   EXPECT_EQ(obs, (std::vector<double>{50, 50, 25, 1}));  // x, y, z, nLoS at the baseline
   EXPECT_TRUE(env.ObservationSpace().Contains(obs));
   StepResult r;
-  for (int i = 0; i < 3; ++i) r = env.Step(Action(s, "backward"));  // to (50, 35, 25): all LoS
+  for (int i = 0; i < 3; ++i)
+    r = env.Step(Action(s, "backward"));  // to (50, 35, 25): all LoS
   EXPECT_EQ(r.observation, (std::vector<double>{50, 35, 25, 4}));
   EXPECT_NEAR(r.reward, 1.0, 1e-3);  // 0.8 * 4/4 + 0.2 * 234/234
   EXPECT_FALSE(r.truncated);
-  for (int i = 0; i < 7; ++i) r = env.Step(Action(s, "stay"));
+  for (int i = 0; i < 7; ++i)
+    r = env.Step(Action(s, "stay"));
   EXPECT_TRUE(r.truncated);
   EXPECT_FALSE(r.terminated);
   EXPECT_THROW(env.Step(7), std::out_of_range);
@@ -38,7 +40,8 @@ TEST(GymEnv, AnalyticResetStepTruncate) {
 std::vector<std::string> Masked(const Scenario& s, const ActionMask& mask) {
   std::vector<std::string> out;
   for (std::size_t a = 0; a < mask.size(); ++a) {
-    if (!mask[a]) out.push_back(s.env.actions[a]);
+    if (!mask[a])
+      out.push_back(s.env.actions[a]);
   }
   return out;
 }
@@ -74,7 +77,8 @@ TEST(GymEnv, PacketStepsAdvanceNs3AndMeasureTheInterval) {
   UavPositioningEnv env(s);
   env.Reset(1001);
   StepResult r;
-  for (int i = 0; i < 2; ++i) r = env.Step(Action(s, "stay"));
+  for (int i = 0; i < 2; ++i)
+    r = env.Step(Action(s, "stay"));
   EXPECT_TRUE(r.truncated);
   EXPECT_EQ(r.info.n_los, 1);
   // At the baseline the two weak NLoS UEs and the LoS one deliver most of their demand.

@@ -13,17 +13,20 @@ namespace {
 
 TEST(ReplayBuffer, RingOverwritesTheOldest) {
   ReplayBuffer buffer(3);
-  for (int i = 0; i < 5; ++i) buffer.Add({{static_cast<float>(i)}, i, 0.0f, {0.0f}, false, {}});
+  for (int i = 0; i < 5; ++i)
+    buffer.Add({{static_cast<float>(i)}, i, 0.0f, {0.0f}, false, {}});
   ASSERT_EQ(buffer.Size(), 3u);
   std::vector<int> actions;
-  for (std::size_t i = 0; i < buffer.Size(); ++i) actions.push_back(buffer.At(i).action);
+  for (std::size_t i = 0; i < buffer.Size(); ++i)
+    actions.push_back(buffer.At(i).action);
   std::sort(actions.begin(), actions.end());
   EXPECT_EQ(actions, (std::vector<int>{2, 3, 4}));
 }
 
 TEST(ReplayBuffer, SeededSamplingIsReproducible) {
   ReplayBuffer buffer(100);
-  for (int i = 0; i < 100; ++i) buffer.Add({{0.0f}, i, 0.0f, {0.0f}, false, {}});
+  for (int i = 0; i < 100; ++i)
+    buffer.Add({{0.0f}, i, 0.0f, {0.0f}, false, {}});
   std::mt19937_64 a(7), b(7), c(8);
   EXPECT_EQ(buffer.SampleIndices(64, a), buffer.SampleIndices(64, b));
   std::mt19937_64 a2(7);
@@ -48,7 +51,8 @@ TEST(RunningMoments, MeanSpreadAndStandardise) {
   EXPECT_DOUBLE_EQ(m.Mean(), 3.0);
   EXPECT_DOUBLE_EQ(m.StdDev(), 0.0);
   EXPECT_FLOAT_EQ(m.Standardise(4.0), 1.0f);  // no spread yet: only centred
-  for (double x : {1.0, 5.0, 7.0}) m.Add(x);   // 3, 1, 5, 7
+  for (double x : {1.0, 5.0, 7.0})
+    m.Add(x);  // 3, 1, 5, 7
   EXPECT_DOUBLE_EQ(m.Mean(), 4.0);
   EXPECT_NEAR(m.StdDev(), std::sqrt(20.0 / 3.0), 1e-12);  // sample standard deviation
   EXPECT_NEAR(m.Standardise(4.0 + std::sqrt(20.0 / 3.0)), 1.0f, 1e-6);
@@ -120,7 +124,8 @@ TEST(DqnAgent, ActsOnlyAmongAllowedActions) {
   DqnAgent agent(SmallSpec(4), 1, 3);  // epsilon 1: exploring picks uniformly
   const ActionMask no_middle{1, 0, 1};
   int counts[3] = {0, 0, 0};
-  for (int i = 0; i < 600; ++i) ++counts[agent.Act({0.0f}, no_middle, true)];
+  for (int i = 0; i < 600; ++i)
+    ++counts[agent.Act({0.0f}, no_middle, true)];
   EXPECT_EQ(counts[1], 0);
   EXPECT_GT(counts[0], 200);
   EXPECT_GT(counts[2], 200);
@@ -157,7 +162,7 @@ float LearnedValueBehindAMaskedAction(bool mask_the_jackpot) {
 }
 
 TEST(DqnAgent, BootstrapMaximisesOnlyOverAllowedActions) {
-  EXPECT_LT(LearnedValueBehindAMaskedAction(true), 1.0f);  // 0: the jackpot is out of reach
+  EXPECT_LT(LearnedValueBehindAMaskedAction(true), 1.0f);   // 0: the jackpot is out of reach
   EXPECT_GT(LearnedValueBehindAMaskedAction(false), 6.0f);  // gamma * 10 = 9 when allowed
 }
 

@@ -31,9 +31,11 @@ torch::Tensor MaskPenalty(const std::vector<const ActionMask*>& masks, int actio
   auto p = penalty.accessor<float, 2>();
   for (std::size_t r = 0; r < masks.size(); ++r) {
     const ActionMask& mask = *masks[r];
-    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; })) continue;
+    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }))
+      continue;
     for (int a = 0; a < actions; ++a) {
-      if (!Allowed(mask, a)) p[static_cast<long>(r)][a] = -INFINITY;
+      if (!Allowed(mask, a))
+        p[static_cast<long>(r)][a] = -INFINITY;
     }
   }
   return penalty;
@@ -43,7 +45,8 @@ void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to
   torch::NoGradGuard no_grad;
   auto source = from->parameters();
   auto target = to->parameters();
-  for (std::size_t i = 0; i < source.size(); ++i) target[i].copy_(source[i]);
+  for (std::size_t i = 0; i < source.size(); ++i)
+    target[i].copy_(source[i]);
 }
 
 }  // namespace
@@ -72,8 +75,8 @@ struct DqnAgent::Impl {
     online = MakeNetwork(s.hidden, obs_dim, actions);
     target = MakeNetwork(s.hidden, obs_dim, actions);
     CopyParameters(online, target);
-    optimizer = std::make_unique<torch::optim::Adam>(
-        online->parameters(), torch::optim::AdamOptions(s.learning_rate));
+    optimizer = std::make_unique<torch::optim::Adam>(online->parameters(),
+                                                     torch::optim::AdamOptions(s.learning_rate));
   }
 
   torch::Tensor Batch(const std::vector<std::size_t>& indices, bool next) const {
@@ -82,7 +85,8 @@ struct DqnAgent::Impl {
     for (std::size_t r = 0; r < indices.size(); ++r) {
       const auto& tr = replay.At(indices[r]);
       const auto& obs = next ? tr.next_observation : tr.observation;
-      for (int c = 0; c < observation_dim; ++c) a[r][c] = obs[c];
+      for (int c = 0; c < observation_dim; ++c)
+        a[r][c] = obs[c];
     }
     return t;
   }
@@ -151,9 +155,11 @@ std::vector<float> DqnAgent::QValues(const std::vector<float>& observation) cons
 int DqnAgent::Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) {
   std::vector<int> allowed;
   for (int a = 0; a < impl_->action_count; ++a) {
-    if (Allowed(mask, a)) allowed.push_back(a);
+    if (Allowed(mask, a))
+      allowed.push_back(a);
   }
-  if (allowed.empty()) throw std::invalid_argument("the action mask allows no action");
+  if (allowed.empty())
+    throw std::invalid_argument("the action mask allows no action");
   if (explore) {
     std::uniform_real_distribution<double> coin(0.0, 1.0);
     if (coin(impl_->rng) < Epsilon()) {
@@ -164,7 +170,8 @@ int DqnAgent::Act(const std::vector<float>& observation, const ActionMask& mask,
   const auto q = QValues(observation);
   int best = allowed.front();
   for (int a : allowed) {
-    if (q[a] > q[best]) best = a;
+    if (q[a] > q[best])
+      best = a;
   }
   return best;
 }
@@ -179,11 +186,14 @@ double DqnAgent::Observe(Transition transition) {
       m.replay.Size() >= static_cast<std::size_t>(std::min<std::int64_t>(m.spec.batch_size, 1))) {
     loss = m.Learn();
   }
-  if (m.steps % m.spec.target_update_interval == 0) CopyParameters(m.online, m.target);
+  if (m.steps % m.spec.target_update_interval == 0)
+    CopyParameters(m.online, m.target);
   return loss;
 }
 
-double DqnAgent::Epsilon() const { return impl_->epsilon.At(impl_->steps); }
+double DqnAgent::Epsilon() const {
+  return impl_->epsilon.At(impl_->steps);
+}
 
 void DqnAgent::Save(const std::string& directory) const {
   std::filesystem::create_directories(directory);
@@ -192,7 +202,8 @@ void DqnAgent::Save(const std::string& directory) const {
 
 void DqnAgent::Load(const std::string& directory) {
   const std::string file = directory + "/policy.pt";
-  if (!std::filesystem::exists(file)) throw std::runtime_error(file + ": no such policy file");
+  if (!std::filesystem::exists(file))
+    throw std::runtime_error(file + ": no such policy file");
   // Loaded into a scratch network first: torch::load takes any tensor shapes it finds.
   torch::nn::Sequential loaded =
       MakeNetwork(impl_->spec.hidden, impl_->observation_dim, impl_->action_count);
@@ -204,10 +215,12 @@ void DqnAgent::Load(const std::string& directory) {
   }
   const auto got = loaded->parameters();
   bool same = got.size() == expected.size();
-  for (std::size_t i = 0; same && i < got.size(); ++i) same = got[i].sizes() == expected[i].sizes();
+  for (std::size_t i = 0; same && i < got.size(); ++i)
+    same = got[i].sizes() == expected[i].sizes();
   if (!same) {
-    throw std::runtime_error(file + ": the policy's network shape differs from the scenario's "
-                                    "(observations, actions or agent.hidden changed)");
+    throw std::runtime_error(file +
+                             ": the policy's network shape differs from the scenario's "
+                             "(observations, actions or agent.hidden changed)");
   }
   CopyParameters(loaded, impl_->online);
   CopyParameters(impl_->online, impl_->target);

@@ -40,7 +40,8 @@ struct EpsilonSchedule {
   double end = 1.0;
   int decay_steps = 0;
   double At(std::int64_t step) const {
-    if (decay_steps <= 0 || step >= decay_steps) return decay_steps <= 0 ? start : end;
+    if (decay_steps <= 0 || step >= decay_steps)
+      return decay_steps <= 0 ? start : end;
     return start + (end - start) * static_cast<double>(step) / decay_steps;
   }
 };

@@ -22,10 +22,12 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
     record.total_reward += step.reward;
     reward = step.reward;
     ++record.steps;
-    if (on_step) on_step(record.steps, action, step);
+    if (on_step)
+      on_step(record.steps, action, step);
     obs = std::move(next);
     mask = std::move(next_mask);
-    if (step.terminated || step.truncated) break;
+    if (step.terminated || step.truncated)
+      break;
   }
   record.epsilon = learn ? agent.Epsilon() : 0.0;
   record.final_reward = reward;
@@ -41,7 +43,8 @@ TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t s
     EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), learn,
                                       learn ? StepCallback() : on_eval_step);
     record.episode = e + 1;
-    if (on_episode) on_episode(record);
+    if (on_episode)
+      on_episode(record);
     result.final_info = record.final_info;
     result.final_reward = record.final_reward;
     result.curve.push_back(std::move(record));

@@ -30,7 +30,8 @@ BoxSpace UavPositioningEnv::ObservationSpace() const {
 }
 
 ActionMask UavPositioningEnv::ValidActions() const {
-  if (!scenario_.env.action_mask) return {};
+  if (!scenario_.env.action_mask)
+    return {};
   const auto& actions = scenario_.env.actions;
   ActionMask mask(actions.size(), 0);
   bool moves = false;
@@ -40,7 +41,8 @@ ActionMask UavPositioningEnv::ValidActions() const {
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
   }
-  if (!moves) return {};
+  if (!moves)
+    return {};
   return mask;
 }
 

@@ -38,7 +38,7 @@ class UavPositioningEnv : public Env {
   StepInfo Observe();  // the state at the current position (after the last interval)
   Scenario scenario_;
   std::unique_ptr<Reward> reward_;
-  std::unique_ptr<UavNetwork> network_;      // packet fidelity
+  std::unique_ptr<UavNetwork> network_;          // packet fidelity
   std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
   Vec3 position_;
   StepInfo info_;

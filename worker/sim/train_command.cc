@@ -15,7 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // Episodes of train seed N run RngRun N*1000+1, N*1000+2, ...: never the evaluation runs.
-std::uint64_t FirstEpisodeRun(std::uint64_t seed) { return seed * 1000 + 1; }
+std::uint64_t FirstEpisodeRun(std::uint64_t seed) {
+  return seed * 1000 + 1;
+}
 
 nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {
   const Vec3& p = r.final_info.position;
@@ -45,9 +47,12 @@ void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
 
 int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   std::vector<std::string> extra;
-  if (!t.fidelity.empty()) extra.push_back("env.fidelity=" + t.fidelity);
-  if (t.seed >= 0) extra.push_back("agent.seed=" + std::to_string(t.seed));
-  if (t.episodes > 0) extra.push_back("agent.train_episodes=" + std::to_string(t.episodes));
+  if (!t.fidelity.empty())
+    extra.push_back("env.fidelity=" + t.fidelity);
+  if (t.seed >= 0)
+    extra.push_back("agent.seed=" + std::to_string(t.seed));
+  if (t.episodes > 0)
+    extra.push_back("agent.train_episodes=" + std::to_string(t.episodes));
   const Scenario s = LoadScenarioFor(options, extra);
   if (fs::exists(t.out)) {
     throw ConfigError("--out", t.out + " already exists; choose another folder or remove it");
@@ -69,15 +74,17 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     trajectory << "episode,step,action,x,y,z,n_los,throughput_mbps,reward\n";
     int eval_episode = s.agent.train_episodes;
     const auto write_step = [&](int step, int action, const StepResult& r) {
-      if (step == 1) ++eval_episode;
+      if (step == 1)
+        ++eval_episode;
       const Vec3& p = r.info.position;
-      trajectory << eval_episode << ',' << step << ',' << s.env.actions[action] << ',' << p.x
-                 << ',' << p.y << ',' << p.z << ',' << r.info.n_los << ','
-                 << r.info.throughput_mbps << ',' << r.reward << '\n';
+      trajectory << eval_episode << ',' << step << ',' << s.env.actions[action] << ',' << p.x << ','
+                 << p.y << ',' << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ','
+                 << r.reward << '\n';
     };
     const int total = s.agent.train_episodes + s.agent.eval_episodes;
-    const TrainResult result =
-        Train(env, agent, s.agent, FirstEpisodeRun(s.agent.seed), [&](const EpisodeRecord& r) {
+    const TrainResult result = Train(
+        env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
+        [&](const EpisodeRecord& r) {
           WriteCurveRow(curve, r);
           const Vec3& p = r.final_info.position;
           std::fprintf(stderr,
@@ -86,7 +93,8 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
                        r.episode, total, r.evaluation ? "eval" : "train", r.steps, r.epsilon,
                        r.total_reward, r.total_reward / std::max(1, r.steps), p.x, p.y, p.z,
                        r.final_info.n_los);
-        }, write_step);
+        },
+        write_step);
     curve.close();
     trajectory.close();
     agent.Save(partial.string());
@@ -98,11 +106,11 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
       std::cout << summary.dump(2) << std::endl;
     } else {
       const auto& p = result.final_info.position;
-      std::printf("trained %s (%s, seed %llu): final position (%.1f, %.1f, %.1f), nLoS %d/%zu, "
-                  "reward %.4f\npolicy, learning curve and result in %s\n",
-                  s.name.c_str(), s.env.fidelity.c_str(),
-                  static_cast<unsigned long long>(s.agent.seed), p.x, p.y, p.z,
-                  result.final_info.n_los, s.ues.size(), result.final_reward, t.out.c_str());
+      std::printf(
+          "trained %s (%s, seed %llu): final position (%.1f, %.1f, %.1f), nLoS %d/%zu, "
+          "reward %.4f\npolicy, learning curve and result in %s\n",
+          s.name.c_str(), s.env.fidelity.c_str(), static_cast<unsigned long long>(s.agent.seed),
+          p.x, p.y, p.z, result.final_info.n_los, s.ues.size(), result.final_reward, t.out.c_str());
     }
   } catch (...) {
     fs::remove_all(partial, ec);
