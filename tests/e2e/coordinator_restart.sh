@@ -4,10 +4,7 @@
 # campaign completes with nothing lost or doubled.
 source "$(dirname "$0")/lib.sh"
 DB=$WORK/rlpos.db
-"$CAMPAIGN" run "$SRC/tests/e2e/campaigns/kill.json" --workers 2 --db "$DB" --tag "$TAG" \
-  --no-progress >"$WORK/out.txt" 2>"$WORK/err.txt" &
-RUN=$!
-BG_PIDS+=("$RUN")
+start_run "$SRC/tests/e2e/campaigns/kill.json"
 mid_campaign() {
   [ -f "$DB" ] && [ "$(sql "$DB" "SELECT COUNT(*) >= 3 AND SUM(state = 'running') >= 1
     FROM jobs" 2>/dev/null)" = 1 ] && \

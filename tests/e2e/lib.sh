@@ -51,3 +51,12 @@ expect_complete() {  # expect_complete DB TOTAL_JOBS
   expect_eq "metrics rows of non-eval jobs" "$(sql "$db" \
     "SELECT COUNT(*) FROM metrics m JOIN jobs j ON j.id = m.job_id WHERE j.kind != 'eval'")" 0
 }
+
+# Starts `rlpos-campaign run CAMPAIGN` on 2 workers in the background, on $DB and $TAG, with its
+# output in $WORK/out.txt and $WORK/err.txt; its pid in RUN.
+start_run() {  # start_run CAMPAIGN_FILE
+  "$CAMPAIGN" run "$1" --workers 2 --db "$DB" --tag "$TAG" --no-progress \
+    >"$WORK/out.txt" 2>"$WORK/err.txt" &
+  RUN=$!
+  BG_PIDS+=("$RUN")
+}

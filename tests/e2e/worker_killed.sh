@@ -4,10 +4,7 @@
 # counted twice.
 source "$(dirname "$0")/lib.sh"
 DB=$WORK/rlpos.db
-"$CAMPAIGN" run "$SRC/tests/e2e/campaigns/kill.json" --workers 2 --db "$DB" --tag "$TAG" \
-  --no-progress >"$WORK/out.txt" 2>"$WORK/err.txt" &
-RUN=$!
-BG_PIDS+=("$RUN")
+start_run "$SRC/tests/e2e/campaigns/kill.json"
 running_on_w0() {
   [ -f "$DB" ] && [ "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE state = 'running'
     AND kind = 'eval' AND worker_id = '$TAG-w0'" 2>/dev/null)" = 1 ]

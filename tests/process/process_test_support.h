@@ -1,6 +1,6 @@
 #pragma once
-// Shared helpers of the process tests: a temporary folder, files, waiting with a deadline, and
-// which processes of a group are still alive.
+// Shared helpers of the process tests: the file helpers, waiting with a deadline, and which
+// processes of a group are still alive.
 #include <sys/types.h>
 
 #include <chrono>
@@ -8,26 +8,10 @@
 #include <thread>
 #include <vector>
 
+#include "support/temp_dir.h"
 #include "support/wait_for.h"
 
 namespace rlpos::testing {
-
-// A fresh folder under the system's temp dir, removed with everything in it at scope exit.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::string& path() const { return path_; }
-  std::string File(const std::string& name) const { return path_ + "/" + name; }
-
- private:
-  std::string path_;
-};
-
-std::string ReadFile(const std::string& file);
-void WriteFile(const std::string& file, const std::string& text);
 
 // Pids of the processes in group `pgid` that have not ended. Zombies count as ended: the
 // orphans of a killed group are reaped by whoever adopted them, maybe not at once.

@@ -6,25 +6,11 @@
 
 #include "campaign/campaign_spec.h"
 #include "campaign/expansion.h"
+#include "support/temp_dir.h"
 
 namespace rlpos::testing {
 
-// A fresh folder under the system's temp dir, removed with everything in it at scope exit.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::string& path() const { return path_; }
-  std::string File(const std::string& name) const { return path_ + "/" + name; }
-
- private:
-  std::string path_;
-};
-
 std::string SourcePath(const std::string& relative);  // inside the repository
-void WriteFile(const std::string& file, const std::string& text);
 
 CampaignSpec MiniSpec();                  // campaigns/mini.json
 ExpandedCampaign MiniCampaign();          // its jobs
