@@ -114,14 +114,15 @@ struct DqnAgent::Impl {
       torch::NoGradGuard no_grad;
       torch::Tensor next_q = target->forward(next);
       const torch::Tensor penalty =
-          masked ? MaskPenalty(next_masks, action_count) : torch::zeros_like(next_q);
+          masked ? MaskPenalty(next_masks, action_count) : torch::Tensor();
+      const auto allowed_only = [&](const torch::Tensor& q) { return masked ? q + penalty : q; };
       torch::Tensor best;
       if (spec.double_dqn) {
         // The online network picks the action, the target network values it.
-        const torch::Tensor pick = (online->forward(next) + penalty).argmax(1, true);
+        const torch::Tensor pick = allowed_only(online->forward(next)).argmax(1, true);
         best = next_q.gather(1, pick).squeeze(1);
       } else {
-        best = std::get<0>((next_q + penalty).max(1));
+        best = std::get<0>(allowed_only(next_q).max(1));
       }
       target_q = rewards + static_cast<float>(spec.gamma) * not_terminal * best;
     }
