@@ -50,65 +50,92 @@ double MacEfficiency(double phy_rate_mbps, int packet_size) {
   return a.delivered_mbit / phy_rate_mbps * 1e6 / (a.busy_us + lone_backoff_us);
 }
 
-AirtimeEstimate EstimateAirtimeThroughput(const std::vector<AirtimeLink>& links, int packet_size) {
+namespace {
+
+// Mixes a station's own accesses with the slow ones that follow its captures.
+Access Blend(const Access& own, const Access& slow, double slow_share) {
+  auto mix = [&](double a, double b) { return (1.0 - slow_share) * a + slow_share * b; };
+  return {mix(own.mpdus, slow.mpdus), mix(own.ppdu_us, slow.ppdu_us),
+          mix(own.busy_us, slow.busy_us), mix(own.delivered_mbit, slow.delivered_mbit)};
+}
+
+}  // namespace
+
+AirtimeEstimate EstimateAirtimeThroughput(const std::vector<AirtimeLink>& links, int packet_size,
+                                          const CaptureCost& capture) {
   AirtimeEstimate e;
   const std::size_t n = links.size();
   e.throughput_mbps.assign(n, 0.0);
   std::vector<Access> access(n);
   std::vector<double> wanted(n, 0.0);  // accesses per second that would carry the demand
-  std::vector<double> ppdus;           // of the stations that contend
+  std::vector<std::size_t> active;     // the stations that contend
   for (std::size_t i = 0; i < n; ++i) {
     access[i] = FullAccess(links[i].phy_rate_mbps, packet_size, links[i].mpdu_success);
     if (access[i].delivered_mbit <= 0 || links[i].demand_mbps <= 0)
       continue;
     wanted[i] = links[i].demand_mbps / access[i].delivered_mbit;
-    ppdus.push_back(access[i].ppdu_us);
+    active.push_back(i);
   }
-  if (ppdus.empty())
+  if (active.empty())
     return e;
   // Who contends: every active station once the channel is full; at lighter load a station
   // finds the others idle in proportion to the load, so contention grows with it.
   const double lone_backoff_us = SaturatedDcf(1, kCwMin, kCwMax).idle_slots_per_success * kSlotUs;
   double load = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i : active)
     load += wanted[i] * (access[i].busy_us + lone_backoff_us);
   load *= 1e-6;
-  const double active = static_cast<double>(ppdus.size());
-  e.contenders = 1.0 + (active - 1.0) * std::min(1.0, load);
+  const double contenders = static_cast<double>(active.size());
+  e.contenders = 1.0 + (contenders - 1.0) * std::min(1.0, load);
   const DcfContention dcf = SaturatedDcf(e.contenders, kCwMin, kCwMax);
+  std::vector<double> weight(n, 1.0);  // accesses relative to an equal share
+  if (capture.follow_up_rate_mbps > 0 && active.size() > 1) {
+    std::vector<double> snr;
+    for (std::size_t i : active)
+      snr.push_back(links[i].snr_db);
+    const CaptureShares shares = ContendWithCapture(snr, std::min(1.0, load), capture.contention);
+    const Access slow = FullAccess(capture.follow_up_rate_mbps, packet_size);
+    for (std::size_t k = 0; k < active.size(); ++k) {
+      const std::size_t i = active[k];
+      weight[i] = shares.access_weight[k];
+      access[i] = Blend(access[i], slow, shares.capture_share[k]);
+      wanted[i] = links[i].demand_mbps / access[i].delivered_mbit;
+    }
+  }
   // A collision lasts as long as the longer of the two PPDUs (collisions of three are rare).
   double longer = 0.0;
-  for (double a : ppdus)
-    for (double b : ppdus)
-      longer += std::max(a, b);
-  longer /= active * active;
+  for (std::size_t i : active)
+    for (std::size_t j : active)
+      longer += std::max(access[i].ppdu_us, access[j].ppdu_us);
+  longer /= contenders * contenders;
   const double contention_us = dcf.idle_slots_per_success * kSlotUs +
                                dcf.collisions_per_success * (longer + kAccessOverheadUs);
-  auto airtime_at = [&](double share) {  // share: accesses per second per station
+  auto airtime_at = [&](double share) {  // share: accesses per second of an equal-weight station
     double airtime = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      airtime += std::min(wanted[i], share) * (access[i].busy_us + contention_us) * 1e-6;
-    }
+    for (std::size_t i : active)
+      airtime +=
+          std::min(wanted[i], share * weight[i]) * (access[i].busy_us + contention_us) * 1e-6;
     return airtime;
   };
-  const double max_wanted = *std::max_element(wanted.begin(), wanted.end());
-  e.airtime_demanded = airtime_at(max_wanted);
-  // Each UE gets min(wanted, A) accesses with A the largest share that fits in the channel.
-  double share = max_wanted;
+  double max_share = 0.0;  // the share at which every demand is met
+  for (std::size_t i : active)
+    max_share = std::max(max_share, wanted[i] / weight[i]);
+  e.airtime_demanded = airtime_at(max_share);
+  // Each UE gets min(wanted, weight * A) accesses with A the largest share that fits.
+  double share = max_share;
   if (e.airtime_demanded > 1.0) {
-    double lo = 0.0, hi = max_wanted;
+    double lo = 0.0, hi = max_share;
     for (int k = 0; k < 100; ++k) {
       const double mid = 0.5 * (lo + hi);
       (airtime_at(mid) > 1.0 ? hi : lo) = mid;
     }
     share = lo;
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (wanted[i] <= 0)
-      continue;
+  for (std::size_t i : active) {
     // A met demand is the demand itself, not a round trip through accesses per second.
-    e.throughput_mbps[i] =
-        wanted[i] <= share ? links[i].demand_mbps : share * access[i].delivered_mbit;
+    e.throughput_mbps[i] = wanted[i] <= share * weight[i]
+                               ? links[i].demand_mbps
+                               : share * weight[i] * access[i].delivered_mbit;
     e.aggregate_mbps += e.throughput_mbps[i];
   }
   return e;

@@ -6,8 +6,12 @@
 // the channel longest per access and slows everyone) - water-filling over the channel time each
 // access costs. That cost includes the contention of the stations that want the channel at once
 // (idle backoff slots and collisions, dcf_contention.h), which is what makes a crowded channel
-// carry far less than its PHY rates suggest.
+// carry far less than its PHY rates suggest. With a capture model, stations of unequal SNR share
+// the accesses unequally and the strong ones pay for their captures with slow A-MPDUs
+// (capture_contention.h).
 #include <vector>
+
+#include "metrics/capture_contention.h"
 
 namespace rlpos {
 
@@ -17,6 +21,14 @@ struct AirtimeLink {
   // Probability that an MPDU sent at this rate arrives (1 - PER at the link's SNR); lost MPDUs
   // are sent again in a later A-MPDU, so they cost airtime without carrying data.
   double mpdu_success = 1.0;
+  double snr_db = 0.0;  // at the receiver: who captures whom
+};
+
+// What a capture costs: the station's next A-MPDU goes at `follow_up_rate_mbps` (the PHY's
+// lowest rate). A rate of 0 leaves capture out and gives every station equal accesses.
+struct CaptureCost {
+  CaptureParams contention;
+  double follow_up_rate_mbps = 0.0;
 };
 
 struct AirtimeEstimate {
@@ -43,6 +55,7 @@ Access FullAccess(double phy_rate_mbps, int packet_size, double mpdu_success = 1
 // of `packet_size`-byte packets over the access's channel time plus the mean backoff.
 double MacEfficiency(double phy_rate_mbps, int packet_size);
 
-AirtimeEstimate EstimateAirtimeThroughput(const std::vector<AirtimeLink>& links, int packet_size);
+AirtimeEstimate EstimateAirtimeThroughput(const std::vector<AirtimeLink>& links, int packet_size,
+                                          const CaptureCost& capture = {});
 
 }  // namespace rlpos

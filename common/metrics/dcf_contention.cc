@@ -6,6 +6,10 @@
 namespace rlpos {
 namespace {
 
+int BackoffStages(int cw_min, int cw_max) {
+  return std::max(0, static_cast<int>(std::lround(std::log2((cw_max + 1.0) / (cw_min + 1.0)))));
+}
+
 // Bianchi's tau for a conditional collision probability p, in the form without the 0/0 at
 // p = 1/2: tau = 2 / (1 + W + p W sum_{k<m} (2p)^k), W = CWmin + 1, m backoff stages.
 double Tau(double p, double w, int stages) {
@@ -17,11 +21,14 @@ double Tau(double p, double w, int stages) {
 
 }  // namespace
 
+double BackoffTau(double p, int cw_min, int cw_max) {
+  return Tau(p, cw_min + 1.0, BackoffStages(cw_min, cw_max));
+}
+
 DcfContention SaturatedDcf(double stations, int cw_min, int cw_max) {
   const double n = std::max(1.0, stations);
   const double w = cw_min + 1.0;
-  const int stages =
-      std::max(0, static_cast<int>(std::lround(std::log2((cw_max + 1.0) / (cw_min + 1.0)))));
+  const int stages = BackoffStages(cw_min, cw_max);
   // p = 1 - (1 - tau(p))^(n-1): the left side grows and the right side falls with p, so the
   // fixed point is unique; bisection finds it.
   double lo = 0.0, hi = 1.0;

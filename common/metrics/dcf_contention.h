@@ -15,6 +15,10 @@ struct DcfContention {
   double collisions_per_success = 0.0;  // collisions per successful transmission
 };
 
+// Bianchi's per-slot transmission probability of a station whose transmissions fail with
+// probability `p`, under binary exponential backoff from cw_min to cw_max.
+double BackoffTau(double p, int cw_min = 15, int cw_max = 1023);
+
 // `stations` may be fractional (an effective number of contenders); below 1 it counts as 1.
 // cw_min and cw_max: the access category's contention window bounds (AC_BE: 15, 1023).
 DcfContention SaturatedDcf(double stations, int cw_min = 15, int cw_max = 1023);

@@ -82,5 +82,49 @@ TEST(AirtimeModel, SmallDemandsAreMetBeforeSharing) {
   EXPECT_GT(e.throughput_mbps[1], 5.0);
 }
 
+CaptureCost Capture(double probability) {
+  CaptureCost cost;
+  cost.contention.probability = probability;
+  cost.follow_up_rate_mbps = 58.5;
+  return cost;
+}
+
+std::vector<AirtimeLink> Crowd(const std::vector<double>& snr_db) {
+  std::vector<AirtimeLink> links;
+  for (double snr : snr_db)
+    links.push_back({1000, 780, 1.0, snr});
+  return links;
+}
+
+TEST(AirtimeModel, CaptureNeedsUnequalStations) {
+  const auto equal = Crowd(std::vector<double>(20, 30.0));
+  const auto plain = EstimateAirtimeThroughput(equal, 1400);
+  const auto with_capture = EstimateAirtimeThroughput(equal, 1400, Capture(0.35));
+  EXPECT_NEAR(with_capture.aggregate_mbps, plain.aggregate_mbps, 1e-9);
+}
+
+TEST(AirtimeModel, SpreadSnrsFavourTheStrongAndCostTheAggregate) {
+  // The same rate for everyone: without capture the SNRs would not matter at all.
+  std::vector<double> snr(20, 30.0);
+  for (int i = 0; i < 5; ++i)
+    snr[i] = 38.0;
+  const auto spread = EstimateAirtimeThroughput(Crowd(snr), 1400, Capture(0.35));
+  const auto equal =
+      EstimateAirtimeThroughput(Crowd(std::vector<double>(20, 30.0)), 1400, Capture(0.35));
+  EXPECT_LT(spread.aggregate_mbps, 0.95 * equal.aggregate_mbps);
+  EXPECT_GT(spread.throughput_mbps[0], 1.2 * spread.throughput_mbps[19]);
+  EXPECT_NEAR(spread.throughput_mbps[0], spread.throughput_mbps[4], 1e-9);
+  // No capture model, no effect.
+  const auto ignored = EstimateAirtimeThroughput(Crowd(snr), 1400);
+  EXPECT_NEAR(ignored.throughput_mbps[0], ignored.throughput_mbps[19], 1e-9);
+}
+
+TEST(AirtimeModel, LightLoadLeavesMetDemandsMet) {
+  const std::vector<AirtimeLink> links = {{20, 780, 1.0, 40}, {20, 780, 1.0, 20}};
+  const auto e = EstimateAirtimeThroughput(links, 1400, Capture(1.0));
+  EXPECT_DOUBLE_EQ(e.throughput_mbps[0], 20.0);
+  EXPECT_DOUBLE_EQ(e.throughput_mbps[1], 20.0);
+}
+
 }  // namespace
 }  // namespace rlpos
