@@ -1,5 +1,8 @@
-// Agreement of the analytic throughput estimate with packet-level ns-3 over a grid of UAV
+// Agreement of the analytic throughput estimate with packet-level ns-3 over two grids of UAV
 // positions: Spearman rank correlation and median relative error.
+//   zone  5 x 3 points spread over the whole zone at 10 and 30 m (near and far from the UEs)
+//   ues   3 x 3 x 3 points over the UEs' bounding box, at 10, 20 and 30 m: where a positioner
+//         ends up, and where the differences are small
 //   rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]
 // --positions also prints each position's analytic and packet-level throughput.
 #include <algorithm>
@@ -44,6 +47,78 @@ double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
   return sab / std::sqrt(saa * sbb);
 }
 
+std::vector<rlpos::Vec3> ZoneGrid(const rlpos::Scenario& s) {
+  const rlpos::Box& zone = s.uav.zone;
+  std::vector<rlpos::Vec3> grid;
+  for (double z : {10.0, 30.0}) {
+    for (double fx : {0.1, 0.3, 0.5, 0.7, 0.9}) {
+      for (double fy : {0.15, 0.5, 0.85}) {
+        grid.push_back({zone.xmin + fx * (zone.xmax - zone.xmin),
+                        zone.ymin + fy * (zone.ymax - zone.ymin),
+                        std::clamp(z, zone.zmin, zone.zmax)});
+      }
+    }
+  }
+  return grid;
+}
+
+std::vector<rlpos::Vec3> UeGrid(const rlpos::Scenario& s) {
+  rlpos::Box box{1e9, -1e9, 1e9, -1e9, 0, 0};
+  for (const auto& ue : s.ues) {
+    box.xmin = std::min(box.xmin, ue.position.x);
+    box.xmax = std::max(box.xmax, ue.position.x);
+    box.ymin = std::min(box.ymin, ue.position.y);
+    box.ymax = std::max(box.ymax, ue.position.y);
+  }
+  const rlpos::Box& zone = s.uav.zone;
+  std::vector<rlpos::Vec3> grid;
+  for (double z : {10.0, 20.0, 30.0}) {
+    for (double fx : {0.0, 0.5, 1.0}) {
+      for (double fy : {0.0, 0.5, 1.0}) {
+        grid.push_back({std::clamp(box.xmin + fx * (box.xmax - box.xmin), zone.xmin, zone.xmax),
+                        std::clamp(box.ymin + fy * (box.ymax - box.ymin), zone.ymin, zone.ymax),
+                        std::clamp(z, zone.zmin, zone.zmax)});
+      }
+    }
+  }
+  return grid;
+}
+
+void Compare(const rlpos::Scenario& s, const char* label, std::vector<rlpos::Vec3> grid,
+             bool per_position) {
+  grid.erase(
+      std::remove_if(grid.begin(), grid.end(),
+                     [&](const rlpos::Vec3& p) { return rlpos::BuildingContaining(s, p) >= 0; }),
+      grid.end());
+  std::vector<double> analytic, packet;
+  {
+    rlpos::AnalyticEvaluator evaluator(s);
+    for (const auto& p : grid)
+      analytic.push_back(evaluator.Evaluate(p).throughput_mbps);
+  }
+  for (const auto& p : grid)
+    packet.push_back(rlpos::EvaluatePosition(s, p).aggregate_throughput_mbps);
+  std::vector<double> errors;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (per_position) {
+      std::printf("%s (%4.0f, %4.0f, %4.0f)  analytic %7.1f  packet %7.1f Mbit/s\n", label,
+                  grid[i].x, grid[i].y, grid[i].z, analytic[i], packet[i]);
+    }
+    if (packet[i] > 0)
+      errors.push_back(std::abs(analytic[i] - packet[i]) / packet[i]);
+  }
+  std::sort(errors.begin(), errors.end());
+  const double median_error = errors.empty() ? NAN : errors[errors.size() / 2];
+  std::printf(
+      "%-8s %-5s %zu positions, %.1f s each: Spearman %.3f, median |error| %.1f %%, mean "
+      "analytic %.1f vs packet %.1f Mbit/s\n",
+      s.name.c_str(), label, grid.size(), s.simulation.duration - s.simulation.warmup,
+      Pearson(Ranks(analytic), Ranks(packet)), 100 * median_error,
+      std::accumulate(analytic.begin(), analytic.end(), 0.0) / analytic.size(),
+      std::accumulate(packet.begin(), packet.end(), 0.0) / packet.size());
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,42 +129,8 @@ int main(int argc, char** argv) {
   }
   rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
   s.simulation.duration = s.simulation.warmup + (argc > 2 ? std::stod(argv[2]) : 2.0);
-  std::vector<rlpos::Vec3> grid;
-  for (double z : {10.0, 30.0}) {
-    for (double x : {10.0, 30.0, 50.0, 70.0, 90.0}) {
-      for (double y : {15.0, 50.0, 85.0}) {
-        if (rlpos::BuildingContaining(s, {x, y, z}) < 0)
-          grid.push_back({x, y, z});
-      }
-    }
-  }
-  std::vector<double> analytic, packet;
-  {
-    rlpos::AnalyticEvaluator evaluator(s);
-    for (const auto& p : grid)
-      analytic.push_back(evaluator.Evaluate(p).throughput_mbps);
-  }
-  for (const auto& p : grid) {
-    packet.push_back(rlpos::EvaluatePosition(s, p).aggregate_throughput_mbps);
-  }
   const bool per_position = argc > 3 && std::string(argv[3]) == "--positions";
-  std::vector<double> errors;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    if (per_position) {
-      std::printf("(%4.0f, %4.0f, %4.0f)  analytic %7.1f  packet %7.1f Mbit/s\n", grid[i].x,
-                  grid[i].y, grid[i].z, analytic[i], packet[i]);
-    }
-    if (packet[i] > 0)
-      errors.push_back(std::abs(analytic[i] - packet[i]) / packet[i]);
-  }
-  std::sort(errors.begin(), errors.end());
-  const double median_error = errors.empty() ? NAN : errors[errors.size() / 2];
-  std::printf(
-      "%-8s %zu positions, %.1f s each: Spearman %.3f, median |error| %.1f %%, mean "
-      "analytic %.1f vs packet %.1f Mbit/s\n",
-      s.name.c_str(), grid.size(), s.simulation.duration - s.simulation.warmup,
-      Pearson(Ranks(analytic), Ranks(packet)), 100 * median_error,
-      std::accumulate(analytic.begin(), analytic.end(), 0.0) / analytic.size(),
-      std::accumulate(packet.begin(), packet.end(), 0.0) / packet.size());
+  Compare(s, "zone", ZoneGrid(s), per_position);
+  Compare(s, "ues", UeGrid(s), per_position);
   return 0;
 }

@@ -97,6 +97,7 @@ AgentSpec SmallSpec(std::uint64_t seed) {
   spec.gamma = 0.9;
   spec.warmup_steps = 32;
   spec.target_update_interval = 50;
+  spec.epsilon_end = 1.0;  // random exploration throughout, as in the paper
   spec.train_episodes = 60;
   spec.eval_episodes = 1;
   spec.seed = seed;
@@ -109,9 +110,11 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   EXPECT_EQ(spec.hidden, (std::vector<int>{32, 32}));
   EXPECT_DOUBLE_EQ(spec.learning_rate, 1e-2);
   EXPECT_EQ(spec.batch_size, 64);
-  EXPECT_DOUBLE_EQ(spec.epsilon_start, 1.0);
-  EXPECT_DOUBLE_EQ(spec.epsilon_end, 1.0);
   EXPECT_EQ(spec.train_episodes, 10);
+  // Not the paper's (epsilon 1 throughout): from 1 to 0.05 over the first 8 episodes.
+  EXPECT_DOUBLE_EQ(spec.epsilon_start, 1.0);
+  EXPECT_DOUBLE_EQ(spec.epsilon_end, 0.05);
+  EXPECT_EQ(spec.epsilon_decay_steps, 8000);
   // Not the paper's: the target network is refreshed once per paper episode (100 s / 0.1 s),
   // which is what let scenario A's greedy policy beat the baseline (README, RL).
   EXPECT_EQ(spec.target_update_interval, 1000);

@@ -12,7 +12,7 @@ namespace {
 // stronger one. Fitted to packet-level runs of scenario A (see rlpos-bench-calibration): it
 // depends on how the two PPDUs overlap (a short BlockAckRequest against a long A-MPDU leaves
 // most of the A-MPDU intact), which the analytic model does not follow.
-constexpr double kCaptureProbability = 0.35;
+constexpr double kCaptureProbability = 0.2;
 
 }  // namespace
 
