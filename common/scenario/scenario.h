@@ -120,7 +120,7 @@ struct AgentSpec {
   double learning_rate = 1e-2;
   std::int64_t replay_capacity = 1000000;
   int batch_size = 64;
-  double gamma = 0.9;          // not in the paper; 0.9 learned B and C reliably (README)
+  double gamma = 0.9;  // not in the paper; 0.9 learned B and C reliably (README)
   // The paper trains with epsilon 1 (random moves) throughout. Decaying it to 0.05 over the
   // first 8 of the 10 episodes lets the greedy policy correct itself where it goes, instead of
   // extrapolating from random flights (README, RL).
