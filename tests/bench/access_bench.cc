@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "config/config_error.h"
 #include "environment/uav_network.h"
 #include "sim/scenario_loading.h"
 
@@ -52,11 +53,26 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: rlpos-bench-access SCENARIO.json X,Y,Z [DURATION_S]\n");
     return 2;
   }
+  rlpos::Vec3 position;
+  rlpos::Scenario s;
   try {
-    rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
-    const rlpos::Vec3 position = rlpos::ParsePosition(argv[2], "position");
+    position = rlpos::ParsePosition(argv[2], "position");
+  } catch (const rlpos::ConfigError& e) {
+    std::fprintf(stderr, "error: %s\n", e.describe().c_str());
+    return 1;
+  }
+  try {
+    s = rlpos::LoadScenario(argv[1], {});
     if (argc > 3)
       s.simulation.duration = s.simulation.warmup + std::stod(argv[3]);
+  } catch (const rlpos::ConfigError& e) {
+    std::fprintf(stderr, "error: %s: %s\n", argv[1], e.describe().c_str());
+    return 1;
+  } catch (const std::exception&) {
+    std::fprintf(stderr, "error: duration: %s is not a number\n", argv[3]);
+    return 1;
+  }
+  try {
     rlpos::UavNetwork network(s, position);
     if (ns3::NodeList::GetNNodes() != s.ues.size() + 1) {
       std::fprintf(stderr, "error: expected %zu nodes (the UEs and the UAV), found %u\n",

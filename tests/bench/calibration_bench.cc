@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "config/config_error.h"
 #include "environment/uav_network.h"
 #include "gym/analytic_evaluator.h"
 #include "scenario/scenario_checks.h"
@@ -127,8 +128,17 @@ int main(int argc, char** argv) {
                  "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]\n");
     return 2;
   }
-  rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
-  s.simulation.duration = s.simulation.warmup + (argc > 2 ? std::stod(argv[2]) : 2.0);
+  rlpos::Scenario s;
+  try {
+    s = rlpos::LoadScenario(argv[1], {});
+    s.simulation.duration = s.simulation.warmup + (argc > 2 ? std::stod(argv[2]) : 2.0);
+  } catch (const rlpos::ConfigError& e) {
+    std::fprintf(stderr, "error: %s: %s\n", argv[1], e.describe().c_str());
+    return 1;
+  } catch (const std::exception&) {
+    std::fprintf(stderr, "error: duration: %s is not a number\n", argv[2]);
+    return 1;
+  }
   const bool per_position = argc > 3 && std::string(argv[3]) == "--positions";
   Compare(s, "zone", ZoneGrid(s), per_position);
   Compare(s, "ues", UeGrid(s), per_position);
