@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -128,17 +129,23 @@ int main(int argc, char** argv) {
                  "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]\n");
     return 2;
   }
+  double duration = 2.0;
+  if (argc > 2) {
+    char* end = nullptr;
+    duration = std::strtod(argv[2], &end);
+    if (*end != '\0' || !(duration > 0)) {
+      std::fprintf(stderr, "error: duration: %s is not a positive number of seconds\n", argv[2]);
+      return 1;
+    }
+  }
   rlpos::Scenario s;
   try {
     s = rlpos::LoadScenario(argv[1], {});
-    s.simulation.duration = s.simulation.warmup + (argc > 2 ? std::stod(argv[2]) : 2.0);
   } catch (const rlpos::ConfigError& e) {
     std::fprintf(stderr, "error: %s: %s\n", argv[1], e.describe().c_str());
     return 1;
-  } catch (const std::exception&) {
-    std::fprintf(stderr, "error: duration: %s is not a number\n", argv[2]);
-    return 1;
   }
+  s.simulation.duration = s.simulation.warmup + duration;
   const bool per_position = argc > 3 && std::string(argv[3]) == "--positions";
   Compare(s, "zone", ZoneGrid(s), per_position);
   Compare(s, "ues", UeGrid(s), per_position);
