@@ -8,12 +8,13 @@
 #include <ns3/wifi-module.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bench_scenario.h"
 #include "config/config_error.h"
 #include "environment/uav_network.h"
 #include "sim/scenario_loading.h"
@@ -55,30 +56,17 @@ int main(int argc, char** argv) {
     return 2;
   }
   rlpos::Vec3 position;
-  double duration = -1.0;  // < 0: the scenario's
-  rlpos::Scenario s;
   try {
     position = rlpos::ParsePosition(argv[2], "position");
   } catch (const rlpos::ConfigError& e) {
     std::fprintf(stderr, "error: %s\n", e.describe().c_str());
     return 1;
   }
-  if (argc > 3) {
-    char* end = nullptr;
-    duration = std::strtod(argv[3], &end);
-    if (*end != '\0' || !(duration > 0)) {
-      std::fprintf(stderr, "error: duration: %s is not a positive number of seconds\n", argv[3]);
-      return 1;
-    }
-  }
-  try {
-    s = rlpos::LoadScenario(argv[1], {});
-  } catch (const rlpos::ConfigError& e) {
-    std::fprintf(stderr, "error: %s: %s\n", argv[1], e.describe().c_str());
+  const std::optional<rlpos::Scenario> scenario =
+      LoadBenchScenario(argv[1], argc > 3 ? argv[3] : nullptr);
+  if (!scenario)
     return 1;
-  }
-  if (duration > 0)
-    s.simulation.duration = s.simulation.warmup + duration;
+  const rlpos::Scenario& s = *scenario;
   try {
     rlpos::UavNetwork network(s, position);
     if (ns3::NodeList::GetNNodes() != s.ues.size() + 1) {

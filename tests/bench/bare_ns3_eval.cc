@@ -89,7 +89,8 @@ int main(int argc, char** argv) {
   phy.Set("TxPowerEnd", DoubleValue(w["tx_power"]));
   phy.Set("TxGain", DoubleValue(w["antenna_gain"]));
   phy.Set("RxGain", DoubleValue(w["antenna_gain"]));
-  phy.Set("RxNoiseFigure", DoubleValue(w["noise_floor"].get<double>() + 174.0 - 10 * std::log10(160e6)));
+  phy.Set("RxNoiseFigure",
+          DoubleValue(w["noise_floor"].get<double>() + 174.0 - 10 * std::log10(160e6)));
   WifiHelper wifi;
   wifi.SetStandard(WIFI_STANDARD_80211ac);
   wifi.SetRemoteStationManager("ns3::IdealWifiManager");
@@ -141,7 +142,8 @@ int main(int argc, char** argv) {
   Simulator::Stop(Seconds(duration + 0.5));
   Simulator::Run();
   uint64_t bytes = 0;
-  for (uint32_t i = 0; i < sinks.GetN(); ++i) bytes += DynamicCast<PacketSink>(sinks.Get(i))->GetTotalRx();
+  for (uint32_t i = 0; i < sinks.GetN(); ++i)
+    bytes += DynamicCast<PacketSink>(sinks.Get(i))->GetTotalRx();
   std::cout << "received " << bytes << " bytes in the whole run\n";
   Simulator::Destroy();
   return 0;

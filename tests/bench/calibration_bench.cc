@@ -8,16 +8,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "config/config_error.h"
+#include "bench_scenario.h"
 #include "environment/uav_network.h"
 #include "gym/analytic_evaluator.h"
 #include "scenario/scenario_checks.h"
-#include "sim/scenario_loading.h"
 
 namespace {
 
@@ -129,23 +128,11 @@ int main(int argc, char** argv) {
                  "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]\n");
     return 2;
   }
-  double duration = 2.0;
-  if (argc > 2) {
-    char* end = nullptr;
-    duration = std::strtod(argv[2], &end);
-    if (*end != '\0' || !(duration > 0)) {
-      std::fprintf(stderr, "error: duration: %s is not a positive number of seconds\n", argv[2]);
-      return 1;
-    }
-  }
-  rlpos::Scenario s;
-  try {
-    s = rlpos::LoadScenario(argv[1], {});
-  } catch (const rlpos::ConfigError& e) {
-    std::fprintf(stderr, "error: %s: %s\n", argv[1], e.describe().c_str());
+  const std::optional<rlpos::Scenario> scenario =
+      LoadBenchScenario(argv[1], argc > 2 ? argv[2] : "2");
+  if (!scenario)
     return 1;
-  }
-  s.simulation.duration = s.simulation.warmup + duration;
+  const rlpos::Scenario& s = *scenario;
   const bool per_position = argc > 3 && std::string(argv[3]) == "--positions";
   Compare(s, "zone", ZoneGrid(s), per_position);
   Compare(s, "ues", UeGrid(s), per_position);
