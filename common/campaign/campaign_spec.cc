@@ -1,16 +1,17 @@
 #include "campaign/campaign_spec.h"
 
-#include "campaign/job_argv.h"
-
 #include <algorithm>
 #include <filesystem>
 #include <set>
 
-#include "campaign/job_argv.h"
+#include "config/number_text.h"
 #include "config/config_error.h"
 #include "config/did_you_mean.h"
 #include "config/object_reader.h"
 #include "scenario/scenario_parser.h"
+#include "wire/identifiers.h"
+#include "wire/job_order.h"
+#include "wire/limits.h"
 
 namespace rlpos {
 namespace {
@@ -154,8 +155,7 @@ EvalSettings ReadEval(const json& v) {
 }
 
 CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
-                                   const std::filesystem::path& base_dir,
-                                   const EvalSettings& eval) {
+                                   const ScenarioSource& source, const EvalSettings& eval) {
   CampaignScenario entry;
   std::string file_path = path;  // where a problem with the file itself is reported
   std::string set_path;
@@ -183,19 +183,7 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
   }
   if (entry.file.empty()) throw ConfigError(file_path, "the file name is empty");
 
-  const std::filesystem::path file(entry.file);
-  entry.path = (file.is_absolute() ? file : std::filesystem::absolute(base_dir / file))
-                   .lexically_normal()
-                   .string();
-  std::error_code status_error;
-  if (!std::filesystem::is_regular_file(entry.path, status_error)) {
-    throw ConfigError(file_path, "scenario file \"" + entry.path + "\" does not exist");
-  }
-  try {
-    entry.document = ReadJsonFile(entry.path);
-  } catch (const ConfigError& e) {
-    throw ConfigError(file_path, "scenario file \"" + entry.path + "\": " + e.problem());
-  }
+  entry.document = source(entry.file, file_path, entry.path);
 
   // Validate what the evals will run: the campaign's eval settings, then the entry's own
   // overrides (which win, as later --set arguments do on the rlpos-sim command line).
@@ -207,9 +195,13 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
   }
   for (std::size_t i = 0; i < entry.overrides.size(); ++i) {
     try {
+      // Overrides travel to the workers: they are held to what a worker accepts.
+      CheckOverride(ParseOverride(entry.overrides[i]));
       ApplyOverrides(effective, {entry.overrides[i]});
     } catch (const ConfigError& e) {
       throw ConfigError(JoinPath(set_path, i), e.describe());
+    } catch (const std::invalid_argument& e) {
+      throw ConfigError(JoinPath(set_path, i), e.what());
     }
   }
   try {
@@ -217,10 +209,10 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
   } catch (const ConfigError& e) {
     throw ConfigError(path, entry.file + ": " + e.describe());
   }
-  if (entry.scenario.name.empty() || entry.scenario.name.find('/') != std::string::npos) {
-    // Job keys are "<kind>/<scenario>/...": a slash would make them ambiguous.
+  if (!wire::IsSafeName(entry.scenario.name, wire::kMaxNameLength)) {
+    // Job keys are "<kind>/<scenario>/..." and name the workers' folders.
     throw ConfigError(path, entry.file + ": scenario name \"" + entry.scenario.name +
-                                "\" must be non-empty and contain no '/'");
+                                "\" must be 1-128 of [A-Za-z0-9._@+-]");
   }
   return entry;
 }
@@ -238,7 +230,40 @@ bool CampaignSpec::Uses(const std::string& positioner) const {
 
 bool CampaignSpec::NeedsTraining() const { return Uses("rl") || Uses("offsets"); }
 
+ScenarioSource FileScenarioSource(const std::string& base_dir) {
+  return [base_dir](const std::string& file_name, const std::string& where, std::string& path) {
+    const std::filesystem::path file(file_name);
+    path = (file.is_absolute() ? file : std::filesystem::absolute(base_dir / file))
+               .lexically_normal()
+               .string();
+    std::error_code status_error;
+    if (!std::filesystem::is_regular_file(path, status_error)) {
+      throw ConfigError(where, "scenario file \"" + path + "\" does not exist");
+    }
+    try {
+      return ReadJsonFile(path);
+    } catch (const ConfigError& e) {
+      throw ConfigError(where, "scenario file \"" + path + "\": " + e.problem());
+    }
+  };
+}
+
+ScenarioSource SentScenarioSource(const std::map<std::string, json>& documents) {
+  return [&documents](const std::string& file_name, const std::string& where, std::string& path) {
+    const auto it = documents.find(file_name);
+    if (it == documents.end()) {
+      throw ConfigError(where, "scenario \"" + file_name + "\" was not sent with the campaign");
+    }
+    path = file_name;
+    return it->second;
+  };
+}
+
 CampaignSpec ParseCampaign(const json& document, const std::string& base_dir) {
+  return ParseCampaign(document, FileScenarioSource(base_dir));
+}
+
+CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
   ObjectReader r(document, "");
   CampaignSpec spec;
   if (!r.Has("name")) MissingKey(document, "", "name", kCampaignKeys, "");
@@ -255,7 +280,7 @@ CampaignSpec ParseCampaign(const json& document, const std::string& base_dir) {
   NonEmptyArray(*scenarios, "/scenarios");
   for (std::size_t i = 0; i < scenarios->size(); ++i) {
     const std::string path = JoinPath("/scenarios", i);
-    CampaignScenario entry = ReadScenarioEntry((*scenarios)[i], path, base_dir, spec.eval);
+    CampaignScenario entry = ReadScenarioEntry((*scenarios)[i], path, source, spec.eval);
     for (std::size_t j = 0; j < spec.scenarios.size(); ++j) {
       if (spec.scenarios[j].scenario.name == entry.scenario.name) {
         throw ConfigError(path, "scenario name \"" + entry.scenario.name +

@@ -3,6 +3,8 @@
 // campaign JSON with every field validated (ConfigError naming the JSON path); each scenario is
 // parsed and validated too, so a campaign never reaches the workers with a broken scenario.
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -18,7 +20,7 @@ const std::vector<std::string>& AllPositioners();
 
 struct CampaignScenario {
   std::string file;                    // as written in the campaign
-  std::string path;                    // absolute path handed to rlpos-sim (--scenario)
+  std::string path;                    // where it was read from (messages only)
   std::vector<std::string> overrides;  // "set": handed to rlpos-sim as --set, in order
   nlohmann::json document;             // the scenario file as read (before overrides)
   Scenario scenario;                   // parsed with the eval settings and overrides applied
@@ -50,8 +52,20 @@ struct CampaignSpec {
   bool NeedsTraining() const;
 };
 
+// Where a campaign's scenario documents come from: given the file name as the campaign writes it
+// and the JSON path to blame, returns the document and sets `path` to where it came from.
+// Throws ConfigError.
+using ScenarioSource = std::function<nlohmann::json(const std::string& file,
+                                                    const std::string& where, std::string& path)>;
+// Files relative to `base_dir`.
+ScenarioSource FileScenarioSource(const std::string& base_dir);
+// Documents sent with the campaign, by file name (the coordinator never opens a path it was
+// sent). The map must outlive the source.
+ScenarioSource SentScenarioSource(const std::map<std::string, nlohmann::json>& documents);
+
 // `base_dir` is the folder scenario paths are relative to. Throws ConfigError.
 CampaignSpec ParseCampaign(const nlohmann::json& document, const std::string& base_dir);
+CampaignSpec ParseCampaign(const nlohmann::json& document, const ScenarioSource& source);
 
 // Reads a campaign file; scenario paths are relative to its folder. Throws ConfigError; like
 // ReadJsonFile, errors about the file itself have an empty path (callers prefix the file name).

@@ -1,59 +1,26 @@
 #include "campaign/expansion.h"
 
 #include "campaign/campaign_id.h"
-#include "campaign/job_argv.h"
 
 namespace rlpos {
 namespace {
 
-void AppendOverrides(std::vector<std::string>& argv, const std::vector<std::string>& overrides) {
-  for (const auto& o : overrides) {
-    argv.push_back("--set");
-    argv.push_back(o);
-  }
+std::vector<ScenarioOverride> Overrides(const CampaignScenario& s) {
+  std::vector<ScenarioOverride> out;
+  for (const auto& text : s.overrides) out.push_back(ParseOverride(text));
+  return out;
 }
 
-std::vector<std::string> TrainArgv(const CampaignSpec& spec, const CampaignScenario& s,
-                                   std::uint64_t seed) {
-  std::vector<std::string> argv{kSimBinary, "train",        "--scenario", s.path,
-                                "--seed",   std::to_string(seed), "--fidelity", spec.train.fidelity,
-                                "--out",    kOutDirPlaceholder,   "--json"};
-  if (spec.train.episodes) {
-    AppendOverrides(argv, {"agent.train_episodes=" + std::to_string(*spec.train.episodes)});
-  }
-  // The scenario as the campaign validated it (a packet-level env simulates with these too).
-  AppendOverrides(argv, EvalOverrides(spec.eval));
-  AppendOverrides(argv, s.overrides);
-  return argv;
-}
-
-std::vector<std::string> PositionArgv(const CampaignSpec& spec, const CampaignScenario& s,
-                                      const std::string& positioner) {
-  std::vector<std::string> argv{kSimBinary,     "position", "--scenario", s.path,
-                                "--positioner", positioner, "--json"};
-  // The oracle re-scores its best positions at packet level with the eval settings.
-  AppendOverrides(argv, EvalOverrides(spec.eval));
-  AppendOverrides(argv, s.overrides);
-  return argv;
-}
-
-std::vector<std::string> EvalArgv(const CampaignSpec& spec, const CampaignScenario& s,
-                                  std::uint64_t run) {
-  std::vector<std::string> argv{kSimBinary, "eval",  "--scenario", s.path, "--position",
-                                kPositionPlaceholder, "--run", std::to_string(run)};
-  if (spec.eval.duration) {
-    argv.push_back("--duration");
-    argv.push_back(FormatNumber(*spec.eval.duration));
-  }
-  argv.push_back("--json");
-  argv.push_back("--no-progress");
-  // Campaign settings first, the scenario's own overrides last: on the rlpos-sim command line a
-  // later --set wins, and the scenario entry is the more specific of the two.
-  if (spec.eval.warmup) {
-    AppendOverrides(argv, {"simulation.warmup=" + FormatNumber(*spec.eval.warmup)});
-  }
-  AppendOverrides(argv, s.overrides);
-  return argv;
+// The settings every job of a scenario shares: the campaign's eval settings (a packet-level env
+// and the oracle's re-scoring simulate with them too) and the scenario entry's overrides.
+JobParams ScenarioParams(const CampaignSpec& spec, const CampaignScenario& s, JobKind kind) {
+  JobParams p;
+  p.kind = kind;
+  p.scenario = s.scenario.name;
+  p.duration_s = spec.eval.duration;
+  p.warmup_s = spec.eval.warmup;
+  p.overrides = Overrides(s);
+  return p;
 }
 
 // One eval label and where its position comes from.
@@ -92,11 +59,10 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
     for (const char* positioner : {"baseline", "centroid", "oracle"}) {
       if (!spec.Uses(positioner)) continue;
       Job job;
-      job.kind = JobKind::kPosition;
       job.key = "position/" + name + "/" + positioner;
-      job.scenario = name;
       job.label = positioner;
-      job.argv = PositionArgv(spec, s, positioner);
+      job.params = ScenarioParams(spec, s, JobKind::kPosition);
+      job.params.positioner = positioner;
       sources.push_back({positioner, job.key, std::nullopt, {}});
       add(std::move(job));
     }
@@ -106,12 +72,12 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
       for (std::size_t i = 0; i < spec.train.seeds.size(); ++i) {
         const std::uint64_t seed = spec.train.seeds[i];
         Job job;
-        job.kind = JobKind::kTrain;
         job.key = "train/" + name + "/seed" + std::to_string(seed);
-        job.scenario = name;
         job.label = EvalLabel(0, i, seed);
-        job.train_seed = seed;
-        job.argv = TrainArgv(spec, s, seed);
+        job.params = ScenarioParams(spec, s, JobKind::kTrain);
+        job.params.train_seed = seed;
+        job.params.fidelity = spec.train.fidelity;
+        job.params.train_episodes = spec.train.episodes;
         if (spec.Uses("rl")) sources.push_back({EvalLabel(0, i, seed), job.key, seed, {}});
         if (spec.Uses("offsets")) {
           for (int k = 1; k <= kOffsetCount; ++k) {
@@ -128,15 +94,13 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
     for (const std::uint64_t run : spec.rng_runs) {
       for (const auto& source : sources) {
         Job job;
-        job.kind = JobKind::kEval;
         job.key = "eval/" + name + "/" + source.label + "/run" + std::to_string(run);
-        job.scenario = name;
         job.label = source.label;
-        job.rng_run = run;
-        job.train_seed = source.train_seed;
         job.depends_on = JobId(out.id, source.depends_on_key);
-        job.position = source.rule;
-        job.argv = EvalArgv(spec, s, run);
+        job.position_rule = source.rule;
+        job.params = ScenarioParams(spec, s, JobKind::kEval);
+        job.params.rng_run = run;
+        job.params.train_seed = source.train_seed;
         add(std::move(job));
       }
     }

@@ -20,4 +20,14 @@ JobKind ParseJobKind(const std::string& text) {
   throw std::invalid_argument("unknown job kind \"" + text + "\"");
 }
 
+ScenarioOverride ParseOverride(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw std::invalid_argument("expected path=value, got \"" + text + "\"");
+  }
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+std::string ToString(const ScenarioOverride& o) { return o.path + "=" + o.value; }
+
 }  // namespace rlpos

@@ -59,6 +59,19 @@ EvalResult ParseEvalResult(const json& result) {
   r.n_los = Count(result, "n_los");
   r.n_ues = Count(result, "n_ues");
   r.demands_met = Count(result, "demands_met");
+  // Plausible, not only well-formed: a result from the network must not poison the statistics.
+  if (r.aggregate_throughput_mbps < 0 || r.aggregate_throughput_mbps > 1e6) {
+    throw std::invalid_argument("result \"aggregate_throughput_mbps\" is out of range");
+  }
+  if (r.mean_delay_ms && (*r.mean_delay_ms < 0 || *r.mean_delay_ms > 1e9)) {
+    throw std::invalid_argument("result \"mean_delay_ms\" is out of range");
+  }
+  if (r.loss_ratio && (*r.loss_ratio < 0 || *r.loss_ratio > 1)) {
+    throw std::invalid_argument("result \"loss_ratio\" is not in [0, 1]");
+  }
+  if (r.n_los > r.n_ues || r.demands_met > r.n_ues) {
+    throw std::invalid_argument("result counts more UEs in LoS or served than \"n_ues\"");
+  }
   if (result.contains("run")) {
     const json& run = result["run"];
     if (!run.is_number_integer() || run.get<long long>() < 0) {

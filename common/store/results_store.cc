@@ -1,9 +1,10 @@
 #include "store/results_store.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
-#include "campaign/job_argv.h"
 #include "store/job_result.h"
 #include "store/schema.h"
 #include "store/sqlite_db.h"
@@ -19,12 +20,47 @@ double SystemNow() {
       .count();
 }
 
-std::vector<std::string> ArgvFromJson(const std::string& text, const std::string& file) {
+// The typed job columns, in the order ReadParams reads them.
+constexpr const char* kParamColumns =
+    "kind, scenario, train_seed, fidelity, train_episodes, positioner, rng_run, duration_s, "
+    "warmup_s, overrides_json, x, y, z";
+
+std::string OverridesJson(const std::vector<ScenarioOverride>& overrides) {
+  json out = json::array();
+  for (const auto& o : overrides) out.push_back({o.path, o.value});
+  return out.dump();
+}
+
+// Reads kParamColumns starting at `first`; sets `position` from x, y, z.
+JobParams ReadParams(const Statement& row, int first, std::optional<Vec3>& position,
+                     const std::string& file) {
+  JobParams p;
   try {
-    return json::parse(text).get<std::vector<std::string>>();
-  } catch (const json::exception& e) {
-    throw StoreError(file, std::string("malformed argv_json: ") + e.what());
+    p.kind = ParseJobKind(row.Text(first));
+    p.scenario = row.Text(first + 1);
+    if (const auto seed = row.OptionalInt(first + 2)) {
+      p.train_seed = static_cast<std::uint64_t>(*seed);
+    }
+    p.fidelity = row.OptionalText(first + 3).value_or("");
+    if (const auto episodes = row.OptionalInt(first + 4)) {
+      p.train_episodes = static_cast<int>(*episodes);
+    }
+    p.positioner = row.OptionalText(first + 5).value_or("");
+    if (const auto run = row.OptionalInt(first + 6)) p.rng_run = static_cast<std::uint64_t>(*run);
+    p.duration_s = row.OptionalDouble(first + 7);
+    p.warmup_s = row.OptionalDouble(first + 8);
+    for (const auto& pair : json::parse(row.Text(first + 9))) {
+      p.overrides.push_back({pair.at(0).get<std::string>(), pair.at(1).get<std::string>()});
+    }
+  } catch (const std::exception& e) {
+    throw StoreError(file, std::string("malformed job row: ") + e.what());
   }
+  const auto x = row.OptionalDouble(first + 10);
+  const auto y = row.OptionalDouble(first + 11);
+  const auto z = row.OptionalDouble(first + 12);
+  position.reset();
+  if (x && y && z) position = Vec3{*x, *y, *z};
+  return p;
 }
 
 CampaignProgress ReadProgress(const Statement& row) {
@@ -112,20 +148,32 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
       .Run();
   Statement insert = db_->Prepare(
       "INSERT INTO jobs (id, campaign_id, seq, kind, key, scenario, label, rng_run, train_seed, "
-      "depends_on, state, attempt, max_attempts, timeout_s, created_at, argv_json, "
-      "position_rule_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 1, ?, ?, ?, ?, ?)");
+      "fidelity, train_episodes, positioner, duration_s, warmup_s, overrides_json, "
+      "depends_on, state, attempt, max_attempts, timeout_s, created_at, "
+      "position_rule_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 1, ?, ?, ?, "
+      "?)");
   int seq = 0;
+  const auto text_or_null = [](const std::string& text) {
+    return text.empty() ? std::nullopt : std::optional<std::string>(text);
+  };
   for (const Job& job : campaign.jobs) {
+    const JobParams& p = job.params;
     insert.Reset();
     insert.Bind(job.id)
         .Bind(campaign.id)
         .Bind(seq++)
-        .Bind(ToString(job.kind))
+        .Bind(ToString(p.kind))
         .Bind(job.key)
-        .Bind(job.scenario)
+        .Bind(p.scenario)
         .Bind(job.label)
-        .Bind(job.rng_run)
-        .Bind(job.train_seed);
+        .Bind(p.rng_run)
+        .Bind(p.train_seed)
+        .Bind(text_or_null(p.fidelity))
+        .Bind(p.train_episodes)
+        .Bind(text_or_null(p.positioner))
+        .Bind(p.duration_s)
+        .Bind(p.warmup_s)
+        .Bind(OverridesJson(p.overrides));
     if (job.depends_on.empty()) {
       insert.BindNull().Bind("ready");
     } else {
@@ -134,8 +182,7 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
     insert.Bind(campaign.max_attempts)
         .Bind(campaign.job_timeout_s)
         .Bind(now)
-        .Bind(json(job.argv).dump())
-        .Bind(ToJson(job.position).dump())
+        .Bind(ToJson(job.position_rule).dump())
         .Run();
   }
   transaction.Commit();
@@ -146,9 +193,8 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
 
 std::vector<ReadyJob> ResultsStore::ListReady(std::size_t limit) {
   Statement select = db_->Prepare(
-      "SELECT j.id, j.campaign_id, j.key, j.kind, j.attempt, j.timeout_s, j.argv_json, "
-      "j.scenario "
-      "FROM jobs j JOIN campaigns c ON c.id = j.campaign_id "
+      std::string("SELECT j.id, j.campaign_id, j.key, j.attempt, j.timeout_s, ") + kParamColumns +
+      " FROM jobs j JOIN campaigns c ON c.id = j.campaign_id "
       "WHERE j.state = 'ready' AND c.state = 'active' "
       "ORDER BY c.created_at, c.id, j.seq LIMIT ?");
   select.Bind(limit == 0 ? std::int64_t{-1} : static_cast<std::int64_t>(limit));
@@ -158,11 +204,9 @@ std::vector<ReadyJob> ResultsStore::ListReady(std::size_t limit) {
     job.id = select.Text(0);
     job.campaign_id = select.Text(1);
     job.key = select.Text(2);
-    job.kind = ParseJobKind(select.Text(3));
-    job.attempt = static_cast<int>(select.Int(4));
-    job.timeout_s = select.Double(5);
-    job.argv = ArgvFromJson(select.Text(6), file());
-    job.scenario = select.Text(7);
+    job.attempt = static_cast<int>(select.Int(3));
+    job.timeout_s = select.Double(4);
+    job.params = ReadParams(select, 5, job.position, file());
     out.push_back(std::move(job));
   }
   return out;
@@ -182,21 +226,24 @@ bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& wor
   return db_->Changes() == 1;
 }
 
-JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt,
-                                      const json& result) {
+JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, const json& result,
+                                      const std::string& worker_id) {
   Transaction transaction(*db_);
   Statement select = db_->Prepare(
-      "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run "
-      "FROM jobs WHERE id = ?");
+      "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run, x, y, z, "
+      "worker_id FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step()) return JobUpdate::kUnknown;
   if (select.Text(1) != "running" || select.Int(2) != attempt) return JobUpdate::kStale;
+  if (!worker_id.empty() && select.OptionalText(11) != worker_id) return JobUpdate::kStale;
   const JobKind kind = ParseJobKind(select.Text(0));
   const int max_attempts = static_cast<int>(select.Int(3));
   const std::string campaign_id = select.Text(4);
   const std::string scenario = select.Text(5);
   const std::string label = select.Text(6);
   const std::optional<std::int64_t> rng_run = select.OptionalInt(7);
+  const std::optional<double> x = select.OptionalDouble(8), y = select.OptionalDouble(9),
+                              z = select.OptionalDouble(10);
   select.Reset();  // done reading: the row is about to change
 
   // Check the result before anything is written: a malformed one is a failed attempt.
@@ -208,6 +255,12 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt,
       if (eval.run && rng_run && static_cast<std::int64_t>(*eval.run) != *rng_run) {
         throw std::invalid_argument("result is of RngRun " + std::to_string(*eval.run) +
                                     ", the job's is " + std::to_string(*rng_run));
+      }
+      const auto off = [](const std::optional<double>& want, double got) {
+        return want && std::fabs(*want - got) > 1e-6 * std::max(1.0, std::fabs(*want));
+      };
+      if (off(x, eval.position.x) || off(y, eval.position.y) || off(z, eval.position.z)) {
+        throw std::invalid_argument("result is of another position than the job's");
       }
     } else {
       produced = ProducedPosition(result);
@@ -252,29 +305,26 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt,
         .Bind(eval.position.z)
         .Run();
   } else {
-    // Bind each dependent's position now, so its argv_json shows exactly what it will run.
+    // Bind each dependent's position now: the row then shows exactly what it will run.
     Statement dependents =
-        db_->Prepare("SELECT id, argv_json, position_rule_json FROM jobs WHERE depends_on = ?");
+        db_->Prepare("SELECT id, position_rule_json FROM jobs WHERE depends_on = ?");
     dependents.Bind(job_id);
-    std::vector<std::pair<std::string, std::vector<std::string>>> bound;
+    std::vector<std::pair<std::string, Vec3>> bound;
     while (dependents.Step()) {
-      std::vector<std::string> argv = ArgvFromJson(dependents.Text(1), file());
       PositionRule rule;
       try {
-        rule = PositionRuleFromJson(json::parse(dependents.Text(2)));
+        rule = PositionRuleFromJson(json::parse(dependents.Text(1)));
       } catch (const std::exception& e) {
         throw StoreError(file(), "job " + dependents.Text(0) + ": bad position rule: " + e.what());
       }
-      const Vec3 position = ApplyPositionRule(rule, produced);
-      BindPlaceholder(argv, kPositionPlaceholder, FormatPosition(position));
-      bound.emplace_back(dependents.Text(0), std::move(argv));
+      bound.emplace_back(dependents.Text(0), ApplyPositionRule(rule, produced));
     }
     Statement update = db_->Prepare(
-        "UPDATE jobs SET argv_json = ?, "
+        "UPDATE jobs SET x = ?, y = ?, z = ?, "
         "state = CASE state WHEN 'pending' THEN 'ready' ELSE state END WHERE id = ?");
-    for (const auto& [id, argv] : bound) {
+    for (const auto& [id, position] : bound) {
       update.Reset();
-      update.Bind(json(argv).dump()).Bind(id).Run();
+      update.Bind(position.x).Bind(position.y).Bind(position.z).Bind(id).Run();
     }
   }
   UpdateCampaignState(campaign_id);
@@ -283,13 +333,14 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt,
 }
 
 JobUpdate ResultsStore::RecordFailure(const std::string& job_id, int attempt,
-                                      const std::string& error) {
+                                      const std::string& error, const std::string& worker_id) {
   Transaction transaction(*db_);
-  Statement select =
-      db_->Prepare("SELECT state, attempt, max_attempts, campaign_id FROM jobs WHERE id = ?");
+  Statement select = db_->Prepare(
+      "SELECT state, attempt, max_attempts, campaign_id, worker_id FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step()) return JobUpdate::kUnknown;
   if (select.Text(0) != "running" || select.Int(1) != attempt) return JobUpdate::kStale;
+  if (!worker_id.empty() && select.OptionalText(4) != worker_id) return JobUpdate::kStale;
   const int max_attempts = static_cast<int>(select.Int(2));
   const std::string campaign_id = select.Text(3);
   select.Reset();
@@ -456,28 +507,25 @@ std::vector<CampaignProgress> ResultsStore::AllProgress() {
 
 std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
   Statement select = db_->Prepare(
-      "SELECT id, campaign_id, key, scenario, label, state, depends_on, kind, rng_run, "
-      "train_seed, attempt, max_attempts, worker_id, error, argv_json, result_json "
-      "FROM jobs WHERE id = ?");
+      std::string("SELECT id, campaign_id, key, label, state, depends_on, attempt, max_attempts, "
+                  "timeout_s, worker_id, error, result_json, ") +
+      kParamColumns + " FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step()) return std::nullopt;
   JobRecord r;
   r.id = select.Text(0);
   r.campaign_id = select.Text(1);
   r.key = select.Text(2);
-  r.scenario = select.Text(3);
-  r.label = select.Text(4);
-  r.state = select.Text(5);
-  r.depends_on = select.OptionalText(6).value_or("");
-  r.kind = ParseJobKind(select.Text(7));
-  r.rng_run = select.OptionalInt(8);
-  r.train_seed = select.OptionalInt(9);
-  r.attempt = static_cast<int>(select.Int(10));
-  r.max_attempts = static_cast<int>(select.Int(11));
-  r.worker_id = select.OptionalText(12);
-  r.error = select.OptionalText(13);
-  r.argv = ArgvFromJson(select.Text(14), file());
-  if (const auto result = select.OptionalText(15)) r.result = json::parse(*result);
+  r.label = select.Text(3);
+  r.state = select.Text(4);
+  r.depends_on = select.OptionalText(5).value_or("");
+  r.attempt = static_cast<int>(select.Int(6));
+  r.max_attempts = static_cast<int>(select.Int(7));
+  r.timeout_s = select.Double(8);
+  r.worker_id = select.OptionalText(9);
+  r.error = select.OptionalText(10);
+  if (const auto result = select.OptionalText(11)) r.result = json::parse(*result);
+  r.params = ReadParams(select, 12, r.position, file());
   return r;
 }
 

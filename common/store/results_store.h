@@ -40,11 +40,10 @@ struct ReadyJob {
   std::string id;
   std::string campaign_id;
   std::string key;
-  std::string scenario;  // the scenario's name
-  JobKind kind = JobKind::kEval;
   int attempt = 1;
   double timeout_s = 0;
-  std::vector<std::string> argv;  // {position} bound; {out_dir} left for the worker
+  JobParams params;
+  std::optional<Vec3> position;  // eval jobs: bound when their dependency succeeded
 };
 
 struct RunningJob {
@@ -57,12 +56,12 @@ struct RunningJob {
 };
 
 struct JobRecord {
-  std::string id, campaign_id, key, scenario, label, state, depends_on;
-  JobKind kind = JobKind::kEval;
-  std::optional<std::int64_t> rng_run, train_seed;
+  std::string id, campaign_id, key, label, state, depends_on;
   int attempt = 1, max_attempts = 1;
+  double timeout_s = 0;
   std::optional<std::string> worker_id, error;
-  std::vector<std::string> argv;
+  JobParams params;
+  std::optional<Vec3> position;
   std::optional<nlohmann::json> result;
 };
 
@@ -140,8 +139,11 @@ class ResultsStore {
   bool MarkRunning(const std::string& job_id, const std::string& worker_id, int attempt);
   // A result of train/position jobs must hold "position": [x, y, z]; of eval jobs, the metrics
   // of rlpos::ToJson(RunMetrics). A malformed result counts as a failed attempt.
-  JobUpdate RecordSuccess(const std::string& job_id, int attempt, const nlohmann::json& result);
-  JobUpdate RecordFailure(const std::string& job_id, int attempt, const std::string& error);
+  // `worker_id` non-empty: only the worker that holds the attempt may settle it (else kStale).
+  JobUpdate RecordSuccess(const std::string& job_id, int attempt, const nlohmann::json& result,
+                          const std::string& worker_id = "");
+  JobUpdate RecordFailure(const std::string& job_id, int attempt, const std::string& error,
+                          const std::string& worker_id = "");
   // The worker is gone: each of its running jobs fails that attempt ("worker W was lost") and
   // goes back to ready while attempts remain. Returns the ids of the jobs it held.
   std::vector<std::string> RequeueWorker(const std::string& worker_id);
@@ -169,7 +171,8 @@ class ResultsStore {
   std::vector<WorkerRecord> ListWorkers();
   // Keeps the latest progress line of a running attempt (ignored otherwise); cleared when the
   // attempt ends.
-  void SetProgress(const std::string& job_id, int attempt, const std::string& line);
+  void SetProgress(const std::string& job_id, int attempt, const std::string& line,
+                   const std::string& worker_id = "");
   // Throw StoreError for an unknown campaign.
   std::vector<RunningJobView> RunningJobs(const std::string& campaign_id);
   CampaignTiming Timing(const std::string& campaign_id);

@@ -62,11 +62,16 @@ std::optional<nlohmann::json> ResultsStore::CampaignSpecJson(const std::string& 
   return nlohmann::json::parse(select.Text(0));
 }
 
-void ResultsStore::SetProgress(const std::string& job_id, int attempt, const std::string& line) {
-  db_->Prepare("UPDATE jobs SET progress = ? WHERE id = ? AND attempt = ? AND state = 'running'")
+void ResultsStore::SetProgress(const std::string& job_id, int attempt, const std::string& line,
+                               const std::string& worker_id) {
+  db_->Prepare(
+         "UPDATE jobs SET progress = ? WHERE id = ? AND attempt = ? AND state = 'running' "
+         "AND (? = '' OR worker_id = ?)")
       .Bind(line)
       .Bind(job_id)
       .Bind(attempt)
+      .Bind(worker_id)
+      .Bind(worker_id)
       .Run();
 }
 

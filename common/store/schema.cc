@@ -1,5 +1,6 @@
 #include "store/schema.h"
 
+#include "store/legacy_argv.h"
 #include "store/store_error.h"
 
 namespace rlpos {
@@ -114,10 +115,65 @@ CREATE TABLE workers (
 );
 )sql";
 
+// Version 3: typed jobs. What a job runs is columns (and a JSON list of the scenario's
+// overrides), no longer an rlpos-sim command line; an eval's position is bound into x, y, z when
+// its dependency succeeds. Version 2's argv_json is converted, then dropped.
+constexpr const char* kVersion3 = R"sql(
+ALTER TABLE jobs ADD COLUMN fidelity TEXT;
+ALTER TABLE jobs ADD COLUMN train_episodes INTEGER;
+ALTER TABLE jobs ADD COLUMN positioner TEXT;
+ALTER TABLE jobs ADD COLUMN duration_s REAL;
+ALTER TABLE jobs ADD COLUMN warmup_s REAL;
+ALTER TABLE jobs ADD COLUMN overrides_json TEXT NOT NULL DEFAULT '[]';
+ALTER TABLE jobs ADD COLUMN x REAL;
+ALTER TABLE jobs ADD COLUMN y REAL;
+ALTER TABLE jobs ADD COLUMN z REAL;
+)sql";
+
+constexpr const char* kVersion3After = R"sql(
+ALTER TABLE jobs DROP COLUMN argv_json;
+)sql";
+
+void ConvertArgvColumns(Database& db) {
+  struct Row {
+    std::string id;
+    LegacyJobFields fields;
+  };
+  std::vector<Row> rows;
+  Statement select = db.Prepare("SELECT id, argv_json FROM jobs");
+  while (select.Step()) {
+    try {
+      rows.push_back({select.Text(0), LegacyJobFieldsFromArgv(select.Text(1))});
+    } catch (const std::exception& e) {
+      throw StoreError(db.file(), "job " + select.Text(0) + ": cannot read argv_json: " + e.what());
+    }
+  }
+  select.Reset();
+  Statement update = db.Prepare(
+      "UPDATE jobs SET fidelity = ?, positioner = ?, duration_s = ?, overrides_json = ?, x = ?, "
+      "y = ?, z = ? WHERE id = ?");
+  for (const auto& row : rows) {
+    const auto& f = row.fields;
+    update.Reset();
+    update.Bind(f.fidelity)
+        .Bind(f.positioner)
+        .Bind(f.duration_s)
+        .Bind(f.overrides_json)
+        .Bind(f.position ? std::optional<double>(f.position->x) : std::nullopt)
+        .Bind(f.position ? std::optional<double>(f.position->y) : std::nullopt)
+        .Bind(f.position ? std::optional<double>(f.position->z) : std::nullopt)
+        .Bind(row.id)
+        .Run();
+  }
+}
+
 }  // namespace
 
 const std::vector<Migration>& Migrations() {
-  static const std::vector<Migration> migrations{{1, kVersion1}, {2, kVersion2}};
+  static const std::vector<Migration> migrations{
+      {1, kVersion1, nullptr, nullptr},
+      {2, kVersion2, nullptr, nullptr},
+      {3, kVersion3, ConvertArgvColumns, kVersion3After}};
   return migrations;
 }
 
@@ -169,6 +225,8 @@ void MigrateSchema(Database& db) {
     check(version);
     if (migration.version <= version) continue;
     db.Exec(migration.sql);
+    if (migration.convert) migration.convert(db);
+    if (migration.sql_after) db.Exec(migration.sql_after);
     if (version == 0) {
       db.Exec("CREATE TABLE schema_version (version INTEGER NOT NULL)");
       db.Prepare("INSERT INTO schema_version (version) VALUES (?)").Bind(migration.version).Run();

@@ -3,6 +3,7 @@
 // migrations run in order, each in its own transaction, from the file's version to the newest.
 // The schema is documented in results/README.md; change both together, and only by appending
 // a migration (never by editing one that has shipped).
+#include <functional>
 #include <vector>
 
 #include "store/sqlite_db.h"
@@ -12,6 +13,10 @@ namespace rlpos {
 struct Migration {
   int version;      // the schema version after this migration
   const char* sql;  // constant DDL, no parameters
+  // Runs after `sql`, in the same transaction: data conversions SQL cannot express.
+  std::function<void(Database&)> convert;
+  // Runs after `convert`: DDL that needs the converted data (e.g. dropping the old column).
+  const char* sql_after = nullptr;
 };
 
 // In order; versions are 1, 2, 3, ...

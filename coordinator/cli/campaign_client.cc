@@ -6,6 +6,7 @@
 #include <random>
 #include <thread>
 
+#include "dds/message_checks.h"
 #include "dds/topics.h"
 #include "dds/wait_set.h"
 #include "process/host_name.h"
@@ -19,6 +20,14 @@ std::string NewRequestId() {
 }
 
 }  // namespace
+
+msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission) {
+  msg::CampaignRequest request;
+  request.kind = msg::RequestKind::kSubmit;
+  request.campaign_json = submission.campaign_json;
+  for (const auto& s : submission.scenarios) request.scenarios.push_back({s.file, s.document});
+  return request;
+}
 
 std::string DescribeDds(const DdsOptions& options) {
   std::string text = "DDS domain " + std::to_string(options.domain);
@@ -60,7 +69,8 @@ msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignReque
     if (while_waiting)
       while_waiting();
     for (const auto& r : replies.Take()) {
-      if (r.valid && r.data.request_id == request.request_id)
+      if (r.valid && r.decode_error.empty() &&
+          CheckCampaignReply(r.data, request.request_id).empty())
         return r.data;
     }
   }

@@ -8,6 +8,7 @@
 
 #include "dds/messages.h"
 #include "dds/participant.h"
+#include "wire/campaign_request.h"
 
 namespace rlpos {
 
@@ -19,6 +20,9 @@ class NoCoordinatorError : public std::runtime_error {
 
 // "DDS domain 0" or "DDS domain 7, loopback tag T".
 std::string DescribeDds(const DdsOptions& options);
+
+// The submit request of a campaign read by ReadCampaignSubmission.
+msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission);
 
 // Fills in request_id; throws NoCoordinatorError when no coordinator is matched or answers
 // within `timeout_s`. `while_waiting` is called every few tens of ms while it waits (the

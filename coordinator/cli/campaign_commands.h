@@ -40,7 +40,4 @@ int ShowResults(const std::string& db, const std::string& campaign_id, const std
 int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
                         const std::string& out_dir);
 
-// The campaign file, validated and expanded; throws ConfigError (the caller names the file).
-ExpandedCampaign LoadCampaign(const std::string& campaign_file);
-
 }  // namespace rlpos

@@ -14,9 +14,8 @@
 #include <random>
 #include <thread>
 
-#include "campaign/expanded_campaign_json.h"
 #include "campaign/expansion.h"
-#include "campaign/job_argv.h"
+#include "config/number_text.h"
 #include "cli/campaign_client.h"
 #include "cli/campaign_commands.h"
 #include "cli/progress_text.h"
@@ -28,6 +27,7 @@
 #include "reporting/report_writer.h"
 #include "reporting/results_format.h"
 #include "store/results_store.h"
+#include "wire/campaign_request.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;
@@ -140,9 +140,9 @@ void PrintPlan(const ExpandedCampaign& campaign) {
   std::map<std::string, std::map<std::string, int>> counts;  // scenario -> kind -> jobs
   std::vector<std::string> order;
   for (const auto& job : campaign.jobs) {
-    if (!counts.count(job.scenario))
-      order.push_back(job.scenario);
-    ++counts[job.scenario][ToString(job.kind)];
+    if (!counts.count(job.params.scenario))
+      order.push_back(job.params.scenario);
+    ++counts[job.params.scenario][ToString(job.params.kind)];
   }
   std::cout << "campaign " << campaign.id << " (" << campaign.name << "): " << campaign.jobs.size()
             << " jobs, " << campaign.max_attempts << " attempt(s) each at most, timeout "
@@ -158,7 +158,8 @@ void PrintPlan(const ExpandedCampaign& campaign) {
 
 int RunCampaign(const RunOptions& options) {
   // Bad input stops here, before anything starts.
-  const ExpandedCampaign campaign = LoadCampaign(options.campaign_file);
+  const CampaignSubmission submission = ReadCampaignSubmission(options.campaign_file);
+  const ExpandedCampaign& campaign = submission.campaign;
   if (options.dry_run) {
     PrintPlan(campaign);
     return kExitOk;
@@ -229,10 +230,7 @@ int RunCampaign(const RunOptions& options) {
     printer.Note("running " + campaign.name + " (" + std::to_string(campaign.jobs.size()) +
                  " jobs) on " + std::to_string(options.workers) + " worker(s); " +
                  DescribeDds(dds) + "; logs in " + log_dir.string());
-    msg::CampaignRequest request;
-    request.kind = msg::RequestKind::kSubmit;
-    request.campaign_json = ToJson(campaign).dump();
-    const msg::CampaignReply reply = SendCampaignRequest(dds, request, 60.0, [&] {
+    const msg::CampaignReply reply = SendCampaignRequest(dds, SubmitRequest(submission), 60.0, [&] {
       if (StopRequested())
         throw std::runtime_error("interrupted before the campaign started");
       for (auto& d : daemons)
@@ -240,6 +238,10 @@ int RunCampaign(const RunOptions& options) {
     });
     if (!reply.ok)
       throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
+    if (reply.campaign_id != campaign.id) {
+      throw std::runtime_error("the coordinator expanded the campaign to " + reply.campaign_id +
+                               ", not " + campaign.id + " (different rlpos versions?)");
+    }
     std::cout << "campaign " << reply.campaign_id << "\n" << std::flush;
 
     StoreOptions read_only;

@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include "campaign/campaign_spec.h"
-#include "campaign/expanded_campaign_json.h"
 #include "campaign/expansion.h"
 #include "cli/campaign_client.h"
 #include "cli/campaign_commands.h"
@@ -28,18 +27,16 @@ msg::CampaignReply RequestOnCampaign(msg::RequestKind kind, const std::string& c
 
 }  // namespace
 
-ExpandedCampaign LoadCampaign(const std::string& campaign_file) {
-  return ExpandCampaign(ReadCampaignFile(campaign_file));
-}
-
 int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, double timeout_s) {
-  const ExpandedCampaign campaign = LoadCampaign(campaign_file);
-  msg::CampaignRequest request;
-  request.kind = msg::RequestKind::kSubmit;
-  request.campaign_json = ToJson(campaign).dump();
-  const msg::CampaignReply reply = SendCampaignRequest(dds, request, timeout_s);
+  const CampaignSubmission submission = ReadCampaignSubmission(campaign_file);
+  const ExpandedCampaign& campaign = submission.campaign;
+  const msg::CampaignReply reply = SendCampaignRequest(dds, SubmitRequest(submission), timeout_s);
   if (!reply.ok)
     return Refused(reply);
+  if (reply.campaign_id != campaign.id) {
+    throw std::runtime_error("the coordinator expanded the campaign to " + reply.campaign_id +
+                             ", not " + campaign.id + " (different rlpos versions?)");
+  }
   std::cout << reply.campaign_id << "\n";
   std::cerr << (reply.created ? "submitted " : "already submitted ") << campaign.name << ": "
             << reply.jobs << " jobs\n";

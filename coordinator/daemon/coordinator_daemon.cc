@@ -3,13 +3,15 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
-#include "campaign/expanded_campaign_json.h"
 #include "daemon/scenario_documents.h"
+#include "dds/message_checks.h"
 #include "dds/topics.h"
 #include "dds/wait_set.h"
 #include "logging/log.h"
 #include "process/stop_signal.h"
 #include "store/store_error.h"
+#include "wire/json_text.h"
+#include "wire/limits.h"
 
 namespace rlpos {
 
@@ -47,16 +49,25 @@ double CoordinatorDaemon::Now() const {
 }
 
 void CoordinatorDaemon::HandleRequests() {
-  for (const auto& r : dds_->requests.Take()) {
+  for (auto& r : dds_->requests.Take()) {
     if (!r.valid)
       continue;
+    const std::string sender = dds_->requests.WriterParticipant(r.writer);
+    std::string problem = r.decode_error.empty() ? CheckCampaignRequest(r.data) : r.decode_error;
+    if (!problem.empty()) {
+      dropped_requests_.Drop(sender.empty() ? "an unknown writer" : sender, problem);
+      continue;
+    }
     msg::CampaignReply reply;
     reply.request_id = r.data.request_id;
     try {
       switch (r.data.kind) {
         case msg::RequestKind::kSubmit: {
+          std::vector<SubmittedScenario> scenarios;
+          for (auto& file : r.data.scenarios)
+            scenarios.push_back({std::move(file.file), std::move(file.document)});
           const ExpandedCampaign campaign =
-              ExpandedCampaignFromJson(nlohmann::json::parse(r.data.campaign_json));
+              ExpandSubmittedCampaign(r.data.campaign_json, scenarios, options_.limits);
           const SubmitResult result = store_.Submit(campaign);
           reply.campaign_id = result.campaign_id;
           reply.jobs = result.jobs;
@@ -85,20 +96,37 @@ void CoordinatorDaemon::HandleRequests() {
       }
       reply.ok = true;
     } catch (const std::exception& e) {
+      reply = msg::CampaignReply{};
+      reply.request_id = r.data.request_id;
       reply.ok = false;
-      reply.message = e.what();
-      Log(LogLevel::kWarning, "request " + r.data.request_id + " refused: " + e.what());
+      reply.message = std::string(e.what()).substr(0, wire::kMaxMessage - 1);
+      Log(LogLevel::kWarning, "request " + r.data.request_id + " refused: " + reply.message);
     }
+    // Volatile: the client is matched before it asks. Unregistered at once: nothing is kept
+    // per request.
     dds_->replies.Write(reply);
+    dds_->replies.Unregister(reply);
   }
 }
 
 void CoordinatorDaemon::HandleWorkerStatuses() {
   for (const auto& r : dds_->statuses.Take()) {
     const std::string& id = r.data.worker_id;
-    if (r.valid && r.state == InstanceState::kAlive) {
-      const bool is_new = live_.count(id) == 0;
+    const std::string sender = dds_->statuses.WriterParticipant(r.writer);
+    const auto known = live_.find(id);
+    if (r.valid) {
+      std::string problem = r.decode_error.empty() ? CheckWorkerStatus(r.data) : r.decode_error;
+      if (problem.empty() && known != live_.end() && known->second.participant != sender)
+        problem = "worker id " + id + " belongs to another participant";
+      if (problem.empty() && sender.empty())
+        problem = "its writer is not matched";
+      if (!problem.empty()) {
+        dropped_statuses_.Drop(sender.empty() ? "an unknown writer" : sender, problem);
+        continue;
+      }
+      const bool is_new = known == live_.end();
       LiveWorker& w = live_[id];
+      w.participant = sender;
       w.slots = {id, r.data.slots, r.data.busy};
       w.jobs = {r.data.jobs.begin(), r.data.jobs.end()};
       WorkerRecord record;
@@ -111,36 +139,25 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
       if (is_new) {
         Log(LogLevel::kInfo,
             "worker " + id + " joined (" + std::to_string(r.data.slots) + " slot(s))");
-        // After a restart: a worker that is back gets its running jobs again (it ignores
-        // attempts it already has), in case an assignment was lost with the old coordinator.
-        for (const auto& job : store_.ListRunning()) {
-          if (job.worker_id != id || published_.count(job.id))
-            continue;
-          if (const auto record_of = store_.GetJob(job.id)) {
-            ReadyJob ready;
-            ready.id = record_of->id;
-            ready.campaign_id = record_of->campaign_id;
-            ready.key = record_of->key;
-            ready.scenario = record_of->scenario;
-            ready.kind = record_of->kind;
-            ready.attempt = record_of->attempt;
-            ready.timeout_s = job.timeout_s;
-            ready.argv = record_of->argv;
-            Publish(ready, id);
-          }
-        }
+        Republish(id);
       }
       continue;
     }
-    if (r.valid || r.state == InstanceState::kAlive)
+    if (known == live_.end() || r.state == InstanceState::kAlive)
       continue;
-    // Disposed: it stopped cleanly; no writers: its lease ran out (killed, or its host is gone).
+    // Disposed: it stopped cleanly, which only its own participant may say; no writers: its
+    // lease ran out (killed, or its host is gone), which Cyclone decides locally.
     const bool stopped = r.state == InstanceState::kDisposed;
-    live_.erase(id);
+    if (stopped && sender != known->second.participant) {
+      dropped_statuses_.Drop(sender.empty() ? "an unknown writer" : sender,
+                             "dispose of worker " + id + "'s status by another participant");
+      continue;
+    }
+    live_.erase(known);
     store_.SetWorkerState(id, stopped ? "stopped" : "lost");
     const auto requeued = scheduler_.WorkerLost(id);
     for (const auto& job_id : requeued)
-      published_.erase(job_id);
+      Withdraw(job_id);
     Log(LogLevel::kWarning, "worker " + id + (stopped ? " stopped" : " lost") +
                                 (requeued.empty() ? ""
                                                   : "; " + std::to_string(requeued.size()) +
@@ -153,33 +170,52 @@ void CoordinatorDaemon::HandleJobEvents() {
     if (!r.valid)
       continue;
     const msg::JobEvent& e = r.data;
+    const std::string sender = dds_->events.WriterParticipant(r.writer);
+    std::string problem = r.decode_error.empty() ? CheckJobEvent(e) : r.decode_error;
+    if (problem.empty()) {
+      // Only the participant that announced the worker speaks for it.
+      const auto w = live_.find(e.worker_id);
+      if (w == live_.end())
+        problem = "worker " + e.worker_id + " is not live";
+      else if (sender.empty() || w->second.participant != sender)
+        problem = "not written by worker " + e.worker_id + "'s participant";
+    }
+    if (!problem.empty()) {
+      dropped_events_.Drop(sender.empty() ? "an unknown writer" : sender, problem);
+      continue;
+    }
     const std::string key = e.job_id + "#" + std::to_string(e.attempt);
     if (e.state == msg::JobState::kStarted || e.state == msg::JobState::kProgress) {
       Log(LogLevel::kDebug, key + " on " + e.worker_id + ": " +
                                 (e.message.empty() ? std::string("started") : e.message));
       if (e.state == msg::JobState::kProgress)
-        store_.SetProgress(e.job_id, e.attempt, e.message);
+        store_.SetProgress(e.job_id, e.attempt, e.message, e.worker_id);
       continue;
     }
     JobUpdate update = JobUpdate::kUnknown;
     if (e.state == msg::JobState::kSucceeded) {
       nlohmann::json result;
       try {
-        result = nlohmann::json::parse(e.result_json);
-      } catch (const nlohmann::json::exception&) {
-        update = store_.RecordFailure(e.job_id, e.attempt, "the result is not JSON");
+        result = wire::ParseBoundedJson(e.result_json, wire::kMaxResultJson, "the result");
+      } catch (const std::invalid_argument& error) {
+        update = store_.RecordFailure(e.job_id, e.attempt, error.what(), e.worker_id);
       }
       if (update == JobUpdate::kUnknown)
-        update = store_.RecordSuccess(e.job_id, e.attempt, result);
+        update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id);
     } else {
-      update = store_.RecordFailure(e.job_id, e.attempt, e.message);
+      update = store_.RecordFailure(e.job_id, e.attempt, e.message, e.worker_id);
+    }
+    if (update == JobUpdate::kUnknown || update == JobUpdate::kStale) {
+      // Not the worker's current attempt (late, duplicate, or not its job): nothing changed.
+      dropped_events_.Drop(sender, key + " from " + e.worker_id + " is " + ToString(update));
+      continue;
     }
     Log(update == JobUpdate::kSucceeded ? LogLevel::kInfo : LogLevel::kWarning,
         key + " from " + e.worker_id + ": " + ToString(update) +
             (e.state == msg::JobState::kFailed ? " (" + e.message + ")" : ""));
-    // Settled: the assignment of this attempt goes. A stale event leaves a newer one alone.
+    // Settled: the assignment of this attempt goes.
     const auto it = published_.find(e.job_id);
-    if (it != published_.end() && it->second == e.attempt)
+    if (it != published_.end() && it->second.attempt == e.attempt)
       Withdraw(e.job_id);
   }
 }
@@ -201,21 +237,43 @@ void CoordinatorDaemon::AfterGrace() {
 
 void CoordinatorDaemon::Publish(const ReadyJob& job, const std::string& worker_id) {
   msg::JobAssignment a;
-  a.job_id = job.id;
-  a.attempt = job.attempt;
   a.worker_id = worker_id;
-  a.campaign_id = job.campaign_id;
-  a.argv = job.argv;
-  a.scenario_document = ScenarioDocument(job.campaign_id, job.scenario);
-  a.timeout_s = job.timeout_s;
+  a.order.job_id = job.id;
+  a.order.campaign_id = job.campaign_id;
+  a.order.attempt = job.attempt;
+  a.order.timeout_s = job.timeout_s;
+  a.order.params = job.params;
+  a.order.position = job.position;
+  a.order.scenario_document = ScenarioDocument(job.campaign_id, job.params.scenario);
   dds_->assignments.Write(a);
-  published_[job.id] = job.attempt;
+  published_[job.id] = {job.attempt, worker_id};
+}
+
+void CoordinatorDaemon::Republish(const std::string& worker_id) {
+  // After a restart: a worker that is back gets its running jobs again (it ignores attempts it
+  // already has), in case an assignment was lost with the old coordinator.
+  for (const auto& job : store_.ListRunning()) {
+    if (job.worker_id != worker_id || published_.count(job.id))
+      continue;
+    if (const auto record = store_.GetJob(job.id)) {
+      ReadyJob ready;
+      ready.id = record->id;
+      ready.campaign_id = record->campaign_id;
+      ready.key = record->key;
+      ready.attempt = record->attempt;
+      ready.timeout_s = record->timeout_s;
+      ready.params = record->params;
+      ready.position = record->position;
+      Publish(ready, worker_id);
+    }
+  }
 }
 
 void CoordinatorDaemon::Withdraw(const std::string& job_id) {
   msg::JobAssignment key;
-  key.job_id = job_id;
+  key.order.job_id = job_id;
   dds_->assignments.Dispose(key);
+  dds_->assignments.Unregister(key);
   published_.erase(job_id);
 }
 

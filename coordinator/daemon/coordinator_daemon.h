@@ -1,11 +1,15 @@
 #pragma once
-// rlpos-coordinator's loop. The results store is the memory; DDS is only the wire:
-//  - campaign requests (submit, cancel, retry) are applied to the store and answered;
-//  - worker statuses keep the set of live workers; a lost lease (or a clean stop) sends the
-//    worker's running jobs back to ready;
-//  - job events are recorded (exactly once per attempt, stale attempts ignored) and the
-//    assignment is then disposed, which tells the worker the job is settled;
+// rlpos-coordinator's loop. The results store is the memory; DDS is only the wire, and every
+// sample from it is checked before use (bounds, kinds, plausibility, sender):
+//  - campaign requests: submit sends a campaign and its scenario documents, which are validated
+//    and expanded here like `run` does; cancel and retry name an existing campaign;
+//  - worker statuses keep the set of live workers, each bound to the DDS participant that first
+//    announced it; a lost lease (or a clean stop) sends the worker's running jobs back to ready;
+//  - job events count only from the participant of the worker that holds the job's current
+//    attempt; they are recorded exactly once per attempt, and the assignment is then disposed
+//    and unregistered, which tells the worker the job is settled and frees its DDS instance;
 //  - each tick fails timed-out jobs and assigns ready jobs to free slots.
+// A dropped sample costs one rate-limited warning line and nothing else.
 // After a restart it waits one grace period for the workers to reappear, then requeues the
 // running jobs of workers that did not, and republishes the assignments of those that did (a
 // worker ignores an attempt it already has).
@@ -15,9 +19,11 @@
 #include <string>
 
 #include "dds/participant.h"
+#include "logging/drop_log.h"
 #include "process/file_lock.h"
 #include "scheduling/scheduler.h"
 #include "store/results_store.h"
+#include "wire/campaign_request.h"
 
 namespace rlpos {
 
@@ -25,6 +31,7 @@ struct CoordinatorOptions {
   std::string db_file;
   double tick_s = 0.25;          // scheduling period when nothing arrives
   double restart_grace_s = 5.0;  // wait for workers after start before judging running jobs
+  SubmitLimits limits;           // what a submitted campaign may hold
 };
 
 class CoordinatorDaemon {
@@ -38,7 +45,12 @@ class CoordinatorDaemon {
   struct Endpoints;
   struct LiveWorker {
     WorkerSlots slots;
+    std::string participant;     // DDS participant GUID that announced it
     std::set<std::string> jobs;  // "<job id>#<attempt>" it reported
+  };
+  struct Published {
+    int attempt = 0;
+    std::string worker_id;
   };
   void HandleRequests();
   void HandleWorkerStatuses();
@@ -46,6 +58,7 @@ class CoordinatorDaemon {
   void AfterGrace();
   void Schedule();
   void Publish(const ReadyJob& job, const std::string& worker_id);
+  void Republish(const std::string& worker_id);
   void Withdraw(const std::string& job_id);
   const std::string& ScenarioDocument(const std::string& campaign_id, const std::string& name);
   double Now() const;
@@ -57,8 +70,10 @@ class CoordinatorDaemon {
   Participant participant_;
   std::unique_ptr<Endpoints> dds_;
   std::map<std::string, LiveWorker> live_;
-  std::map<std::string, int> published_;  // job id -> attempt of its live assignment
+  std::map<std::string, Published> published_;  // job id -> its live assignment
   std::map<std::string, std::map<std::string, std::string>> documents_;  // by campaign
+  DropLog dropped_requests_{"campaign request"}, dropped_statuses_{"worker status"},
+      dropped_events_{"job event"};
   double started_ = 0;
   bool grace_over_ = false;
 };

@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
   app.add_option("--grace", options.restart_grace_s,
                  "Seconds to wait for workers after a start before requeuing their jobs")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--max-jobs", options.limits.max_jobs,
+                 "Largest campaign a submit may expand to (default 200000)")
+      ->check(CLI::Range(1, 10000000));
   app.add_option("--log-level", log_level, "error|warning|info|debug")
       ->check(CLI::IsMember({"error", "warning", "info", "debug"}));
   try {

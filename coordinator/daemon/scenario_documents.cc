@@ -19,7 +19,7 @@ std::map<std::string, std::string> ScenarioDocumentsByName(const nlohmann::json&
       // The parser's default name when the document has none.
       out[named.value("name", std::string("scenario"))] = document.dump();
     } catch (const std::exception&) {
-      // A worker then uses the --scenario path as is (same machine, same files).
+      // The worker then refuses the job (no valid scenario): it fails with a clear error.
     }
   }
   return out;

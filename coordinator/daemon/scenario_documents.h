@@ -1,5 +1,5 @@
 #pragma once
-// The scenario JSON each job's --scenario names, from the campaign as the store keeps it: the
+// The scenario JSON of each job, from the campaign as the store keeps it: the
 // coordinator sends it with the assignment, so a worker on another machine needs no copy of the
 // submitter's files.
 #include <map>
@@ -9,7 +9,7 @@
 namespace rlpos {
 
 // Scenario name (after the campaign's per-scenario overrides) -> the scenario document as read
-// (the overrides travel in the job's argv). Entries that do not parse are left out.
+// (the overrides travel as the job's typed overrides). Entries that do not parse are left out.
 std::map<std::string, std::string> ScenarioDocumentsByName(const nlohmann::json& campaign_spec);
 
 }  // namespace rlpos

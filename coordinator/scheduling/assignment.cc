@@ -49,7 +49,7 @@ std::vector<Assignment> AssignJobs(const std::vector<ReadyJob>& ready,
   }
   for (auto& q : queues) {
     std::stable_sort(q.jobs.begin(), q.jobs.end(), [](const ReadyJob* a, const ReadyJob* b) {
-      return KindRank(a->kind) < KindRank(b->kind);
+      return KindRank(a->params.kind) < KindRank(b->params.kind);
     });
   }
 

@@ -1,6 +1,6 @@
 #include "scheduling/timeouts.h"
 
-#include "campaign/job_argv.h"
+#include "config/number_text.h"
 
 namespace rlpos {
 

@@ -1,9 +1,12 @@
 #pragma once
 // The C++ side of rlpos_messages.idl: plain structs the daemons use; topics.cc converts them to
-// and from the generated C types, so no other file sees the C API.
+// and from the generated C types, so no other file sees the C API. A job travels as the typed
+// JobOrder of common/wire/job_order.h.
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "wire/job_order.h"
 
 namespace rlpos::msg {
 
@@ -15,12 +18,8 @@ struct WorkerStatus {
 };
 
 struct JobAssignment {
-  std::string job_id;
-  int attempt = 1;
-  std::string worker_id, campaign_id;
-  std::vector<std::string> argv;
-  std::string scenario_document;
-  double timeout_s = 0;
+  std::string worker_id;  // the worker it is for
+  JobOrder order;
 };
 
 enum class JobState { kStarted, kProgress, kSucceeded, kFailed };
@@ -35,10 +34,17 @@ struct JobEvent {
 
 enum class RequestKind { kSubmit, kCancel, kRetry };
 
+struct ScenarioFile {
+  std::string file;      // as the campaign writes it
+  std::string document;  // the JSON text the client read
+};
+
 struct CampaignRequest {
   std::string request_id;
   RequestKind kind = RequestKind::kSubmit;
-  std::string campaign_id, campaign_json;
+  std::string campaign_id;
+  std::string campaign_json;  // submit: the campaign file as written
+  std::vector<ScenarioFile> scenarios;
 };
 
 struct CampaignReply {

@@ -2,9 +2,11 @@
 
 #include <dds/dds.h>
 
+#include <cstring>
 #include <memory>
 
 #include "rlpos_messages.h"
+#include "wire/limits.h"
 
 namespace rlpos {
 namespace {
@@ -15,34 +17,55 @@ QosPtr NewQos() {
   return QosPtr(dds_create_qos(), dds_delete_qos);
 }
 
-// Writing borrows the C++ strings: dds_write serializes before returning, so pointers into
-// them stay valid for as long as Cyclone looks at them.
-char* Borrow(const std::string& s) {
-  return const_cast<char*>(s.c_str());
-}
-std::string Copy(const char* s) {
-  return s ? std::string(s) : std::string();
-}
-
-struct BorrowedStrings {
-  std::vector<char*> pointers;
-  dds_sequence_string Sequence(const std::vector<std::string>& strings) {
-    pointers.clear();
-    for (const auto& s : strings)
-      pointers.push_back(Borrow(s));
-    dds_sequence_string seq{};
-    seq._maximum = seq._length = static_cast<uint32_t>(pointers.size());
-    seq._buffer = pointers.empty() ? nullptr : pointers.data();
-    seq._release = false;
-    return seq;
+// Bounded strings are inline arrays in Cyclone's C mapping: copy in, refusing what does not fit
+// (the validators keep the daemons' own messages within bounds, so this only catches a bug).
+template <std::size_t N>
+void CopyIn(char (&to)[N], const std::string& from, const char* field) {
+  if (from.size() >= N || from.find('\0') != std::string::npos) {
+    throw DdsError(std::string(field) + ": " + std::to_string(from.size()) +
+                   " bytes do not fit the message's bound of " + std::to_string(N - 1));
   }
-};
+  std::memcpy(to, from.data(), from.size());
+  to[from.size()] = '\0';
+}
 
-std::vector<std::string> Copy(const dds_sequence_string& seq) {
-  std::vector<std::string> out;
-  for (uint32_t i = 0; i < seq._length; ++i)
-    out.push_back(Copy(seq._buffer[i]));
-  return out;
+// A received array is NUL-terminated by Cyclone's decoder; strnlen keeps to the array anyway.
+template <std::size_t N>
+std::string CopyOut(const char (&from)[N]) {
+  return std::string(from, strnlen(from, N));
+}
+
+// Octet sequences borrow the C++ string for the write (dds_write serializes before returning).
+dds_sequence_octet BorrowOctets(const std::string& s, std::size_t bound, const char* field) {
+  if (s.size() > bound) {
+    throw DdsError(std::string(field) + ": " + std::to_string(s.size()) +
+                   " bytes exceed the message's bound of " + std::to_string(bound));
+  }
+  dds_sequence_octet seq{};
+  seq._maximum = seq._length = static_cast<uint32_t>(s.size());
+  seq._buffer = reinterpret_cast<uint8_t*>(const_cast<char*>(s.data()));
+  seq._release = false;
+  return seq;
+}
+
+// Sets `error` when the sequence exceeds `bound` (a decoder that let it through).
+std::string CopyOctets(const dds_sequence_octet& seq, std::size_t bound, const char* field,
+                       std::string& error) {
+  if (seq._length > bound || (seq._length > 0 && seq._buffer == nullptr)) {
+    error = std::string(field) + " exceeds its bound";
+    return {};
+  }
+  return std::string(reinterpret_cast<const char*>(seq._buffer), seq._length);
+}
+
+// An enum from the wire: `error` unless 0 <= value < count.
+template <typename E>
+E CheckedEnum(int value, int count, const char* field, std::string& error) {
+  if (value < 0 || value >= count) {
+    error = std::string(field) + " " + std::to_string(value) + " is unknown";
+    return E{};
+  }
+  return static_cast<E>(value);
 }
 
 template <typename M>
@@ -67,26 +90,39 @@ struct Traits<msg::WorkerStatus> {
   }
   struct Holder {
     C c{};
-    BorrowedStrings jobs;
+    struct JobKey {
+      char text[301];
+    };
+    std::vector<JobKey> jobs;
   };
   static void ToC(const msg::WorkerStatus& m, Holder& h) {
-    h.c.worker_id = Borrow(m.worker_id);
-    h.c.host = Borrow(m.host);
+    CopyIn(h.c.worker_id, m.worker_id, "worker_id");
+    CopyIn(h.c.host, m.host, "host");
     h.c.pid = m.pid;
     h.c.slots = m.slots;
     h.c.busy = m.busy;
-    h.c.jobs = h.jobs.Sequence(m.jobs);
+    if (m.jobs.size() > wire::kMaxWorkerJobs) throw DdsError("jobs: too many");
+    h.jobs.assign(m.jobs.size(), Holder::JobKey{});
+    for (std::size_t i = 0; i < m.jobs.size(); ++i) CopyIn(h.jobs[i].text, m.jobs[i], "jobs");
+    static_assert(sizeof(Holder::JobKey) == sizeof(*h.c.jobs._buffer));
+    h.c.jobs._maximum = h.c.jobs._length = static_cast<uint32_t>(m.jobs.size());
+    h.c.jobs._buffer =
+        h.jobs.empty() ? nullptr : reinterpret_cast<decltype(h.c.jobs._buffer)>(h.jobs.data());
+    h.c.jobs._release = false;
   }
-  static msg::WorkerStatus FromC(const C& c, bool valid) {
+  static msg::WorkerStatus FromC(const C& c, bool valid, std::string& error) {
     msg::WorkerStatus m;
-    m.worker_id = Copy(c.worker_id);
-    if (!valid)
-      return m;
-    m.host = Copy(c.host);
+    m.worker_id = CopyOut(c.worker_id);
+    if (!valid) return m;
+    m.host = CopyOut(c.host);
     m.pid = c.pid;
     m.slots = c.slots;
     m.busy = c.busy;
-    m.jobs = Copy(c.jobs);
+    if (c.jobs._length > wire::kMaxWorkerJobs || (c.jobs._length > 0 && !c.jobs._buffer)) {
+      error = "jobs exceed their bound";
+      return m;
+    }
+    for (uint32_t i = 0; i < c.jobs._length; ++i) m.jobs.push_back(CopyOut(c.jobs._buffer[i]));
     return m;
   }
 };
@@ -105,28 +141,88 @@ struct Traits<msg::JobAssignment> {
   }
   struct Holder {
     C c{};
-    BorrowedStrings argv;
+    std::vector<rlpos_msg_ScenarioOverride> overrides;
   };
   static void ToC(const msg::JobAssignment& m, Holder& h) {
-    h.c.job_id = Borrow(m.job_id);
-    h.c.attempt = m.attempt;
-    h.c.worker_id = Borrow(m.worker_id);
-    h.c.campaign_id = Borrow(m.campaign_id);
-    h.c.argv = h.argv.Sequence(m.argv);
-    h.c.scenario_document = Borrow(m.scenario_document);
-    h.c.timeout_s = m.timeout_s;
+    const JobOrder& o = m.order;
+    const JobParams& p = o.params;
+    CopyIn(h.c.job_id, o.job_id, "job_id");
+    h.c.attempt = o.attempt;
+    CopyIn(h.c.worker_id, m.worker_id, "worker_id");
+    CopyIn(h.c.campaign_id, o.campaign_id, "campaign_id");
+    h.c.timeout_s = o.timeout_s;
+    h.c.kind = static_cast<rlpos_msg_JobKind>(p.kind);
+    CopyIn(h.c.scenario, p.scenario, "scenario");
+    h.c.scenario_document =
+        BorrowOctets(o.scenario_document, wire::kMaxScenarioDocument, "scenario_document");
+    if (p.overrides.size() > wire::kMaxOverrides) throw DdsError("overrides: too many");
+    h.overrides.assign(p.overrides.size(), rlpos_msg_ScenarioOverride{});
+    for (std::size_t i = 0; i < p.overrides.size(); ++i) {
+      CopyIn(h.overrides[i].path, p.overrides[i].path, "override path");
+      CopyIn(h.overrides[i].value, p.overrides[i].value, "override value");
+    }
+    h.c.overrides._maximum = h.c.overrides._length = static_cast<uint32_t>(h.overrides.size());
+    h.c.overrides._buffer = h.overrides.empty() ? nullptr : h.overrides.data();
+    h.c.overrides._release = false;
+    h.c.has_train_seed = p.train_seed.has_value();
+    h.c.train_seed = p.train_seed.value_or(0);
+    h.c.fidelity = p.fidelity == "packet" ? rlpos_msg_FIDELITY_PACKET : rlpos_msg_FIDELITY_ANALYTIC;
+    h.c.train_episodes = p.train_episodes.value_or(0);
+    h.c.positioner = p.positioner == "baseline"   ? rlpos_msg_POSITIONER_BASELINE
+                     : p.positioner == "centroid" ? rlpos_msg_POSITIONER_CENTROID
+                     : p.positioner == "oracle"   ? rlpos_msg_POSITIONER_ORACLE
+                                                  : rlpos_msg_POSITIONER_NONE;
+    h.c.has_position = o.position.has_value();
+    if (o.position) {
+      h.c.x = o.position->x;
+      h.c.y = o.position->y;
+      h.c.z = o.position->z;
+    }
+    h.c.rng_run = p.rng_run.value_or(0);
+    h.c.has_duration = p.duration_s.has_value();
+    h.c.duration_s = p.duration_s.value_or(0);
+    h.c.has_warmup = p.warmup_s.has_value();
+    h.c.warmup_s = p.warmup_s.value_or(0);
   }
-  static msg::JobAssignment FromC(const C& c, bool valid) {
+  static msg::JobAssignment FromC(const C& c, bool valid, std::string& error) {
     msg::JobAssignment m;
-    m.job_id = Copy(c.job_id);
-    if (!valid)
+    JobOrder& o = m.order;
+    JobParams& p = o.params;
+    o.job_id = CopyOut(c.job_id);
+    if (!valid) return m;
+    o.attempt = c.attempt;
+    m.worker_id = CopyOut(c.worker_id);
+    o.campaign_id = CopyOut(c.campaign_id);
+    o.timeout_s = c.timeout_s;
+    p.kind = CheckedEnum<JobKind>(static_cast<int>(c.kind), 3, "kind", error);
+    p.scenario = CopyOut(c.scenario);
+    o.scenario_document = CopyOctets(c.scenario_document, wire::kMaxScenarioDocument,
+                                     "scenario_document", error);
+    if (c.overrides._length > wire::kMaxOverrides ||
+        (c.overrides._length > 0 && !c.overrides._buffer)) {
+      error = "overrides exceed their bound";
       return m;
-    m.attempt = c.attempt;
-    m.worker_id = Copy(c.worker_id);
-    m.campaign_id = Copy(c.campaign_id);
-    m.argv = Copy(c.argv);
-    m.scenario_document = Copy(c.scenario_document);
-    m.timeout_s = c.timeout_s;
+    }
+    for (uint32_t i = 0; i < c.overrides._length; ++i) {
+      p.overrides.push_back(
+          {CopyOut(c.overrides._buffer[i].path), CopyOut(c.overrides._buffer[i].value)});
+    }
+    if (c.has_train_seed) p.train_seed = c.train_seed;
+    const int fidelity = static_cast<int>(c.fidelity);
+    if (fidelity < 0 || fidelity > 1) error = "fidelity " + std::to_string(fidelity) + " is unknown";
+    if (p.kind == JobKind::kTrain) p.fidelity = fidelity == 1 ? "packet" : "analytic";
+    if (c.train_episodes != 0) p.train_episodes = c.train_episodes;
+    switch (static_cast<int>(c.positioner)) {
+      case rlpos_msg_POSITIONER_NONE: break;
+      case rlpos_msg_POSITIONER_BASELINE: p.positioner = "baseline"; break;
+      case rlpos_msg_POSITIONER_CENTROID: p.positioner = "centroid"; break;
+      case rlpos_msg_POSITIONER_ORACLE: p.positioner = "oracle"; break;
+      default: error = "positioner " + std::to_string(static_cast<int>(c.positioner)) + " is unknown";
+    }
+    if (c.has_position) o.position = Vec3{c.x, c.y, c.z};
+    if (p.kind == JobKind::kEval) p.rng_run = c.rng_run;
+    if (c.has_duration) p.duration_s = c.duration_s;
+    if (c.has_warmup) p.warmup_s = c.warmup_s;
     return m;
   }
 };
@@ -149,23 +245,22 @@ struct Traits<msg::JobEvent> {
     C c{};
   };
   static void ToC(const msg::JobEvent& m, Holder& h) {
-    h.c.job_id = Borrow(m.job_id);
+    CopyIn(h.c.job_id, m.job_id, "job_id");
     h.c.attempt = m.attempt;
-    h.c.worker_id = Borrow(m.worker_id);
+    CopyIn(h.c.worker_id, m.worker_id, "worker_id");
     h.c.state = static_cast<rlpos_msg_JobState>(m.state);
-    h.c.result_json = Borrow(m.result_json);
-    h.c.message = Borrow(m.message);
+    h.c.result_json = BorrowOctets(m.result_json, wire::kMaxResultJson, "result_json");
+    CopyIn(h.c.message, m.message, "message");
   }
-  static msg::JobEvent FromC(const C& c, bool valid) {
+  static msg::JobEvent FromC(const C& c, bool valid, std::string& error) {
     msg::JobEvent m;
-    m.job_id = Copy(c.job_id);
-    if (!valid)
-      return m;
+    m.job_id = CopyOut(c.job_id);
+    if (!valid) return m;
     m.attempt = c.attempt;
-    m.worker_id = Copy(c.worker_id);
-    m.state = static_cast<msg::JobState>(c.state);
-    m.result_json = Copy(c.result_json);
-    m.message = Copy(c.message);
+    m.worker_id = CopyOut(c.worker_id);
+    m.state = CheckedEnum<msg::JobState>(static_cast<int>(c.state), 4, "state", error);
+    m.result_json = CopyOctets(c.result_json, wire::kMaxResultJson, "result_json", error);
+    m.message = CopyOut(c.message);
     return m;
   }
 };
@@ -182,21 +277,41 @@ struct Traits<msg::CampaignRequest> {
   }
   struct Holder {
     C c{};
+    std::vector<rlpos_msg_ScenarioFile> scenarios;
   };
   static void ToC(const msg::CampaignRequest& m, Holder& h) {
-    h.c.request_id = Borrow(m.request_id);
+    CopyIn(h.c.request_id, m.request_id, "request_id");
     h.c.kind = static_cast<rlpos_msg_RequestKind>(m.kind);
-    h.c.campaign_id = Borrow(m.campaign_id);
-    h.c.campaign_json = Borrow(m.campaign_json);
+    CopyIn(h.c.campaign_id, m.campaign_id, "campaign_id");
+    h.c.campaign_json = BorrowOctets(m.campaign_json, wire::kMaxCampaignJson, "campaign_json");
+    if (m.scenarios.size() > wire::kMaxCampaignScenarios) throw DdsError("scenarios: too many");
+    h.scenarios.assign(m.scenarios.size(), rlpos_msg_ScenarioFile{});
+    for (std::size_t i = 0; i < m.scenarios.size(); ++i) {
+      CopyIn(h.scenarios[i].file, m.scenarios[i].file, "scenario file");
+      h.scenarios[i].document =
+          BorrowOctets(m.scenarios[i].document, wire::kMaxScenarioDocument, "scenario document");
+    }
+    h.c.scenarios._maximum = h.c.scenarios._length = static_cast<uint32_t>(h.scenarios.size());
+    h.c.scenarios._buffer = h.scenarios.empty() ? nullptr : h.scenarios.data();
+    h.c.scenarios._release = false;
   }
-  static msg::CampaignRequest FromC(const C& c, bool valid) {
+  static msg::CampaignRequest FromC(const C& c, bool valid, std::string& error) {
     msg::CampaignRequest m;
-    m.request_id = Copy(c.request_id);
-    if (!valid)
+    m.request_id = CopyOut(c.request_id);
+    if (!valid) return m;
+    m.kind = CheckedEnum<msg::RequestKind>(static_cast<int>(c.kind), 3, "kind", error);
+    m.campaign_id = CopyOut(c.campaign_id);
+    m.campaign_json = CopyOctets(c.campaign_json, wire::kMaxCampaignJson, "campaign_json", error);
+    if (c.scenarios._length > wire::kMaxCampaignScenarios ||
+        (c.scenarios._length > 0 && !c.scenarios._buffer)) {
+      error = "scenarios exceed their bound";
       return m;
-    m.kind = static_cast<msg::RequestKind>(c.kind);
-    m.campaign_id = Copy(c.campaign_id);
-    m.campaign_json = Copy(c.campaign_json);
+    }
+    for (uint32_t i = 0; i < c.scenarios._length; ++i) {
+      m.scenarios.push_back({CopyOut(c.scenarios._buffer[i].file),
+                             CopyOctets(c.scenarios._buffer[i].document,
+                                        wire::kMaxScenarioDocument, "scenario document", error)});
+    }
     return m;
   }
 };
@@ -208,30 +323,29 @@ struct Traits<msg::CampaignReply> {
   static const dds_topic_descriptor_t* Descriptor() { return &rlpos_msg_CampaignReply_desc; }
   static void Qos(dds_qos_t* qos, bool) {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
-    dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
-    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
+    dds_qset_durability(qos, DDS_DURABILITY_VOLATILE);
+    dds_qset_history(qos, DDS_HISTORY_KEEP_ALL, 0);
   }
   struct Holder {
     C c{};
   };
   static void ToC(const msg::CampaignReply& m, Holder& h) {
-    h.c.request_id = Borrow(m.request_id);
+    CopyIn(h.c.request_id, m.request_id, "request_id");
     h.c.ok = m.ok;
-    h.c.campaign_id = Borrow(m.campaign_id);
+    CopyIn(h.c.campaign_id, m.campaign_id, "campaign_id");
     h.c.jobs = m.jobs;
     h.c.created = m.created;
-    h.c.message = Borrow(m.message);
+    CopyIn(h.c.message, m.message.substr(0, wire::kMaxMessage), "message");
   }
-  static msg::CampaignReply FromC(const C& c, bool valid) {
+  static msg::CampaignReply FromC(const C& c, bool valid, std::string&) {
     msg::CampaignReply m;
-    m.request_id = Copy(c.request_id);
-    if (!valid)
-      return m;
+    m.request_id = CopyOut(c.request_id);
+    if (!valid) return m;
     m.ok = c.ok;
-    m.campaign_id = Copy(c.campaign_id);
+    m.campaign_id = CopyOut(c.campaign_id);
     m.jobs = c.jobs;
     m.created = c.created;
-    m.message = Copy(c.message);
+    m.message = CopyOut(c.message);
     return m;
   }
 };
@@ -285,6 +399,14 @@ void Writer<M>::Dispose(const M& key) {
 }
 
 template <typename M>
+void Writer<M>::Unregister(const M& key) {
+  typename Traits<M>::Holder holder;
+  Traits<M>::ToC(key, holder);
+  CheckDds(dds_unregister_instance(writer_, &holder.c),
+           std::string("unregistering in ") + Traits<M>::kTopic);
+}
+
+template <typename M>
 int Writer<M>::MatchedReaders() const {
   dds_publication_matched_status_t status{};
   CheckDds(dds_get_publication_matched_status(writer_, &status), "publication status");
@@ -319,7 +441,8 @@ std::vector<Received<M>> Reader<M>::Take() {
       Received<M> r;
       r.valid = infos[i].valid_data;
       r.state = StateOf(infos[i]);
-      r.data = Traits<M>::FromC(c, r.valid);
+      r.writer = infos[i].publication_handle;
+      r.data = Traits<M>::FromC(c, r.valid, r.decode_error);
       out.push_back(std::move(r));
     }
     if (n > 0)
@@ -327,6 +450,27 @@ std::vector<Received<M>> Reader<M>::Take() {
     if (static_cast<std::size_t>(n) < kBatch)
       return out;
   }
+}
+
+template <typename M>
+std::string Reader<M>::WriterParticipant(std::uint64_t publication_handle) {
+  if (const auto it = participants_.find(publication_handle); it != participants_.end()) {
+    return it->second;
+  }
+  dds_builtintopic_endpoint_t* endpoint =
+      dds_get_matched_publication_data(reader_, publication_handle);
+  if (!endpoint) return "";
+  static const char kHex[] = "0123456789abcdef";
+  std::string guid;
+  for (const unsigned char byte : endpoint->participant_key.v) {
+    guid += kHex[byte >> 4];
+    guid += kHex[byte & 15];
+  }
+  dds_builtintopic_free_endpoint(endpoint);
+  // Writers come and go (clients, restarted workers): keep the cache from growing without end.
+  if (participants_.size() >= 4096) participants_.clear();
+  participants_.emplace(publication_handle, guid);
+  return guid;
 }
 
 template <typename M>

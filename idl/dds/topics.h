@@ -6,12 +6,20 @@
 //                    cleanly, so that readers tell "stopped" (disposed) from "lost" (no
 //                    writers)
 //   JobAssignment    reliable, transient-local, keep last 1; a coordinator that stops does NOT
-//                    dispose its assignments (a restart must not stop the workers' jobs)
-//   JobEvent         reliable, transient-local (the worker keeps its last event per job, so a
-//                    restarted coordinator still gets results); readers keep all
+//                    dispose its assignments (a restart must not stop the workers' jobs); a
+//                    settled job's instance is disposed and unregistered
+//   JobEvent         reliable, transient-local (the worker keeps its last event per job until
+//                    the job is settled, so a restarted coordinator still gets results);
+//                    readers keep all
 //   CampaignRequest  reliable, volatile, keep all
-//   CampaignReply    reliable, transient-local, keep last 1
+//   CampaignReply    reliable, volatile, keep all: the client waits for the coordinator's
+//                    writer before it asks, and each reply is unregistered once written, so
+//                    nothing is kept per request
+// Strings and documents are checked against the IDL's bounds both ways: Write throws DdsError
+// for a field too long; Take marks a sample that does not decode (decode_error).
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "dds/messages.h"
@@ -26,6 +34,8 @@ struct Received {
   M data;             // only the key fields when !valid
   bool valid = true;  // false: a state change only (disposed, or the writer is gone)
   InstanceState state = InstanceState::kAlive;
+  std::uint64_t writer = 0;  // the publication handle of the writer (see WriterParticipant)
+  std::string decode_error;  // non-empty: the sample broke a bound or an enum; drop it
 };
 
 template <typename M>
@@ -39,6 +49,9 @@ class Writer {
   void Write(const M& message);
   // Disposes the instance with `key`'s key fields (the others are ignored).
   void Dispose(const M& key);
+  // Forgets the instance: the writer keeps nothing of it any more (and a reader, once it has
+  // taken its samples, neither).
+  void Unregister(const M& key);
   int MatchedReaders() const;
 
  private:
@@ -55,11 +68,15 @@ class Reader {
 
   // Everything received since the last Take, in reception order.
   std::vector<Received<M>> Take();
+  // The GUID (hex) of the participant that owns the writer `publication_handle`, or "" when
+  // that writer is not (or no longer) matched. Cached per handle.
+  std::string WriterParticipant(std::uint64_t publication_handle);
   int MatchedWriters() const;
   std::int32_t handle() const { return reader_; }
 
  private:
   std::int32_t topic_ = 0, reader_ = 0;
+  std::map<std::uint64_t, std::string> participants_;  // publication handle -> participant
 };
 
 }  // namespace rlpos

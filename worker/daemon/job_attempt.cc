@@ -7,7 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "campaign/job_argv.h"
+#include "config/number_text.h"
+#include "daemon/sim_command.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;
@@ -50,21 +51,6 @@ std::string AttemptFolder(const std::string& work_dir, const std::string& job_id
   return (folder / ("attempt" + std::to_string(attempt))).string();
 }
 
-std::vector<std::string> BindJobArgv(const JobAttemptSpec& spec, const std::string& folder,
-                                     const std::string& sim_binary) {
-  std::vector<std::string> argv = spec.argv;
-  if (!argv.empty() && argv[0] == kSimBinary)
-    argv[0] = sim_binary;
-  BindPlaceholder(argv, kOutDirPlaceholder, (fs::path(folder) / "out").string());
-  if (!spec.scenario_document.empty()) {
-    for (std::size_t i = 1; i + 1 < argv.size(); ++i) {
-      if (argv[i] == "--scenario")
-        argv[i + 1] = (fs::path(folder) / "scenario.json").string();
-    }
-  }
-  return argv;
-}
-
 std::string TailOfLog(const std::string& file, int lines, std::size_t max_chars) {
   std::stringstream text(ReadFile(file));
   std::vector<std::string> kept;
@@ -85,21 +71,21 @@ std::string TailOfLog(const std::string& file, int lines, std::size_t max_chars)
   return out;
 }
 
-JobAttempt::JobAttempt(JobAttemptSpec spec, const std::string& work_dir,
-                       const std::string& sim_binary)
-    : spec_(std::move(spec)), folder_(AttemptFolder(work_dir, spec_.job_id, spec_.attempt)) {
+JobAttempt::JobAttempt(JobOrder order, const nlohmann::json& scenario,
+                       const std::string& work_dir, const std::string& sim_binary)
+    : order_(std::move(order)), folder_(AttemptFolder(work_dir, order_.job_id, order_.attempt)) {
   std::error_code error;
   fs::remove_all(folder_, error);  // a leftover of an earlier worker with this id
   fs::create_directories(folder_, error);
   if (error)
     throw std::runtime_error(folder_ + ": " + error.message());
-  if (!spec_.scenario_document.empty()) {
-    std::ofstream out(fs::path(folder_) / "scenario.json");
-    out << spec_.scenario_document;
+  {
+    std::ofstream out(fs::path(folder_) / kScenarioFileName);
+    out << scenario.dump(2) << '\n';
     if (!out)
-      throw std::runtime_error(folder_ + "/scenario.json: cannot write");
+      throw std::runtime_error(folder_ + "/" + kScenarioFileName + ": cannot write");
   }
-  const auto argv = BindJobArgv(spec_, folder_, sim_binary);
+  const auto argv = SimCommandLine(order_, sim_binary, folder_);
   {
     std::ofstream command(fs::path(folder_) / "command.txt");
     for (const auto& a : argv)
@@ -111,7 +97,7 @@ JobAttempt::JobAttempt(JobAttemptSpec spec, const std::string& work_dir,
 }
 
 std::string JobAttempt::Key() const {
-  return spec_.job_id + "#" + std::to_string(spec_.attempt);
+  return order_.job_id + "#" + std::to_string(order_.attempt);
 }
 
 std::optional<JobOutcome> JobAttempt::Poll() {
@@ -119,10 +105,10 @@ std::optional<JobOutcome> JobAttempt::Poll() {
   if (!child_->Poll()) {
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-    if (spec_.timeout_s <= 0 || elapsed <= spec_.timeout_s)
+    if (elapsed <= order_.timeout_s)
       return std::nullopt;
     child_->Kill();
-    outcome.error = "timed out after " + FormatNumber(spec_.timeout_s) + " s";
+    outcome.error = "timed out after " + FormatNumber(order_.timeout_s) + " s";
     return outcome;
   }
   const ChildExit& exit = child_->exit_status();

@@ -31,6 +31,9 @@ int main(int argc, char** argv) {
                  "Folder of the jobs' files (default: results/work/<id>)");
   AddDdsOptions(&app, dds);
   app.add_option("--sim", options.sim_binary, "rlpos-sim to run (default: the sibling binary)");
+  app.add_option("--max-timeout", options.max_timeout_s,
+                 "Longest job timeout accepted, seconds (default 604800: a week)")
+      ->check(CLI::Range(1.0, 1e8));
   app.add_option("--log-level", log_level, "error|warning|info|debug")
       ->check(CLI::IsMember({"error", "warning", "info", "debug"}));
   try {

@@ -9,6 +9,8 @@
 #include "logging/log.h"
 #include "process/host_name.h"
 #include "process/stop_signal.h"
+#include "wire/identifiers.h"
+#include "wire/limits.h"
 
 namespace rlpos {
 
@@ -41,51 +43,90 @@ void WorkerDaemon::PublishStatus() {
   dds_->status.Write(status);
 }
 
+void WorkerDaemon::Settle(const std::string& job_id) {
+  const auto it = running_.find(job_id);
+  if (it != running_.end()) {
+    Log(LogLevel::kInfo, "stopping " + it->second->Key() + " (withdrawn by the coordinator)");
+    it->second->Stop();
+    running_.erase(it);
+  }
+  progress_sent_.erase(job_id);
+  if (taken_.erase(job_id)) {
+    msg::JobEvent key;
+    key.job_id = job_id;
+    dds_->events.Unregister(key);
+  }
+}
+
+void WorkerDaemon::Start(msg::JobAssignment a) {
+  const std::string job_id = a.order.job_id;
+  const int attempt = a.order.attempt;
+  const std::string key = job_id + "#" + std::to_string(attempt);
+  if (const auto it = running_.find(job_id); it != running_.end()) {
+    // A newer attempt of a job we still run: the old one is out of date.
+    it->second->Stop();
+    running_.erase(it);
+  }
+  taken_[job_id] = attempt;
+  msg::JobEvent event;
+  event.job_id = job_id;
+  event.attempt = attempt;
+  event.worker_id = options_.id;
+  try {
+    if (static_cast<int>(running_.size()) >= options_.slots) {
+      throw std::runtime_error("no free slot (" + std::to_string(options_.slots) + " busy)");
+    }
+    // Checked before anything is written: a bad order leaves no trace but the event.
+    CheckedOrder checked;
+    try {
+      checked = CheckJobOrder(a.order, options_.max_timeout_s);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(std::string("invalid job: ") + e.what());
+    }
+    running_[job_id] =
+        std::make_unique<JobAttempt>(std::move(a.order), checked.scenario, options_.work_dir,
+                                     options_.sim_binary);
+    event.state = msg::JobState::kStarted;
+    Log(LogLevel::kInfo, "started " + key);
+  } catch (const std::exception& e) {
+    event.state = msg::JobState::kFailed;
+    event.message = std::string("worker could not start the job: ") + e.what();
+    event.message = event.message.substr(0, wire::kMaxMessage - 1);
+    Log(LogLevel::kWarning, key + ": " + event.message);
+  }
+  dds_->events.Write(event);
+}
+
 void WorkerDaemon::TakeAssignments() {
   bool changed = false;
-  for (const auto& r : dds_->assignments.Take()) {
-    const std::string& job_id = r.data.job_id;
+  for (auto& r : dds_->assignments.Take()) {
+    const std::string& job_id = r.data.order.job_id;
+    const std::string sender = dds_->assignments.WriterParticipant(r.writer);
     if (!r.valid) {
       // Disposed: the coordinator withdrew the job (cancelled, timed out, or its result is in).
       // A coordinator that merely went away (no writers) leaves our jobs running.
-      if (r.state != InstanceState::kDisposed)
-        continue;
-      const auto it = running_.find(job_id);
-      if (it == running_.end())
-        continue;
-      Log(LogLevel::kInfo, "stopping " + it->second->Key() + " (withdrawn by the coordinator)");
-      it->second->Stop();
-      running_.erase(it);
-      progress_sent_.erase(job_id);
-      changed = true;
+      if (r.state == InstanceState::kDisposed) {
+        changed = changed || running_.count(job_id) > 0;
+        Settle(job_id);
+      }
+      continue;
+    }
+    if (!r.decode_error.empty()) {
+      dropped_.Drop(sender.empty() ? "an unknown writer" : sender, r.decode_error);
       continue;
     }
     if (r.data.worker_id != options_.id)
+      continue;  // another worker's
+    const auto taken = taken_.find(job_id);
+    if (taken != taken_.end() && taken->second >= r.data.order.attempt)
+      continue;  // republished after a coordinator restart, or older than what we run
+    if (!wire::IsSafePath(job_id, wire::kMaxIdLength) || r.data.order.attempt < 1 ||
+        r.data.order.attempt > wire::kMaxAttempt) {
+      // Not even a job we could report on: drop it.
+      dropped_.Drop(sender.empty() ? "an unknown writer" : sender, "bad job id or attempt");
       continue;
-    const std::string key = job_id + "#" + std::to_string(r.data.attempt);
-    if (!seen_.insert(key).second)
-      continue;  // republished after a coordinator restart
-    if (const auto it = running_.find(job_id); it != running_.end()) {
-      // A newer attempt of a job we still run: the old one is out of date.
-      it->second->Stop();
-      running_.erase(it);
     }
-    JobAttemptSpec spec{job_id, r.data.attempt, r.data.argv, r.data.scenario_document,
-                        r.data.timeout_s};
-    msg::JobEvent event;
-    event.job_id = job_id;
-    event.attempt = r.data.attempt;
-    event.worker_id = options_.id;
-    try {
-      running_[job_id] = std::make_unique<JobAttempt>(spec, options_.work_dir, options_.sim_binary);
-      event.state = msg::JobState::kStarted;
-      Log(LogLevel::kInfo, "started " + key);
-    } catch (const std::exception& e) {
-      event.state = msg::JobState::kFailed;
-      event.message = std::string("worker could not start the job: ") + e.what();
-      Log(LogLevel::kWarning, key + ": " + event.message);
-    }
-    dds_->events.Write(event);
+    Start(std::move(r.data));
     changed = true;
   }
   if (changed)
@@ -102,11 +143,16 @@ void WorkerDaemon::PollJobs() {
     }
     msg::JobEvent event;
     event.job_id = it->first;
-    event.attempt = it->second->spec().attempt;
+    event.attempt = it->second->order().attempt;
     event.worker_id = options_.id;
     event.state = outcome->succeeded ? msg::JobState::kSucceeded : msg::JobState::kFailed;
     event.result_json = outcome->result_json;
-    event.message = outcome->error;
+    event.message = outcome->error.substr(0, wire::kMaxMessage - 1);
+    if (event.result_json.size() > wire::kMaxResultJson) {
+      event.state = msg::JobState::kFailed;
+      event.result_json.clear();
+      event.message = "the result is larger than " + std::to_string(wire::kMaxResultJson) + " bytes";
+    }
     Log(outcome->succeeded ? LogLevel::kInfo : LogLevel::kWarning,
         it->second->Key() + (outcome->succeeded ? " succeeded" : " failed: " + outcome->error));
     dds_->events.Write(event);
@@ -126,10 +172,10 @@ void WorkerDaemon::ReportProgress() {
     progress_sent_[job_id] = line;
     msg::JobEvent event;
     event.job_id = job_id;
-    event.attempt = job->spec().attempt;
+    event.attempt = job->order().attempt;
     event.worker_id = options_.id;
     event.state = msg::JobState::kProgress;
-    event.message = line;
+    event.message = line.substr(0, wire::kMaxMessage - 1);
     dds_->events.Write(event);
   }
 }

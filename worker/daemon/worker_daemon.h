@@ -1,14 +1,19 @@
 #pragma once
 // rlpos-worker's loop: announce itself (WorkerStatus, automatic liveliness), take the
-// assignments addressed to it, run each in a child rlpos-sim (JobAttempt), report started /
-// progress / succeeded / failed (JobEvent), and stop a job whose assignment is disposed.
+// assignments addressed to it, check each (CheckJobOrder: bounds, kinds, the scenario parsed,
+// a timeout in (0, cap], a free slot) before anything is written, run it in a child rlpos-sim
+// (JobAttempt), report started / progress / succeeded / failed (JobEvent), and stop a job whose
+// assignment is disposed. A disposed assignment also ends the job's event instance here: the
+// worker keeps nothing per finished job.
 #include <map>
 #include <memory>
 #include <set>
 #include <string>
 
 #include "daemon/job_attempt.h"
+#include "dds/messages.h"
 #include "dds/participant.h"
+#include "logging/drop_log.h"
 
 namespace rlpos {
 
@@ -18,6 +23,7 @@ struct WorkerOptions {
   std::string work_dir;    // attempt folders go below
   std::string sim_binary;  // rlpos-sim
   double progress_period_s = 2.0;
+  double max_timeout_s = 7 * 86400.0;  // longest job timeout it accepts
 };
 
 class WorkerDaemon {
@@ -33,13 +39,18 @@ class WorkerDaemon {
   void TakeAssignments();
   void PollJobs();
   void ReportProgress();
+  void Settle(const std::string& job_id);
+  void Start(msg::JobAssignment assignment);
 
   WorkerOptions options_;
   Participant participant_;
   std::unique_ptr<Endpoints> dds_;
   std::map<std::string, std::unique_ptr<JobAttempt>> running_;  // by job id
   std::map<std::string, std::string> progress_sent_;            // by job id
-  std::set<std::string> seen_;  // "<job id>#<attempt>" this worker started: never run twice
+  // Attempts this worker took, by job id, until the coordinator settles the job: a republished
+  // assignment (coordinator restart) never runs twice. Their event instances are registered.
+  std::map<std::string, int> taken_;
+  DropLog dropped_{"job assignment"};
 };
 
 }  // namespace rlpos

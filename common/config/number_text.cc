@@ -1,4 +1,4 @@
-#include "campaign/job_argv.h"
+#include "config/number_text.h"
 
 #include <charconv>
 #include <system_error>
@@ -14,25 +14,6 @@ std::string FormatNumber(double x) {
 
 std::string FormatPosition(const Vec3& p) {
   return FormatNumber(p.x) + "," + FormatNumber(p.y) + "," + FormatNumber(p.z);
-}
-
-int BindPlaceholder(std::vector<std::string>& argv, const std::string& placeholder,
-                    const std::string& value) {
-  int bound = 0;
-  for (auto& arg : argv) {
-    if (arg == placeholder) {
-      arg = value;
-      ++bound;
-    }
-  }
-  return bound;
-}
-
-bool HasUnboundPlaceholder(const std::vector<std::string>& argv) {
-  for (const auto& arg : argv) {
-    if (arg == kPositionPlaceholder || arg == kOutDirPlaceholder) return true;
-  }
-  return false;
 }
 
 }  // namespace rlpos

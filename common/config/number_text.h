@@ -1,0 +1,14 @@
+#pragma once
+// Numbers as text that reads back exactly: what goes into messages, overrides and command lines.
+#include <string>
+
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+// Shortest text that reads back as the same double ("2", "0.5", "44.5").
+std::string FormatNumber(double x);
+// "x,y,z" as rlpos-sim --position takes it.
+std::string FormatPosition(const Vec3& p);
+
+}  // namespace rlpos

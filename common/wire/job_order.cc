@@ -1,0 +1,141 @@
+#include "wire/job_order.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "config/config_error.h"
+#include "config/number_text.h"
+#include "scenario/scenario_checks.h"
+#include "scenario/scenario_parser.h"
+#include "wire/identifiers.h"
+#include "wire/json_text.h"
+#include "wire/limits.h"
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void Bad(const std::string& field, const std::string& problem) {
+  throw std::invalid_argument(field + ": " + problem);
+}
+
+void CheckDuration(const std::optional<double>& v, const char* field, bool zero_ok) {
+  if (!v) return;
+  // A day of simulated time is far past any experiment; NaN fails every comparison.
+  if (!(std::isfinite(*v) && (zero_ok ? *v >= 0 : *v > 0) && *v <= 86400)) {
+    Bad(field, "must be in " + std::string(zero_ok ? "[0" : "(0") + ", 86400] s, got " +
+                   FormatNumber(*v));
+  }
+}
+
+void CheckParams(const JobParams& p) {
+  if (!wire::IsSafeName(p.scenario, wire::kMaxNameLength)) {
+    Bad("scenario", "not a scenario name: \"" + wire::Printable(p.scenario) + "\"");
+  }
+  switch (p.kind) {
+    case JobKind::kTrain:
+      if (!p.train_seed) Bad("train_seed", "a train job needs one");
+      if (p.fidelity != "analytic" && p.fidelity != "packet") {
+        Bad("fidelity", "must be analytic or packet, got \"" + wire::Printable(p.fidelity) + "\"");
+      }
+      if (p.train_episodes && (*p.train_episodes < 1 || *p.train_episodes > 1000000)) {
+        Bad("train_episodes", "must be in 1..1000000");
+      }
+      break;
+    case JobKind::kPosition:
+      if (p.positioner != "baseline" && p.positioner != "centroid" && p.positioner != "oracle") {
+        Bad("positioner", "must be baseline, centroid or oracle, got \"" +
+                              wire::Printable(p.positioner) + "\"");
+      }
+      break;
+    case JobKind::kEval:
+      if (!p.rng_run || *p.rng_run < 1 || *p.rng_run > 4294967295ULL) {
+        Bad("rng_run", "an eval job needs one in 1..4294967295");
+      }
+      break;
+    default:
+      Bad("kind", "unknown job kind " + std::to_string(static_cast<int>(p.kind)));
+  }
+  CheckDuration(p.duration_s, "duration_s", false);
+  CheckDuration(p.warmup_s, "warmup_s", true);
+  if (p.overrides.size() > wire::kMaxOverrides) Bad("overrides", "too many");
+  for (const auto& o : p.overrides) CheckOverride(o);
+}
+
+}  // namespace
+
+void CheckOverride(const ScenarioOverride& o) {
+  // Dotted paths or JSON pointers of plain keys and indices: nothing else reaches a scenario.
+  std::string path = o.path;
+  if (!path.empty() && path[0] == '/') path = path.substr(1);
+  for (auto& c : path) c = c == '.' ? '/' : c;
+  if (!wire::IsSafePath(path, wire::kMaxOverridePath)) {
+    Bad("overrides", "not a scenario path: \"" + wire::Printable(o.path) + "\"");
+  }
+  if (o.value.size() > wire::kMaxOverrideValue) Bad("overrides", "value too long");
+  if (wire::JsonNestingDepth(o.value) > wire::kMaxJsonDepth) Bad("overrides", "value too deep");
+}
+
+json EffectiveScenarioDocument(const json& document, const JobParams& params) {
+  std::vector<std::string> settings;
+  if (params.train_episodes) {
+    settings.push_back("agent.train_episodes=" + std::to_string(*params.train_episodes));
+  }
+  if (params.duration_s) settings.push_back("simulation.duration=" + FormatNumber(*params.duration_s));
+  if (params.kind == JobKind::kEval && params.rng_run) {
+    settings.push_back("simulation.run=" + std::to_string(*params.rng_run));
+  }
+  if (params.warmup_s) settings.push_back("simulation.warmup=" + FormatNumber(*params.warmup_s));
+  for (const auto& o : params.overrides) settings.push_back(ToString(o));
+  json effective = document;
+  ApplyOverrides(effective, settings);
+  return effective;
+}
+
+CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s) {
+  if (!wire::IsSafePath(order.job_id, wire::kMaxIdLength)) {
+    Bad("job_id", "not a job id: \"" + wire::Printable(order.job_id) + "\"");
+  }
+  if (!wire::IsSafeName(order.campaign_id, wire::kMaxCampaignIdLength) ||
+      order.job_id.compare(0, order.campaign_id.size() + 1, order.campaign_id + "/") != 0) {
+    Bad("campaign_id", "\"" + wire::Printable(order.campaign_id) + "\" does not own job " +
+                           wire::Printable(order.job_id));
+  }
+  if (order.attempt < 1 || order.attempt > wire::kMaxAttempt) {
+    Bad("attempt", "must be in 1.." + std::to_string(wire::kMaxAttempt));
+  }
+  if (!(std::isfinite(order.timeout_s) && order.timeout_s > 0 && order.timeout_s <= max_timeout_s)) {
+    Bad("timeout_s", "must be in (0, " + FormatNumber(max_timeout_s) + "] s, got " +
+                         FormatNumber(order.timeout_s));
+  }
+  CheckParams(order.params);
+  CheckedOrder checked;
+  const json document =
+      wire::ParseBoundedJson(order.scenario_document, wire::kMaxScenarioDocument, "scenario_document");
+  try {
+    checked.scenario = EffectiveScenarioDocument(document, order.params);
+    checked.parsed = ParseScenario(checked.scenario);
+  } catch (const ConfigError& e) {
+    Bad("scenario_document", e.describe());
+  }
+  if (checked.parsed.name != order.params.scenario) {
+    Bad("scenario", "the document's scenario is \"" + wire::Printable(checked.parsed.name) +
+                        "\", the job's \"" + order.params.scenario + "\"");
+  }
+  if (order.params.kind == JobKind::kEval) {
+    if (!order.position) Bad("position", "an eval job needs one");
+    const Vec3& p = *order.position;
+    const Venue& v = checked.parsed.venue;
+    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x >= 0 &&
+          p.x <= v.width && p.y >= 0 && p.y <= v.depth && p.z >= 0 && p.z <= v.height)) {
+      Bad("position", FormatPosition(p) + " is outside the venue");
+    }
+    if (BuildingContaining(checked.parsed, p) >= 0) {
+      Bad("position", FormatPosition(p) + " is inside a building");
+    }
+  }
+  return checked;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,43 @@
+#pragma once
+// One attempt of one job as the coordinator orders it from a worker: the typed job, where the
+// UAV goes, the campaign's scenario document and the attempt's limits. The IDL type
+// JobAssignment carries exactly these fields (and the worker it is for).
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "campaign/job.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+struct JobOrder {
+  std::string job_id, campaign_id;
+  int attempt = 1;
+  double timeout_s = 0;
+  JobParams params;
+  std::optional<Vec3> position;   // eval: bound by the coordinator when the dependency succeeds
+  std::string scenario_document;  // the campaign scenario's JSON, before any override
+};
+
+// What a validated order runs.
+struct CheckedOrder {
+  nlohmann::json scenario;  // the document with the job's settings and overrides applied
+  Scenario parsed;          // ParseScenario of it
+};
+
+// An override's path holds only plain keys and indices ([A-Za-z0-9._@+-], '/' or '.' between
+// them), its value is bounded. Throws std::invalid_argument.
+void CheckOverride(const ScenarioOverride& o);
+
+// The scenario document a job runs: the campaign's document, then the job's own settings
+// (agent.train_episodes, simulation.duration, simulation.run, simulation.warmup), then the
+// campaign scenario's overrides in order (the most specific wins). Throws ConfigError.
+nlohmann::json EffectiveScenarioDocument(const nlohmann::json& document, const JobParams& params);
+
+// Checks every field of an order that came over the network, and the scenario it describes
+// (parsed and validated as rlpos-sim would; the position inside the venue and outside every
+// building). `max_timeout_s` is the worker's cap. Throws std::invalid_argument naming the field.
+CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s);
+
+}  // namespace rlpos

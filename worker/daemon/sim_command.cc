@@ -1,0 +1,35 @@
+#include "daemon/sim_command.h"
+
+#include <filesystem>
+
+#include "config/number_text.h"
+
+namespace rlpos {
+
+std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string& sim_binary,
+                                        const std::string& folder) {
+  namespace fs = std::filesystem;
+  const std::string scenario = (fs::path(folder) / kScenarioFileName).string();
+  const JobParams& p = order.params;
+  switch (p.kind) {
+    case JobKind::kTrain:
+      return {sim_binary, "train",      "--scenario", scenario,
+              "--seed",   std::to_string(p.train_seed.value_or(0)),
+              "--fidelity", p.fidelity == "packet" ? "packet" : "analytic",
+              "--out",    (fs::path(folder) / kOutFolderName).string(), "--json"};
+    case JobKind::kPosition: {
+      // One of the three names CheckJobOrder lets through, spelt by us.
+      const char* positioner = p.positioner == "oracle"     ? "oracle"
+                               : p.positioner == "centroid" ? "centroid"
+                                                            : "baseline";
+      return {sim_binary, "position", "--scenario", scenario, "--positioner", positioner, "--json"};
+    }
+    case JobKind::kEval:
+      break;
+  }
+  // Duration, run and warm-up are in the scenario file already.
+  return {sim_binary, "eval",   "--scenario", scenario, "--position",
+          FormatPosition(order.position.value_or(Vec3{})), "--json", "--no-progress"};
+}
+
+}  // namespace rlpos
