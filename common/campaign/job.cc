@@ -6,17 +6,23 @@ namespace rlpos {
 
 const char* ToString(JobKind kind) {
   switch (kind) {
-    case JobKind::kTrain: return "train";
-    case JobKind::kPosition: return "position";
-    case JobKind::kEval: return "eval";
+    case JobKind::kTrain:
+      return "train";
+    case JobKind::kPosition:
+      return "position";
+    case JobKind::kEval:
+      return "eval";
   }
   return "?";
 }
 
 JobKind ParseJobKind(const std::string& text) {
-  if (text == "train") return JobKind::kTrain;
-  if (text == "position") return JobKind::kPosition;
-  if (text == "eval") return JobKind::kEval;
+  if (text == "train")
+    return JobKind::kTrain;
+  if (text == "position")
+    return JobKind::kPosition;
+  if (text == "eval")
+    return JobKind::kEval;
   throw std::invalid_argument("unknown job kind \"" + text + "\"");
 }
 
@@ -28,6 +34,8 @@ ScenarioOverride ParseOverride(const std::string& text) {
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-std::string ToString(const ScenarioOverride& o) { return o.path + "=" + o.value; }
+std::string ToString(const ScenarioOverride& o) {
+  return o.path + "=" + o.value;
+}
 
 }  // namespace rlpos

@@ -32,22 +32,22 @@ std::string ToString(const ScenarioOverride& o);  // "path=value"
 // What one job runs: the fields a worker needs besides the scenario document and the attempt.
 struct JobParams {
   JobKind kind = JobKind::kEval;
-  std::string scenario;                         // the scenario's name in its campaign
-  std::optional<std::uint64_t> train_seed;      // train jobs (and the evals that depend on them)
-  std::string fidelity;                         // train: "analytic" | "packet"
-  std::optional<int> train_episodes;            // train: unset = the scenario's
-  std::string positioner;                       // position: "baseline" | "centroid" | "oracle"
-  std::optional<std::uint64_t> rng_run;         // eval
-  std::optional<double> duration_s, warmup_s;   // unset = the scenario's simulation settings
-  std::vector<ScenarioOverride> overrides;      // the campaign scenario's "set", in order
+  std::string scenario;                        // the scenario's name in its campaign
+  std::optional<std::uint64_t> train_seed;     // train jobs (and the evals that depend on them)
+  std::string fidelity;                        // train: "analytic" | "packet"
+  std::optional<int> train_episodes;           // train: unset = the scenario's
+  std::string positioner;                      // position: "baseline" | "centroid" | "oracle"
+  std::optional<std::uint64_t> rng_run;        // eval
+  std::optional<double> duration_s, warmup_s;  // unset = the scenario's simulation settings
+  std::vector<ScenarioOverride> overrides;     // the campaign scenario's "set", in order
 };
 
 struct Job {
-  std::string id;          // "<campaign id>/<key>"
-  std::string key;         // train/<scenario>/seed<N> | position/<scenario>/<positioner> |
-                           // eval/<scenario>/<label>/run<R>
-  std::string label;       // baseline|centroid|oracle|rl|offset1..5, "@seed<N>" for later seeds
-  std::string depends_on;  // id of the job whose position this one needs, "" for none
+  std::string id;              // "<campaign id>/<key>"
+  std::string key;             // train/<scenario>/seed<N> | position/<scenario>/<positioner> |
+                               // eval/<scenario>/<label>/run<R>
+  std::string label;           // baseline|centroid|oracle|rl|offset1..5, "@seed<N>" for later seeds
+  std::string depends_on;      // id of the job whose position this one needs, "" for none
   PositionRule position_rule;  // eval jobs: how their position follows from the dependency's
   JobParams params;
 };

@@ -33,7 +33,8 @@ LegacyJobFields LegacyJobFieldsFromArgv(const std::string& argv_json) {
       std::istringstream in(value);
       Vec3 p;
       char c1 = 0, c2 = 0;
-      if (in >> p.x >> c1 >> p.y >> c2 >> p.z && c1 == ',' && c2 == ',') f.position = p;
+      if (in >> p.x >> c1 >> p.y >> c2 >> p.z && c1 == ',' && c2 == ',')
+        f.position = p;
     } else {
       continue;
     }

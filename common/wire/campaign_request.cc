@@ -15,7 +15,8 @@ ExpandedCampaign ExpandSubmittedCampaign(const std::string& campaign_json,
                                          const std::vector<SubmittedScenario>& scenarios,
                                          const SubmitLimits& limits) {
   std::size_t bytes = campaign_json.size();
-  for (const auto& s : scenarios) bytes += s.file.size() + s.document.size();
+  for (const auto& s : scenarios)
+    bytes += s.file.size() + s.document.size();
   if (bytes > limits.max_request_bytes) {
     throw std::invalid_argument("the request is " + std::to_string(bytes) +
                                 " bytes, more than the coordinator's limit of " +
@@ -43,8 +44,8 @@ ExpandedCampaign ExpandSubmittedCampaign(const std::string& campaign_json,
     throw std::invalid_argument("campaign: " + e.describe());
   }
   // Count before expanding: a hostile campaign must not make the coordinator build a huge list.
-  std::size_t jobs_per_scenario = 3 + spec.train.seeds.size() * (1 + 6 * spec.rng_runs.size()) +
-                                  3 * spec.rng_runs.size();
+  std::size_t jobs_per_scenario =
+      3 + spec.train.seeds.size() * (1 + 6 * spec.rng_runs.size()) + 3 * spec.rng_runs.size();
   if (spec.scenarios.size() * jobs_per_scenario > 4 * limits.max_jobs) {
     throw std::invalid_argument("the campaign has more than " + std::to_string(limits.max_jobs) +
                                 " jobs (the coordinator's limit)");
@@ -66,7 +67,8 @@ CampaignSubmission ReadCampaignSubmission(const std::string& campaign_file) {
   out.campaign_json = document.dump();
   std::map<std::string, bool> sent;
   for (const auto& s : spec.scenarios) {
-    if (sent[s.file]) continue;
+    if (sent[s.file])
+      continue;
     sent[s.file] = true;
     out.scenarios.push_back({s.file, s.document.dump()});
   }

@@ -11,22 +11,27 @@ bool IsNameChar(char c) {
 }  // namespace
 
 bool IsSafeName(const std::string& text, std::size_t max_length) {
-  if (text.empty() || text.size() > max_length || text == "." || text == "..") return false;
+  if (text.empty() || text.size() > max_length || text == "." || text == "..")
+    return false;
   for (const char c : text) {
-    if (!IsNameChar(c)) return false;
+    if (!IsNameChar(c))
+      return false;
   }
   return true;
 }
 
 bool IsSafePath(const std::string& text, std::size_t max_length) {
-  if (text.empty() || text.size() > max_length) return false;
+  if (text.empty() || text.size() > max_length)
+    return false;
   std::size_t begin = 0;
   for (;;) {
     const std::size_t slash = text.find('/', begin);
     const std::string part =
         text.substr(begin, slash == std::string::npos ? std::string::npos : slash - begin);
-    if (!IsSafeName(part, max_length)) return false;
-    if (slash == std::string::npos) return true;
+    if (!IsSafeName(part, max_length))
+      return false;
+    if (slash == std::string::npos)
+      return true;
     begin = slash + 1;
   }
 }
@@ -37,7 +42,8 @@ std::string Printable(const std::string& text, std::size_t max) {
     const auto u = static_cast<unsigned char>(c);
     out += (u >= 0x20 && u < 0x7f) ? c : '?';
   }
-  if (text.size() > max) out += "...";
+  if (text.size() > max)
+    out += "...";
   return out;
 }
 

@@ -21,11 +21,12 @@ using nlohmann::json;
 }
 
 void CheckDuration(const std::optional<double>& v, const char* field, bool zero_ok) {
-  if (!v) return;
+  if (!v)
+    return;
   // A day of simulated time is far past any experiment; NaN fails every comparison.
   if (!(std::isfinite(*v) && (zero_ok ? *v >= 0 : *v > 0) && *v <= 86400)) {
-    Bad(field, "must be in " + std::string(zero_ok ? "[0" : "(0") + ", 86400] s, got " +
-                   FormatNumber(*v));
+    Bad(field,
+        "must be in " + std::string(zero_ok ? "[0" : "(0") + ", 86400] s, got " + FormatNumber(*v));
   }
 }
 
@@ -35,7 +36,8 @@ void CheckParams(const JobParams& p) {
   }
   switch (p.kind) {
     case JobKind::kTrain:
-      if (!p.train_seed) Bad("train_seed", "a train job needs one");
+      if (!p.train_seed)
+        Bad("train_seed", "a train job needs one");
       if (p.fidelity != "analytic" && p.fidelity != "packet") {
         Bad("fidelity", "must be analytic or packet, got \"" + wire::Printable(p.fidelity) + "\"");
       }
@@ -45,8 +47,8 @@ void CheckParams(const JobParams& p) {
       break;
     case JobKind::kPosition:
       if (p.positioner != "baseline" && p.positioner != "centroid" && p.positioner != "oracle") {
-        Bad("positioner", "must be baseline, centroid or oracle, got \"" +
-                              wire::Printable(p.positioner) + "\"");
+        Bad("positioner",
+            "must be baseline, centroid or oracle, got \"" + wire::Printable(p.positioner) + "\"");
       }
       break;
     case JobKind::kEval:
@@ -59,8 +61,10 @@ void CheckParams(const JobParams& p) {
   }
   CheckDuration(p.duration_s, "duration_s", false);
   CheckDuration(p.warmup_s, "warmup_s", true);
-  if (p.overrides.size() > wire::kMaxOverrides) Bad("overrides", "too many");
-  for (const auto& o : p.overrides) CheckOverride(o);
+  if (p.overrides.size() > wire::kMaxOverrides)
+    Bad("overrides", "too many");
+  for (const auto& o : p.overrides)
+    CheckOverride(o);
 }
 
 }  // namespace
@@ -68,13 +72,17 @@ void CheckParams(const JobParams& p) {
 void CheckOverride(const ScenarioOverride& o) {
   // Dotted paths or JSON pointers of plain keys and indices: nothing else reaches a scenario.
   std::string path = o.path;
-  if (!path.empty() && path[0] == '/') path = path.substr(1);
-  for (auto& c : path) c = c == '.' ? '/' : c;
+  if (!path.empty() && path[0] == '/')
+    path = path.substr(1);
+  for (auto& c : path)
+    c = c == '.' ? '/' : c;
   if (!wire::IsSafePath(path, wire::kMaxOverridePath)) {
     Bad("overrides", "not a scenario path: \"" + wire::Printable(o.path) + "\"");
   }
-  if (o.value.size() > wire::kMaxOverrideValue) Bad("overrides", "value too long");
-  if (wire::JsonNestingDepth(o.value) > wire::kMaxJsonDepth) Bad("overrides", "value too deep");
+  if (o.value.size() > wire::kMaxOverrideValue)
+    Bad("overrides", "value too long");
+  if (wire::JsonNestingDepth(o.value) > wire::kMaxJsonDepth)
+    Bad("overrides", "value too deep");
 }
 
 json EffectiveScenarioDocument(const json& document, const JobParams& params) {
@@ -82,12 +90,15 @@ json EffectiveScenarioDocument(const json& document, const JobParams& params) {
   if (params.train_episodes) {
     settings.push_back("agent.train_episodes=" + std::to_string(*params.train_episodes));
   }
-  if (params.duration_s) settings.push_back("simulation.duration=" + FormatNumber(*params.duration_s));
+  if (params.duration_s)
+    settings.push_back("simulation.duration=" + FormatNumber(*params.duration_s));
   if (params.kind == JobKind::kEval && params.rng_run) {
     settings.push_back("simulation.run=" + std::to_string(*params.rng_run));
   }
-  if (params.warmup_s) settings.push_back("simulation.warmup=" + FormatNumber(*params.warmup_s));
-  for (const auto& o : params.overrides) settings.push_back(ToString(o));
+  if (params.warmup_s)
+    settings.push_back("simulation.warmup=" + FormatNumber(*params.warmup_s));
+  for (const auto& o : params.overrides)
+    settings.push_back(ToString(o));
   json effective = document;
   ApplyOverrides(effective, settings);
   return effective;
@@ -105,14 +116,15 @@ CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s) {
   if (order.attempt < 1 || order.attempt > wire::kMaxAttempt) {
     Bad("attempt", "must be in 1.." + std::to_string(wire::kMaxAttempt));
   }
-  if (!(std::isfinite(order.timeout_s) && order.timeout_s > 0 && order.timeout_s <= max_timeout_s)) {
+  if (!(std::isfinite(order.timeout_s) && order.timeout_s > 0 &&
+        order.timeout_s <= max_timeout_s)) {
     Bad("timeout_s", "must be in (0, " + FormatNumber(max_timeout_s) + "] s, got " +
                          FormatNumber(order.timeout_s));
   }
   CheckParams(order.params);
   CheckedOrder checked;
-  const json document =
-      wire::ParseBoundedJson(order.scenario_document, wire::kMaxScenarioDocument, "scenario_document");
+  const json document = wire::ParseBoundedJson(order.scenario_document, wire::kMaxScenarioDocument,
+                                               "scenario_document");
   try {
     checked.scenario = EffectiveScenarioDocument(document, order.params);
     checked.parsed = ParseScenario(checked.scenario);
@@ -124,7 +136,8 @@ CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s) {
                         "\", the job's \"" + order.params.scenario + "\"");
   }
   if (order.params.kind == JobKind::kEval) {
-    if (!order.position) Bad("position", "an eval job needs one");
+    if (!order.position)
+      Bad("position", "an eval job needs one");
     const Vec3& p = *order.position;
     const Venue& v = checked.parsed.venue;
     if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x >= 0 &&

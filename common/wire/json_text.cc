@@ -23,7 +23,8 @@ std::size_t JsonNestingDepth(const std::string& text) {
     if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
-      if (++depth > deepest) deepest = depth;
+      if (++depth > deepest)
+        deepest = depth;
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
     }
@@ -34,8 +35,8 @@ std::size_t JsonNestingDepth(const std::string& text) {
 nlohmann::json ParseBoundedJson(const std::string& text, std::size_t max_bytes,
                                 const std::string& what) {
   if (text.size() > max_bytes) {
-    throw std::invalid_argument(what + " is " + std::to_string(text.size()) +
-                                " bytes, more than " + std::to_string(max_bytes));
+    throw std::invalid_argument(what + " is " + std::to_string(text.size()) + " bytes, more than " +
+                                std::to_string(max_bytes));
   }
   if (JsonNestingDepth(text) > kMaxJsonDepth) {
     throw std::invalid_argument(what + " nests deeper than " + std::to_string(kMaxJsonDepth));

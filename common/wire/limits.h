@@ -6,20 +6,20 @@
 
 namespace rlpos::wire {
 
-constexpr std::size_t kMaxIdLength = 256;            // job ids, request ids
-constexpr std::size_t kMaxNameLength = 128;          // worker ids, hosts, scenario names
+constexpr std::size_t kMaxIdLength = 256;    // job ids, request ids
+constexpr std::size_t kMaxNameLength = 128;  // worker ids, hosts, scenario names
 constexpr std::size_t kMaxCampaignIdLength = 64;
 constexpr std::size_t kMaxScenarioDocument = 262144;  // bytes of one scenario JSON
 constexpr std::size_t kMaxOverrides = 64;
 constexpr std::size_t kMaxOverridePath = 128;
 constexpr std::size_t kMaxOverrideValue = 4096;
 constexpr std::size_t kMaxResultJson = 262144;
-constexpr std::size_t kMaxMessage = 1024;            // error and progress lines
+constexpr std::size_t kMaxMessage = 1024;  // error and progress lines
 constexpr std::size_t kMaxCampaignJson = 65536;
 constexpr std::size_t kMaxCampaignScenarios = 32;
 constexpr std::size_t kMaxScenarioFileName = 512;
-constexpr std::size_t kMaxWorkerJobs = 1024;         // job keys in one worker status
-constexpr std::size_t kMaxJsonDepth = 64;            // nesting of any JSON from the wire
+constexpr std::size_t kMaxWorkerJobs = 1024;  // job keys in one worker status
+constexpr std::size_t kMaxJsonDepth = 64;     // nesting of any JSON from the wire
 constexpr int kMaxAttempt = 1000000;
 constexpr int kMaxSlots = 1024;
 

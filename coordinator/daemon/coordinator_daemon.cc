@@ -100,7 +100,8 @@ void CoordinatorDaemon::HandleRequests() {
       reply.request_id = r.data.request_id;
       reply.ok = false;
       reply.message = std::string(e.what()).substr(0, wire::kMaxMessage - 1);
-      Log(LogLevel::kWarning, "request " + r.data.request_id + " refused: " + reply.message);
+      refused_requests_.Drop(sender.empty() ? "an unknown writer" : sender,
+                             "request " + r.data.request_id + " refused: " + reply.message);
     }
     // Volatile: the client is matched before it asks. Unregistered at once: nothing is kept
     // per request.

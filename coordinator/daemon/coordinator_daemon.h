@@ -72,8 +72,8 @@ class CoordinatorDaemon {
   std::map<std::string, LiveWorker> live_;
   std::map<std::string, Published> published_;  // job id -> its live assignment
   std::map<std::string, std::map<std::string, std::string>> documents_;  // by campaign
-  DropLog dropped_requests_{"campaign request"}, dropped_statuses_{"worker status"},
-      dropped_events_{"job event"};
+  DropLog dropped_requests_{"campaign request"}, refused_requests_{"campaign request"},
+      dropped_statuses_{"worker status"}, dropped_events_{"job event"};
   double started_ = 0;
   bool grace_over_ = false;
 };

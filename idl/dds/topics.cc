@@ -101,9 +101,11 @@ struct Traits<msg::WorkerStatus> {
     h.c.pid = m.pid;
     h.c.slots = m.slots;
     h.c.busy = m.busy;
-    if (m.jobs.size() > wire::kMaxWorkerJobs) throw DdsError("jobs: too many");
+    if (m.jobs.size() > wire::kMaxWorkerJobs)
+      throw DdsError("jobs: too many");
     h.jobs.assign(m.jobs.size(), Holder::JobKey{});
-    for (std::size_t i = 0; i < m.jobs.size(); ++i) CopyIn(h.jobs[i].text, m.jobs[i], "jobs");
+    for (std::size_t i = 0; i < m.jobs.size(); ++i)
+      CopyIn(h.jobs[i].text, m.jobs[i], "jobs");
     static_assert(sizeof(Holder::JobKey) == sizeof(*h.c.jobs._buffer));
     h.c.jobs._maximum = h.c.jobs._length = static_cast<uint32_t>(m.jobs.size());
     h.c.jobs._buffer =
@@ -113,7 +115,8 @@ struct Traits<msg::WorkerStatus> {
   static msg::WorkerStatus FromC(const C& c, bool valid, std::string& error) {
     msg::WorkerStatus m;
     m.worker_id = CopyOut(c.worker_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.host = CopyOut(c.host);
     m.pid = c.pid;
     m.slots = c.slots;
@@ -122,7 +125,8 @@ struct Traits<msg::WorkerStatus> {
       error = "jobs exceed their bound";
       return m;
     }
-    for (uint32_t i = 0; i < c.jobs._length; ++i) m.jobs.push_back(CopyOut(c.jobs._buffer[i]));
+    for (uint32_t i = 0; i < c.jobs._length; ++i)
+      m.jobs.push_back(CopyOut(c.jobs._buffer[i]));
     return m;
   }
 };
@@ -155,7 +159,8 @@ struct Traits<msg::JobAssignment> {
     CopyIn(h.c.scenario, p.scenario, "scenario");
     h.c.scenario_document =
         BorrowOctets(o.scenario_document, wire::kMaxScenarioDocument, "scenario_document");
-    if (p.overrides.size() > wire::kMaxOverrides) throw DdsError("overrides: too many");
+    if (p.overrides.size() > wire::kMaxOverrides)
+      throw DdsError("overrides: too many");
     h.overrides.assign(p.overrides.size(), rlpos_msg_ScenarioOverride{});
     for (std::size_t i = 0; i < p.overrides.size(); ++i) {
       CopyIn(h.overrides[i].path, p.overrides[i].path, "override path");
@@ -189,15 +194,16 @@ struct Traits<msg::JobAssignment> {
     JobOrder& o = m.order;
     JobParams& p = o.params;
     o.job_id = CopyOut(c.job_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     o.attempt = c.attempt;
     m.worker_id = CopyOut(c.worker_id);
     o.campaign_id = CopyOut(c.campaign_id);
     o.timeout_s = c.timeout_s;
     p.kind = CheckedEnum<JobKind>(static_cast<int>(c.kind), 3, "kind", error);
     p.scenario = CopyOut(c.scenario);
-    o.scenario_document = CopyOctets(c.scenario_document, wire::kMaxScenarioDocument,
-                                     "scenario_document", error);
+    o.scenario_document =
+        CopyOctets(c.scenario_document, wire::kMaxScenarioDocument, "scenario_document", error);
     if (c.overrides._length > wire::kMaxOverrides ||
         (c.overrides._length > 0 && !c.overrides._buffer)) {
       error = "overrides exceed their bound";
@@ -207,22 +213,38 @@ struct Traits<msg::JobAssignment> {
       p.overrides.push_back(
           {CopyOut(c.overrides._buffer[i].path), CopyOut(c.overrides._buffer[i].value)});
     }
-    if (c.has_train_seed) p.train_seed = c.train_seed;
+    if (c.has_train_seed)
+      p.train_seed = c.train_seed;
     const int fidelity = static_cast<int>(c.fidelity);
-    if (fidelity < 0 || fidelity > 1) error = "fidelity " + std::to_string(fidelity) + " is unknown";
-    if (p.kind == JobKind::kTrain) p.fidelity = fidelity == 1 ? "packet" : "analytic";
-    if (c.train_episodes != 0) p.train_episodes = c.train_episodes;
+    if (fidelity < 0 || fidelity > 1)
+      error = "fidelity " + std::to_string(fidelity) + " is unknown";
+    if (p.kind == JobKind::kTrain)
+      p.fidelity = fidelity == 1 ? "packet" : "analytic";
+    if (c.train_episodes != 0)
+      p.train_episodes = c.train_episodes;
     switch (static_cast<int>(c.positioner)) {
-      case rlpos_msg_POSITIONER_NONE: break;
-      case rlpos_msg_POSITIONER_BASELINE: p.positioner = "baseline"; break;
-      case rlpos_msg_POSITIONER_CENTROID: p.positioner = "centroid"; break;
-      case rlpos_msg_POSITIONER_ORACLE: p.positioner = "oracle"; break;
-      default: error = "positioner " + std::to_string(static_cast<int>(c.positioner)) + " is unknown";
+      case rlpos_msg_POSITIONER_NONE:
+        break;
+      case rlpos_msg_POSITIONER_BASELINE:
+        p.positioner = "baseline";
+        break;
+      case rlpos_msg_POSITIONER_CENTROID:
+        p.positioner = "centroid";
+        break;
+      case rlpos_msg_POSITIONER_ORACLE:
+        p.positioner = "oracle";
+        break;
+      default:
+        error = "positioner " + std::to_string(static_cast<int>(c.positioner)) + " is unknown";
     }
-    if (c.has_position) o.position = Vec3{c.x, c.y, c.z};
-    if (p.kind == JobKind::kEval) p.rng_run = c.rng_run;
-    if (c.has_duration) p.duration_s = c.duration_s;
-    if (c.has_warmup) p.warmup_s = c.warmup_s;
+    if (c.has_position)
+      o.position = Vec3{c.x, c.y, c.z};
+    if (p.kind == JobKind::kEval)
+      p.rng_run = c.rng_run;
+    if (c.has_duration)
+      p.duration_s = c.duration_s;
+    if (c.has_warmup)
+      p.warmup_s = c.warmup_s;
     return m;
   }
 };
@@ -255,7 +277,8 @@ struct Traits<msg::JobEvent> {
   static msg::JobEvent FromC(const C& c, bool valid, std::string& error) {
     msg::JobEvent m;
     m.job_id = CopyOut(c.job_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.attempt = c.attempt;
     m.worker_id = CopyOut(c.worker_id);
     m.state = CheckedEnum<msg::JobState>(static_cast<int>(c.state), 4, "state", error);
@@ -284,7 +307,8 @@ struct Traits<msg::CampaignRequest> {
     h.c.kind = static_cast<rlpos_msg_RequestKind>(m.kind);
     CopyIn(h.c.campaign_id, m.campaign_id, "campaign_id");
     h.c.campaign_json = BorrowOctets(m.campaign_json, wire::kMaxCampaignJson, "campaign_json");
-    if (m.scenarios.size() > wire::kMaxCampaignScenarios) throw DdsError("scenarios: too many");
+    if (m.scenarios.size() > wire::kMaxCampaignScenarios)
+      throw DdsError("scenarios: too many");
     h.scenarios.assign(m.scenarios.size(), rlpos_msg_ScenarioFile{});
     for (std::size_t i = 0; i < m.scenarios.size(); ++i) {
       CopyIn(h.scenarios[i].file, m.scenarios[i].file, "scenario file");
@@ -298,7 +322,8 @@ struct Traits<msg::CampaignRequest> {
   static msg::CampaignRequest FromC(const C& c, bool valid, std::string& error) {
     msg::CampaignRequest m;
     m.request_id = CopyOut(c.request_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.kind = CheckedEnum<msg::RequestKind>(static_cast<int>(c.kind), 3, "kind", error);
     m.campaign_id = CopyOut(c.campaign_id);
     m.campaign_json = CopyOctets(c.campaign_json, wire::kMaxCampaignJson, "campaign_json", error);
@@ -309,8 +334,8 @@ struct Traits<msg::CampaignRequest> {
     }
     for (uint32_t i = 0; i < c.scenarios._length; ++i) {
       m.scenarios.push_back({CopyOut(c.scenarios._buffer[i].file),
-                             CopyOctets(c.scenarios._buffer[i].document,
-                                        wire::kMaxScenarioDocument, "scenario document", error)});
+                             CopyOctets(c.scenarios._buffer[i].document, wire::kMaxScenarioDocument,
+                                        "scenario document", error)});
     }
     return m;
   }
@@ -340,7 +365,8 @@ struct Traits<msg::CampaignReply> {
   static msg::CampaignReply FromC(const C& c, bool valid, std::string&) {
     msg::CampaignReply m;
     m.request_id = CopyOut(c.request_id);
-    if (!valid) return m;
+    if (!valid)
+      return m;
     m.ok = c.ok;
     m.campaign_id = CopyOut(c.campaign_id);
     m.jobs = c.jobs;
@@ -459,7 +485,8 @@ std::string Reader<M>::WriterParticipant(std::uint64_t publication_handle) {
   }
   dds_builtintopic_endpoint_t* endpoint =
       dds_get_matched_publication_data(reader_, publication_handle);
-  if (!endpoint) return "";
+  if (!endpoint)
+    return "";
   static const char kHex[] = "0123456789abcdef";
   std::string guid;
   for (const unsigned char byte : endpoint->participant_key.v) {
@@ -468,9 +495,21 @@ std::string Reader<M>::WriterParticipant(std::uint64_t publication_handle) {
   }
   dds_builtintopic_free_endpoint(endpoint);
   // Writers come and go (clients, restarted workers): keep the cache from growing without end.
-  if (participants_.size() >= 4096) participants_.clear();
+  if (participants_.size() >= 4096)
+    participants_.clear();
   participants_.emplace(publication_handle, guid);
   return guid;
+}
+
+template <typename M>
+bool Reader<M>::HasMatchedWriterOf(const std::string& guid) {
+  dds_instance_handle_t handles[64];
+  const dds_return_t n = dds_get_matched_publications(reader_, handles, 64);
+  for (dds_return_t i = 0; i < n && i < 64; ++i) {
+    if (WriterParticipant(handles[i]) == guid)
+      return true;
+  }
+  return false;
 }
 
 template <typename M>

@@ -71,6 +71,8 @@ class Reader {
   // The GUID (hex) of the participant that owns the writer `publication_handle`, or "" when
   // that writer is not (or no longer) matched. Cached per handle.
   std::string WriterParticipant(std::uint64_t publication_handle);
+  // True while some writer of participant `guid` is matched to this reader.
+  bool HasMatchedWriterOf(const std::string& guid);
   int MatchedWriters() const;
   std::int32_t handle() const { return reader_; }
 

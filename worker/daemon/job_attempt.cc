@@ -71,8 +71,8 @@ std::string TailOfLog(const std::string& file, int lines, std::size_t max_chars)
   return out;
 }
 
-JobAttempt::JobAttempt(JobOrder order, const nlohmann::json& scenario,
-                       const std::string& work_dir, const std::string& sim_binary)
+JobAttempt::JobAttempt(JobOrder order, const nlohmann::json& scenario, const std::string& work_dir,
+                       const std::string& sim_binary)
     : order_(std::move(order)), folder_(AttemptFolder(work_dir, order_.job_id, order_.attempt)) {
   std::error_code error;
   fs::remove_all(folder_, error);  // a leftover of an earlier worker with this id

@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
   try {
     SetLogLevel(ParseLogLevel(log_level));
     CheckDdsOptions(dds);
-    if (options.id.empty()) options.id = HostName() + "-" + std::to_string(getpid());
+    if (options.id.empty())
+      options.id = HostName() + "-" + std::to_string(getpid());
     if (options.work_dir.empty())
       options.work_dir = "results/work/" + options.id;
     if (options.sim_binary.empty())

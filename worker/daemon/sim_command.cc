@@ -13,10 +13,12 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
   const JobParams& p = order.params;
   switch (p.kind) {
     case JobKind::kTrain:
-      return {sim_binary, "train",      "--scenario", scenario,
-              "--seed",   std::to_string(p.train_seed.value_or(0)),
+      return {sim_binary,   "train",
+              "--scenario", scenario,
+              "--seed",     std::to_string(p.train_seed.value_or(0)),
               "--fidelity", p.fidelity == "packet" ? "packet" : "analytic",
-              "--out",    (fs::path(folder) / kOutFolderName).string(), "--json"};
+              "--out",      (fs::path(folder) / kOutFolderName).string(),
+              "--json"};
     case JobKind::kPosition: {
       // One of the three names CheckJobOrder lets through, spelt by us.
       const char* positioner = p.positioner == "oracle"     ? "oracle"
@@ -28,8 +30,9 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
       break;
   }
   // Duration, run and warm-up are in the scenario file already.
-  return {sim_binary, "eval",   "--scenario", scenario, "--position",
-          FormatPosition(order.position.value_or(Vec3{})), "--json", "--no-progress"};
+  return {sim_binary, "eval",         "--scenario",
+          scenario,   "--position",   FormatPosition(order.position.value_or(Vec3{})),
+          "--json",   "--no-progress"};
 }
 
 }  // namespace rlpos

@@ -58,6 +58,19 @@ void WorkerDaemon::Settle(const std::string& job_id) {
   }
 }
 
+bool WorkerDaemon::FromCoordinator(const std::string& sender) {
+  if (sender.empty())
+    return false;
+  if (coordinator_ == sender)
+    return true;
+  if (!coordinator_.empty() && dds_->assignments.HasMatchedWriterOf(coordinator_))
+    return false;
+  if (!coordinator_.empty())
+    Log(LogLevel::kInfo, "following a new coordinator " + sender);
+  coordinator_ = sender;
+  return true;
+}
+
 void WorkerDaemon::Start(msg::JobAssignment a) {
   const std::string job_id = a.order.job_id;
   const int attempt = a.order.attempt;
@@ -83,9 +96,8 @@ void WorkerDaemon::Start(msg::JobAssignment a) {
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error(std::string("invalid job: ") + e.what());
     }
-    running_[job_id] =
-        std::make_unique<JobAttempt>(std::move(a.order), checked.scenario, options_.work_dir,
-                                     options_.sim_binary);
+    running_[job_id] = std::make_unique<JobAttempt>(std::move(a.order), checked.scenario,
+                                                    options_.work_dir, options_.sim_binary);
     event.state = msg::JobState::kStarted;
     Log(LogLevel::kInfo, "started " + key);
   } catch (const std::exception& e) {
@@ -93,6 +105,11 @@ void WorkerDaemon::Start(msg::JobAssignment a) {
     event.message = std::string("worker could not start the job: ") + e.what();
     event.message = event.message.substr(0, wire::kMaxMessage - 1);
     Log(LogLevel::kWarning, key + ": " + event.message);
+    // Said once and forgotten: a refused order keeps no state here.
+    taken_.erase(job_id);
+    dds_->events.Write(event);
+    dds_->events.Unregister(event);
+    return;
   }
   dds_->events.Write(event);
 }
@@ -105,7 +122,7 @@ void WorkerDaemon::TakeAssignments() {
     if (!r.valid) {
       // Disposed: the coordinator withdrew the job (cancelled, timed out, or its result is in).
       // A coordinator that merely went away (no writers) leaves our jobs running.
-      if (r.state == InstanceState::kDisposed) {
+      if (r.state == InstanceState::kDisposed && !sender.empty() && sender == coordinator_) {
         changed = changed || running_.count(job_id) > 0;
         Settle(job_id);
       }
@@ -117,6 +134,11 @@ void WorkerDaemon::TakeAssignments() {
     }
     if (r.data.worker_id != options_.id)
       continue;  // another worker's
+    if (!FromCoordinator(sender)) {
+      dropped_.Drop(sender.empty() ? "an unknown writer" : sender,
+                    "not the coordinator this worker follows");
+      continue;
+    }
     const auto taken = taken_.find(job_id);
     if (taken != taken_.end() && taken->second >= r.data.order.attempt)
       continue;  // republished after a coordinator restart, or older than what we run
@@ -151,7 +173,8 @@ void WorkerDaemon::PollJobs() {
     if (event.result_json.size() > wire::kMaxResultJson) {
       event.state = msg::JobState::kFailed;
       event.result_json.clear();
-      event.message = "the result is larger than " + std::to_string(wire::kMaxResultJson) + " bytes";
+      event.message =
+          "the result is larger than " + std::to_string(wire::kMaxResultJson) + " bytes";
     }
     Log(outcome->succeeded ? LogLevel::kInfo : LogLevel::kWarning,
         it->second->Key() + (outcome->succeeded ? " succeeded" : " failed: " + outcome->error));

@@ -41,6 +41,7 @@ class WorkerDaemon {
   void ReportProgress();
   void Settle(const std::string& job_id);
   void Start(msg::JobAssignment assignment);
+  bool FromCoordinator(const std::string& sender);
 
   WorkerOptions options_;
   Participant participant_;
@@ -50,6 +51,9 @@ class WorkerDaemon {
   // Attempts this worker took, by job id, until the coordinator settles the job: a republished
   // assignment (coordinator restart) never runs twice. Their event instances are registered.
   std::map<std::string, int> taken_;
+  // The participant whose assignments this worker follows: the first to send it a job, until
+  // that participant's writer is gone (a restarted coordinator is a new participant).
+  std::string coordinator_;
   DropLog dropped_{"job assignment"};
 };
 
