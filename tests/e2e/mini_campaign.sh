@@ -22,6 +22,13 @@ expect_eq "rl above baseline in B and C" "$(sql "$DB" "SELECT COUNT(*) FROM (
          AVG(CASE WHEN positioner = 'baseline' THEN throughput_mbps END) AS base
   FROM v_eval_runs GROUP BY scenario) WHERE rl > base")" 2
 
+# Same seeds, same numbers: the positions that need no training (ns-3 and the analytic model
+# only, no libtorch kernels that may differ between CPUs) give the recorded metrics exactly.
+expect_eq "metrics of the fixed positions" "$(sql "$DB" "SELECT scenario, positioner, rng_run,
+  printf('%.6f', throughput_mbps), printf('%.6f', delay_ms), n_los, x, y, z FROM v_eval_runs
+  WHERE positioner IN ('baseline', 'centroid', 'oracle') ORDER BY 1, 2, 3" | tr '|' ' ')" \
+  "$(cat "$SRC/tests/e2e/golden/mini_fixed_positions.txt")"
+
 REPORT=$WORK/reports/$ID
 for f in summary.csv summary.md throughput_ccdf.csv delay_cdf.csv; do
   [ -s "$REPORT/$f" ] || fail "report file $f missing"
@@ -34,7 +41,9 @@ fi
 grep -q '^B  *rl ' "$WORK/out.txt" || fail "summary table has no B rl row"
 
 # The read commands on the finished campaign.
-"$CAMPAIGN" status "$ID" --db "$DB" | grep -q "36\|44 total" || fail "status"
+"$CAMPAIGN" status "$ID" --db "$DB" >"$WORK/status.txt"
+grep -q "jobs: 44 total, 0 pending, 0 ready, 0 running, 44 succeeded, 0 failed" "$WORK/status.txt" \
+  || fail "status said: $(cat "$WORK/status.txt")"
 expect_eq "results csv rows" "$("$CAMPAIGN" results "$ID" --db "$DB" --format csv | wc -l)" 19
 "$CAMPAIGN" results "$ID" --db "$DB" --format json | python3 -c 'import json,sys; json.load(sys.stdin)' \
   || fail "results json"
