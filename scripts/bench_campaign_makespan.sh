@@ -26,17 +26,19 @@ for r in $(seq 1 "$repeats"); do
   "$bin/rlpos-campaign" run "$campaign" --workers "$n" --db "$db" --no-progress >/dev/null 2>&1
   runner_times+=("$(echo "$(now) - $start" | bc -l)")
 
-  # The same jobs as shell scripts, one per job, in two waves.
+  # The same jobs as shell scripts, one per job, in two waves: each replays the command line the
+  # worker composed (command.txt in the attempt's folder) on a copy of its scenario file.
   mkdir -p "$work/xargs$r/first" "$work/xargs$r/evals"
-  /usr/bin/python3 - "$db" "$bin/rlpos-sim" "$work/xargs$r" <<'PY'
-import json, shlex, sqlite3, sys
-db, sim, out = sys.argv[1:]
-for i, (key, kind, argv) in enumerate(sqlite3.connect(db).execute(
-        "SELECT key, kind, argv_json FROM jobs ORDER BY seq")):
-    args = json.loads(argv)
-    args[0] = sim
-    args = [f"{out}/o{i}" if a == "{out_dir}" else a for a in args]
-    wave = "evals" if kind == "eval" else "first"
+  /usr/bin/python3 - "$work/run$r/work" "$work/xargs$r" <<'PY'
+import glob, os, shlex, shutil, sys
+runs, out = sys.argv[1:]
+for i, command in enumerate(sorted(glob.glob(f"{runs}/**/attempt1/command.txt", recursive=True))):
+    folder = os.path.dirname(command)
+    copy = f"{out}/j{i}"
+    os.makedirs(copy)
+    shutil.copy(f"{folder}/scenario.json", copy)
+    args = [a.replace(folder, copy) for a in open(command).read().splitlines()]
+    wave = "evals" if args[1] == "eval" else "first"
     with open(f"{out}/{wave}/{i:05d}.sh", "w") as f:
         f.write(" ".join(shlex.quote(a) for a in args) + " >/dev/null 2>&1\n")
 PY
