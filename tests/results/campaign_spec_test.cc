@@ -18,8 +18,12 @@ using testing::SourcePath;
 using testing::TempDir;
 using testing::WriteFile;
 
-std::string ScenarioB() { return SourcePath("campaigns/scenarios/b.json"); }
-std::string ScenarioC() { return SourcePath("campaigns/scenarios/c.json"); }
+std::string ScenarioB() {
+  return SourcePath("campaigns/scenarios/b.json");
+}
+std::string ScenarioC() {
+  return SourcePath("campaigns/scenarios/c.json");
+}
 
 json MinimalCampaign() {
   return {{"name", "t"}, {"scenarios", {ScenarioB()}}, {"rng_runs", {1, 2}}};
@@ -113,8 +117,8 @@ TEST(CampaignSpec, SetOverridesTheScenario) {
 
 TEST(CampaignSpec, SameFileTwiceNeedsAnotherName) {
   json doc = MinimalCampaign();
-  doc["scenarios"] = {ScenarioB(), {{"file", ScenarioB()}, {"set", {"name=B-adhoc",
-                                                                     "wifi.mode=adhoc"}}}};
+  doc["scenarios"] = {ScenarioB(),
+                      {{"file", ScenarioB()}, {"set", {"name=B-adhoc", "wifi.mode=adhoc"}}}};
   const CampaignSpec spec = ParseCampaign(doc, "/");
   EXPECT_EQ(spec.scenarios[1].scenario.name, "B-adhoc");
 }
@@ -161,67 +165,140 @@ const BadCampaign kBadCampaigns[] = {
      "/scenarios/0: expected a file name or {\"file\", \"set\"}, got a number"},
     {"MissingScenarioFile", [](json& d) { d["scenarios"] = {"scenarios/nope.json"}; },
      "/scenarios/0: scenario file \"/campaigns/scenarios/nope.json\" does not exist"},
-    {"MissingScenarioFileInObject", [](json& d) { d["scenarios"] = {{{"file", "/no/such.json"}}}; },
+    {"MissingScenarioFileInObject",
+     [](json& d) {
+       d["scenarios"] = {{{"file", "/no/such.json"}}};
+     },
      "/scenarios/0/file: scenario file \"/no/such.json\" does not exist"},
     {"ScenarioEntryUnknownKey",
-     [](json& d) { d["scenarios"] = {{{"file", ScenarioB()}, {"sett", json::array()}}}; },
+     [](json& d) {
+       d["scenarios"] = {{{"file", ScenarioB()}, {"sett", json::array()}}};
+     },
      "/scenarios/0/sett: unknown key \"sett\"; did you mean \"set\"?"},
-    {"ScenarioEntryWithoutFile", [](json& d) { d["scenarios"] = {{{"fille", ScenarioB()}}}; },
+    {"ScenarioEntryWithoutFile",
+     [](json& d) {
+       d["scenarios"] = {{{"fille", ScenarioB()}}};
+     },
      "/scenarios/0/fille: unknown key \"fille\"; did you mean \"file\"?"},
     {"SetNotAList",
-     [](json& d) { d["scenarios"] = {{{"file", ScenarioB()}, {"set", "wifi.mode=adhoc"}}}; },
+     [](json& d) {
+       d["scenarios"] = {{{"file", ScenarioB()}, {"set", "wifi.mode=adhoc"}}};
+     },
      "/scenarios/0/set: expected an array, got a string"},
-    {"SetItemNotAString", [](json& d) { d["scenarios"] = {{{"file", ScenarioB()}, {"set", {1}}}}; },
+    {"SetItemNotAString",
+     [](json& d) {
+       d["scenarios"] = {{{"file", ScenarioB()}, {"set", {1}}}};
+     },
      "/scenarios/0/set/0: expected \"path=value\", got a number"},
     {"SetItemWithoutValue",
-     [](json& d) { d["scenarios"] = {{{"file", ScenarioB()}, {"set", {"novalue"}}}}; },
-     "/scenarios/0/set/0: --set novalue: expected path=value"},
+     [](json& d) {
+       d["scenarios"] = {{{"file", ScenarioB()}, {"set", {"novalue"}}}};
+     },
+     "/scenarios/0/set/0: expected path=value"},
     {"SetBreaksScenario",
-     [](json& d) { d["scenarios"] = {{{"file", ScenarioB()}, {"set", {"venue.width=-1"}}}}; },
+     [](json& d) {
+       d["scenarios"] = {{{"file", ScenarioB()}, {"set", {"venue.width=-1"}}}};
+     },
      "b.json: /venue/width: must be positive"},
     {"SetBadScenarioName",
-     [](json& d) { d["scenarios"] = {{{"file", ScenarioB()}, {"set", {"name=B/2"}}}}; },
-     "scenario name \"B/2\" must be non-empty and contain no '/'"},
-    {"DuplicateScenarioName", [](json& d) { d["scenarios"] = {ScenarioB(), ScenarioB()}; },
+     [](json& d) {
+       d["scenarios"] = {{{"file", ScenarioB()}, {"set", {"name=B/2"}}}};
+     },
+     "scenario name \"B/2\" must be 1-128 of [A-Za-z0-9._@+-]"},
+    {"DuplicateScenarioName",
+     [](json& d) {
+       d["scenarios"] = {ScenarioB(), ScenarioB()};
+     },
      "/scenarios/1: scenario name \"B\" is already used by /scenarios/0"},
     {"MissingRuns", [](json& d) { d.erase("rng_runs"); }, "/rng_runs: is required"},
-    {"RunsReversed", [](json& d) { d["rng_runs"] = {3, 1}; },
+    {"RunsReversed",
+     [](json& d) {
+       d["rng_runs"] = {3, 1};
+     },
      "/rng_runs: first must not be above last"},
-    {"RunsNotAPair", [](json& d) { d["rng_runs"] = {1, 2, 3}; },
+    {"RunsNotAPair",
+     [](json& d) {
+       d["rng_runs"] = {1, 2, 3};
+     },
      "/rng_runs: expected [first, last] or {\"list\": [...]}, got an array"},
-    {"RunFractional", [](json& d) { d["rng_runs"] = {1, 2.5}; },
+    {"RunFractional",
+     [](json& d) {
+       d["rng_runs"] = {1, 2.5};
+     },
      "/rng_runs/1: expected a non-negative integer, got a fractional number"},
-    {"RunNegative", [](json& d) { d["rng_runs"] = {-1, 2}; },
+    {"RunNegative",
+     [](json& d) {
+       d["rng_runs"] = {-1, 2};
+     },
      "/rng_runs/0: must not be negative, got -1"},
-    {"TooManyRuns", [](json& d) { d["rng_runs"] = {1, 1000000}; },
+    {"TooManyRuns",
+     [](json& d) {
+       d["rng_runs"] = {1, 1000000};
+     },
      "/rng_runs: more than 100000 runs"},
-    {"RunListedTwice", [](json& d) { d["rng_runs"] = {{"list", {1, 2, 2}}}; },
+    {"RunListedTwice",
+     [](json& d) {
+       d["rng_runs"] = {{"list", {1, 2, 2}}};
+     },
      "/rng_runs/list/2: 2 is listed twice"},
-    {"RunListMisspelt", [](json& d) { d["rng_runs"] = {{"lst", {1}}}; },
+    {"RunListMisspelt",
+     [](json& d) {
+       d["rng_runs"] = {{"lst", {1}}};
+     },
      "/rng_runs/lst: unknown key \"lst\"; did you mean \"list\"?"},
-    {"UnknownPositioner", [](json& d) { d["positioners"] = {"baseline", "centriod"}; },
+    {"UnknownPositioner",
+     [](json& d) {
+       d["positioners"] = {"baseline", "centriod"};
+     },
      "/positioners/1: unknown positioner \"centriod\" (one of: baseline, offsets, centroid, "
      "oracle, rl); did you mean \"centroid\"?"},
-    {"PositionerTwice", [](json& d) { d["positioners"] = {"rl", "rl"}; },
+    {"PositionerTwice",
+     [](json& d) {
+       d["positioners"] = {"rl", "rl"};
+     },
      "/positioners/1: \"rl\" is listed twice"},
     {"NoPositioners", [](json& d) { d["positioners"] = json::array(); },
      "/positioners: expected a non-empty array"},
-    {"BadFidelity", [](json& d) { d["train"] = {{"fidelity", "analitic"}}; },
+    {"BadFidelity",
+     [](json& d) {
+       d["train"] = {{"fidelity", "analitic"}};
+     },
      "/train/fidelity: unknown value \"analitic\" (one of: analytic, packet); did you mean "
      "\"analytic\"?"},
-    {"NoSeeds", [](json& d) { d["train"] = {{"seeds", json::array()}}; },
+    {"NoSeeds",
+     [](json& d) {
+       d["train"] = {{"seeds", json::array()}};
+     },
      "/train/seeds: expected a non-empty array"},
-    {"SeedTwice", [](json& d) { d["train"] = {{"seeds", {1, 1}}}; },
+    {"SeedTwice",
+     [](json& d) {
+       d["train"] = {{"seeds", {1, 1}}};
+     },
      "/train/seeds/1: 1 is listed twice"},
-    {"ZeroEpisodes", [](json& d) { d["train"] = {{"episodes", 0}}; },
+    {"ZeroEpisodes",
+     [](json& d) {
+       d["train"] = {{"episodes", 0}};
+     },
      "/train/episodes: must be in [1, 1000000], got 0"},
-    {"TrainUnknownKey", [](json& d) { d["train"] = {{"seed", {1}}}; },
+    {"TrainUnknownKey",
+     [](json& d) {
+       d["train"] = {{"seed", {1}}};
+     },
      "/train/seed: unknown key \"seed\"; did you mean \"seeds\"?"},
-    {"NegativeDuration", [](json& d) { d["eval"] = {{"duration", -1}}; },
+    {"NegativeDuration",
+     [](json& d) {
+       d["eval"] = {{"duration", -1}};
+     },
      "/eval/duration: must be positive, got -1"},
-    {"WarmupTooLong", [](json& d) { d["eval"] = {{"duration", 2}, {"warmup", 2}}; },
+    {"WarmupTooLong",
+     [](json& d) {
+       d["eval"] = {{"duration", 2}, {"warmup", 2}};
+     },
      "/eval/warmup: must be shorter than the duration"},
-    {"WarmupLongerThanScenario", [](json& d) { d["eval"] = {{"warmup", 20}}; },
+    {"WarmupLongerThanScenario",
+     [](json& d) {
+       d["eval"] = {{"warmup", 20}};
+     },
      "/scenarios/0: " + ScenarioB() + ": /simulation/warmup: must be shorter than the duration"},
     {"NegativeRetries", [](json& d) { d["retries"] = -1; },
      "/retries: must be in [0, 100], got -1"},

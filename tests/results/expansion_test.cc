@@ -6,7 +6,7 @@
 #include <set>
 
 #include "campaign/campaign_id.h"
-#include "campaign/job_argv.h"
+#include "config/number_text.h"
 #include "test_support.h"
 
 namespace rlpos {
@@ -49,7 +49,8 @@ TEST(CampaignId, ChangesWithEveryInputThatChangesJobs) {
 
 TEST(CampaignId, IgnoresTheCheckoutLocation) {
   CampaignSpec moved = MiniSpec();
-  for (auto& s : moved.scenarios) s.path = "/elsewhere/" + s.file;
+  for (auto& s : moved.scenarios)
+    s.path = "/elsewhere/" + s.file;
   EXPECT_EQ(CampaignId(moved), CampaignId(MiniSpec()));
 }
 
@@ -60,7 +61,8 @@ TEST(Expansion, SameCampaignSameJobs) {
   for (std::size_t i = 0; i < a.jobs.size(); ++i) {
     EXPECT_EQ(a.jobs[i].id, b.jobs[i].id);
     EXPECT_EQ(a.jobs[i].depends_on, b.jobs[i].depends_on);
-    EXPECT_EQ(a.jobs[i].argv, b.jobs[i].argv);
+    EXPECT_EQ(a.jobs[i].params.overrides, b.jobs[i].params.overrides);
+    EXPECT_EQ(a.jobs[i].params.rng_run, b.jobs[i].params.rng_run);
   }
   EXPECT_EQ(a.id, CampaignId(MiniSpec()));
   EXPECT_EQ(a.max_attempts, 2);  // retries 1
@@ -72,26 +74,27 @@ TEST(Expansion, KeysIdsAndKinds) {
   std::map<JobKind, int> kinds;
   std::set<std::string> ids;
   for (const auto& job : c.jobs) {
-    ++kinds[job.kind];
+    ++kinds[job.params.kind];
     EXPECT_EQ(job.id, c.id + "/" + job.key);
     EXPECT_TRUE(ids.insert(job.id).second) << "duplicate " << job.id;
   }
-  EXPECT_EQ(kinds[JobKind::kTrain], 2);      // B, C x seed 1
-  EXPECT_EQ(kinds[JobKind::kPosition], 6);   // B, C x baseline, centroid, oracle
+  EXPECT_EQ(kinds[JobKind::kTrain], 2);     // B, C x seed 1
+  EXPECT_EQ(kinds[JobKind::kPosition], 6);  // B, C x baseline, centroid, oracle
   EXPECT_EQ(kinds[JobKind::kEval], 2 * 2 * 9);
   const Job& train = FindJob(c, "train/B/seed1");
-  EXPECT_EQ(train.kind, JobKind::kTrain);
-  EXPECT_EQ(train.train_seed, 1u);
+  EXPECT_EQ(train.params.kind, JobKind::kTrain);
+  EXPECT_EQ(train.params.train_seed, 1u);
   EXPECT_TRUE(train.depends_on.empty());
   const Job& eval = FindJob(c, "eval/C/offset5/run2");
-  EXPECT_EQ(eval.scenario, "C");
+  EXPECT_EQ(eval.params.scenario, "C");
   EXPECT_EQ(eval.label, "offset5");
-  EXPECT_EQ(eval.rng_run, 2u);
-  EXPECT_EQ(eval.train_seed, 1u);
-  EXPECT_EQ(eval.position.offset, 5);
-  const std::vector<std::string> labels{"baseline", "centroid", "oracle", "rl", "offset1",
-                                        "offset2", "offset3", "offset4", "offset5"};
-  for (const auto& label : labels) EXPECT_NO_THROW(FindJob(c, "eval/B/" + label + "/run1"));
+  EXPECT_EQ(eval.params.rng_run, 2u);
+  EXPECT_EQ(eval.params.train_seed, 1u);
+  EXPECT_EQ(eval.position_rule.offset, 5);
+  const std::vector<std::string> labels{"baseline", "centroid", "oracle",  "rl",     "offset1",
+                                        "offset2",  "offset3",  "offset4", "offset5"};
+  for (const auto& label : labels)
+    EXPECT_NO_THROW(FindJob(c, "eval/B/" + label + "/run1"));
 }
 
 TEST(Expansion, DagEdges) {
@@ -104,54 +107,51 @@ TEST(Expansion, DagEdges) {
   // Every dependency is a producer listed before its dependents (the store relies on it).
   std::map<std::string, JobKind> seen;
   for (const auto& job : c.jobs) {
-    if (job.kind == JobKind::kEval) {
+    if (job.params.kind == JobKind::kEval) {
       ASSERT_TRUE(seen.count(job.depends_on)) << job.key;
       EXPECT_NE(seen[job.depends_on], JobKind::kEval);
     } else {
       EXPECT_TRUE(job.depends_on.empty());
     }
-    seen[job.id] = job.kind;
+    seen[job.id] = job.params.kind;
   }
 }
 
-TEST(Expansion, EvalArgv) {
+TEST(Expansion, TypedParams) {
   const ExpandedCampaign c = MiniCampaign();
-  const std::string b = SourcePath("campaigns/scenarios/b.json");
-  EXPECT_EQ(FindJob(c, "eval/B/baseline/run2").argv,
-            (std::vector<std::string>{"rlpos-sim", "eval", "--scenario", b, "--position",
-                                      "{position}", "--run", "2", "--duration", "2", "--json",
-                                      "--no-progress", "--set", "simulation.warmup=0.5"}));
-  EXPECT_EQ(FindJob(c, "position/B/oracle").argv,
-            (std::vector<std::string>{"rlpos-sim", "position", "--scenario", b, "--positioner",
-                                      "oracle", "--json", "--set", "simulation.duration=2",
-                                      "--set", "simulation.warmup=0.5"}));
-  EXPECT_EQ(FindJob(c, "train/B/seed1").argv,
-            (std::vector<std::string>{"rlpos-sim", "train", "--scenario", b, "--seed", "1",
-                                      "--fidelity", "analytic", "--out", "{out_dir}", "--json",
-                                      "--set", "simulation.duration=2", "--set",
-                                      "simulation.warmup=0.5"}));
+  const JobParams& eval = FindJob(c, "eval/B/baseline/run2").params;
+  EXPECT_EQ(eval.kind, JobKind::kEval);
+  EXPECT_EQ(eval.scenario, "B");
+  EXPECT_EQ(eval.rng_run, 2u);
+  EXPECT_EQ(eval.duration_s, 2.0);
+  EXPECT_EQ(eval.warmup_s, 0.5);
+  EXPECT_TRUE(eval.overrides.empty());
+  const JobParams& oracle = FindJob(c, "position/B/oracle").params;
+  EXPECT_EQ(oracle.kind, JobKind::kPosition);
+  EXPECT_EQ(oracle.positioner, "oracle");
+  EXPECT_EQ(oracle.duration_s, 2.0);  // the oracle re-scores with the eval settings
+  const JobParams& train = FindJob(c, "train/B/seed1").params;
+  EXPECT_EQ(train.kind, JobKind::kTrain);
+  EXPECT_EQ(train.train_seed, 1u);
+  EXPECT_EQ(train.fidelity, "analytic");
+  EXPECT_FALSE(train.train_episodes.has_value());
+  EXPECT_EQ(train.warmup_s, 0.5);
 }
 
-TEST(Expansion, OverridesAndEpisodesBecomeSetArguments) {
+TEST(Expansion, OverridesAndEpisodesAreTyped) {
   CampaignSpec spec = MiniSpec();
   spec.scenarios[0].overrides = {"simulation.duration=5"};
   spec.train.episodes = 25;
   spec.train.fidelity = "packet";
   const ExpandedCampaign c = ExpandCampaign(spec);
-  const std::string b = SourcePath("campaigns/scenarios/b.json");
-  EXPECT_EQ(FindJob(c, "train/B/seed1").argv,
-            (std::vector<std::string>{"rlpos-sim", "train", "--scenario", b, "--seed", "1",
-                                      "--fidelity", "packet", "--out", "{out_dir}", "--json",
-                                      "--set", "agent.train_episodes=25", "--set",
-                                      "simulation.duration=2", "--set", "simulation.warmup=0.5",
-                                      "--set", "simulation.duration=5"}));
-  // The scenario's own --set comes last so that it wins over the campaign's eval settings.
-  const auto eval = FindJob(c, "eval/B/rl/run1").argv;
-  ASSERT_GE(eval.size(), 2u);
-  EXPECT_EQ(eval[eval.size() - 2], "--set");
-  EXPECT_EQ(eval.back(), "simulation.duration=5");
-  EXPECT_EQ(FindJob(c, "position/B/baseline").argv.back(), "simulation.duration=5");
-  EXPECT_EQ(FindJob(c, "eval/C/rl/run1").argv.back(), "simulation.warmup=0.5");
+  const JobParams& train = FindJob(c, "train/B/seed1").params;
+  EXPECT_EQ(train.fidelity, "packet");
+  EXPECT_EQ(train.train_episodes, 25);
+  const std::vector<ScenarioOverride> set{{"simulation.duration", "5"}};
+  EXPECT_EQ(train.overrides, set);
+  EXPECT_EQ(FindJob(c, "eval/B/rl/run1").params.overrides, set);
+  EXPECT_EQ(FindJob(c, "position/B/baseline").params.overrides, set);
+  EXPECT_TRUE(FindJob(c, "eval/C/rl/run1").params.overrides.empty());
 }
 
 TEST(Expansion, SeveralTrainSeeds) {
@@ -160,11 +160,11 @@ TEST(Expansion, SeveralTrainSeeds) {
   const ExpandedCampaign c = ExpandCampaign(spec);
   // The first listed seed keeps the plain labels; the others are suffixed.
   EXPECT_EQ(FindJob(c, "eval/B/rl/run1").depends_on, c.id + "/train/B/seed7");
-  EXPECT_EQ(FindJob(c, "eval/B/offset2/run1").train_seed, 7u);
+  EXPECT_EQ(FindJob(c, "eval/B/offset2/run1").params.train_seed, 7u);
   const Job& later = FindJob(c, "eval/B/rl@seed2/run1");
   EXPECT_EQ(later.label, "rl@seed2");
   EXPECT_EQ(later.depends_on, c.id + "/train/B/seed2");
-  EXPECT_EQ(FindJob(c, "eval/B/offset4@seed2/run2").position.offset, 4);
+  EXPECT_EQ(FindJob(c, "eval/B/offset4@seed2/run2").position_rule.offset, 4);
   EXPECT_EQ(FindJob(c, "train/B/seed2").label, "rl@seed2");
   EXPECT_EQ(c.jobs.size(), 2u * (3 + 2 + 2 * (3 + 2 * 6)));
 }
@@ -185,7 +185,7 @@ TEST(Expansion, PositionerSubsets) {
 
 TEST(Expansion, OffsetRulesCarryTheScenarioGeometry) {
   const ExpandedCampaign c = MiniCampaign();
-  const PositionRule& rule = FindJob(c, "eval/B/offset1/run1").position;
+  const PositionRule& rule = FindJob(c, "eval/B/offset1/run1").position_rule;
   EXPECT_EQ(rule.offset, 1);
   EXPECT_DOUBLE_EQ(rule.distance, 10.0);
   // Scenario B: zone x, y in [0, 100], z in [5, 60]; five buildings.
@@ -193,25 +193,16 @@ TEST(Expansion, OffsetRulesCarryTheScenarioGeometry) {
   EXPECT_DOUBLE_EQ(rule.geometry.bounds.zmax, 60.0);
   EXPECT_DOUBLE_EQ(rule.geometry.bounds.xmax, 100.0);
   EXPECT_EQ(rule.geometry.obstacles.size(), 5u);
-  EXPECT_EQ(FindJob(c, "eval/B/rl/run1").position.offset, 0);
+  EXPECT_EQ(FindJob(c, "eval/B/rl/run1").position_rule.offset, 0);
 }
 
-TEST(JobArgv, NumbersReadBackExactly) {
+TEST(NumberText, NumbersReadBackExactly) {
   EXPECT_EQ(FormatNumber(50), "50");
   EXPECT_EQ(FormatNumber(44.5), "44.5");
   EXPECT_EQ(FormatNumber(0.1), "0.1");
   EXPECT_EQ(FormatNumber(-3.25), "-3.25");
   EXPECT_EQ(std::stod(FormatNumber(1.0 / 3.0)), 1.0 / 3.0);
   EXPECT_EQ(FormatPosition({50, 35.5, 10}), "50,35.5,10");
-}
-
-TEST(JobArgv, Placeholders) {
-  std::vector<std::string> argv = FindJob(MiniCampaign(), "train/B/seed1").argv;
-  EXPECT_TRUE(HasUnboundPlaceholder(argv));
-  EXPECT_EQ(BindPlaceholder(argv, kPositionPlaceholder, "1,2,3"), 0);
-  EXPECT_EQ(BindPlaceholder(argv, kOutDirPlaceholder, "/tmp/job"), 1);
-  EXPECT_FALSE(HasUnboundPlaceholder(argv));
-  EXPECT_EQ(argv[9], "/tmp/job");
 }
 
 }  // namespace

@@ -91,6 +91,7 @@ class ReportingTest : public ::testing::Test {
     if (!delay_ms)
       result["mean_delay_ms"] = nullptr;
     result["n_los"] = n_los;
+    result = testing::AtJobPosition(store_, Id(key), result);
     ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 1)) << key;
     ASSERT_EQ(store_.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded) << key;
   }

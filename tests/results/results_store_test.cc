@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include "config/number_text.h"
 #include "store/store_error.h"
 #include "test_support.h"
 
@@ -10,6 +11,7 @@ namespace rlpos {
 namespace {
 
 using nlohmann::json;
+using testing::AtJobPosition;
 using testing::EvalResult;
 using testing::FindJob;
 using testing::PositionResult;
@@ -17,9 +19,7 @@ using testing::PositionResult;
 // A store on a temp file with a clock the test moves.
 class StoreTest : public ::testing::Test {
  protected:
-  StoreTest()
-      : campaign_(testing::MiniCampaign()),
-        store_(dir_.File("rlpos.db"), Options()) {}
+  StoreTest() : campaign_(testing::MiniCampaign()), store_(dir_.File("rlpos.db"), Options()) {}
 
   StoreOptions Options() {
     StoreOptions options;
@@ -29,7 +29,8 @@ class StoreTest : public ::testing::Test {
   std::string Id(const std::string& key) const { return campaign_.id + "/" + key; }
   JobRecord Job(const std::string& key) {
     const auto job = store_.GetJob(Id(key));
-    if (!job) throw std::out_of_range("no job " + key);
+    if (!job)
+      throw std::out_of_range("no job " + key);
     return *job;
   }
   // Runs a job's current attempt on `worker` and returns that attempt.
@@ -92,7 +93,14 @@ TEST_F(StoreTest, ProducersStartReadyEvalsPending) {
   EXPECT_EQ(ready[0].id, Id("position/B/baseline"));  // expansion order
   EXPECT_EQ(ready[0].attempt, 1);
   EXPECT_DOUBLE_EQ(ready[0].timeout_s, 300.0);
-  EXPECT_EQ(ready[0].argv, FindJob(campaign_, "position/B/baseline").argv);
+  const rlpos::Job& expected = FindJob(campaign_, "position/B/baseline");
+  EXPECT_EQ(ready[0].params.kind, JobKind::kPosition);
+  EXPECT_EQ(ready[0].params.positioner, "baseline");
+  EXPECT_EQ(ready[0].params.scenario, expected.params.scenario);
+  EXPECT_EQ(ready[0].params.duration_s, expected.params.duration_s);
+  EXPECT_EQ(ready[0].params.warmup_s, expected.params.warmup_s);
+  EXPECT_EQ(ready[0].params.overrides, expected.params.overrides);
+  EXPECT_FALSE(ready[0].position.has_value());
   EXPECT_EQ(store_.ListReady(3).size(), 3u);
 }
 
@@ -102,8 +110,8 @@ TEST_F(StoreTest, ProducerSuccessBindsPositionsOfItsEvals) {
   EXPECT_EQ(store_.RecordSuccess(Id("train/B/seed1"), attempt, PositionResult(50, 35, 10)),
             JobUpdate::kSucceeded);
   const auto position_of = [this](const std::string& key) {
-    const auto argv = Job(key).argv;
-    return argv[5];  // rlpos-sim eval --scenario FILE --position X
+    const auto position = Job(key).position;
+    return position ? FormatPosition(*position) : std::string("unbound");
   };
   EXPECT_EQ(Job("eval/B/rl/run1").state, "ready");
   EXPECT_EQ(position_of("eval/B/rl/run1"), "50,35,10");
@@ -113,7 +121,7 @@ TEST_F(StoreTest, ProducerSuccessBindsPositionsOfItsEvals) {
   // Other scenarios and positioners still wait.
   EXPECT_EQ(Job("eval/C/rl/run1").state, "pending");
   EXPECT_EQ(Job("eval/B/baseline/run1").state, "pending");
-  EXPECT_EQ(position_of("eval/B/baseline/run1"), "{position}");
+  EXPECT_EQ(position_of("eval/B/baseline/run1"), "unbound");
   EXPECT_EQ(store_.Progress(campaign_.id).ready, 7 + 2 * 6);
 }
 
@@ -125,8 +133,7 @@ TEST_F(StoreTest, StaleAttemptsAreIgnored) {
   EXPECT_FALSE(store_.MarkRunning(job, "w1", 2));  // not its attempt
   const int attempt = Start("position/B/baseline");
   EXPECT_FALSE(store_.MarkRunning(job, "w2", attempt));  // already running
-  EXPECT_EQ(store_.RecordSuccess(job, attempt + 1, PositionResult(50, 50, 25)),
-            JobUpdate::kStale);
+  EXPECT_EQ(store_.RecordSuccess(job, attempt + 1, PositionResult(50, 50, 25)), JobUpdate::kStale);
   EXPECT_EQ(store_.RecordFailure(job, attempt - 1, "old"), JobUpdate::kStale);
   EXPECT_EQ(Job("position/B/baseline").state, "running");
   EXPECT_EQ(Job("position/B/baseline").worker_id, "w1");
@@ -145,10 +152,13 @@ TEST_F(StoreTest, SuccessCountsExactlyOnce) {
   store_.RecordSuccess(Id("position/B/baseline"), 1, PositionResult(50, 50, 25));
   const std::string eval = Id("eval/B/baseline/run2");
   const int attempt = Start("eval/B/baseline/run2");
-  EXPECT_EQ(store_.RecordSuccess(eval, attempt, EvalResult(2, 120.5, 3.25)),
-            JobUpdate::kSucceeded);
+  EXPECT_EQ(
+      store_.RecordSuccess(eval, attempt, AtJobPosition(store_, eval, EvalResult(2, 120.5, 3.25))),
+      JobUpdate::kSucceeded);
   // A duplicate delivery of the same result, a different one, or a late failure: all ignored.
-  EXPECT_EQ(store_.RecordSuccess(eval, attempt, EvalResult(2, 120.5, 3.25)), JobUpdate::kStale);
+  EXPECT_EQ(
+      store_.RecordSuccess(eval, attempt, AtJobPosition(store_, eval, EvalResult(2, 120.5, 3.25))),
+      JobUpdate::kStale);
   EXPECT_EQ(store_.RecordSuccess(eval, attempt, EvalResult(2, 999.0, 1.0)), JobUpdate::kStale);
   EXPECT_EQ(store_.RecordFailure(eval, attempt, "late"), JobUpdate::kStale);
   EXPECT_FALSE(store_.MarkRunning(eval, "w2", attempt));
@@ -232,8 +242,7 @@ TEST_F(StoreTest, LostWorkerJobsGoBack) {
   Start("position/B/oracle", "w1");
   Start("position/C/oracle", "w2");
   const auto requeued = store_.RequeueWorker("w1");
-  EXPECT_EQ(requeued,
-            (std::vector<std::string>{Id("position/B/oracle"), Id("train/B/seed1")}));
+  EXPECT_EQ(requeued, (std::vector<std::string>{Id("position/B/oracle"), Id("train/B/seed1")}));
   const JobRecord job = Job("train/B/seed1");
   EXPECT_EQ(job.state, "ready");
   EXPECT_EQ(job.attempt, 2);
@@ -278,7 +287,7 @@ TEST_F(StoreTest, CancelThenRetry) {
   const JobRecord train = Job("train/B/seed1");
   EXPECT_EQ(train.attempt, 2);
   EXPECT_EQ(train.max_attempts, 3);  // a fresh budget: attempt 2 plus one retry
-  EXPECT_EQ(Job("eval/B/baseline/run1").argv[5], "50,50,25");
+  EXPECT_EQ(FormatPosition(*Job("eval/B/baseline/run1").position), "50,50,25");
   EXPECT_THROW(store_.CancelCampaign("000000000000"), StoreError);
   EXPECT_THROW(store_.RetryFailed("000000000000"), StoreError);
 }
@@ -304,12 +313,13 @@ TEST_F(StoreTest, CampaignFinishesAndViewsAnswer) {
     for (const auto& job : store_.ListReady()) {
       ASSERT_TRUE(store_.MarkRunning(job.id, "w1", job.attempt));
       const JobRecord record = *store_.GetJob(job.id);
-      const json result = job.kind == JobKind::kEval
-                              ? EvalResult(static_cast<std::uint64_t>(*record.rng_run),
-                                           100.0 + static_cast<double>(*record.rng_run), 2.0)
+      const json result = job.params.kind == JobKind::kEval
+                              ? EvalResult(static_cast<std::uint64_t>(*record.params.rng_run),
+                                           100.0 + static_cast<double>(*record.params.rng_run), 2.0)
                               : PositionResult(50, 35, 10);
-      ASSERT_EQ(store_.RecordSuccess(job.id, job.attempt, result), JobUpdate::kSucceeded);
-      evals += job.kind == JobKind::kEval ? 1 : 0;
+      ASSERT_EQ(store_.RecordSuccess(job.id, job.attempt, AtJobPosition(store_, job.id, result)),
+                JobUpdate::kSucceeded);
+      evals += job.params.kind == JobKind::kEval ? 1 : 0;
     }
   }
   EXPECT_EQ(evals, 36);

@@ -16,25 +16,28 @@ ReadyJob Ready(const std::string& campaign, const std::string& key, JobKind kind
   job.id = campaign + "/" + key;
   job.campaign_id = campaign;
   job.key = key;
-  job.kind = kind;
+  job.params.kind = kind;
   return job;
 }
 
 std::vector<ReadyJob> Evals(const std::string& campaign, int n) {
   std::vector<ReadyJob> jobs;
-  for (int i = 0; i < n; ++i) jobs.push_back(Ready(campaign, "eval/B/rl/run" + std::to_string(i)));
+  for (int i = 0; i < n; ++i)
+    jobs.push_back(Ready(campaign, "eval/B/rl/run" + std::to_string(i)));
   return jobs;
 }
 
 std::vector<std::string> Workers(const std::vector<Assignment>& assignments) {
   std::vector<std::string> out;
-  for (const auto& a : assignments) out.push_back(a.worker_id);
+  for (const auto& a : assignments)
+    out.push_back(a.worker_id);
   return out;
 }
 
 std::vector<std::string> Keys(const std::vector<Assignment>& assignments) {
   std::vector<std::string> out;
-  for (const auto& a : assignments) out.push_back(a.job.campaign_id + ":" + a.job.key);
+  for (const auto& a : assignments)
+    out.push_back(a.job.campaign_id + ":" + a.job.key);
   return out;
 }
 
@@ -67,10 +70,9 @@ TEST(Assignment, DuplicateWorkerCountsOnce) {
 }
 
 TEST(Assignment, TrainingFirstWithinACampaign) {
-  const std::vector<ReadyJob> jobs{Ready("c", "eval/B/baseline/run1"),
-                                   Ready("c", "position/B/oracle", JobKind::kPosition),
-                                   Ready("c", "train/B/seed1", JobKind::kTrain),
-                                   Ready("c", "eval/B/baseline/run2")};
+  const std::vector<ReadyJob> jobs{
+      Ready("c", "eval/B/baseline/run1"), Ready("c", "position/B/oracle", JobKind::kPosition),
+      Ready("c", "train/B/seed1", JobKind::kTrain), Ready("c", "eval/B/baseline/run2")};
   EXPECT_EQ(Keys(AssignJobs(jobs, {{"a", 3, 0}})),
             (std::vector<std::string>{"c:train/B/seed1", "c:position/B/oracle",
                                       "c:eval/B/baseline/run1"}));
@@ -83,13 +85,15 @@ TEST(Assignment, FairBetweenCampaigns) {
   // "old" already runs 3 jobs: "young" catches up first, then they alternate.
   const auto out = AssignJobs(jobs, {{"a", 6, 0}}, {{"old", 3}});
   std::vector<std::string> campaigns;
-  for (const auto& a : out) campaigns.push_back(a.job.campaign_id);
+  for (const auto& a : out)
+    campaigns.push_back(a.job.campaign_id);
   EXPECT_EQ(campaigns,
             (std::vector<std::string>{"young", "young", "young", "old", "young", "old"}));
   // With nothing running, the older campaign (listed first) goes first, then they alternate.
   const auto even = AssignJobs(jobs, {{"a", 4, 0}});
   campaigns.clear();
-  for (const auto& a : even) campaigns.push_back(a.job.campaign_id);
+  for (const auto& a : even)
+    campaigns.push_back(a.job.campaign_id);
   EXPECT_EQ(campaigns, (std::vector<std::string>{"old", "young", "old", "young"}));
 }
 
@@ -119,7 +123,8 @@ class SchedulerTest : public ::testing::Test {
   }
   static std::map<std::string, int> PerWorker(const std::vector<Assignment>& assignments) {
     std::map<std::string, int> out;
-    for (const auto& a : assignments) ++out[a.worker_id];
+    for (const auto& a : assignments)
+      ++out[a.worker_id];
     return out;
   }
 
@@ -135,14 +140,13 @@ TEST_F(SchedulerTest, AssignsMarksRunningAndRespectsTheStoresCount) {
   EXPECT_TRUE(first.timed_out.empty());
   ASSERT_EQ(first.assigned.size(), 3u);
   EXPECT_EQ(PerWorker(first.assigned), (std::map<std::string, int>{{"w1", 2}, {"w2", 1}}));
-  EXPECT_EQ(first.assigned[0].job.kind, JobKind::kTrain);
+  EXPECT_EQ(first.assigned[0].job.params.kind, JobKind::kTrain);
   EXPECT_EQ(store_.ListRunning().size(), 3u);
   EXPECT_EQ(store_.GetJob(first.assigned[0].job.id)->state, "running");
   // The workers report idle, but the store knows they are full.
   EXPECT_TRUE(scheduler_.Tick({{"w1", 2, 0}, {"w2", 1, 0}}, now_).assigned.empty());
   // A new worker gets work.
-  EXPECT_EQ(scheduler_.Tick({{"w1", 2, 0}, {"w2", 1, 0}, {"w3", 4, 0}}, now_).assigned.size(),
-            4u);
+  EXPECT_EQ(scheduler_.Tick({{"w1", 2, 0}, {"w2", 1, 0}, {"w3", 4, 0}}, now_).assigned.size(), 4u);
 }
 
 TEST_F(SchedulerTest, TimedOutJobsFailAndAreReassigned) {
@@ -183,10 +187,13 @@ TEST_F(SchedulerTest, RunsAMiniCampaignToTheEnd) {
     ++ticks;
     for (const auto& a : scheduler_.Tick({{"w1", 3, 0}, {"w2", 2, 0}}, now_).assigned) {
       const JobRecord job = *store_.GetJob(a.job.id);
-      const auto result = a.job.kind == JobKind::kEval
-                              ? testing::EvalResult(static_cast<std::uint64_t>(*job.rng_run), 90, 2)
-                              : testing::PositionResult(50, 35, 10);
-      ASSERT_EQ(store_.RecordSuccess(a.job.id, a.job.attempt, result), JobUpdate::kSucceeded);
+      const auto result =
+          a.job.params.kind == JobKind::kEval
+              ? testing::EvalResult(static_cast<std::uint64_t>(*job.params.rng_run), 90, 2)
+              : testing::PositionResult(50, 35, 10);
+      ASSERT_EQ(store_.RecordSuccess(a.job.id, a.job.attempt,
+                                     testing::AtJobPosition(store_, a.job.id, result)),
+                JobUpdate::kSucceeded);
     }
   }
   EXPECT_EQ(store_.Progress(campaign_.id).state, "finished");

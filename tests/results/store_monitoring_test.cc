@@ -241,14 +241,14 @@ TEST_F(MonitoringTest, ReadyJobsCarryTheirScenarioName) {
     // The key's second component is the scenario: train/B/seed1, position/C/oracle.
     const auto first = job.key.find('/');
     const auto second = job.key.find('/', first + 1);
-    EXPECT_EQ(job.scenario, job.key.substr(first + 1, second - first - 1));
-    b += job.scenario == "B";
-    c += job.scenario == "C";
+    EXPECT_EQ(job.params.scenario, job.key.substr(first + 1, second - first - 1));
+    b += job.params.scenario == "B";
+    c += job.params.scenario == "C";
   }
   EXPECT_GT(b, 0);
   EXPECT_GT(c, 0);
   EXPECT_EQ(ready[0].key, campaign_.jobs[0].key);  // expansion order
-  EXPECT_EQ(ready[0].scenario, "B");
+  EXPECT_EQ(ready[0].params.scenario, "B");
 }
 
 }  // namespace

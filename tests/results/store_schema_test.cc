@@ -181,14 +181,15 @@ TEST(StoreSchema, ForeignSqliteDatabase) {
 }
 
 TEST(StoreSchema, ReadOnlyFile) {
-  if (geteuid() == 0) GTEST_SKIP() << "root writes to read-only files";
+  if (geteuid() == 0)
+    GTEST_SKIP() << "root writes to read-only files";
   TempDir dir;
   const std::string file = dir.File("locked.db");
   ResultsStore{file};
   ASSERT_EQ(chmod(file.c_str(), 0444), 0);
-  EXPECT_EQ(OpenError(file),
-            "results store " + file + ": the file is read-only; the results store needs write "
-                                      "access");
+  EXPECT_EQ(OpenError(file), "results store " + file +
+                                 ": the file is read-only; the results store needs write "
+                                 "access");
 }
 
 }  // namespace

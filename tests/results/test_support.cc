@@ -6,13 +6,18 @@ std::string SourcePath(const std::string& relative) {
   return std::string(RLPOS_SOURCE_DIR) + "/" + relative;
 }
 
-CampaignSpec MiniSpec() { return ReadCampaignFile(SourcePath("campaigns/mini.json")); }
+CampaignSpec MiniSpec() {
+  return ReadCampaignFile(SourcePath("campaigns/mini.json"));
+}
 
-ExpandedCampaign MiniCampaign() { return ExpandCampaign(MiniSpec()); }
+ExpandedCampaign MiniCampaign() {
+  return ExpandCampaign(MiniSpec());
+}
 
 const Job& FindJob(const ExpandedCampaign& campaign, const std::string& key) {
   for (const auto& job : campaign.jobs) {
-    if (job.key == key) return job;
+    if (job.key == key)
+      return job;
   }
   throw std::out_of_range("no job " + key);
 }
@@ -34,6 +39,15 @@ nlohmann::json EvalResult(std::uint64_t run, double throughput_mbps, double dela
           {"min_snr_db", 12.5},
           {"ues", nlohmann::json::array()},
           {"scenario", "B"}};
+}
+
+nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id,
+                             nlohmann::json result) {
+  const auto job = store.GetJob(job_id);
+  if (job && job->position) {
+    result["position"] = {job->position->x, job->position->y, job->position->z};
+  }
+  return result;
 }
 
 }  // namespace rlpos::testing

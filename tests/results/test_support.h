@@ -6,18 +6,22 @@
 
 #include "campaign/campaign_spec.h"
 #include "campaign/expansion.h"
+#include "store/results_store.h"
 #include "support/temp_dir.h"
 
 namespace rlpos::testing {
 
 std::string SourcePath(const std::string& relative);  // inside the repository
 
-CampaignSpec MiniSpec();                  // campaigns/mini.json
-ExpandedCampaign MiniCampaign();          // its jobs
+CampaignSpec MiniSpec();          // campaigns/mini.json
+ExpandedCampaign MiniCampaign();  // its jobs
 const Job& FindJob(const ExpandedCampaign& campaign, const std::string& key);
 
 // stdout of `rlpos-sim train|position --json` and of `rlpos-sim eval --json`.
 nlohmann::json PositionResult(double x, double y, double z);
 nlohmann::json EvalResult(std::uint64_t run, double throughput_mbps, double delay_ms);
+// `result` with the position the store bound to the eval job (results of another position are
+// refused as implausible).
+nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id, nlohmann::json result);
 
 }  // namespace rlpos::testing
