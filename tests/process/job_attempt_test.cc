@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "daemon/sim_command.h"
 #include "process_test_support.h"
 
 namespace rlpos {
@@ -57,31 +58,47 @@ TEST(AttemptFolder, DotDotAndEmptyComponentsCannotEscape) {
   }
 }
 
-TEST(BindJobArgv, BindsSimBinaryOutDirAndScenario) {
-  JobAttemptSpec spec;
-  spec.job_id = "c1/train/B/seed1";
-  spec.argv = {"rlpos-sim", "train", "--scenario", "/home/u/b.json", "--seed",
-               "1",         "--out", "{out_dir}",  "--json"};
-  spec.scenario_document = R"({"name": "B"})";
-  EXPECT_EQ(BindJobArgv(spec, "/w/c1/attempt1", "/opt/rlpos/bin/rlpos-sim"),
-            (std::vector<std::string>{"/opt/rlpos/bin/rlpos-sim", "train", "--scenario",
-                                      "/w/c1/attempt1/scenario.json", "--seed", "1", "--out",
-                                      "/w/c1/attempt1/out", "--json"}));
-  // Without a document the worker uses the submitter's path as is.
-  spec.scenario_document.clear();
-  EXPECT_EQ(
-      BindJobArgv(spec, "/w/c1/attempt1", "/opt/rlpos/bin/rlpos-sim"),
-      (std::vector<std::string>{"/opt/rlpos/bin/rlpos-sim", "train", "--scenario", "/home/u/b.json",
-                                "--seed", "1", "--out", "/w/c1/attempt1/out", "--json"}));
+JobOrder OrderOf(JobKind kind) {
+  JobOrder order;
+  order.job_id = "c1/x";
+  order.campaign_id = "c1";
+  order.timeout_s = 60;
+  order.params.kind = kind;
+  order.params.scenario = "B";
+  order.params.train_seed = 7;
+  order.params.fidelity = "packet";
+  order.params.positioner = "oracle";
+  order.params.rng_run = 3;
+  order.position = Vec3{50, 35.5, 10};
+  return order;
 }
 
-TEST(BindJobArgv, LeavesOtherProgramsAndArgumentsAlone) {
-  JobAttemptSpec spec;
-  spec.argv = {"/usr/bin/env", "rlpos-sim", "{position}", "--scenario"};  // trailing flag
-  spec.scenario_document = "{}";
-  EXPECT_EQ(BindJobArgv(spec, "/f", "/bin/sim"), spec.argv);
-  spec.argv.clear();
-  EXPECT_TRUE(BindJobArgv(spec, "/f", "/bin/sim").empty());
+TEST(SimCommandLine, OneCommandPerKindFromTypedFieldsOnly) {
+  const std::string sim = "/opt/rlpos/bin/rlpos-sim", folder = "/w/c1/x/attempt1";
+  EXPECT_EQ(
+      SimCommandLine(OrderOf(JobKind::kTrain), sim, folder),
+      (std::vector<std::string>{sim, "train", "--scenario", folder + "/scenario.json", "--seed",
+                                "7", "--fidelity", "packet", "--out", folder + "/out", "--json"}));
+  EXPECT_EQ(SimCommandLine(OrderOf(JobKind::kPosition), sim, folder),
+            (std::vector<std::string>{sim, "position", "--scenario", folder + "/scenario.json",
+                                      "--positioner", "oracle", "--json"}));
+  EXPECT_EQ(SimCommandLine(OrderOf(JobKind::kEval), sim, folder),
+            (std::vector<std::string>{sim, "eval", "--scenario", folder + "/scenario.json",
+                                      "--position", "50,35.5,10", "--json", "--no-progress"}));
+}
+
+TEST(SimCommandLine, NoTextOfTheOrderReachesTheCommandLine) {
+  JobOrder order = OrderOf(JobKind::kPosition);
+  order.params.positioner = "baseline; rm -rf /";
+  order.params.fidelity = "$(id)";
+  order.params.overrides = {{"name", "$(id)"}};
+  for (const auto kind : {JobKind::kTrain, JobKind::kPosition, JobKind::kEval}) {
+    order.params.kind = kind;
+    for (const auto& arg : SimCommandLine(order, "/bin/sim", "/w")) {
+      EXPECT_EQ(arg.find("$("), std::string::npos) << arg;
+      EXPECT_EQ(arg.find(';'), std::string::npos) << arg;
+    }
+  }
 }
 
 class TailOfLogTest : public ::testing::Test {
@@ -126,48 +143,67 @@ class JobAttemptTest : public ::testing::Test {
     EXPECT_TRUE(WaitFor([&] { return (outcome = attempt.Poll()).has_value(); }, timeout_s));
     return outcome.value_or(JobOutcome{false, "", "<no outcome>"});
   }
-  static JobAttemptSpec Spec(std::vector<std::string> argv, double timeout_s = 0) {
-    JobAttemptSpec spec;
-    spec.job_id = "c0ffee/eval/B/rl/run1";
-    spec.attempt = 2;
-    spec.argv = std::move(argv);
-    spec.timeout_s = timeout_s;
-    return spec;
+  // An eval order; the child is a stand-in "rlpos-sim" (Sim) that gets the real command line:
+  // $1 eval, $2 --scenario, $3 the scenario file, $4 --position, $5 x,y,z.
+  static JobOrder Order(double timeout_s = 60) {
+    JobOrder order = OrderOf(JobKind::kEval);
+    order.job_id = "c0ffee/eval/B/rl/run1";
+    order.campaign_id = "c0ffee";
+    order.attempt = 2;
+    order.timeout_s = timeout_s;
+    return order;
   }
-  std::string Folder() const { return AttemptFolder(dir_.path(), "c0ffee/eval/B/rl/run1", 2); }
+  // A shell script standing in for rlpos-sim.
+  std::string Sim(const std::string& body) {
+    const std::string file = dir_.File("sim" + std::to_string(++sims_) + ".sh");
+    WriteFile(file, "#!/bin/sh\n" + body + "\n");
+    fs::permissions(file, fs::perms::owner_all);
+    return file;
+  }
+  std::string Folder() const { return AttemptFolder(Work(), "c0ffee/eval/B/rl/run1", 2); }
+  std::string Work() const { return dir_.path() + "/work"; }
 
   testing::TempDir dir_;
+  int sims_ = 0;
+  const nlohmann::json scenario_ = {{"name", "B"}, {"ues", {1, 2}}};
 };
 
 TEST_F(JobAttemptTest, SuccessReportsTheChildsJson) {
-  JobAttempt attempt(Spec({"rlpos-sim", "-c", "echo '{\"a\": 1}'"}), dir_.path(), "/bin/sh");
+  const std::string sim = Sim("echo '{\"a\": 1}'");
+  JobAttempt attempt(Order(), scenario_, Work(), sim);
   EXPECT_EQ(attempt.Key(), "c0ffee/eval/B/rl/run1#2");
   const JobOutcome outcome = AwaitOutcome(attempt);
   EXPECT_TRUE(outcome.succeeded) << outcome.error;
   EXPECT_EQ(outcome.result_json, "{\"a\":1}");
   EXPECT_EQ(outcome.error, "");
   // The attempt's folder keeps the command and the child's output.
-  EXPECT_EQ(ReadFile(Folder() + "/command.txt"), "/bin/sh\n-c\necho '{\"a\": 1}'\n");
+  EXPECT_EQ(ReadFile(Folder() + "/command.txt"), sim + "\neval\n--scenario\n" + Folder() +
+                                                     "/scenario.json\n--position\n50,35.5,10\n"
+                                                     "--json\n--no-progress\n");
   EXPECT_EQ(ReadFile(Folder() + "/stdout.json"), "{\"a\": 1}\n");
 }
 
-TEST_F(JobAttemptTest, ScenarioDocumentAndOutDirReachTheChild) {
-  JobAttemptSpec spec = Spec({"rlpos-sim", "-c", "test -d \"$(dirname \"$4\")\" && cat \"$2\"",
-                              "sh", "--scenario", "/elsewhere/b.json", "--out", "{out_dir}"});
-  spec.scenario_document = R"({"name": "B", "ues": [1, 2]})";
-  JobAttempt attempt(spec, dir_.path(), "/bin/sh");
+TEST_F(JobAttemptTest, TheEffectiveScenarioReachesTheChild) {
+  JobAttempt attempt(Order(), scenario_, Work(), Sim("cat \"$3\""));
   const JobOutcome outcome = AwaitOutcome(attempt);
   EXPECT_TRUE(outcome.succeeded) << outcome.error;
-  EXPECT_EQ(outcome.result_json, R"({"name":"B","ues":[1,2]})");
-  EXPECT_EQ(ReadFile(Folder() + "/scenario.json"), spec.scenario_document);
-  EXPECT_NE(ReadFile(Folder() + "/command.txt").find("\n" + Folder() + "/out\n"),
-            std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(outcome.result_json), scenario_);
+  EXPECT_EQ(nlohmann::json::parse(ReadFile(Folder() + "/scenario.json")), scenario_);
+}
+
+TEST_F(JobAttemptTest, TrainGetsAnOutFolderInsideItsAttempt) {
+  JobOrder order = Order();
+  order.params.kind = JobKind::kTrain;
+  JobAttempt attempt(order, scenario_, Work(),
+                     Sim("test -d \"$(dirname \"$9\")\" && echo \"{\\\"out\\\": \\\"$9\\\"}\""));
+  const JobOutcome outcome = AwaitOutcome(attempt);
+  ASSERT_TRUE(outcome.succeeded) << outcome.error;
+  EXPECT_EQ(nlohmann::json::parse(outcome.result_json)["out"], Folder() + "/out");
 }
 
 TEST_F(JobAttemptTest, NonZeroExitGivesTheLastStderrLinesAndTheExitCode) {
-  JobAttempt attempt(
-      Spec({"rlpos-sim", "-c", "echo progress >&2; echo 'scenario: bad UE' >&2; exit 4"}),
-      dir_.path(), "/bin/sh");
+  JobAttempt attempt(Order(), scenario_, Work(),
+                     Sim("echo progress >&2; echo 'scenario: bad UE' >&2; exit 4"));
   const JobOutcome outcome = AwaitOutcome(attempt);
   EXPECT_FALSE(outcome.succeeded);
   EXPECT_EQ(outcome.result_json, "");
@@ -175,19 +211,18 @@ TEST_F(JobAttemptTest, NonZeroExitGivesTheLastStderrLinesAndTheExitCode) {
 }
 
 TEST_F(JobAttemptTest, SilentFailureAndMissingJson) {
-  JobAttempt silent(Spec({"rlpos-sim", "-c", "exit 1"}), dir_.path() + "/a", "/bin/sh");
+  JobAttempt silent(Order(), scenario_, Work() + "/a", Sim("exit 1"));
   EXPECT_EQ(AwaitOutcome(silent).error, "rlpos-sim failed [exit code 1]");
-  JobAttempt no_json(Spec({"rlpos-sim", "-c", "echo done"}), dir_.path() + "/b", "/bin/sh");
+  JobAttempt no_json(Order(), scenario_, Work() + "/b", Sim("echo done"));
   const JobOutcome outcome = AwaitOutcome(no_json);
   EXPECT_FALSE(outcome.succeeded);
   EXPECT_EQ(outcome.error, "rlpos-sim ended well but printed no JSON result");
-  JobAttempt killed(Spec({"rlpos-sim", "-c", "echo dying >&2; kill -KILL $$"}), dir_.path() + "/c",
-                    "/bin/sh");
+  JobAttempt killed(Order(), scenario_, Work() + "/c", Sim("echo dying >&2; kill -KILL $$"));
   EXPECT_EQ(AwaitOutcome(killed).error, "dying [signal 9 (Killed)]");
 }
 
 TEST_F(JobAttemptTest, MissingBinaryFailsWithTheReason) {
-  JobAttempt attempt(Spec({"rlpos-sim", "eval"}), dir_.path(), "/nonexistent/rlpos-sim");
+  JobAttempt attempt(Order(), scenario_, Work(), "/nonexistent/rlpos-sim");
   EXPECT_EQ(AwaitOutcome(attempt).error,
             "cannot run /nonexistent/rlpos-sim: No such file or directory [exit code 127]");
 }
@@ -195,8 +230,8 @@ TEST_F(JobAttemptTest, MissingBinaryFailsWithTheReason) {
 TEST_F(JobAttemptTest, TimeoutKillsTheChild) {
   const std::string pid_file = dir_.File("child.pid");
   const auto start = std::chrono::steady_clock::now();
-  JobAttempt attempt(Spec({"rlpos-sim", "-c", "echo $$ > \"$0\"; exec sleep 30", pid_file}, 0.3),
-                     dir_.path(), "/bin/sh");
+  JobAttempt attempt(Order(0.3), scenario_, Work(),
+                     Sim("echo $$ > '" + pid_file + "'; exec sleep 30"));
   ASSERT_TRUE(WaitFor([&] { return !ReadFile(pid_file).empty(); }, 5.0));
   const pid_t pid = std::stoi(ReadFile(pid_file));
   if (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(200)) {
@@ -204,12 +239,9 @@ TEST_F(JobAttemptTest, TimeoutKillsTheChild) {
   }
 
   const JobOutcome outcome = AwaitOutcome(attempt, 5.0);
-  const double took =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_FALSE(outcome.succeeded);
   EXPECT_EQ(outcome.error, "timed out after 0.3 s");
-  EXPECT_GE(took, 0.3);
-  EXPECT_LT(took, 3.0);
+  EXPECT_GE(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 0.3);
   errno = 0;
   EXPECT_EQ(::kill(pid, 0), -1);  // killed and reaped
   EXPECT_EQ(errno, ESRCH);
@@ -218,16 +250,14 @@ TEST_F(JobAttemptTest, TimeoutKillsTheChild) {
 
 TEST_F(JobAttemptTest, StopKillsTheChildAndProgressLineFollowsIt) {
   const std::string pid_file = dir_.File("child.pid");
-  JobAttempt attempt(Spec({"rlpos-sim", "-c",
-                           "echo $$ > \"$0\"; printf 'episode 1/9\\repisode 2/9\\r' >&2; "
-                           "exec sleep 30",
-                           pid_file}),
-                     dir_.path(), "/bin/sh");
+  JobAttempt attempt(Order(), scenario_, Work(),
+                     Sim("echo $$ > '" + pid_file +
+                         "'; printf 'episode 1/9\\repisode 2/9\\r' >&2; exec sleep 30"));
   EXPECT_TRUE(WaitFor([&] { return attempt.ProgressLine() == "episode 2/9"; }, 5.0))
       << attempt.ProgressLine();
   ASSERT_TRUE(WaitFor([&] { return !ReadFile(pid_file).empty(); }, 5.0));
   const pid_t pid = std::stoi(ReadFile(pid_file));
-  EXPECT_FALSE(attempt.Poll().has_value());  // no timeout: runs until stopped
+  EXPECT_FALSE(attempt.Poll().has_value());  // within its timeout: runs until stopped
   attempt.Stop();
   errno = 0;
   EXPECT_EQ(::kill(pid, 0), -1);
@@ -237,7 +267,7 @@ TEST_F(JobAttemptTest, StopKillsTheChildAndProgressLineFollowsIt) {
 TEST_F(JobAttemptTest, LeftoverFolderIsReplaced) {
   fs::create_directories(Folder());
   WriteFile(Folder() + "/stale.txt", "from an earlier worker");
-  JobAttempt attempt(Spec({"rlpos-sim", "-c", "echo 1"}), dir_.path(), "/bin/sh");
+  JobAttempt attempt(Order(), scenario_, Work(), Sim("echo 1"));
   EXPECT_FALSE(fs::exists(Folder() + "/stale.txt"));
   EXPECT_TRUE(AwaitOutcome(attempt).succeeded);
 }
@@ -245,7 +275,7 @@ TEST_F(JobAttemptTest, LeftoverFolderIsReplaced) {
 TEST_F(JobAttemptTest, UnusableWorkDirThrows) {
   const std::string file = dir_.File("a-file");
   WriteFile(file, "");
-  EXPECT_THROW(JobAttempt(Spec({"rlpos-sim", "-c", "true"}), file, "/bin/sh"), std::runtime_error);
+  EXPECT_THROW(JobAttempt(Order(), scenario_, file, Sim("true")), std::runtime_error);
 }
 
 }  // namespace
