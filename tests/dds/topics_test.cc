@@ -35,14 +35,33 @@ msg::WorkerStatus Status(const std::string& id, int busy) {
 
 msg::JobAssignment Assignment(const std::string& job_id, int attempt) {
   msg::JobAssignment a;
-  a.job_id = job_id;
-  a.attempt = attempt;
   a.worker_id = "w1";
-  a.campaign_id = "c0ffee";
-  a.argv = {"rlpos-sim", "eval",  "--scenario",          "/s/b.json", "--out",
-            "{out_dir}", "--set", "wifi.mode=\"adhoc\"", ""};
-  a.scenario_document = "{\"name\": \"B\", \"pad\": \"" + std::string(100000, 'x') + "\"}";
-  a.timeout_s = 12.5;
+  JobOrder& o = a.order;
+  o.job_id = job_id;
+  o.attempt = attempt;
+  o.campaign_id = "c0ffee";
+  o.timeout_s = 12.5;
+  o.params.kind = JobKind::kEval;
+  o.params.scenario = "B";
+  o.params.rng_run = 7;
+  o.params.train_seed = 3;
+  o.params.duration_s = 5;
+  o.params.warmup_s = 0;
+  o.params.overrides = {{"wifi.mode", "\"adhoc\""}, {"ues.0.demand", "12.5"}};
+  o.position = Vec3{50, 35.5, 10};
+  o.scenario_document = "{\"name\": \"B\", \"pad\": \"" + std::string(100000, 'x') + "\"}";
+  return a;
+}
+
+msg::JobAssignment TrainAssignment() {
+  msg::JobAssignment a = Assignment("job-t", 1);
+  a.order.params = JobParams{};
+  a.order.params.kind = JobKind::kTrain;
+  a.order.params.scenario = "C";
+  a.order.params.train_seed = 9;
+  a.order.params.fidelity = "packet";
+  a.order.params.train_episodes = 25;
+  a.order.position.reset();
   return a;
 }
 
@@ -56,13 +75,29 @@ void ExpectSame(const msg::WorkerStatus& a, const msg::WorkerStatus& b) {
 }
 
 void ExpectSame(const msg::JobAssignment& a, const msg::JobAssignment& b) {
-  EXPECT_EQ(a.job_id, b.job_id);
-  EXPECT_EQ(a.attempt, b.attempt);
   EXPECT_EQ(a.worker_id, b.worker_id);
-  EXPECT_EQ(a.campaign_id, b.campaign_id);
-  EXPECT_EQ(a.argv, b.argv);
-  EXPECT_EQ(a.scenario_document, b.scenario_document);
-  EXPECT_DOUBLE_EQ(a.timeout_s, b.timeout_s);
+  const JobOrder &x = a.order, &y = b.order;
+  EXPECT_EQ(x.job_id, y.job_id);
+  EXPECT_EQ(x.attempt, y.attempt);
+  EXPECT_EQ(x.campaign_id, y.campaign_id);
+  EXPECT_DOUBLE_EQ(x.timeout_s, y.timeout_s);
+  EXPECT_EQ(x.scenario_document, y.scenario_document);
+  EXPECT_EQ(x.params.kind, y.params.kind);
+  EXPECT_EQ(x.params.scenario, y.params.scenario);
+  EXPECT_EQ(x.params.rng_run, y.params.rng_run);
+  EXPECT_EQ(x.params.train_seed, y.params.train_seed);
+  EXPECT_EQ(x.params.fidelity, y.params.fidelity);
+  EXPECT_EQ(x.params.train_episodes, y.params.train_episodes);
+  EXPECT_EQ(x.params.positioner, y.params.positioner);
+  EXPECT_EQ(x.params.duration_s, y.params.duration_s);
+  EXPECT_EQ(x.params.warmup_s, y.params.warmup_s);
+  EXPECT_EQ(x.params.overrides, y.params.overrides);
+  ASSERT_EQ(x.position.has_value(), y.position.has_value());
+  if (x.position) {
+    EXPECT_EQ(x.position->x, y.position->x);
+    EXPECT_EQ(x.position->y, y.position->y);
+    EXPECT_EQ(x.position->z, y.position->z);
+  }
 }
 
 TEST_F(TopicsTest, WorkerStatusRoundTrip) {
@@ -202,14 +237,14 @@ TEST_F(TopicsTest, DisposeArrivesAsAnInvalidSampleWithTheKey) {
   ASSERT_EQ(AwaitData(reader, 2).size(), 2u);
 
   msg::JobAssignment key;
-  key.job_id = "job-a";
+  key.order.job_id = "job-a";
   writer.Dispose(key);
   const auto disposed = AwaitSample(reader, [](const auto& r) { return !r.valid; });
   ASSERT_TRUE(disposed.has_value());
   EXPECT_EQ(disposed->state, InstanceState::kDisposed);
-  EXPECT_EQ(disposed->data.job_id, "job-a");
-  EXPECT_TRUE(disposed->data.argv.empty());  // only the key travels
-  EXPECT_TRUE(reader.Take().empty());        // job-b is untouched
+  EXPECT_EQ(disposed->data.order.job_id, "job-a");
+  EXPECT_TRUE(disposed->data.order.scenario_document.empty());  // only the key travels
+  EXPECT_TRUE(reader.Take().empty());                           // job-b is untouched
 }
 
 TEST_F(TopicsTest, LateReaderGetsTheLastWorkerStatusPerWorker) {
@@ -229,23 +264,50 @@ TEST_F(TopicsTest, LateReaderGetsTheLastWorkerStatusPerWorker) {
   ExpectSame(w2, Status("w2", 0));
 }
 
-TEST_F(TopicsTest, LateReaderGetsTheLastAssignmentAndReply) {
+TEST_F(TopicsTest, LateReaderGetsTheLastAssignment) {
   Writer<msg::JobAssignment> assignments(participant_);
-  Writer<msg::CampaignReply> replies(participant_);
   assignments.Write(Assignment("job-a", 1));
   assignments.Write(Assignment("job-a", 2));
+  Reader<msg::JobAssignment> assignment_reader(participant_);
+  const auto a = AwaitData(assignment_reader, 1);
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].order.attempt, 2);
+}
+
+TEST_F(TopicsTest, TrainAssignmentRoundTrip) {
+  Reader<msg::JobAssignment> reader(participant_);
+  Writer<msg::JobAssignment> writer(participant_);
+  writer.Write(TrainAssignment());
+  const auto got = AwaitData(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  ExpectSame(got[0], TrainAssignment());
+}
+
+TEST_F(TopicsTest, AFieldOverItsBoundIsNotWritten) {
+  Writer<msg::JobAssignment> writer(participant_);
+  msg::JobAssignment a = Assignment("job-a", 1);
+  a.order.job_id = std::string(300, 'j');
+  EXPECT_THROW(writer.Write(a), DdsError);
+  a = Assignment("job-a", 1);
+  a.order.scenario_document = std::string(300000, ' ');
+  EXPECT_THROW(writer.Write(a), DdsError);
+}
+
+TEST_F(TopicsTest, ReplyIsNotKeptForLateReaders) {
+  Writer<msg::CampaignReply> replies(participant_);
   msg::CampaignReply reply;
   reply.request_id = "req-9";
   reply.ok = true;
   replies.Write(reply);
-  Reader<msg::JobAssignment> assignment_reader(participant_);
-  Reader<msg::CampaignReply> reply_reader(participant_);
-  const auto a = AwaitData(assignment_reader, 1);
-  ASSERT_EQ(a.size(), 1u);
-  EXPECT_EQ(a[0].attempt, 2);
-  const auto r = AwaitData(reply_reader, 1);
-  ASSERT_EQ(r.size(), 1u);
-  EXPECT_EQ(r[0].request_id, "req-9");
+  replies.Unregister(reply);
+  Reader<msg::CampaignReply> reader(participant_);
+  ASSERT_TRUE(WaitFor([&] { return replies.MatchedReaders() == 1; }));
+  // A reply written once the reader is matched arrives; the earlier one was never kept.
+  reply.request_id = "req-10";
+  replies.Write(reply);
+  const auto got = AwaitData(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].request_id, "req-10");
 }
 
 TEST_F(TopicsTest, CampaignRequestsAreVolatile) {
@@ -278,7 +340,7 @@ TEST_F(TopicsTest, DeletedAssignmentWriterDoesNotDispose) {
   const auto gone = AwaitSample(reader, [](const auto& r) { return !r.valid; });
   ASSERT_TRUE(gone.has_value());
   EXPECT_EQ(gone->state, InstanceState::kNoWriters);
-  EXPECT_EQ(gone->data.job_id, "job-a");
+  EXPECT_EQ(gone->data.order.job_id, "job-a");
 }
 
 TEST_F(TopicsTest, DeletedWorkerStatusWriterDoesNotDispose) {
