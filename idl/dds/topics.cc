@@ -503,10 +503,20 @@ std::string Reader<M>::WriterParticipant(std::uint64_t publication_handle) {
 
 template <typename M>
 bool Reader<M>::HasMatchedWriterOf(const std::string& guid) {
-  dds_instance_handle_t handles[64];
-  const dds_return_t n = dds_get_matched_publications(reader_, handles, 64);
-  for (dds_return_t i = 0; i < n && i < 64; ++i) {
-    if (WriterParticipant(handles[i]) == guid)
+  // Every matched writer, however many there are: a peer that adds writers to the topic must
+  // not hide the one looked for.
+  std::vector<dds_instance_handle_t> handles(64);
+  for (;;) {
+    const dds_return_t n = dds_get_matched_publications(reader_, handles.data(), handles.size());
+    if (n < 0)
+      return false;
+    const bool complete = static_cast<std::size_t>(n) <= handles.size();
+    handles.resize(static_cast<std::size_t>(n));
+    if (complete)
+      break;
+  }
+  for (const dds_instance_handle_t handle : handles) {
+    if (WriterParticipant(handle) == guid)
       return true;
   }
   return false;
