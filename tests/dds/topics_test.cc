@@ -1,8 +1,13 @@
 // Every message type through a Writer and a Reader of one loopback participant, and the QoS
-// contract of topics.h: disposal, transient-local history, writers that go without disposing.
+// contract of topics.h: disposal, transient-local history, writers that go without disposing,
+// the IDL's bounds, and which participant a sample came from. "Nothing else arrived" is checked
+// with a marker: one writer's samples arrive in the order it wrote them, so once a marker written
+// last has arrived, whatever came before it is all that ever will.
 #include "dds/topics.h"
 
 #include <gtest/gtest.h>
+
+#include <map>
 
 #include "dds/wait_set.h"
 #include "dds_test_support.h"
@@ -13,6 +18,19 @@ namespace {
 using testing::AwaitData;
 using testing::AwaitSample;
 using testing::WaitFor;
+
+// The samples `reader` took before the first valid one `is_marker` accepts; nullopt when no such
+// sample arrived within 5 s.
+template <typename M, typename P>
+std::optional<std::vector<Received<M>>> TakenBeforeMarker(Reader<M>& reader, P is_marker) {
+  std::vector<Received<M>> before;
+  if (!AwaitSample(
+          reader, [&](const Received<M>& r) { return r.valid && is_marker(r.data); }, 5.0,
+          &before)) {
+    return std::nullopt;
+  }
+  return before;
+}
 
 class TopicsTest : public ::testing::Test {
  protected:
@@ -50,6 +68,20 @@ msg::JobAssignment Assignment(const std::string& job_id, int attempt) {
   o.params.overrides = {{"wifi.mode", "\"adhoc\""}, {"ues.0.demand", "12.5"}};
   o.position = Vec3{50, 35.5, 10};
   o.scenario_document = "{\"name\": \"B\", \"pad\": \"" + std::string(100000, 'x') + "\"}";
+  return a;
+}
+
+msg::JobAssignment PositionAssignment() {
+  msg::JobAssignment a = Assignment("c0ffee/position/C/centroid", 2);
+  a.worker_id = "w-\xc3\xa9";
+  a.order.params = JobParams{};
+  a.order.params.kind = JobKind::kPosition;
+  a.order.params.scenario = "C";
+  a.order.params.positioner = "centroid";
+  a.order.params.duration_s = 0.25;
+  a.order.params.overrides = {{"/ues/0/demand", "1e-3"}};
+  a.order.position.reset();
+  a.order.scenario_document = "{}";
   return a;
 }
 
@@ -244,7 +276,13 @@ TEST_F(TopicsTest, DisposeArrivesAsAnInvalidSampleWithTheKey) {
   EXPECT_EQ(disposed->state, InstanceState::kDisposed);
   EXPECT_EQ(disposed->data.order.job_id, "job-a");
   EXPECT_TRUE(disposed->data.order.scenario_document.empty());  // only the key travels
-  EXPECT_TRUE(reader.Take().empty());                           // job-b is untouched
+  // job-b is untouched: nothing of it came before a marker written after the disposal.
+  writer.Write(Assignment("job-marker", 1));
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& a) { return a.order.job_id == "job-marker"; });
+  ASSERT_TRUE(before.has_value()) << "the marker did not arrive";
+  EXPECT_TRUE(before->empty()) << before->size() << " samples, the first of "
+                               << before->front().data.order.job_id;
 }
 
 TEST_F(TopicsTest, LateReaderGetsTheLastWorkerStatusPerWorker) {
@@ -253,10 +291,17 @@ TEST_F(TopicsTest, LateReaderGetsTheLastWorkerStatusPerWorker) {
   writer.Write(Status("w1", 2));  // keep last 1: replaces the first
   writer.Write(Status("w2", 0));
   Reader<msg::WorkerStatus> reader(participant_);
-  auto got = AwaitData(reader, 2);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  for (auto& r : reader.Take())
+  ASSERT_TRUE(WaitFor([&] { return writer.MatchedReaders() == 1; }));
+  // The history arrives before anything written after the match: the marker closes it.
+  writer.Write(Status("w-marker", 0));
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& s) { return s.worker_id == "w-marker"; });
+  ASSERT_TRUE(before.has_value()) << "the marker did not arrive";
+  std::vector<msg::WorkerStatus> got;
+  for (const auto& r : *before) {
+    EXPECT_TRUE(r.valid);
     got.push_back(r.data);
+  }
   ASSERT_EQ(got.size(), 2u);
   const auto& w1 = got[0].worker_id == "w1" ? got[0] : got[1];
   const auto& w2 = got[0].worker_id == "w1" ? got[1] : got[0];
@@ -274,23 +319,207 @@ TEST_F(TopicsTest, LateReaderGetsTheLastAssignment) {
   EXPECT_EQ(a[0].order.attempt, 2);
 }
 
-TEST_F(TopicsTest, TrainAssignmentRoundTrip) {
+TEST_F(TopicsTest, EveryKindOfAssignmentRoundTrips) {
   Reader<msg::JobAssignment> reader(participant_);
   Writer<msg::JobAssignment> writer(participant_);
-  writer.Write(TrainAssignment());
-  const auto got = AwaitData(reader, 1);
-  ASSERT_EQ(got.size(), 1u);
-  ExpectSame(got[0], TrainAssignment());
+  const std::vector<msg::JobAssignment> sent{TrainAssignment(), PositionAssignment(),
+                                             Assignment("c0ffee/eval/B/rl/run7", 1)};
+  for (const auto& a : sent)
+    writer.Write(a);
+  std::vector<Received<msg::JobAssignment>> got;
+  ASSERT_TRUE(AwaitSample(
+      reader, [&](const auto& r) { return r.data.order.job_id == sent.back().order.job_id; }, 5.0,
+      &got));
+  ASSERT_EQ(got.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_TRUE(got[i].valid);
+    EXPECT_EQ(got[i].decode_error, "");
+    ExpectSame(got[i].data, sent[i]);
+  }
+  // Only the fields of its kind travel: a train job has no position, a position job no seed.
+  EXPECT_FALSE(got[0].data.order.position.has_value());
+  EXPECT_FALSE(got[1].data.order.params.train_seed.has_value());
+  EXPECT_EQ(got[1].data.order.params.fidelity, "");
+  EXPECT_FALSE(got[1].data.order.params.rng_run.has_value());
 }
 
-TEST_F(TopicsTest, AFieldOverItsBoundIsNotWritten) {
+TEST_F(TopicsTest, CampaignRequestWithScenariosRoundTrip) {
+  Reader<msg::CampaignRequest> reader(participant_);
+  Writer<msg::CampaignRequest> writer(participant_);
+  msg::CampaignRequest r;
+  r.request_id = "req-scenarios";
+  r.kind = msg::RequestKind::kSubmit;
+  r.campaign_json = R"({"name": "m\u00e9", "scenarios": ["b.json", {"file": "c.json"}]})";
+  r.scenarios = {{"scenarios/b.json", R"({"name": "B", "venue": {"width": 100}})"},
+                 {"/abs/h\xc3\xb4te/c.json", ""},
+                 {"big.json", "{\"pad\": \"" + std::string(262144 - 11, 'x') + "\"}"}};
+  ASSERT_EQ(r.scenarios[2].document.size(), 262144u);  // exactly the bound
+  writer.Write(r);
+  const auto got = AwaitSample(reader, [](const auto& s) { return s.valid; });
+  ASSERT_TRUE(got.has_value());
+  EXPECT_EQ(got->decode_error, "");
+  EXPECT_EQ(got->data.request_id, r.request_id);
+  EXPECT_EQ(got->data.kind, msg::RequestKind::kSubmit);
+  EXPECT_EQ(got->data.campaign_json, r.campaign_json);
+  ASSERT_EQ(got->data.scenarios.size(), r.scenarios.size());
+  for (std::size_t i = 0; i < r.scenarios.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(got->data.scenarios[i].file, r.scenarios[i].file);
+    EXPECT_EQ(got->data.scenarios[i].document, r.scenarios[i].document);
+  }
+}
+
+// Sets a field of `base` to a size (in bytes or elements) and writes it: at `bound` it is
+// written, one more throws DdsError.
+template <typename M, typename F>
+void ExpectBound(Participant& participant, const M& base, const char* field, std::size_t bound,
+                 F set) {
+  SCOPED_TRACE(field);
+  Writer<M> writer(participant);
+  M at = base, over = base;
+  set(at, bound);
+  set(over, bound + 1);
+  EXPECT_NO_THROW(writer.Write(at));
+  EXPECT_THROW(writer.Write(over), DdsError);
+}
+
+TEST_F(TopicsTest, WriteRefusesEveryFieldOverItsIdlBound) {
+  const auto text = [](std::size_t n) { return std::string(n, 'a'); };
+  const msg::JobAssignment a = Assignment("c0ffee/j", 1);
+  ExpectBound(participant_, a, "job_id", 256, [&](auto& m, auto n) { m.order.job_id = text(n); });
+  ExpectBound(participant_, a, "worker_id", 128, [&](auto& m, auto n) { m.worker_id = text(n); });
+  ExpectBound(participant_, a, "campaign_id", 64,
+              [&](auto& m, auto n) { m.order.campaign_id = text(n); });
+  ExpectBound(participant_, a, "scenario", 128,
+              [&](auto& m, auto n) { m.order.params.scenario = text(n); });
+  ExpectBound(participant_, a, "scenario_document", 262144,
+              [&](auto& m, auto n) { m.order.scenario_document = text(n); });
+  ExpectBound(participant_, a, "overrides", 64, [&](auto& m, auto n) {
+    m.order.params.overrides.assign(n, ScenarioOverride{"wifi.mode", "adhoc"});
+  });
+  ExpectBound(participant_, a, "override path", 128, [&](auto& m, auto n) {
+    m.order.params.overrides = {{text(n), "1"}};
+  });
+  ExpectBound(participant_, a, "override value", 4096, [&](auto& m, auto n) {
+    m.order.params.overrides = {{"x", text(n)}};
+  });
+
+  const msg::WorkerStatus s = Status("w1", 1);
+  ExpectBound(participant_, s, "status worker_id", 128,
+              [&](auto& m, auto n) { m.worker_id = text(n); });
+  ExpectBound(participant_, s, "host", 128, [&](auto& m, auto n) { m.host = text(n); });
+  ExpectBound(participant_, s, "jobs", 1024, [&](auto& m, auto n) { m.jobs.assign(n, "j#1"); });
+  ExpectBound(participant_, s, "job key", 300, [&](auto& m, auto n) { m.jobs = {text(n)}; });
+
+  msg::JobEvent e;
+  e.job_id = "j";
+  ExpectBound(participant_, e, "event job_id", 256, [&](auto& m, auto n) { m.job_id = text(n); });
+  ExpectBound(participant_, e, "event worker_id", 128,
+              [&](auto& m, auto n) { m.worker_id = text(n); });
+  ExpectBound(participant_, e, "result_json", 262144,
+              [&](auto& m, auto n) { m.result_json = text(n); });
+  ExpectBound(participant_, e, "message", 1024, [&](auto& m, auto n) { m.message = text(n); });
+
+  msg::CampaignRequest r;
+  r.request_id = "req";
+  ExpectBound(participant_, r, "request_id", 256, [&](auto& m, auto n) { m.request_id = text(n); });
+  ExpectBound(participant_, r, "request campaign_id", 64,
+              [&](auto& m, auto n) { m.campaign_id = text(n); });
+  ExpectBound(participant_, r, "campaign_json", 65536,
+              [&](auto& m, auto n) { m.campaign_json = text(n); });
+  ExpectBound(participant_, r, "scenarios", 32, [&](auto& m, auto n) {
+    m.scenarios.assign(n, msg::ScenarioFile{"b.json", "{}"});
+  });
+  ExpectBound(participant_, r, "scenario file", 512, [&](auto& m, auto n) {
+    m.scenarios = {{text(n), "{}"}};
+  });
+  ExpectBound(participant_, r, "scenario document", 262144, [&](auto& m, auto n) {
+    m.scenarios = {{"b.json", text(n)}};
+  });
+
+  msg::CampaignReply reply;
+  reply.request_id = "req";
+  ExpectBound(participant_, reply, "reply request_id", 256,
+              [&](auto& m, auto n) { m.request_id = text(n); });
+  ExpectBound(participant_, reply, "reply campaign_id", 64,
+              [&](auto& m, auto n) { m.campaign_id = text(n); });
+}
+
+TEST_F(TopicsTest, WriteRefusesANulInsideAString) {
   Writer<msg::JobAssignment> writer(participant_);
-  msg::JobAssignment a = Assignment("job-a", 1);
-  a.order.job_id = std::string(300, 'j');
+  msg::JobAssignment a = Assignment("c0ffee/j", 1);
+  a.order.job_id = std::string("c0ffee/j") + '\0' + "/x";
   EXPECT_THROW(writer.Write(a), DdsError);
-  a = Assignment("job-a", 1);
-  a.order.scenario_document = std::string(300000, ' ');
+  a = Assignment("c0ffee/j", 1);
+  a.order.params.overrides = {{"name", std::string("B") + '\0' + "C"}};
   EXPECT_THROW(writer.Write(a), DdsError);
+}
+
+TEST_F(TopicsTest, ALongReplyMessageIsCutToItsBound) {
+  Reader<msg::CampaignReply> reader(participant_);
+  Writer<msg::CampaignReply> writer(participant_);
+  msg::CampaignReply reply;
+  reply.request_id = "req-long";
+  reply.message = std::string(1024, 'm') + "and the rest";
+  writer.Write(reply);
+  const auto got = AwaitData(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].message, std::string(1024, 'm'));
+}
+
+TEST_F(TopicsTest, WriterParticipantTellsWhichParticipantWrote) {
+  // A second participant of this process: with neither config nor tag it joins the domain that
+  // participant_ created (its loopback config), as a participant of its own.
+  DdsOptions same_domain;
+  same_domain.domain = participant_.options().domain;
+  Participant other(same_domain);
+  Reader<msg::JobEvent> reader(participant_);
+  Writer<msg::JobEvent> first(participant_), second(participant_), foreign(other);
+  ASSERT_TRUE(WaitFor([&] { return reader.MatchedWriters() == 3; }));
+  std::map<std::string, Writer<msg::JobEvent>*> writers{
+      {"first", &first}, {"second", &second}, {"foreign", &foreign}};
+  for (const auto& [name, writer] : writers) {
+    msg::JobEvent e;
+    e.job_id = name;
+    writer->Write(e);
+  }
+  std::map<std::string, std::uint64_t> handle;
+  ASSERT_TRUE(WaitFor([&] {
+    for (const auto& r : reader.Take())
+      handle[r.data.job_id] = r.writer;
+    return handle.size() == 3;
+  }));
+  EXPECT_NE(handle["first"], handle["second"]);  // two writers ...
+  const std::string mine = reader.WriterParticipant(handle["first"]);
+  EXPECT_EQ(mine.size(), 32u) << mine;                          // 16 bytes in hex
+  EXPECT_EQ(reader.WriterParticipant(handle["second"]), mine);  // ... of one participant
+  const std::string theirs = reader.WriterParticipant(handle["foreign"]);
+  EXPECT_EQ(theirs.size(), 32u) << theirs;
+  EXPECT_NE(theirs, mine);
+  EXPECT_TRUE(reader.HasMatchedWriterOf(mine));
+  EXPECT_TRUE(reader.HasMatchedWriterOf(theirs));
+  EXPECT_FALSE(reader.HasMatchedWriterOf(std::string(32, '0')));
+  EXPECT_EQ(reader.WriterParticipant(0), "");  // no such writer
+}
+
+TEST_F(TopicsTest, HasMatchedWriterOfSeesPastManyOtherWriters) {
+  DdsOptions same_domain;
+  same_domain.domain = participant_.options().domain;
+  Participant other(same_domain);
+  Reader<msg::JobAssignment> reader(participant_);
+  std::vector<std::unique_ptr<Writer<msg::JobAssignment>>> crowd;
+  for (int i = 0; i < 100; ++i)
+    crowd.push_back(std::make_unique<Writer<msg::JobAssignment>>(other));
+  Writer<msg::JobAssignment> mine(participant_);
+  ASSERT_TRUE(WaitFor([&] { return reader.MatchedWriters() == 101; }));
+  mine.Write(Assignment("c0ffee/j", 1));
+  const auto got = AwaitSample(reader, [](const auto& r) { return r.valid; });
+  ASSERT_TRUE(got.has_value());
+  const std::string guid = reader.WriterParticipant(got->writer);
+  ASSERT_FALSE(guid.empty());
+  // A coordinator stays followed however many other writers a peer adds to the topic.
+  EXPECT_TRUE(reader.HasMatchedWriterOf(guid));
 }
 
 TEST_F(TopicsTest, ReplyIsNotKeptForLateReaders) {
@@ -302,12 +531,14 @@ TEST_F(TopicsTest, ReplyIsNotKeptForLateReaders) {
   replies.Unregister(reply);
   Reader<msg::CampaignReply> reader(participant_);
   ASSERT_TRUE(WaitFor([&] { return replies.MatchedReaders() == 1; }));
-  // A reply written once the reader is matched arrives; the earlier one was never kept.
+  // A reply written once the reader is matched arrives; the earlier one was never kept (it
+  // would have come first).
   reply.request_id = "req-10";
   replies.Write(reply);
-  const auto got = AwaitData(reader, 1);
-  ASSERT_EQ(got.size(), 1u);
-  EXPECT_EQ(got[0].request_id, "req-10");
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& r) { return r.request_id == "req-10"; });
+  ASSERT_TRUE(before.has_value()) << "req-10 did not arrive";
+  EXPECT_TRUE(before->empty()) << before->front().data.request_id;
 }
 
 TEST_F(TopicsTest, CampaignRequestsAreVolatile) {
@@ -320,11 +551,14 @@ TEST_F(TopicsTest, CampaignRequestsAreVolatile) {
   msg::CampaignRequest late;
   late.request_id = "late";
   writer.Write(late);
-  const auto got = AwaitData(reader, 1);
-  ASSERT_EQ(got.size(), 1u);
-  EXPECT_EQ(got[0].request_id, "late");
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  EXPECT_TRUE(reader.Take().empty());
+  msg::CampaignRequest marker;
+  marker.request_id = "marker";
+  writer.Write(marker);
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& r) { return r.request_id == "marker"; });
+  ASSERT_TRUE(before.has_value()) << "the marker did not arrive";
+  ASSERT_EQ(before->size(), 1u);
+  EXPECT_EQ(before->front().data.request_id, "late");
 }
 
 TEST_F(TopicsTest, DeletedAssignmentWriterDoesNotDispose) {
@@ -383,6 +617,9 @@ TEST_F(TopicsTest, WaitSetWakesOnData) {
   EXPECT_TRUE(waits.Wait(5.0));
   EXPECT_EQ(reader.Take().size(), 1u);
   EXPECT_FALSE(waits.Wait(0.05));  // taken: nothing left to wake for
+  writer.Write(e);                 // ... until the next sample
+  EXPECT_TRUE(waits.Wait(5.0));
+  EXPECT_EQ(reader.Take().size(), 1u);
 }
 
 }  // namespace
