@@ -10,6 +10,7 @@
 
 #include "daemon/sim_command.h"
 #include "process_test_support.h"
+#include "wire/job_order.h"
 
 namespace rlpos {
 namespace {
@@ -189,6 +190,65 @@ TEST_F(JobAttemptTest, TheEffectiveScenarioReachesTheChild) {
   EXPECT_TRUE(outcome.succeeded) << outcome.error;
   EXPECT_EQ(nlohmann::json::parse(outcome.result_json), scenario_);
   EXPECT_EQ(nlohmann::json::parse(ReadFile(Folder() + "/scenario.json")), scenario_);
+}
+
+// An order of `kind` on the shipped scenario B with settings and overrides of every sort, as
+// a worker gets it after CheckJobOrder.
+JobOrder ShippedOrder(JobKind kind) {
+  JobOrder order = OrderOf(kind);
+  order.job_id = std::string("c1/") + ToString(kind);
+  order.scenario_document = ReadFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json");
+  order.params.duration_s = 3;
+  order.params.warmup_s = 0.5;
+  if (kind == JobKind::kTrain)
+    order.params.train_episodes = 25;
+  // The campaign's "set" comes last: its warm-up wins over the job's.
+  order.params.overrides = {{"wifi.mode", "adhoc"}, {"simulation.warmup", "0.25"}};
+  return order;
+}
+
+TEST_F(JobAttemptTest, TheScenarioFileIsTheEffectiveDocumentOfEachKind) {
+  for (const auto kind : {JobKind::kTrain, JobKind::kPosition, JobKind::kEval}) {
+    SCOPED_TRACE(ToString(kind));
+    const JobOrder order = ShippedOrder(kind);
+    const CheckedOrder checked = CheckJobOrder(order, 3600);
+    JobAttempt attempt(order, checked.scenario, Work(), Sim("cat \"$3\""));
+    const JobOutcome outcome = AwaitOutcome(attempt);
+    ASSERT_TRUE(outcome.succeeded) << outcome.error;
+    const std::string folder = AttemptFolder(Work(), order.job_id, order.attempt);
+    const nlohmann::json written = nlohmann::json::parse(ReadFile(folder + "/scenario.json"));
+    EXPECT_EQ(nlohmann::json::parse(outcome.result_json), written);  // what the child read
+    EXPECT_EQ(written, EffectiveScenarioDocument(nlohmann::json::parse(order.scenario_document),
+                                                 order.params));
+    const nlohmann::json& simulation = written["simulation"];
+    EXPECT_EQ(simulation["duration"], 3);
+    EXPECT_EQ(simulation["warmup"], 0.25);
+    EXPECT_EQ(written["wifi"]["mode"], "adhoc");
+    EXPECT_EQ(written["name"], "B");
+    // Only an eval runs the job's RngRun; the others keep the scenario's.
+    EXPECT_EQ(simulation["run"], kind == JobKind::kEval ? 3 : 1);
+    if (kind == JobKind::kTrain)
+      EXPECT_EQ(written["agent"]["train_episodes"], 25);
+  }
+}
+
+TEST_F(JobAttemptTest, TheChildGetsTheCommandLineOfItsKind) {
+  const std::string argv_file = dir_.File("argv.txt");
+  const std::string sim =
+      Sim("for a in \"$@\"; do printf '%s\\n' \"$a\"; done > '" + argv_file + "'; echo '{}'");
+  for (const auto kind : {JobKind::kTrain, JobKind::kPosition, JobKind::kEval}) {
+    SCOPED_TRACE(ToString(kind));
+    const JobOrder order = ShippedOrder(kind);
+    JobAttempt attempt(order, CheckJobOrder(order, 3600).scenario, Work(), sim);
+    ASSERT_TRUE(AwaitOutcome(attempt).succeeded);
+    const auto expected =
+        SimCommandLine(order, sim, AttemptFolder(Work(), order.job_id, order.attempt));
+    std::string lines;
+    for (std::size_t i = 1; i < expected.size(); ++i)
+      lines += expected[i] + "\n";
+    EXPECT_EQ(ReadFile(argv_file), lines);
+    EXPECT_EQ(expected[1], ToString(kind));
+  }
 }
 
 TEST_F(JobAttemptTest, TrainGetsAnOutFolderInsideItsAttempt) {
