@@ -61,8 +61,9 @@ TEST(Expansion, SameCampaignSameJobs) {
   for (std::size_t i = 0; i < a.jobs.size(); ++i) {
     EXPECT_EQ(a.jobs[i].id, b.jobs[i].id);
     EXPECT_EQ(a.jobs[i].depends_on, b.jobs[i].depends_on);
-    EXPECT_EQ(a.jobs[i].params.overrides, b.jobs[i].params.overrides);
-    EXPECT_EQ(a.jobs[i].params.rng_run, b.jobs[i].params.rng_run);
+    EXPECT_EQ(a.jobs[i].label, b.jobs[i].label);
+    EXPECT_EQ(ToJson(a.jobs[i].position_rule), ToJson(b.jobs[i].position_rule));
+    EXPECT_TRUE(testing::SameParams(a.jobs[i].params, b.jobs[i].params)) << a.jobs[i].key;
   }
   EXPECT_EQ(a.id, CampaignId(MiniSpec()));
   EXPECT_EQ(a.max_attempts, 2);  // retries 1
@@ -138,6 +139,60 @@ TEST(Expansion, TypedParams) {
   EXPECT_EQ(train.warmup_s, 0.5);
 }
 
+TEST(Expansion, EachKindCarriesOnlyItsFields) {
+  CampaignSpec spec = MiniSpec();
+  spec.train.episodes = 25;
+  const ExpandedCampaign c = ExpandCampaign(spec);
+  for (const auto& job : c.jobs) {
+    SCOPED_TRACE(job.key);
+    const JobParams& p = job.params;
+    EXPECT_EQ(job.key.substr(0, job.key.find('/')), ToString(p.kind));
+    EXPECT_EQ(p.scenario, job.key.substr(job.key.find('/') + 1, 1));  // B or C
+    // Every kind simulates with the campaign's eval settings.
+    EXPECT_EQ(p.duration_s, 2.0);
+    EXPECT_EQ(p.warmup_s, 0.5);
+    switch (p.kind) {
+      case JobKind::kTrain:
+        EXPECT_TRUE(p.train_seed.has_value());
+        EXPECT_EQ(p.fidelity, "analytic");
+        EXPECT_EQ(p.train_episodes, 25);
+        EXPECT_EQ(p.positioner, "");
+        EXPECT_FALSE(p.rng_run.has_value());
+        break;
+      case JobKind::kPosition:
+        EXPECT_EQ(p.positioner, job.label);
+        EXPECT_FALSE(p.train_seed.has_value());
+        EXPECT_EQ(p.fidelity, "");
+        EXPECT_FALSE(p.train_episodes.has_value());
+        EXPECT_FALSE(p.rng_run.has_value());
+        break;
+      case JobKind::kEval: {
+        ASSERT_TRUE(p.rng_run.has_value());
+        EXPECT_EQ(job.key,
+                  "eval/" + p.scenario + "/" + job.label + "/run" + std::to_string(*p.rng_run));
+        // The seed of the policy it evaluates; none for a positioner's position.
+        const bool from_training = job.depends_on.find("/train/") != std::string::npos;
+        EXPECT_EQ(p.train_seed.has_value(), from_training);
+        EXPECT_EQ(p.fidelity, "");
+        EXPECT_FALSE(p.train_episodes.has_value());
+        EXPECT_EQ(p.positioner, "");
+        break;
+      }
+    }
+  }
+}
+
+TEST(Expansion, CampaignWithoutEvalSettingsLeavesThemToTheScenario) {
+  CampaignSpec spec = MiniSpec();
+  spec.eval.duration.reset();
+  spec.eval.warmup.reset();
+  const ExpandedCampaign c = ExpandCampaign(spec);
+  for (const auto& job : c.jobs) {
+    EXPECT_FALSE(job.params.duration_s.has_value()) << job.key;
+    EXPECT_FALSE(job.params.warmup_s.has_value()) << job.key;
+  }
+}
+
 TEST(Expansion, OverridesAndEpisodesAreTyped) {
   CampaignSpec spec = MiniSpec();
   spec.scenarios[0].overrides = {"simulation.duration=5"};
@@ -149,6 +204,7 @@ TEST(Expansion, OverridesAndEpisodesAreTyped) {
   EXPECT_EQ(train.train_episodes, 25);
   const std::vector<ScenarioOverride> set{{"simulation.duration", "5"}};
   EXPECT_EQ(train.overrides, set);
+  EXPECT_EQ(train.duration_s, 2.0);  // the override is applied after it, and wins
   EXPECT_EQ(FindJob(c, "eval/B/rl/run1").params.overrides, set);
   EXPECT_EQ(FindJob(c, "position/B/baseline").params.overrides, set);
   EXPECT_TRUE(FindJob(c, "eval/C/rl/run1").params.overrides.empty());

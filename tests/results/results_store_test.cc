@@ -123,6 +123,80 @@ TEST_F(StoreTest, ProducerSuccessBindsPositionsOfItsEvals) {
   EXPECT_EQ(Job("eval/B/baseline/run1").state, "pending");
   EXPECT_EQ(position_of("eval/B/baseline/run1"), "unbound");
   EXPECT_EQ(store_.Progress(campaign_.id).ready, 7 + 2 * 6);
+  // What a worker is then ordered: the bound position with the job's typed fields.
+  int evals = 0;
+  for (const auto& job : store_.ListReady()) {
+    if (job.params.kind != JobKind::kEval)
+      continue;
+    ++evals;
+    ASSERT_TRUE(job.position.has_value()) << job.key;
+    EXPECT_EQ(FormatPosition(*job.position), position_of(job.key)) << job.key;
+    EXPECT_TRUE(testing::SameParams(job.params, FindJob(campaign_, job.key).params)) << job.key;
+  }
+  EXPECT_EQ(evals, 2 * 6);
+}
+
+TEST_F(StoreTest, EveryTypedFieldSurvivesTheStore) {
+  CampaignSpec spec = testing::MiniSpec();
+  spec.scenarios[0].overrides = {"wifi.mode=adhoc", "/ues/0/demand=12.5"};
+  spec.train.seeds = {4, 9};
+  spec.train.fidelity = "packet";
+  spec.train.episodes = 25;
+  const ExpandedCampaign campaign = ExpandCampaign(spec);
+  ASSERT_TRUE(store_.Submit(campaign).created);
+  for (const auto& job : campaign.jobs) {
+    SCOPED_TRACE(job.key);
+    const auto record = store_.GetJob(job.id);
+    ASSERT_TRUE(record.has_value());
+    EXPECT_EQ(record->key, job.key);
+    EXPECT_EQ(record->label, job.label);
+    EXPECT_EQ(record->depends_on, job.depends_on);
+    EXPECT_DOUBLE_EQ(record->timeout_s, 300.0);
+    EXPECT_TRUE(testing::SameParams(record->params, job.params));
+    EXPECT_FALSE(record->position.has_value());  // nothing bound yet
+  }
+  const auto ready = store_.ListReady();
+  ASSERT_FALSE(ready.empty());
+  for (const auto& job : ready)
+    EXPECT_TRUE(testing::SameParams(job.params, FindJob(campaign, job.key).params)) << job.key;
+}
+
+TEST_F(StoreTest, OnlyTheWorkerThatHoldsAnAttemptSettlesIt) {
+  store_.Submit(campaign_);
+  const std::string job = Id("position/B/baseline");
+  const int attempt = Start("position/B/baseline", "w1");
+  EXPECT_EQ(store_.RecordSuccess(job, attempt, PositionResult(50, 50, 25), "w2"),
+            JobUpdate::kStale);
+  EXPECT_EQ(store_.RecordFailure(job, attempt, "from another worker", "w2"), JobUpdate::kStale);
+  store_.SetProgress(job, attempt, "from another worker", "w2");
+  EXPECT_EQ(store_.RunningJobs(campaign_.id).at(0).progress, "");
+  EXPECT_EQ(Job("position/B/baseline").state, "running");
+  store_.SetProgress(job, attempt, "scoring", "w1");
+  EXPECT_EQ(store_.RunningJobs(campaign_.id).at(0).progress, "scoring");
+  EXPECT_EQ(store_.RecordSuccess(job, attempt, PositionResult(50, 50, 25), "w1"),
+            JobUpdate::kSucceeded);
+
+  const std::string other = Id("position/C/baseline");
+  const int other_attempt = Start("position/C/baseline", "w1");
+  EXPECT_EQ(store_.RecordFailure(other, other_attempt, "crashed", "w1"), JobUpdate::kRetrying);
+}
+
+TEST_F(StoreTest, AResultOfAnotherPositionIsAFailedAttempt) {
+  store_.Submit(campaign_);
+  Start("position/B/baseline");
+  store_.RecordSuccess(Id("position/B/baseline"), 1, PositionResult(50, 50, 25));
+  const std::string eval = Id("eval/B/baseline/run1");
+  Start("eval/B/baseline/run1");
+  json result = EvalResult(1, 100, 2);
+  result["position"] = {50.0, 50.0, 26.0};  // not where the job put the UAV
+  EXPECT_EQ(store_.RecordSuccess(eval, 1, result), JobUpdate::kRetrying);
+  EXPECT_EQ(Job("eval/B/baseline/run1").error,
+            "malformed result: result is of another position than the job's");
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM metrics"), "0");
+  Start("eval/B/baseline/run1");
+  result["position"] = {50.0, 50.0, 25.0};
+  EXPECT_EQ(store_.RecordSuccess(eval, 2, result), JobUpdate::kSucceeded);
+  EXPECT_EQ(Query("SELECT x || ',' || y || ',' || z FROM metrics"), "50.0,50.0,25.0");
 }
 
 TEST_F(StoreTest, StaleAttemptsAreIgnored) {

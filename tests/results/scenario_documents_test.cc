@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "campaign/campaign_spec.h"
+#include "campaign/expansion.h"
 #include "test_support.h"
+#include "wire/job_order.h"
 
 namespace rlpos {
 namespace {
@@ -33,7 +35,8 @@ TEST(ScenarioDocuments, NameAfterOverridesDocumentAsRead) {
                        Entry({{"name", "D"}}, json::array({"/name=E"}))}}};
   const auto documents = ScenarioDocumentsByName(spec);
   ASSERT_EQ(documents.size(), 4u);
-  // The overrides rename it, but the document travels as read: the overrides are in the argv.
+  // The overrides rename it, but the document travels as read: the overrides travel as the
+  // job's typed overrides.
   ASSERT_EQ(documents.count("B-adhoc"), 1u);
   EXPECT_EQ(json::parse(documents.at("B-adhoc")), doc_b);
   ASSERT_EQ(documents.count("B"), 1u);
@@ -44,6 +47,41 @@ TEST(ScenarioDocuments, NameAfterOverridesDocumentAsRead) {
   // JSON-pointer override.
   ASSERT_EQ(documents.count("E"), 1u);
   EXPECT_EQ(documents.count("D"), 0u);
+}
+
+// Every job of the shipped campaigns, ordered as the coordinator orders it (the document by the
+// job's scenario name, its typed fields, its timeout), passes the worker's check, and runs the
+// scenario the campaign validated: the campaign entry's overrides applied to the document.
+TEST(ScenarioDocuments, EveryShippedJobPassesTheWorkersCheck) {
+  for (const std::string file : {"campaigns/mini.json", "campaigns/paper.json"}) {
+    SCOPED_TRACE(file);
+    const CampaignSpec spec = ReadCampaignFile(testing::SourcePath(file));
+    const ExpandedCampaign campaign = ExpandCampaign(spec);
+    const auto documents = ScenarioDocumentsByName(campaign.spec);
+    ASSERT_EQ(documents.size(), spec.scenarios.size());
+    std::map<std::string, int> checked;
+    for (const auto& job : campaign.jobs) {
+      SCOPED_TRACE(job.key);
+      JobOrder order;
+      order.job_id = job.id;
+      order.campaign_id = campaign.id;
+      order.timeout_s = campaign.job_timeout_s;
+      order.params = job.params;
+      order.scenario_document = documents.at(job.params.scenario);
+      if (job.params.kind == JobKind::kEval)
+        order.position = Vec3{1, 1, 5};  // a corner of the venue, outside every building
+      CheckedOrder c;
+      ASSERT_NO_THROW(c = CheckJobOrder(order, campaign.job_timeout_s));
+      EXPECT_EQ(c.parsed.name, job.params.scenario);
+      if (job.params.kind == JobKind::kEval)
+        EXPECT_EQ(c.scenario["simulation"]["run"], *job.params.rng_run);
+      if (spec.eval.duration)
+        EXPECT_EQ(c.parsed.simulation.duration, *spec.eval.duration);
+      ++checked[ToString(job.params.kind)];
+    }
+    EXPECT_EQ(checked["train"] + checked["position"] + checked["eval"],
+              static_cast<int>(campaign.jobs.size()));
+  }
 }
 
 TEST(ScenarioDocuments, MalformedEntriesAreSkipped) {

@@ -1,6 +1,8 @@
 #pragma once
 // Shared helpers of the results tests: temporary folders, the shipped campaigns, and the JSON
 // that rlpos-sim prints for each kind of job.
+#include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -20,6 +22,9 @@ const Job& FindJob(const ExpandedCampaign& campaign, const std::string& key);
 // stdout of `rlpos-sim train|position --json` and of `rlpos-sim eval --json`.
 nlohmann::json PositionResult(double x, double y, double z);
 nlohmann::json EvalResult(std::uint64_t run, double throughput_mbps, double delay_ms);
+// Every field of two jobs' params, naming the ones that differ.
+::testing::AssertionResult SameParams(const JobParams& a, const JobParams& b);
+
 // `result` with the position the store bound to the eval job (results of another position are
 // refused as implausible).
 nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id, nlohmann::json result);
