@@ -58,6 +58,20 @@ std::optional<Received<M>> AwaitSample(Reader<M>& reader, P match, double timeou
   }
 }
 
+// "Nothing else arrived", checked with a positive control: write a marker after what must not
+// arrive; one writer's samples arrive in the order it wrote them, so once the marker is in, what
+// came before it is all that ever will. Returns the samples taken before the first valid one
+// whose data `is_marker` accepts, or nullopt when no marker arrived within `timeout_s`.
+template <typename M, typename P>
+std::optional<std::vector<Received<M>>> TakenBeforeMarker(Reader<M>& reader, P is_marker,
+                                                          double timeout_s = 5.0) {
+  std::vector<Received<M>> before;
+  const auto marker = [&](const Received<M>& r) { return r.valid && is_marker(r.data); };
+  if (!AwaitSample(reader, marker, timeout_s, &before))
+    return std::nullopt;
+  return before;
+}
+
 // The valid samples taken until `count` of them arrived or `timeout_s` passed.
 template <typename M>
 std::vector<M> AwaitData(Reader<M>& reader, std::size_t count, double timeout_s = 5.0) {

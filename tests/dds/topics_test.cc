@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "dds/wait_set.h"
 #include "dds_test_support.h"
@@ -17,20 +20,8 @@ namespace {
 
 using testing::AwaitData;
 using testing::AwaitSample;
+using testing::TakenBeforeMarker;
 using testing::WaitFor;
-
-// The samples `reader` took before the first valid one `is_marker` accepts; nullopt when no such
-// sample arrived within 5 s.
-template <typename M, typename P>
-std::optional<std::vector<Received<M>>> TakenBeforeMarker(Reader<M>& reader, P is_marker) {
-  std::vector<Received<M>> before;
-  if (!AwaitSample(
-          reader, [&](const Received<M>& r) { return r.valid && is_marker(r.data); }, 5.0,
-          &before)) {
-    return std::nullopt;
-  }
-  return before;
-}
 
 class TopicsTest : public ::testing::Test {
  protected:
