@@ -37,6 +37,9 @@ int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double
 int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch, double period_s);
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format);
+// security init DIR; security add-worker|add-client DIR NAME.
+int InitSecurity(const std::string& dir, int days);
+int AddSecurityIdentity(const std::string& dir, const std::string& name, DdsRole role, int days);
 int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
                         const std::string& out_dir);
 

@@ -5,6 +5,7 @@
 //   results ID [--format table|csv|json] [--db FILE]
 //   report ID --out DIR [--db FILE]
 //   cancel ID | retry ID                          via the coordinator (DDS)
+//   security init DIR | add-worker DIR NAME | add-client DIR NAME   DDS Security identities
 // Exit codes: see ExitCode in campaign_commands.h (0 ok, 1 failure, 2 bad input, 3 some jobs
 // failed, 4 no coordinator answered, 130 interrupted).
 #include <CLI/CLI.hpp>
@@ -15,6 +16,7 @@
 #include "cli/campaign_commands.h"
 #include "config/config_error.h"
 #include "dds/dds_cli_options.h"
+#include "dds/security/security_check.h"
 #include "process/stop_signal.h"
 #include "store/store_error.h"
 
@@ -55,6 +57,7 @@ int main(int argc, char** argv) {
 
   std::string campaign_file, campaign_id, format = "table", out_dir;
   DdsOptions dds;
+  dds.role = DdsRole::kClient;
   double timeout_s = 10;
   auto* submit = app.add_subcommand("submit", "Submit a campaign to a running coordinator");
   submit->add_option("campaign", campaign_file, "Campaign JSON")->required();
@@ -87,6 +90,26 @@ int main(int argc, char** argv) {
   retry->add_option("id", campaign_id, "Campaign id")->required();
   AddRequestOptions(retry, dds, timeout_s);
 
+  std::string security_dir, identity_name;
+  int days = 365;
+  auto* security = app.add_subcommand("security", "Make DDS Security identities (CA, permissions)");
+  security->require_subcommand(1);
+  auto* security_init =
+      security->add_subcommand("init", "New folder: a CA, governance, and identities "
+                                       "coordinator, worker and client");
+  security_init->add_option("dir", security_dir, "Folder to create")->required();
+  auto* add_worker = security->add_subcommand("add-worker", "Issue one more worker identity");
+  auto* add_client = security->add_subcommand("add-client", "Issue one more client identity");
+  for (auto* command : {add_worker, add_client}) {
+    command->add_option("dir", security_dir, "Folder made by `security init`")->required();
+    command->add_option("name", identity_name, "Identity name (use it with --identity)")
+        ->required();
+  }
+  for (auto* command : {security_init, add_worker, add_client}) {
+    command->add_option("--days", days, "Identities valid this many days (default 365)")
+        ->check(CLI::Range(1, 36500));
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -94,8 +117,15 @@ int main(int argc, char** argv) {
   }
   const std::string file = run->parsed() ? run_options.campaign_file : campaign_file;
   try {
-    CheckDdsOptions(dds);
+    if (submit->parsed() || cancel->parsed() || retry->parsed())
+      CheckDdsOptions(dds);
     InstallStopSignalHandlers();
+    if (security_init->parsed())
+      return InitSecurity(security_dir, days);
+    if (add_worker->parsed())
+      return AddSecurityIdentity(security_dir, identity_name, DdsRole::kWorker, days);
+    if (add_client->parsed())
+      return AddSecurityIdentity(security_dir, identity_name, DdsRole::kClient, days);
     if (run->parsed()) {
       run_options.db = db;
       return RunCampaign(run_options);
@@ -119,6 +149,9 @@ int main(int argc, char** argv) {
     std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const std::invalid_argument& e) {
+    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const security::SecuritySetupError& e) {
     std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const NoCoordinatorError& e) {

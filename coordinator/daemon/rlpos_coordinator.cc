@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   CoordinatorOptions options;
   options.db_file = "results/rlpos.db";
   DdsOptions dds;
+  dds.role = DdsRole::kCoordinator;
   std::string log_level = "info";
   app.add_option("--db", options.db_file, "Results database (default: results/rlpos.db)");
   AddDdsOptions(&app, dds);

@@ -1,6 +1,7 @@
 #pragma once
 // The DDS flags every RLpos program takes in the same form: --domain N, --loopback TAG,
-// --dds-config XML_OR_FILE.
+// --dds-config XML_OR_FILE, --security DIR (or RLPOS_SECURITY), --identity NAME (or
+// RLPOS_IDENTITY), --insecure. The caller sets the role.
 #include <CLI/CLI.hpp>
 
 #include "dds/dds_config.h"

@@ -5,7 +5,8 @@
 
 namespace rlpos {
 
-std::string LoopbackConfigXml(const std::string& tag, double lease_s) {
+std::string LoopbackConfigXml(const std::string& tag, double lease_s,
+                              const std::string& domain_extra) {
   char lease[32];
   std::snprintf(lease, sizeof lease, "%.3fs", lease_s);
   // The tag only holds [A-Za-z0-9._-] (callers make it), so it needs no XML escaping.
@@ -18,8 +19,22 @@ std::string LoopbackConfigXml(const std::string& tag, double lease_s) {
          "<Peers><Peer Address=\"127.0.0.1\"/></Peers>"
          "<LeaseDuration>" +
          lease +
-         "</LeaseDuration></Discovery>"
-         "</Domain></CycloneDDS>";
+         "</LeaseDuration></Discovery>" +
+         domain_extra + "</Domain></CycloneDDS>";
+}
+
+const char* RoleName(DdsRole role) {
+  switch (role) {
+    case DdsRole::kCoordinator:
+      return "coordinator";
+    case DdsRole::kWorker:
+      return "worker";
+    case DdsRole::kClient:
+      return "client";
+    case DdsRole::kAny:
+      break;
+  }
+  return "any";
 }
 
 std::vector<std::string> DdsArgs(const DdsOptions& options) {
@@ -29,6 +44,12 @@ std::vector<std::string> DdsArgs(const DdsOptions& options) {
   }
   if (!options.config.empty())
     args.insert(args.end(), {"--dds-config", options.config});
+  if (!options.security_dir.empty())
+    args.insert(args.end(), {"--security", options.security_dir});
+  if (!options.identity.empty())
+    args.insert(args.end(), {"--identity", options.identity});
+  if (options.insecure)
+    args.push_back("--insecure");
   return args;
 }
 
@@ -50,6 +71,15 @@ void CheckDdsOptions(const DdsOptions& options) {
           "and '-', got \"" +
           options.loopback_tag + "\"");
     }
+  }
+  if (!options.identity.empty() && options.security_dir.empty())
+    throw std::invalid_argument("--identity needs --security DIR");
+  if (options.insecure && !options.security_dir.empty())
+    throw std::invalid_argument("--insecure and --security exclude each other");
+  if (options.loopback_tag.empty() && options.security_dir.empty() && !options.insecure) {
+    throw std::invalid_argument(
+        "DDS off loopback needs --security DIR (make one with `rlpos-campaign security init "
+        "DIR`), or --insecure to let any host on the network read and forge RLpos messages");
   }
 }
 

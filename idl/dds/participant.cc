@@ -2,6 +2,12 @@
 
 #include <dds/dds.h>
 
+#include <cstdio>
+#include <ctime>
+
+#include "dds/security/security_check.h"
+#include "dds/security/security_config.h"
+
 namespace rlpos {
 
 std::int32_t CheckDds(std::int32_t rc, const std::string& what) {
@@ -14,8 +20,24 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
   CheckDdsOptions(options);
   const auto domain = static_cast<dds_domainid_t>(options.domain);
   std::string config = options.config;
-  if (!options.loopback_tag.empty())
-    config = LoopbackConfigXml(options.loopback_tag);
+  std::string security;  // the <Security> element, empty when unsecured
+  if (!options.security_dir.empty()) {
+    const std::string identity =
+        options.identity.empty() ? RoleName(options.role) : options.identity;
+    security = security::SecurityElementXml(security::CheckIdentity(
+        options.security_dir, identity, options.role, std::time(nullptr)));
+  } else if (options.insecure) {
+    std::fprintf(stderr,
+                 "warning: --insecure: DDS without authentication; any host that reaches this "
+                 "network can read RLpos messages and forge them\n");
+  }
+  if (!options.loopback_tag.empty()) {
+    config = LoopbackConfigXml(options.loopback_tag, 2.0, security);
+  } else if (!security.empty()) {
+    // Cyclone merges a comma-separated list of configurations, later ones adding to earlier.
+    const std::string element = "<CycloneDDS><Domain Id=\"any\">" + security + "</Domain></CycloneDDS>";
+    config = config.empty() ? element : config + "," + element;
+  }
   if (!config.empty()) {
     domain_ = CheckDds(dds_create_domain(domain, config.c_str()),
                        "DDS domain " + std::to_string(options.domain) + " (check --dds-config)");
@@ -25,7 +47,8 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
     const std::int32_t rc = participant_;
     if (domain_ > 0)
       dds_delete(domain_);
-    CheckDds(rc, "DDS participant on domain " + std::to_string(options.domain));
+    CheckDds(rc, "DDS participant on domain " + std::to_string(options.domain) +
+                     (security.empty() ? "" : " (DDS Security refused it: Cyclone's reason is above)"));
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <memory>
 
+#include "dds/topic_names.h"
 #include "rlpos_messages.h"
 #include "wire/limits.h"
 
@@ -74,7 +75,7 @@ struct Traits;
 template <>
 struct Traits<msg::WorkerStatus> {
   using C = rlpos_msg_WorkerStatus;
-  static constexpr const char* kTopic = "rlpos_worker_status";
+  static constexpr const char* kTopic = topic::kWorkerStatus;
   static const dds_topic_descriptor_t* Descriptor() { return &rlpos_msg_WorkerStatus_desc; }
   static void Qos(dds_qos_t* qos, bool writer) {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
@@ -134,7 +135,7 @@ struct Traits<msg::WorkerStatus> {
 template <>
 struct Traits<msg::JobAssignment> {
   using C = rlpos_msg_JobAssignment;
-  static constexpr const char* kTopic = "rlpos_job_assignment";
+  static constexpr const char* kTopic = topic::kJobAssignment;
   static const dds_topic_descriptor_t* Descriptor() { return &rlpos_msg_JobAssignment_desc; }
   static void Qos(dds_qos_t* qos, bool writer) {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
@@ -252,7 +253,7 @@ struct Traits<msg::JobAssignment> {
 template <>
 struct Traits<msg::JobEvent> {
   using C = rlpos_msg_JobEvent;
-  static constexpr const char* kTopic = "rlpos_job_event";
+  static constexpr const char* kTopic = topic::kJobEvent;
   static const dds_topic_descriptor_t* Descriptor() { return &rlpos_msg_JobEvent_desc; }
   static void Qos(dds_qos_t* qos, bool writer) {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
@@ -291,7 +292,7 @@ struct Traits<msg::JobEvent> {
 template <>
 struct Traits<msg::CampaignRequest> {
   using C = rlpos_msg_CampaignRequest;
-  static constexpr const char* kTopic = "rlpos_campaign_request";
+  static constexpr const char* kTopic = topic::kCampaignRequest;
   static const dds_topic_descriptor_t* Descriptor() { return &rlpos_msg_CampaignRequest_desc; }
   static void Qos(dds_qos_t* qos, bool) {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
@@ -344,7 +345,7 @@ struct Traits<msg::CampaignRequest> {
 template <>
 struct Traits<msg::CampaignReply> {
   using C = rlpos_msg_CampaignReply;
-  static constexpr const char* kTopic = "rlpos_campaign_reply";
+  static constexpr const char* kTopic = topic::kCampaignReply;
   static const dds_topic_descriptor_t* Descriptor() { return &rlpos_msg_CampaignReply_desc; }
   static void Qos(dds_qos_t* qos, bool) {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
