@@ -107,6 +107,48 @@ TEST_F(RlposCampaignCli, BadDdsOptions) {
                      "--loopback and --dds-config exclude each other");
 }
 
+TEST_F(RlposCampaignCli, OffLoopbackNeedsSecurityOrInsecure) {
+  const std::string campaign = Write("c.json", CampaignJson(""));
+  for (const char* command : {"submit c.json", "cancel abc", "retry abc"}) {
+    ExpectOneLineError(Campaign(std::string(command) + " --domain 3"), 2,
+                       "DDS off loopback needs --security DIR");
+    ExpectOneLineError(Campaign(std::string(command) + " --dds-config file:///nowhere.xml"), 2,
+                       "or --insecure");
+  }
+  ExpectOneLineError(Campaign("cancel abc --loopback t --security s --insecure"), 2,
+                     "--insecure and --security exclude each other");
+}
+
+TEST_F(RlposCampaignCli, SecurityInitAddWorkerAndTheirBadInputs) {
+  const auto init = Campaign("security init sec --days 30");
+  ASSERT_EQ(init.exit_code, 0) << init.err;
+  EXPECT_NE(init.out.find("keep private/"), std::string::npos) << init.out;
+  ExpectOneLineError(Campaign("security init sec"), 2, "sec: already exists");
+  const auto add = Campaign("security add-worker sec host-b");
+  ASSERT_EQ(add.exit_code, 0) << add.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_ + "/sec/identities/host-b/permissions.p7s"));
+  ExpectOneLineError(Campaign("security add-worker sec host-b"), 2,
+                     "sec/identities/host-b: already exists");
+  ExpectOneLineError(Campaign("security add-worker sec ../up"), 2, "identity name \"../up\"");
+  ExpectOneLineError(Campaign("security add-client none c"), 2, "none: no such folder");
+  EXPECT_FALSE(fs::exists(dir_ + "/none"));
+
+  // The identity is checked before any DDS: the file and the cause, exit 2.
+  ExpectOneLineError(Campaign("cancel abc " + LonelyDds() + " --security sec --identity host-b"),
+                     2,
+                     "sec/identities/host-b/permissions.p7s: identity \"host-b\" is not "
+                     "allowed to publish rlpos_campaign_request");
+  ExpectOneLineError(Campaign("cancel abc " + LonelyDds() + " --security nowhere"), 2,
+                     "nowhere: no such folder");
+  // RLPOS_SECURITY stands for --security.
+  const auto env = RunCommand("cd " + dir_ + " && RLPOS_SECURITY=elsewhere " +
+                              BuiltBinary("rlpos-campaign") + " cancel abc " + LonelyDds());
+  ExpectOneLineError(env, 2, "elsewhere: no such folder");
+  // A secured client with no coordinator: the usual "no coordinator answered", exit 4.
+  const auto lonely = Campaign("cancel abc " + LonelyDds() + " --security sec");
+  EXPECT_EQ(lonely.exit_code, 4) << lonely.err;
+}
+
 TEST_F(RlposCampaignCli, ReadCommandsOnAMissingDatabase) {
   ExpectOneLineError(Campaign("status --db none.db"), 2, "results store none.db: cannot open");
   ExpectOneLineError(Campaign("results abc --db none.db"), 2, "results store none.db");

@@ -47,7 +47,43 @@ TEST(CheckDdsOptions, ConfigAndTagExcludeEachOther) {
   const std::string both = Rejection(Options(0, "file:///etc/cyclone.xml", "rlpos-test"));
   EXPECT_TRUE(Contains(both, "--loopback")) << both;
   EXPECT_TRUE(Contains(both, "--dds-config")) << both;
-  EXPECT_NO_THROW(CheckDdsOptions(Options(0, "file:///etc/cyclone.xml", "")));
+  DdsOptions config = Options(0, "file:///etc/cyclone.xml", "");
+  config.insecure = true;
+  EXPECT_NO_THROW(CheckDdsOptions(config));
+}
+
+TEST(CheckDdsOptions, SecureByDefaultOffLoopback) {
+  // Off loopback (a config of one's own, or Cyclone's defaults) needs --security or --insecure.
+  for (const char* config : {"file:///etc/cyclone.xml", ""}) {
+    const std::string refused = Rejection(Options(0, config, ""));
+    EXPECT_TRUE(Contains(refused, "--security DIR")) << refused;
+    EXPECT_TRUE(Contains(refused, "--insecure")) << refused;
+    DdsOptions secured = Options(0, config, "");
+    secured.security_dir = "sec";
+    EXPECT_NO_THROW(CheckDdsOptions(secured));
+    DdsOptions insecure = Options(0, config, "");
+    insecure.insecure = true;
+    EXPECT_NO_THROW(CheckDdsOptions(insecure));
+  }
+  // Loopback may go either way.
+  DdsOptions loopback = Options(0, "", "rlpos-test");
+  EXPECT_NO_THROW(CheckDdsOptions(loopback));
+  loopback.security_dir = "sec";
+  loopback.identity = "host-b";
+  EXPECT_NO_THROW(CheckDdsOptions(loopback));
+  DdsOptions both = loopback;
+  both.insecure = true;
+  EXPECT_TRUE(Contains(Rejection(both), "--insecure and --security"));
+  DdsOptions identity_alone = Options(0, "", "rlpos-test");
+  identity_alone.identity = "host-b";
+  EXPECT_TRUE(Contains(Rejection(identity_alone), "--identity needs --security"));
+  // The participant refuses before any DDS call.
+  EXPECT_THROW(Participant(Options(3, "", "")), std::invalid_argument);
+}
+
+TEST(LoopbackConfigXml, SecurityGoesInsideTheLoopbackDomain) {
+  const std::string xml = LoopbackConfigXml("t", 2.0, "<Security/>");
+  EXPECT_TRUE(Contains(xml, "</Discovery><Security/></Domain></CycloneDDS>")) << xml;
 }
 
 TEST(CheckDdsOptions, TagCharacters) {
@@ -89,6 +125,15 @@ TEST(DdsArgs, FlagsOfEachMode) {
   EXPECT_EQ(DdsArgs(Options(0, "file:///etc/cyclone.xml", "")),
             (std::vector<std::string>{"--domain", "0", "--dds-config", "file:///etc/cyclone.xml"}));
   EXPECT_EQ(DdsArgs(Options(12, "", "")), (std::vector<std::string>{"--domain", "12"}));
+  DdsOptions secured = Options(3, "", "t");
+  secured.security_dir = "/etc/rlpos/sec";
+  secured.identity = "host-b";
+  EXPECT_EQ(DdsArgs(secured),
+            (std::vector<std::string>{"--domain", "3", "--loopback", "t", "--security",
+                                      "/etc/rlpos/sec", "--identity", "host-b"}));
+  DdsOptions insecure = Options(3, "", "");
+  insecure.insecure = true;
+  EXPECT_EQ(DdsArgs(insecure), (std::vector<std::string>{"--domain", "3", "--insecure"}));
 }
 
 TEST(TestOptions, EveryCallHasItsOwnLoopbackTag) {

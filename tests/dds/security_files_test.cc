@@ -101,7 +101,7 @@ TEST_F(SecurityFilesTest, AddWorkerIssuesANamedWorkerIdentity) {
   AddIdentity(Dir(), "host-b", DdsRole::kWorker);
   const IdentityFiles files = CheckIdentity(Dir(), "host-b", DdsRole::kWorker, Now());
   EXPECT_EQ(pki::SubjectRfc2253(pki::ReadCert(files.cert)), "CN=host-b,OU=worker,O=RLpos");
-  EXPECT_THROW(AddIdentity(Dir(), "host-b", DdsRole::kWorker), std::runtime_error);
+  EXPECT_THROW(AddIdentity(Dir(), "host-b", DdsRole::kWorker), std::invalid_argument);
   for (const char* bad : {"", "../x", ".hidden", "a/b", "x y", "a<b"})
     EXPECT_THROW(AddIdentity(Dir(), bad, DdsRole::kWorker), std::invalid_argument) << bad;
   // Nothing of the refused ones is left in identities/.
@@ -196,7 +196,7 @@ TEST_F(SecurityFilesTest, MissingTamperedOrMismatchedFilesAreNamed) {
 TEST(SecurityInit, RefusesAFolderInUseAndLeavesNothingHalfWritten) {
   TempDir temp;
   WriteFile(temp.File("taken"), "x");
-  EXPECT_THROW(InitSecurityDir(temp.File("taken")), std::runtime_error);
+  EXPECT_THROW(InitSecurityDir(temp.File("taken")), std::invalid_argument);
   EXPECT_EQ(ReadFile(temp.File("taken")), "x");
   // A folder that cannot be created leaves no partial sibling behind.
   EXPECT_THROW(InitSecurityDir(temp.File("missing-parent/sec")), std::runtime_error);

@@ -464,6 +464,7 @@ TEST_F(TopicsTest, WriterParticipantTellsWhichParticipantWrote) {
   // participant_ created (its loopback config), as a participant of its own.
   DdsOptions same_domain;
   same_domain.domain = participant_.options().domain;
+  same_domain.insecure = true;  // no config of its own: it never leaves participant_'s loopback
   Participant other(same_domain);
   Reader<msg::JobEvent> reader(participant_);
   Writer<msg::JobEvent> first(participant_), second(participant_), foreign(other);
@@ -497,6 +498,7 @@ TEST_F(TopicsTest, WriterParticipantTellsWhichParticipantWrote) {
 TEST_F(TopicsTest, HasMatchedWriterOfSeesPastManyOtherWriters) {
   DdsOptions same_domain;
   same_domain.domain = participant_.options().domain;
+  same_domain.insecure = true;  // no config of its own: it never leaves participant_'s loopback
   Participant other(same_domain);
   Reader<msg::JobAssignment> reader(participant_);
   std::vector<std::unique_ptr<Writer<msg::JobAssignment>>> crowd;

@@ -103,7 +103,7 @@ void InitSecurityDir(const std::string& dir, const IssueOptions& options) {
   std::error_code error;
   if (fs::exists(dir, error)) {
     if (!fs::is_directory(dir, error) || !fs::is_empty(dir, error)) {
-      throw std::runtime_error(dir +
+      throw std::invalid_argument(dir +
                                ": already exists; init makes a new folder (issue more "
                                "identities with `rlpos-campaign security add-worker`)");
     }
@@ -131,12 +131,18 @@ std::string AddIdentity(const std::string& dir, const std::string& name, DdsRole
   CheckDays(options.days, "--days");
   if (role == DdsRole::kAny)
     throw std::invalid_argument("an identity needs a role: coordinator, worker or client");
+  std::error_code error;
+  if (!fs::is_directory(dir, error))
+    throw std::invalid_argument(dir + ": no such folder (make one with `security init DIR`)");
+  if (!fs::is_regular_file(CaKeyFile(dir), error)) {
+    throw std::invalid_argument(CaKeyFile(dir) +
+                                ": missing: issue identities where `security init` made the CA");
+  }
   const pki::Cert ca = pki::ReadCert(CaCertFile(dir));
   const pki::Key ca_key = pki::ReadKey(CaKeyFile(dir));
   const std::string target = IdentityDir(dir, name);
-  std::error_code error;
   if (fs::exists(target, error))
-    throw std::runtime_error(target + ": already exists");
+    throw std::invalid_argument(target + ": already exists");
   const std::string identities = dir + "/identities";
   // The identity is built beside its final place, then renamed: never half there.
   const std::string partial = identities + "/." + name + ".partial-" + std::to_string(::getpid());
