@@ -7,10 +7,13 @@
 //  - job events claiming success and failure for the jobs the real worker holds;
 //  - a dispose of the real worker's status;
 //  - a forged reply to every campaign request it sees, and a submit that fails validation.
-//   rlpos-hostile-peer DOMAIN TAG DB WORKER_ID SCENARIO_JSON SECONDS
+// It also counts what it hears on every topic: an unsecured peer hears a loopback campaign, and
+// must hear nothing of a secured one.
+//   rlpos-hostile-peer DOMAIN TAG|CYCLONE_XML DB WORKER_ID SCENARIO_JSON SECONDS
 #include <dds/dds.h>
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -86,7 +89,8 @@ int main(int argc, char** argv) {
   const std::string scenario = text.str();
   const double seconds = std::atof(argv[6]);
 
-  const std::string config = rlpos::LoopbackConfigXml(argv[2]);
+  // A tag means loopback; an XML document is the Cyclone configuration itself (another link).
+  const std::string config = argv[2][0] == '<' ? argv[2] : rlpos::LoopbackConfigXml(argv[2]);
   const dds_entity_t dom = dds_create_domain(domain, config.c_str());
   const dds_entity_t p = dds_create_participant(domain, nullptr, nullptr);
   if (dom < 0 || p < 0) {
@@ -101,6 +105,47 @@ int main(int argc, char** argv) {
   const dds_entity_t request_topic = dds_create_topic(p, &rlpos_msg_CampaignRequest_desc,
                                                       "rlpos_campaign_request", nullptr, nullptr);
   const dds_entity_t request_reader = dds_create_reader(p, request_topic, nullptr, nullptr);
+  // Listeners on what the daemons publish: transient-local, so history arrives too.
+  dds_qos_t* durable = dds_create_qos();
+  dds_qset_reliability(durable, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
+  dds_qset_durability(durable, DDS_DURABILITY_TRANSIENT_LOCAL);
+  struct Heard {
+    const char* name;
+    dds_entity_t reader;
+    long count;
+  };
+  std::vector<Heard> heard;
+  const std::vector<std::pair<const dds_topic_descriptor_t*, const char*>> durable_topics{
+      {&rlpos_msg_JobAssignment_desc, "rlpos_job_assignment"},
+      {&rlpos_msg_JobEvent_desc, "rlpos_job_event"},
+      {&rlpos_msg_WorkerStatus_desc, "rlpos_worker_status"}};
+  for (const auto& [desc, name] : durable_topics) {
+    const dds_entity_t topic = dds_create_topic(p, desc, name, nullptr, nullptr);
+    heard.push_back({name, dds_create_reader(p, topic, durable, nullptr), 0});
+  }
+  heard.push_back({"rlpos_campaign_request", request_reader, 0});
+  dds_delete_qos(durable);
+  // Its own writes reach its own readers: those are not heard.
+  std::vector<dds_instance_handle_t> own;
+  for (dds_entity_t w : {assignments, events, statuses, requests, replies}) {
+    dds_instance_handle_t handle = 0;
+    dds_get_instance_handle(w, &handle);
+    own.push_back(handle);
+  }
+  const auto foreign = [&](const dds_sample_info_t& info) {
+    return info.valid_data &&
+           std::find(own.begin(), own.end(), info.publication_handle) == own.end();
+  };
+  const auto listen = [&](Heard& h) {
+    void* samples[16] = {nullptr};
+    dds_sample_info_t infos[16];
+    int n;
+    while ((n = dds_take(h.reader, samples, infos, 16, 16)) > 0) {
+      for (int i = 0; i < n; ++i)
+        h.count += foreign(infos[i]) ? 1 : 0;
+      dds_return_loan(h.reader, samples, n);
+    }
+  };
 
   const std::string deep(10000, '[');
   const std::string oversize(300000, ' ');
@@ -191,13 +236,16 @@ int main(int argc, char** argv) {
       q.campaign_json = Octets(campaigns[i]);
       write(requests, &q);
     }
+    for (std::size_t h = 0; h + 1 < heard.size(); ++h)
+      listen(heard[h]);
     // Forged replies to whatever requests it sees.
     void* samples[16] = {nullptr};
     dds_sample_info_t infos[16];
     const int n = dds_take(request_reader, samples, infos, 16, 16);
     for (int i = 0; i < n; ++i) {
-      if (!infos[i].valid_data)
+      if (!foreign(infos[i]))
         continue;
+      ++heard.back().count;
       const auto* q = static_cast<const rlpos_msg_CampaignRequest*>(samples[i]);
       rlpos_msg_CampaignReply reply{};
       Set(reply.request_id, q->request_id);
@@ -210,8 +258,14 @@ int main(int argc, char** argv) {
       dds_return_loan(request_reader, samples, n);
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // a pace, not a wait
   }
-  std::printf("sent %ld hostile samples (%ld refused by the local writer)\n", sent,
-              refused_by_writer);
+  long total = 0;
+  std::string per_topic;
+  for (const auto& h : heard) {
+    total += h.count;
+    per_topic += std::string(per_topic.empty() ? "" : ", ") + h.name + " " + std::to_string(h.count);
+  }
+  std::printf("sent %ld hostile samples (%ld refused by the local writer); heard %ld (%s)\n", sent,
+              refused_by_writer, total, per_topic.c_str());
   dds_delete(p);
   dds_delete(dom);
   return 0;

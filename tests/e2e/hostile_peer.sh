@@ -41,6 +41,10 @@ expect_eq "campaign id during the attack" "$AGAIN" "$ID"
 "$CAMPAIGN" status "$ID" --db "$DB" --watch --period 0.5 >/dev/null || fail "status --watch"
 wait "${BG_PIDS[-1]}" || fail "the hostile peer failed: $(cat "$WORK/peer.out")"
 grep -q "^sent [1-9]" "$WORK/peer.out" || fail "the hostile peer sent nothing: $(cat "$WORK/peer.out")"
+# Unsecured DDS hides nothing: the peer heard the assignments and the worker's status (the
+# positive control of secured_campaign.sh, where it must hear nothing).
+grep -Eq "rlpos_job_assignment [1-9].*rlpos_worker_status [1-9]" "$WORK/peer.out" \
+  || fail "the hostile peer heard nothing of an unsecured campaign: $(cat "$WORK/peer.out")"
 
 kill -0 "$COORDINATOR" 2>/dev/null || fail "the coordinator died"
 kill -0 "$WORKER_PID" 2>/dev/null || fail "the worker died"
