@@ -307,6 +307,11 @@ json ParseJsonText(const std::string& text) {
     std::string what = e.what();
     const auto at = what.find("at line");
     throw ConfigError("", "malformed JSON " + (at == std::string::npos ? what : what.substr(at)));
+  } catch (const json::exception& e) {
+    // A number beyond double, e.g. "[json.exception.out_of_range.406] number overflow ...".
+    const std::string what = e.what();
+    const auto at = what.find("] ");
+    throw ConfigError("", "malformed JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
   }
 }
 
@@ -335,6 +340,8 @@ void ApplyOverrides(json& document, const std::vector<std::string>& overrides) {
       value = json::parse(text);
     } catch (const json::parse_error&) {
       value = text;  // a bare word such as adhoc
+    } catch (const json::exception&) {
+      throw ConfigError("--set " + item, "the value is not a number a double can hold");
     }
     try {
       const json::json_pointer pointer(path);

@@ -59,6 +59,16 @@ std::string CopyOctets(const dds_sequence_octet& seq, std::size_t bound, const c
   return std::string(reinterpret_cast<const char*>(seq._buffer), seq._length);
 }
 
+// The integer in a received enum field, read as bytes: loading a C enum that holds a value
+// outside its enumerators is undefined behaviour in C++, and the wire may hold any value.
+template <typename E>
+int RawEnum(const E& field) {
+  static_assert(sizeof(E) == sizeof(std::int32_t), "Cyclone's C enums are 32-bit");
+  std::int32_t value;
+  std::memcpy(&value, &field, sizeof value);
+  return value;
+}
+
 // An enum from the wire: `error` unless 0 <= value < count.
 template <typename E>
 E CheckedEnum(int value, int count, const char* field, std::string& error) {
@@ -201,7 +211,7 @@ struct Traits<msg::JobAssignment> {
     m.worker_id = CopyOut(c.worker_id);
     o.campaign_id = CopyOut(c.campaign_id);
     o.timeout_s = c.timeout_s;
-    p.kind = CheckedEnum<JobKind>(static_cast<int>(c.kind), 3, "kind", error);
+    p.kind = CheckedEnum<JobKind>(RawEnum(c.kind), 3, "kind", error);
     p.scenario = CopyOut(c.scenario);
     o.scenario_document =
         CopyOctets(c.scenario_document, wire::kMaxScenarioDocument, "scenario_document", error);
@@ -216,14 +226,14 @@ struct Traits<msg::JobAssignment> {
     }
     if (c.has_train_seed)
       p.train_seed = c.train_seed;
-    const int fidelity = static_cast<int>(c.fidelity);
+    const int fidelity = RawEnum(c.fidelity);
     if (fidelity < 0 || fidelity > 1)
       error = "fidelity " + std::to_string(fidelity) + " is unknown";
     if (p.kind == JobKind::kTrain)
       p.fidelity = fidelity == 1 ? "packet" : "analytic";
     if (c.train_episodes != 0)
       p.train_episodes = c.train_episodes;
-    switch (static_cast<int>(c.positioner)) {
+    switch (RawEnum(c.positioner)) {
       case rlpos_msg_POSITIONER_NONE:
         break;
       case rlpos_msg_POSITIONER_BASELINE:
@@ -236,7 +246,7 @@ struct Traits<msg::JobAssignment> {
         p.positioner = "oracle";
         break;
       default:
-        error = "positioner " + std::to_string(static_cast<int>(c.positioner)) + " is unknown";
+        error = "positioner " + std::to_string(RawEnum(c.positioner)) + " is unknown";
     }
     if (c.has_position)
       o.position = Vec3{c.x, c.y, c.z};
@@ -282,7 +292,7 @@ struct Traits<msg::JobEvent> {
       return m;
     m.attempt = c.attempt;
     m.worker_id = CopyOut(c.worker_id);
-    m.state = CheckedEnum<msg::JobState>(static_cast<int>(c.state), 4, "state", error);
+    m.state = CheckedEnum<msg::JobState>(RawEnum(c.state), 4, "state", error);
     m.result_json = CopyOctets(c.result_json, wire::kMaxResultJson, "result_json", error);
     m.message = CopyOut(c.message);
     return m;
@@ -325,7 +335,7 @@ struct Traits<msg::CampaignRequest> {
     m.request_id = CopyOut(c.request_id);
     if (!valid)
       return m;
-    m.kind = CheckedEnum<msg::RequestKind>(static_cast<int>(c.kind), 3, "kind", error);
+    m.kind = CheckedEnum<msg::RequestKind>(RawEnum(c.kind), 3, "kind", error);
     m.campaign_id = CopyOut(c.campaign_id);
     m.campaign_json = CopyOctets(c.campaign_json, wire::kMaxCampaignJson, "campaign_json", error);
     if (c.scenarios._length > wire::kMaxCampaignScenarios ||
@@ -441,6 +451,15 @@ int Writer<M>::MatchedReaders() const {
 }
 
 template <typename M>
+Received<M> DecodeSample(const void* c_sample, bool valid) {
+  Received<M> r;
+  r.valid = valid;
+  r.data = Traits<M>::FromC(*static_cast<const typename Traits<M>::C*>(c_sample), valid,
+                            r.decode_error);
+  return r;
+}
+
+template <typename M>
 Reader<M>::Reader(Participant& participant) {
   topic_ = CreateTopic<M>(participant);
   QosPtr qos = NewQos();
@@ -464,12 +483,9 @@ std::vector<Received<M>> Reader<M>::Take() {
     const dds_return_t n = dds_take(reader_, samples, infos, kBatch, kBatch);
     CheckDds(n, std::string("taking from ") + Traits<M>::kTopic);
     for (dds_return_t i = 0; i < n; ++i) {
-      const auto& c = *static_cast<const typename Traits<M>::C*>(samples[i]);
-      Received<M> r;
-      r.valid = infos[i].valid_data;
+      Received<M> r = DecodeSample<M>(samples[i], infos[i].valid_data);
       r.state = StateOf(infos[i]);
       r.writer = infos[i].publication_handle;
-      r.data = Traits<M>::FromC(c, r.valid, r.decode_error);
       out.push_back(std::move(r));
     }
     if (n > 0)
@@ -540,5 +556,10 @@ template class Reader<msg::JobAssignment>;
 template class Reader<msg::JobEvent>;
 template class Reader<msg::CampaignRequest>;
 template class Reader<msg::CampaignReply>;
+template Received<msg::WorkerStatus> DecodeSample(const void*, bool);
+template Received<msg::JobAssignment> DecodeSample(const void*, bool);
+template Received<msg::JobEvent> DecodeSample(const void*, bool);
+template Received<msg::CampaignRequest> DecodeSample(const void*, bool);
+template Received<msg::CampaignReply> DecodeSample(const void*, bool);
 
 }  // namespace rlpos

@@ -38,6 +38,12 @@ struct Received {
   std::string decode_error;  // non-empty: the sample broke a bound or an enum; drop it
 };
 
+// Decodes one received sample of M's C type (rlpos_messages.h) as Reader::Take does: bounds
+// and enum values checked (decode_error), only the key fields when !valid. Public so that the
+// decoders are fuzz-tested without a network.
+template <typename M>
+Received<M> DecodeSample(const void* c_sample, bool valid);
+
 template <typename M>
 class Writer {
  public:
