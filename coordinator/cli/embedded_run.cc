@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -165,6 +166,10 @@ int RunCampaign(const RunOptions& options) {
     return kExitOk;
   }
   const std::string bin = ExecutableDir();
+  // The embedded daemons stay on a private loopback tag, unsecured: an RLPOS_SECURITY meant for
+  // a deployment (whose identities may not all be here) must not reach them.
+  ::unsetenv("RLPOS_SECURITY");
+  ::unsetenv("RLPOS_IDENTITY");
   const std::string tag = options.tag.empty() ? NewTag() : options.tag;
   DdsOptions dds;
   dds.loopback_tag = tag;

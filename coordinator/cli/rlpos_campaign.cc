@@ -16,6 +16,7 @@
 #include "cli/campaign_commands.h"
 #include "config/config_error.h"
 #include "dds/dds_cli_options.h"
+#include "dds/participant.h"
 #include "dds/security/security_check.h"
 #include "process/stop_signal.h"
 #include "store/store_error.h"
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
   const std::string file = run->parsed() ? run_options.campaign_file : campaign_file;
   try {
     if (submit->parsed() || cancel->parsed() || retry->parsed())
-      CheckDdsOptions(dds);
+      PreflightDds(dds);
     InstallStopSignalHandlers();
     if (security_init->parsed())
       return InitSecurity(security_dir, days);

@@ -9,6 +9,8 @@
 
 #include "daemon/coordinator_daemon.h"
 #include "dds/dds_cli_options.h"
+#include "dds/participant.h"
+#include "dds/security/security_check.h"
 #include "logging/log.h"
 #include "process/stop_signal.h"
 
@@ -39,7 +41,7 @@ int main(int argc, char** argv) {
   }
   try {
     SetLogLevel(ParseLogLevel(log_level));
-    CheckDdsOptions(dds);
+    PreflightDds(dds);
   } catch (const std::exception& e) {
     std::cerr << "rlpos-coordinator: error: " << e.what() << "\n";
     return 2;
@@ -51,6 +53,10 @@ int main(int argc, char** argv) {
       std::filesystem::create_directories(folder);
     CoordinatorDaemon daemon(options, dds);
     daemon.Run();
+  } catch (const security::SecuritySetupError& e) {
+    // A bad identity is bad input, like a bad flag.
+    std::cerr << "rlpos-coordinator: error: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "rlpos-coordinator: error: " << e.what() << "\n";
     return 1;

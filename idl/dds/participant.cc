@@ -16,16 +16,30 @@ std::int32_t CheckDds(std::int32_t rc, const std::string& what) {
   return rc;
 }
 
+namespace {
+
+std::string IdentityName(const DdsOptions& options) {
+  return options.identity.empty() ? RoleName(options.role) : options.identity;
+}
+
+}  // namespace
+
+void PreflightDds(const DdsOptions& options) {
+  CheckDdsOptions(options);
+  if (!options.security_dir.empty()) {
+    security::CheckIdentity(options.security_dir, IdentityName(options), options.role,
+                            std::time(nullptr));
+  }
+}
+
 Participant::Participant(const DdsOptions& options) : options_(options) {
   CheckDdsOptions(options);
   const auto domain = static_cast<dds_domainid_t>(options.domain);
   std::string config = options.config;
   std::string security;  // the <Security> element, empty when unsecured
   if (!options.security_dir.empty()) {
-    const std::string identity =
-        options.identity.empty() ? RoleName(options.role) : options.identity;
     security = security::SecurityElementXml(security::CheckIdentity(
-        options.security_dir, identity, options.role, std::time(nullptr)));
+        options.security_dir, IdentityName(options), options.role, std::time(nullptr)));
   } else if (options.insecure) {
     std::fprintf(stderr,
                  "warning: --insecure: DDS without authentication; any host that reaches this "

@@ -18,6 +18,11 @@ class DdsError : public std::runtime_error {
 // Throws DdsError naming `what` and Cyclone's reason when `rc` < 0; returns rc otherwise.
 std::int32_t CheckDds(std::int32_t rc, const std::string& what);
 
+// What Participant would refuse before any DDS call: the options (CheckDdsOptions) and, with
+// --security, the identity (security::CheckIdentity; throws SecuritySetupError naming the file).
+// Programs call it before they write anything.
+void PreflightDds(const DdsOptions& options);
+
 class Participant {
  public:
   explicit Participant(const DdsOptions& options);

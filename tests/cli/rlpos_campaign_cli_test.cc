@@ -149,6 +149,30 @@ TEST_F(RlposCampaignCli, SecurityInitAddWorkerAndTheirBadInputs) {
   EXPECT_EQ(lonely.exit_code, 4) << lonely.err;
 }
 
+TEST_F(RlposCampaignCli, DaemonsRefuseABadIdentityOrAnUnsecuredNetwork) {
+  ASSERT_EQ(Campaign("security init sec").exit_code, 0);
+  const auto daemon = [&](const std::string& name, const std::string& args) {
+    return RunCommand("cd " + dir_ + " && " + BuiltBinary(name) + " " + args);
+  };
+  const auto expect = [](const CommandResult& r, const std::string& prefix,
+                         const std::string& fragment) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.find(prefix + ": error: "), 0u) << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  };
+  const std::string tag = "--loopback rlpos-cli-test-" + std::to_string(getpid());
+  expect(daemon("rlpos-worker", tag + " --security sec --identity client"), "rlpos-worker",
+         "sec/identities/client/permissions.p7s: identity \"client\" is not allowed to publish "
+         "rlpos_worker_status");
+  expect(daemon("rlpos-coordinator", "--db db/r.db " + tag + " --security sec --identity worker"),
+         "rlpos-coordinator", "is not allowed to publish rlpos_job_assignment");
+  expect(daemon("rlpos-coordinator", "--db db/r.db --domain 3"), "rlpos-coordinator",
+         "DDS off loopback needs --security DIR");
+  expect(daemon("rlpos-worker", "--domain 3"), "rlpos-worker", "or --insecure");
+  EXPECT_FALSE(fs::exists(dir_ + "/db/r.db")) << "nothing written before the identity is checked";
+}
+
 TEST_F(RlposCampaignCli, ReadCommandsOnAMissingDatabase) {
   ExpectOneLineError(Campaign("status --db none.db"), 2, "results store none.db: cannot open");
   ExpectOneLineError(Campaign("results abc --db none.db"), 2, "results store none.db");

@@ -12,6 +12,8 @@
 
 #include "daemon/worker_daemon.h"
 #include "dds/dds_cli_options.h"
+#include "dds/participant.h"
+#include "dds/security/security_check.h"
 #include "logging/log.h"
 #include "process/executable_path.h"
 #include "process/host_name.h"
@@ -22,6 +24,7 @@ int main(int argc, char** argv) {
   CLI::App app{"rlpos-worker: runs campaign jobs (rlpos-sim) for an rlpos-coordinator over DDS"};
   WorkerOptions options;
   DdsOptions dds;
+  dds.role = DdsRole::kWorker;
   std::string log_level = "info";
   options.slots = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   app.add_option("--slots", options.slots, "Jobs run at once (default: the number of cores)")
@@ -43,7 +46,7 @@ int main(int argc, char** argv) {
   }
   try {
     SetLogLevel(ParseLogLevel(log_level));
-    CheckDdsOptions(dds);
+    PreflightDds(dds);
     if (options.id.empty())
       options.id = HostName() + "-" + std::to_string(getpid());
     if (options.work_dir.empty())
@@ -62,6 +65,10 @@ int main(int argc, char** argv) {
   try {
     WorkerDaemon daemon(options, dds);
     daemon.Run();
+  } catch (const security::SecuritySetupError& e) {
+    // A bad identity is bad input, like a bad flag.
+    std::cerr << "rlpos-worker: error: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "rlpos-worker: error: " << e.what() << "\n";
     return 1;
