@@ -16,10 +16,10 @@
 #include <thread>
 
 #include "campaign/expansion.h"
-#include "config/number_text.h"
 #include "cli/campaign_client.h"
 #include "cli/campaign_commands.h"
 #include "cli/progress_text.h"
+#include "config/number_text.h"
 #include "process/child_process.h"
 #include "process/executable_path.h"
 #include "process/file_lock.h"

@@ -95,9 +95,9 @@ int main(int argc, char** argv) {
   int days = 365;
   auto* security = app.add_subcommand("security", "Make DDS Security identities (CA, permissions)");
   security->require_subcommand(1);
-  auto* security_init =
-      security->add_subcommand("init", "New folder: a CA, governance, and identities "
-                                       "coordinator, worker and client");
+  auto* security_init = security->add_subcommand("init",
+                                                 "New folder: a CA, governance, and identities "
+                                                 "coordinator, worker and client");
   security_init->add_option("dir", security_dir, "Folder to create")->required();
   auto* add_worker = security->add_subcommand("add-worker", "Issue one more worker identity");
   auto* add_client = security->add_subcommand("add-client", "Issue one more client identity");

@@ -18,9 +18,7 @@ std::string LoopbackConfigXml(const std::string& tag, double lease_s,
          "</Tag>"
          "<Peers><Peer Address=\"127.0.0.1\"/></Peers>"
          "<LeaseDuration>" +
-         lease +
-         "</LeaseDuration></Discovery>" +
-         domain_extra + "</Domain></CycloneDDS>";
+         lease + "</LeaseDuration></Discovery>" + domain_extra + "</Domain></CycloneDDS>";
 }
 
 const char* RoleName(DdsRole role) {

@@ -49,7 +49,8 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
     config = LoopbackConfigXml(options.loopback_tag, 2.0, security);
   } else if (!security.empty()) {
     // Cyclone merges a comma-separated list of configurations, later ones adding to earlier.
-    const std::string element = "<CycloneDDS><Domain Id=\"any\">" + security + "</Domain></CycloneDDS>";
+    const std::string element =
+        "<CycloneDDS><Domain Id=\"any\">" + security + "</Domain></CycloneDDS>";
     config = config.empty() ? element : config + "," + element;
   }
   if (!config.empty()) {
@@ -61,8 +62,9 @@ Participant::Participant(const DdsOptions& options) : options_(options) {
     const std::int32_t rc = participant_;
     if (domain_ > 0)
       dds_delete(domain_);
-    CheckDds(rc, "DDS participant on domain " + std::to_string(options.domain) +
-                     (security.empty() ? "" : " (DDS Security refused it: Cyclone's reason is above)"));
+    CheckDds(rc,
+             "DDS participant on domain " + std::to_string(options.domain) +
+                 (security.empty() ? "" : " (DDS Security refused it: Cyclone's reason is above)"));
   }
 }
 

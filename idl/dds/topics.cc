@@ -454,8 +454,8 @@ template <typename M>
 Received<M> DecodeSample(const void* c_sample, bool valid) {
   Received<M> r;
   r.valid = valid;
-  r.data = Traits<M>::FromC(*static_cast<const typename Traits<M>::C*>(c_sample), valid,
-                            r.decode_error);
+  r.data =
+      Traits<M>::FromC(*static_cast<const typename Traits<M>::C*>(c_sample), valid, r.decode_error);
   return r;
 }
 

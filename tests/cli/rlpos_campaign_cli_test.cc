@@ -134,8 +134,7 @@ TEST_F(RlposCampaignCli, SecurityInitAddWorkerAndTheirBadInputs) {
   EXPECT_FALSE(fs::exists(dir_ + "/none"));
 
   // The identity is checked before any DDS: the file and the cause, exit 2.
-  ExpectOneLineError(Campaign("cancel abc " + LonelyDds() + " --security sec --identity host-b"),
-                     2,
+  ExpectOneLineError(Campaign("cancel abc " + LonelyDds() + " --security sec --identity host-b"), 2,
                      "sec/identities/host-b/permissions.p7s: identity \"host-b\" is not "
                      "allowed to publish rlpos_campaign_request");
   ExpectOneLineError(Campaign("cancel abc " + LonelyDds() + " --security nowhere"), 2,

@@ -63,8 +63,7 @@ TEST_F(SecuredTopicsTest, TheCoordinatorIdentityGetsExactlyItsReadersAndWriters)
   EXPECT_EQ(RefusalOf<Reader<msg::JobEvent>>(participant), "");
   EXPECT_EQ(RefusalOf<Reader<msg::CampaignRequest>>(participant), "");
   EXPECT_NE(RefusalOf<Writer<msg::JobEvent>>(participant).find(kRefused), std::string::npos);
-  EXPECT_NE(RefusalOf<Writer<msg::CampaignRequest>>(participant).find(kRefused),
-            std::string::npos);
+  EXPECT_NE(RefusalOf<Writer<msg::CampaignRequest>>(participant).find(kRefused), std::string::npos);
 }
 
 TEST_F(SecuredTopicsTest, AWorkerCertificateCannotPublishAssignmentsOrReplies) {
@@ -78,8 +77,7 @@ TEST_F(SecuredTopicsTest, AWorkerCertificateCannotPublishAssignmentsOrReplies) {
   EXPECT_NE(assignment.find(kRefused), std::string::npos) << assignment;
   EXPECT_NE(RefusalOf<Writer<msg::CampaignReply>>(participant).find(kRefused), std::string::npos);
   // Nor read what clients ask.
-  EXPECT_NE(RefusalOf<Reader<msg::CampaignRequest>>(participant).find(kRefused),
-            std::string::npos);
+  EXPECT_NE(RefusalOf<Reader<msg::CampaignRequest>>(participant).find(kRefused), std::string::npos);
 }
 
 TEST_F(SecuredTopicsTest, AClientCertificateCannotPublishJobEventsOrStatus) {

@@ -86,14 +86,17 @@ TEST_F(SecurityFilesTest, PermissionsGrantEachRoleExactlyItsTopics) {
 }
 
 TEST_F(SecurityFilesTest, AWorkerIdentityMayNotActAsCoordinatorOrClient) {
-  EXPECT_NE(ErrorOf([] { CheckIdentity(Dir(), "worker", DdsRole::kCoordinator, Now()); })
-                .find("identity \"worker\" is not allowed to publish rlpos_job_assignment"),
+  EXPECT_NE(ErrorOf([] {
+              CheckIdentity(Dir(), "worker", DdsRole::kCoordinator, Now());
+            }).find("identity \"worker\" is not allowed to publish rlpos_job_assignment"),
             std::string::npos);
-  EXPECT_NE(ErrorOf([] { CheckIdentity(Dir(), "worker", DdsRole::kClient, Now()); })
-                .find("not allowed to publish rlpos_campaign_request"),
+  EXPECT_NE(ErrorOf([] {
+              CheckIdentity(Dir(), "worker", DdsRole::kClient, Now());
+            }).find("not allowed to publish rlpos_campaign_request"),
             std::string::npos);
-  EXPECT_NE(ErrorOf([] { CheckIdentity(Dir(), "client", DdsRole::kWorker, Now()); })
-                .find(FilesOf(Dir(), "client").permissions),
+  EXPECT_NE(ErrorOf([] {
+              CheckIdentity(Dir(), "client", DdsRole::kWorker, Now());
+            }).find(FilesOf(Dir(), "client").permissions),
             std::string::npos);
 }
 
@@ -131,8 +134,8 @@ TEST_F(SecurityFilesTest, AnIdentityOfAnotherCaIsRefusedAsWrongCa) {
   InitSecurityDir(other.File("sec"));
   TempDir mixed;
   fs::copy(Dir(), mixed.File("sec"), fs::copy_options::recursive);
-  fs::copy(other.File("sec/identities/worker/cert.pem"), mixed.File("sec/identities/worker/cert.pem"),
-           fs::copy_options::overwrite_existing);
+  fs::copy(other.File("sec/identities/worker/cert.pem"),
+           mixed.File("sec/identities/worker/cert.pem"), fs::copy_options::overwrite_existing);
   const std::string error =
       ErrorOf([&] { CheckIdentity(mixed.File("sec"), "worker", DdsRole::kWorker, Now()); });
   EXPECT_NE(error.find("identities/worker/cert.pem: not issued by the CA"), std::string::npos)
@@ -143,7 +146,8 @@ TEST_F(SecurityFilesTest, AnIdentityOfAnotherCaIsRefusedAsWrongCa) {
   fs::copy(Dir() + "/identities/worker/cert.pem", mixed.File("sec/identities/worker/cert.pem"),
            fs::copy_options::overwrite_existing);
   fs::copy(other.File("sec/identities/worker/permissions.p7s"),
-           mixed.File("sec/identities/worker/permissions.p7s"), fs::copy_options::overwrite_existing);
+           mixed.File("sec/identities/worker/permissions.p7s"),
+           fs::copy_options::overwrite_existing);
   const std::string permissions =
       ErrorOf([&] { CheckIdentity(mixed.File("sec"), "worker", DdsRole::kWorker, Now()); });
   EXPECT_NE(permissions.find("permissions.p7s: signature not valid for this CA"), std::string::npos)
@@ -154,7 +158,8 @@ TEST_F(SecurityFilesTest, SwappedPermissionsAreASubjectMismatch) {
   TempDir copy;
   fs::copy(Dir(), copy.File("sec"), fs::copy_options::recursive);
   fs::copy(Dir() + "/identities/client/permissions.p7s",
-           copy.File("sec/identities/worker/permissions.p7s"), fs::copy_options::overwrite_existing);
+           copy.File("sec/identities/worker/permissions.p7s"),
+           fs::copy_options::overwrite_existing);
   const std::string error =
       ErrorOf([&] { CheckIdentity(copy.File("sec"), "worker", DdsRole::kAny, Now()); });
   EXPECT_NE(error.find("subject mismatch: grants \"CN=client,OU=client,O=RLpos\""),
@@ -169,8 +174,9 @@ TEST_F(SecurityFilesTest, MissingTamperedOrMismatchedFilesAreNamed) {
   const auto error = [&](const std::string& name) {
     return ErrorOf([&] { CheckIdentity(dir, name, DdsRole::kAny, Now()); });
   };
-  EXPECT_NE(ErrorOf([&] { CheckIdentity(copy.File("none"), "worker", DdsRole::kAny, Now()); })
-                .find("none: no such folder"),
+  EXPECT_NE(ErrorOf([&] {
+              CheckIdentity(copy.File("none"), "worker", DdsRole::kAny, Now());
+            }).find("none: no such folder"),
             std::string::npos);
   EXPECT_NE(error("nobody").find("identities/nobody: no such identity"), std::string::npos);
   EXPECT_NE(error("../private").find("--identity: identity name"), std::string::npos);
@@ -181,8 +187,8 @@ TEST_F(SecurityFilesTest, MissingTamperedOrMismatchedFilesAreNamed) {
             std::string::npos);
 
   const std::string governance = ReadFile(dir + "/governance.p7s");
-  const std::string tampered = std::string(governance).replace(
-      governance.find("<max>230</max>"), 14, "<max>231</max>");
+  const std::string tampered =
+      std::string(governance).replace(governance.find("<max>230</max>"), 14, "<max>231</max>");
   WriteFile(dir + "/governance.p7s", tampered);
   EXPECT_NE(error("client").find("governance.p7s: signature not valid"), std::string::npos);
 

@@ -262,7 +262,8 @@ int main(int argc, char** argv) {
   std::string per_topic;
   for (const auto& h : heard) {
     total += h.count;
-    per_topic += std::string(per_topic.empty() ? "" : ", ") + h.name + " " + std::to_string(h.count);
+    per_topic +=
+        std::string(per_topic.empty() ? "" : ", ") + h.name + " " + std::to_string(h.count);
   }
   std::printf("sent %ld hostile samples (%ld refused by the local writer); heard %ld (%s)\n", sent,
               refused_by_writer, total, per_topic.c_str());

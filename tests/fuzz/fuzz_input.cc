@@ -14,10 +14,34 @@ std::string FuzzInput::RandomBytes(std::size_t max_length) {
 }
 
 std::string FuzzInput::Mutate(const std::string& text) {
-  static const std::vector<std::string> kTokens = {
-      "NaN", "-1", "0", "1e999", "-1e999", "18446744073709551616", "null", "true", "\"",
-      "\\u0000", "\\", "..", "../", "/", "[", "]", "{", "}", ",", ":", "\"\":", "[[[[[[[[",
-      std::string(1, '\0'), "\xff\xfe", "\xc3", "{\"a\":", "1.7976931348623157e308", "-0"};
+  static const std::vector<std::string> kTokens = {"NaN",
+                                                   "-1",
+                                                   "0",
+                                                   "1e999",
+                                                   "-1e999",
+                                                   "18446744073709551616",
+                                                   "null",
+                                                   "true",
+                                                   "\"",
+                                                   "\\u0000",
+                                                   "\\",
+                                                   "..",
+                                                   "../",
+                                                   "/",
+                                                   "[",
+                                                   "]",
+                                                   "{",
+                                                   "}",
+                                                   ",",
+                                                   ":",
+                                                   "\"\":",
+                                                   "[[[[[[[[",
+                                                   std::string(1, '\0'),
+                                                   "\xff\xfe",
+                                                   "\xc3",
+                                                   "{\"a\":",
+                                                   "1.7976931348623157e308",
+                                                   "-0"};
   std::string out = text;
   const std::size_t edits = 1 + Below(4);
   for (std::size_t e = 0; e < edits; ++e) {
@@ -55,10 +79,26 @@ std::string FuzzInput::MutateJsonValue(const std::string& text) {
     std::advance(it, static_cast<long>(Below(node->size())));
     node = &*it;
   }
-  static const std::vector<nlohmann::json> kValues = {
-      -1, 0, 1, 4, 5.5, 100, 1e308, -1e308, 1e-320, 9223372036854775807LL,
-      18446744073709551615ULL, -9223372036854775807LL, "x", "", "../../etc", nullptr, true,
-      nlohmann::json::array(), nlohmann::json::object(), nlohmann::json::array({1, 2, 3})};
+  static const std::vector<nlohmann::json> kValues = {-1,
+                                                      0,
+                                                      1,
+                                                      4,
+                                                      5.5,
+                                                      100,
+                                                      1e308,
+                                                      -1e308,
+                                                      1e-320,
+                                                      9223372036854775807LL,
+                                                      18446744073709551615ULL,
+                                                      -9223372036854775807LL,
+                                                      "x",
+                                                      "",
+                                                      "../../etc",
+                                                      nullptr,
+                                                      true,
+                                                      nlohmann::json::array(),
+                                                      nlohmann::json::object(),
+                                                      nlohmann::json::array({1, 2, 3})};
   *node = kValues[Below(kValues.size())];
   return document.dump();
 }

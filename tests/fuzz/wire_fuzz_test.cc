@@ -125,7 +125,9 @@ void FuzzEnum(E& field, int valid, FuzzInput& in) {
   std::memcpy(&field, &value, sizeof value);
 }
 
-bool Finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool Finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 TEST(WireFuzz, JobAssignmentDecoderAndOrderCheck) {
   const std::string document = ReadSource("campaigns/scenarios/b.json");
@@ -167,20 +169,20 @@ TEST(WireFuzz, JobAssignmentDecoderAndOrderCheck) {
     c.train_episodes = in.Chance(0.95) ? 0 : static_cast<std::int32_t>(in.WeirdInteger());
 
     const auto r = DecodeSample<msg::JobAssignment>(&c, true);
-    const bool ok = r.decode_error.empty() && Accepts(
-                                                  [&] {
-                                                    const CheckedOrder checked =
-                                                        CheckJobOrder(r.data.order, 604800);
-                                                    const JobOrder& o = r.data.order;
-                                                    EXPECT_TRUE(wire::IsSafePath(o.job_id, wire::kMaxIdLength)) << i;
-                                                    EXPECT_TRUE(o.timeout_s > 0 && o.timeout_s <= 604800) << i;
-                                                    if (o.position) {
-                                                      EXPECT_TRUE(Finite(*o.position)) << i;
-                                                    }
-                                                    EXPECT_TRUE(checked.scenario.is_object()) << i;
-                                                    return true;
-                                                  },
-                                                  i, "assignment");
+    const bool ok = r.decode_error.empty() &&
+                    Accepts(
+                        [&] {
+                          const CheckedOrder checked = CheckJobOrder(r.data.order, 604800);
+                          const JobOrder& o = r.data.order;
+                          EXPECT_TRUE(wire::IsSafePath(o.job_id, wire::kMaxIdLength)) << i;
+                          EXPECT_TRUE(o.timeout_s > 0 && o.timeout_s <= 604800) << i;
+                          if (o.position) {
+                            EXPECT_TRUE(Finite(*o.position)) << i;
+                          }
+                          EXPECT_TRUE(checked.scenario.is_object()) << i;
+                          return true;
+                        },
+                        i, "assignment");
     ++(ok ? outcomes.accepted : outcomes.refused);
   }
   outcomes.ExpectBoth("assignment");
@@ -227,7 +229,7 @@ TEST(WireFuzz, WorkerStatusDecoderAndCheck) {
     c.pid = in.Chance(0.97) ? 4242 : in.WeirdInteger();
     c.slots = in.Chance(0.97) ? 4 : static_cast<std::int32_t>(in.WeirdInteger());
     c.busy = in.Chance(0.97) ? static_cast<std::int32_t>(jobs.size())
-                            : static_cast<std::int32_t>(in.WeirdInteger());
+                             : static_cast<std::int32_t>(in.WeirdInteger());
     c.jobs._buffer = reinterpret_cast<decltype(c.jobs._buffer)>(jobs.data());
     c.jobs._length = c.jobs._maximum = static_cast<uint32_t>(
         in.Chance(0.02) ? wire::kMaxWorkerJobs + 1 + in.Below(100) : jobs.size());
@@ -264,8 +266,7 @@ TEST(WireFuzz, CampaignRequestDecoderCheckAndExpansion) {
     FuzzOctets(c.campaign_json, campaign_storage, campaign, wire::kMaxCampaignJson, in, true);
     for (std::size_t f = 0; f < files.size(); ++f) {
       FuzzChars(files[f].file, f == 0 ? "b.json" : "c.json", in);
-      FuzzOctets(files[f].document, documents[f], document, wire::kMaxScenarioDocument, in,
-                 false);
+      FuzzOctets(files[f].document, documents[f], document, wire::kMaxScenarioDocument, in, false);
     }
     c.scenarios._buffer = files.data();
     c.scenarios._length = c.scenarios._maximum = static_cast<uint32_t>(

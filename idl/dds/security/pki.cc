@@ -16,8 +16,12 @@
 
 namespace rlpos::pki {
 
-void KeyFree::operator()(void* key) const { EVP_PKEY_free(static_cast<EVP_PKEY*>(key)); }
-void CertFree::operator()(void* cert) const { X509_free(static_cast<X509*>(cert)); }
+void KeyFree::operator()(void* key) const {
+  EVP_PKEY_free(static_cast<EVP_PKEY*>(key));
+}
+void CertFree::operator()(void* cert) const {
+  X509_free(static_cast<X509*>(cert));
+}
 
 namespace {
 
@@ -26,8 +30,12 @@ struct BioFree {
 };
 using Bio = std::unique_ptr<BIO, BioFree>;
 
-EVP_PKEY* K(const Key& key) { return static_cast<EVP_PKEY*>(key.get()); }
-X509* C(const Cert& cert) { return static_cast<X509*>(cert.get()); }
+EVP_PKEY* K(const Key& key) {
+  return static_cast<EVP_PKEY*>(key.get());
+}
+X509* C(const Cert& cert) {
+  return static_cast<X509*>(cert.get());
+}
 
 // OpenSSL's last queued reason, e.g. "no start line"; clears the queue.
 std::string OpenSslReason() {
@@ -67,7 +75,8 @@ X509_NAME* ParseSubject(const std::string& subject) {
     if (subject[at] != '/')
       break;
     const std::size_t next = subject.find('/', at + 1);
-    const std::string field = subject.substr(at + 1, next == std::string::npos ? next : next - at - 1);
+    const std::string field =
+        subject.substr(at + 1, next == std::string::npos ? next : next - at - 1);
     const std::size_t eq = field.find('=');
     if (eq == std::string::npos ||
         X509_NAME_add_entry_by_txt(name, field.substr(0, eq).c_str(), MBSTRING_UTF8,
@@ -92,8 +101,8 @@ void AddExtension(X509* cert, X509* issuer, int nid, const char* value) {
   X509_EXTENSION_free(ext);
 }
 
-Cert BuildCert(const Key& key, const std::string& subject, const Validity& validity,
-               X509* issuer, EVP_PKEY* issuer_key, bool is_ca) {
+Cert BuildCert(const Key& key, const std::string& subject, const Validity& validity, X509* issuer,
+               EVP_PKEY* issuer_key, bool is_ca) {
   Cert cert(X509_new());
   X509* x = C(cert);
   X509_set_version(x, 2);

@@ -66,7 +66,9 @@ std::time_t ParsePermissionsTime(const std::string& text, const std::string& fil
   return timegm(&tm);
 }
 
-std::string When(std::time_t t) { return PermissionsTime(t) + " UTC"; }
+std::string When(std::time_t t) {
+  return PermissionsTime(t) + " UTC";
+}
 
 // Every <topic> inside every `section` (publish or subscribe) of the permissions.
 std::set<std::string> GrantedTopics(const std::string& permissions, const std::string& section) {
@@ -105,8 +107,8 @@ void CheckPermissions(const std::string& file, const std::string& text, const pk
     Fail(file, "not valid before " + When(not_before));
   for (const char* section : {"publish", "subscribe"}) {
     const auto granted = GrantedTopics(text, section);
-    const auto needed = std::string(section) == "publish" ? PublishedTopics(role)
-                                                          : SubscribedTopics(role);
+    const auto needed =
+        std::string(section) == "publish" ? PublishedTopics(role) : SubscribedTopics(role);
     for (const auto& topic : needed) {
       if (granted.count(topic) == 0 && granted.count("*") == 0) {
         Fail(file, "identity \"" + name + "\" is not allowed to " + section + " " + topic +
@@ -132,8 +134,9 @@ IdentityFiles CheckIdentity(const std::string& dir_in, const std::string& name, 
   const std::string dir = fs::absolute(dir_in, error).lexically_normal().string();
   IdentityFiles files = FilesOf(dir, name);
   if (!fs::is_directory(IdentityDir(dir, name), error))
-    Fail(IdentityDir(dir, name), "no such identity (issue one with `rlpos-campaign security "
-                                 "add-worker DIR NAME`, or pick one with --identity)");
+    Fail(IdentityDir(dir, name),
+         "no such identity (issue one with `rlpos-campaign security "
+         "add-worker DIR NAME`, or pick one with --identity)");
   for (const auto& file :
        {files.ca_cert, files.governance, files.cert, files.key, files.permissions}) {
     RequireFile(file);
@@ -149,8 +152,10 @@ IdentityFiles CheckIdentity(const std::string& dir_in, const std::string& name, 
         Fail(files.cert, "expired on " + When(validity.not_after));
       if (now < validity.not_before)
         Fail(files.cert, "not valid before " + When(validity.not_before));
-      if (reason.find("issuer") != std::string::npos || reason.find("signature") != std::string::npos)
-        Fail(files.cert, "not issued by the CA of " + files.ca_cert + " (wrong CA: " + reason + ")");
+      if (reason.find("issuer") != std::string::npos ||
+          reason.find("signature") != std::string::npos)
+        Fail(files.cert,
+             "not issued by the CA of " + files.ca_cert + " (wrong CA: " + reason + ")");
       Fail(files.cert, reason);
     }
     if (!pki::KeyMatchesCert(pki::ReadKey(files.key), cert))

@@ -39,14 +39,17 @@ std::string Library(const std::string& plugin, const std::string& function) {
   const std::string path = (dir.empty() ? "" : dir + "/") + "libdds_security_" + plugin + ".so";
   std::error_code error;
   if (!dir.empty() && !std::filesystem::exists(path, error)) {
-    throw std::runtime_error(path + ": missing: Cyclone DDS's security plugins are not where "
-                                    "this build found them (reinstall libddsc0debian)");
+    throw std::runtime_error(path +
+                             ": missing: Cyclone DDS's security plugins are not where "
+                             "this build found them (reinstall libddsc0debian)");
   }
   return "<Library path=\"" + XmlEscaped(path) + "\" initFunction=\"init_" + function +
          "\" finalizeFunction=\"finalize_" + function + "\"/>";
 }
 
-std::string Uri(const std::string& file) { return "file:" + XmlEscaped(file); }
+std::string Uri(const std::string& file) {
+  return "file:" + XmlEscaped(file);
+}
 
 }  // namespace
 

@@ -71,7 +71,8 @@ std::string PermissionsXml(const std::string& name, const std::string& subject, 
              "<permissions>\n<grant name=\"") +
          name + "\">\n<subject_name>" + subject + "</subject_name>\n<validity><not_before>" +
          PermissionsTime(not_before) + "</not_before><not_after>" + PermissionsTime(not_after) +
-         "</not_after></validity>\n" + rule + "<default>DENY</default>\n</grant>\n"
+         "</not_after></validity>\n" + rule +
+         "<default>DENY</default>\n</grant>\n"
          "</permissions>\n</dds>\n";
 }
 

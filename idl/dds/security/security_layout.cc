@@ -6,9 +6,15 @@
 
 namespace rlpos::security {
 
-std::string CaCertFile(const std::string& dir) { return dir + "/ca_cert.pem"; }
-std::string CaKeyFile(const std::string& dir) { return dir + "/private/ca_key.pem"; }
-std::string GovernanceFile(const std::string& dir) { return dir + "/governance.p7s"; }
+std::string CaCertFile(const std::string& dir) {
+  return dir + "/ca_cert.pem";
+}
+std::string CaKeyFile(const std::string& dir) {
+  return dir + "/private/ca_key.pem";
+}
+std::string GovernanceFile(const std::string& dir) {
+  return dir + "/governance.p7s";
+}
 std::string IdentityDir(const std::string& dir, const std::string& name) {
   return dir + "/identities/" + name;
 }

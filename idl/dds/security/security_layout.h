@@ -2,8 +2,8 @@
 // The folder `rlpos-campaign security init DIR` makes, and what each role may do on the wire.
 //   DIR/ca_cert.pem                      the CA: identity CA and permissions CA at once
 //   DIR/governance.p7s                   the domain's rules, signed by the CA
-//   DIR/identities/NAME/cert.pem         NAME's identity certificate (subject CN=NAME,OU=ROLE,O=RLpos)
-//   DIR/identities/NAME/key.pem          its private key (mode 0600)
+//   DIR/identities/NAME/cert.pem         NAME's identity certificate (subject
+//   CN=NAME,OU=ROLE,O=RLpos) DIR/identities/NAME/key.pem          its private key (mode 0600)
 //   DIR/identities/NAME/permissions.p7s  what NAME may publish and subscribe, signed by the CA
 //   DIR/private/ca_key.pem               the CA's key: stays on the machine that issues identities
 // A host needs ca_cert.pem, governance.p7s and its own identities/NAME, never private/.

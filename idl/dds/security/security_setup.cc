@@ -104,8 +104,8 @@ void InitSecurityDir(const std::string& dir, const IssueOptions& options) {
   if (fs::exists(dir, error)) {
     if (!fs::is_directory(dir, error) || !fs::is_empty(dir, error)) {
       throw std::invalid_argument(dir +
-                               ": already exists; init makes a new folder (issue more "
-                               "identities with `rlpos-campaign security add-worker`)");
+                                  ": already exists; init makes a new folder (issue more "
+                                  "identities with `rlpos-campaign security add-worker`)");
     }
     fs::remove(dir, error);  // empty: rename replaces it
   }
@@ -115,8 +115,8 @@ void InitSecurityDir(const std::string& dir, const IssueOptions& options) {
     MakeDir(out + "/identities", 0755);
     const std::time_t now = Now(options);
     const pki::Key ca_key = pki::GenerateKey();
-    const pki::Cert ca = pki::MakeCaCertificate(
-        ca_key, "/O=RLpos/CN=RLpos CA", {now - kClockSkew, now + options.ca_days * kDay});
+    const pki::Cert ca = pki::MakeCaCertificate(ca_key, "/O=RLpos/CN=RLpos CA",
+                                                {now - kClockSkew, now + options.ca_days * kDay});
     WriteNewFile(CaKeyFile(out), pki::KeyPem(ca_key), 0600);
     WriteNewFile(CaCertFile(out), pki::CertPem(ca), 0644);
     WriteNewFile(GovernanceFile(out), pki::SignSmime(GovernanceXml(), ca, ca_key), 0644);

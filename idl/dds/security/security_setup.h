@@ -10,9 +10,9 @@
 namespace rlpos::security {
 
 struct IssueOptions {
-  std::time_t now = 0;     // 0: the current time
-  int days = 365;          // identity certificates and permissions
-  int ca_days = 3650;      // the CA (init only)
+  std::time_t now = 0;  // 0: the current time
+  int days = 365;       // identity certificates and permissions
+  int ca_days = 3650;   // the CA (init only)
 };
 
 // Creates DIR (it must not exist, or be empty) with a new CA, governance and the identities
