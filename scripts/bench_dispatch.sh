@@ -10,6 +10,8 @@
 #   coord RSS   coordinator peak resident memory
 #   DB B/job    database size per job
 # Usage: scripts/bench_dispatch.sh [N_JOBS] [WORKERS] [SLOTS] [BUILD_DIR]
+# RLPOS_BENCH_PERF=DIR also records the coordinator with `perf record -g` into DIR/<mode>.data.
+# RLPOS_BENCH_MODES="unsecured secured" (default) picks the modes.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 jobs=${1:-1000}
@@ -67,6 +69,12 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
   local cpu0 t0 id
   cpu0=$(cpu_ticks "$coordinator")
   t0=$(date +%s.%N)
+  local perf=""
+  if [ -n "${RLPOS_BENCH_PERF:-}" ]; then
+    mkdir -p "$RLPOS_BENCH_PERF"
+    perf record -q -F 499 -g -p "$coordinator" -o "$RLPOS_BENCH_PERF/$name.data" 2>/dev/null &
+    perf=$!
+  fi
   id=$("$bin/rlpos-campaign" submit "$work/campaign.json" "${dds[@]}" 2>/dev/null)
   until [ "$(sqlite3 "$dir/rlpos.db" "SELECT state FROM campaigns WHERE id = '$id'")" = finished ]; do
     kill -0 "$coordinator" 2>/dev/null || { echo "$name: the coordinator died" >&2; exit 1; }
@@ -75,6 +83,7 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
   local t1 cpu1 total failed rss db_bytes
   t1=$(date +%s.%N)
   cpu1=$(cpu_ticks "$coordinator")
+  if [ -n "$perf" ]; then kill -INT "$perf"; wait "$perf" || true; fi
   total=$(sqlite3 "$dir/rlpos.db" "SELECT COUNT(*) FROM jobs WHERE campaign_id = '$id'")
   failed=$(sqlite3 "$dir/rlpos.db" "SELECT COUNT(*) FROM jobs WHERE state != 'succeeded'")
   [ "$failed" -eq 0 ] || { echo "$name: $failed job(s) did not succeed" >&2; exit 1; }
@@ -93,5 +102,10 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
 echo "bench_dispatch: $jobs eval jobs (+1 position), $workers workers x $slots slots, loopback, $(nproc) cores"
 echo "| mode | discovery | jobs | jobs/s | coord CPU ms/job | coord peak RSS | DB B/job |"
 echo "|---|---|---|---|---|---|---|"
-run_mode unsecured
-run_mode secured --security "$work/sec"
+for mode in ${RLPOS_BENCH_MODES:-unsecured secured}; do
+  case $mode in
+    unsecured) run_mode unsecured ;;
+    secured) run_mode secured --security "$work/sec" ;;
+    *) echo "unknown mode $mode" >&2; exit 2 ;;
+  esac
+done

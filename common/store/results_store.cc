@@ -16,8 +16,7 @@ namespace {
 using nlohmann::json;
 
 double SystemNow() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 // The typed job columns, in the order ReadParams reads them.
@@ -27,7 +26,8 @@ constexpr const char* kParamColumns =
 
 std::string OverridesJson(const std::vector<ScenarioOverride>& overrides) {
   json out = json::array();
-  for (const auto& o : overrides) out.push_back({o.path, o.value});
+  for (const auto& o : overrides)
+    out.push_back({o.path, o.value});
   return out.dump();
 }
 
@@ -46,7 +46,8 @@ JobParams ReadParams(const Statement& row, int first, std::optional<Vec3>& posit
       p.train_episodes = static_cast<int>(*episodes);
     }
     p.positioner = row.OptionalText(first + 5).value_or("");
-    if (const auto run = row.OptionalInt(first + 6)) p.rng_run = static_cast<std::uint64_t>(*run);
+    if (const auto run = row.OptionalInt(first + 6))
+      p.rng_run = static_cast<std::uint64_t>(*run);
     p.duration_s = row.OptionalDouble(first + 7);
     p.warmup_s = row.OptionalDouble(first + 8);
     for (const auto& pair : json::parse(row.Text(first + 9))) {
@@ -59,7 +60,8 @@ JobParams ReadParams(const Statement& row, int first, std::optional<Vec3>& posit
   const auto y = row.OptionalDouble(first + 11);
   const auto z = row.OptionalDouble(first + 12);
   position.reset();
-  if (x && y && z) position = Vec3{*x, *y, *z};
+  if (x && y && z)
+    position = Vec3{*x, *y, *z};
   return p;
 }
 
@@ -86,18 +88,24 @@ constexpr const char* kProgressColumns =
 
 const char* ToString(JobUpdate update) {
   switch (update) {
-    case JobUpdate::kSucceeded: return "succeeded";
-    case JobUpdate::kRetrying: return "retrying";
-    case JobUpdate::kFailed: return "failed";
-    case JobUpdate::kStale: return "stale";
-    case JobUpdate::kUnknown: return "unknown";
+    case JobUpdate::kSucceeded:
+      return "succeeded";
+    case JobUpdate::kRetrying:
+      return "retrying";
+    case JobUpdate::kFailed:
+      return "failed";
+    case JobUpdate::kStale:
+      return "stale";
+    case JobUpdate::kUnknown:
+      return "unknown";
   }
   return "?";
 }
 
 ResultsStore::ResultsStore(const std::string& file, StoreOptions options)
     : options_(std::move(options)) {
-  if (!options_.clock) options_.clock = SystemNow;
+  if (!options_.clock)
+    options_.clock = SystemNow;
   db_ = std::make_unique<Database>(file, options_.read_only, options_.busy_timeout_ms);
   if (!options_.read_only) {
     // WAL: readers (status, report) never block the coordinator's writes, nor it them.
@@ -105,6 +113,10 @@ ResultsStore::ResultsStore(const std::string& file, StoreOptions options)
     if (!mode.Step() || mode.Text(0) != "wal") {
       throw StoreError(file, "cannot switch to WAL mode");
     }
+    // WAL with synchronous NORMAL: a commit is durable against a crash of the coordinator and
+    // stays consistent on power loss, which may lose the last commits (their jobs run again).
+    // FULL would fsync on every job event; at thousands of jobs that is the coordinator's cost.
+    db_->Exec("PRAGMA synchronous = NORMAL");
   }
   db_->Exec("PRAGMA foreign_keys = ON");
   MigrateSchema(*db_);
@@ -112,11 +124,25 @@ ResultsStore::ResultsStore(const std::string& file, StoreOptions options)
 
 ResultsStore::~ResultsStore() = default;
 
-const std::string& ResultsStore::file() const { return db_->file(); }
+const std::string& ResultsStore::file() const {
+  return db_->file();
+}
 
-int ResultsStore::SchemaVersion() { return ReadSchemaVersion(*db_); }
+StoreBatch::StoreBatch(std::unique_ptr<Transaction> transaction)
+    : transaction_(std::move(transaction)) {}
+StoreBatch::~StoreBatch() = default;
+StoreBatch::StoreBatch(StoreBatch&&) noexcept = default;
+void StoreBatch::Commit() { transaction_->Commit(); }
 
-double ResultsStore::Now() const { return options_.clock(); }
+StoreBatch ResultsStore::Batch() { return StoreBatch(std::make_unique<Transaction>(*db_)); }
+
+int ResultsStore::SchemaVersion() {
+  return ReadSchemaVersion(*db_);
+}
+
+double ResultsStore::Now() const {
+  return options_.clock();
+}
 
 SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
   Transaction transaction(*db_);
@@ -191,23 +217,39 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
   return result;
 }
 
-std::vector<ReadyJob> ResultsStore::ListReady(std::size_t limit) {
+std::vector<ReadyJob> ResultsStore::ListReady(std::size_t per_campaign) {
+  // Indexed queries (jobs_ready_by_kind) per active campaign and kind, trains first: the cost
+  // follows what is asked for, not how many jobs wait.
+  std::vector<std::string> campaigns;
+  Statement active =
+      db_->Prepare("SELECT id FROM campaigns WHERE state = 'active' ORDER BY created_at, id");
+  while (active.Step())
+    campaigns.push_back(active.Text(0));
   Statement select = db_->Prepare(
       std::string("SELECT j.id, j.campaign_id, j.key, j.attempt, j.timeout_s, ") + kParamColumns +
-      " FROM jobs j JOIN campaigns c ON c.id = j.campaign_id "
-      "WHERE j.state = 'ready' AND c.state = 'active' "
-      "ORDER BY c.created_at, c.id, j.seq LIMIT ?");
-  select.Bind(limit == 0 ? std::int64_t{-1} : static_cast<std::int64_t>(limit));
+      " FROM jobs j WHERE j.state = 'ready' AND j.campaign_id = ? AND j.kind = ? "
+      "ORDER BY j.seq LIMIT ?");
   std::vector<ReadyJob> out;
-  while (select.Step()) {
-    ReadyJob job;
-    job.id = select.Text(0);
-    job.campaign_id = select.Text(1);
-    job.key = select.Text(2);
-    job.attempt = static_cast<int>(select.Int(3));
-    job.timeout_s = select.Double(4);
-    job.params = ReadParams(select, 5, job.position, file());
-    out.push_back(std::move(job));
+  for (const auto& campaign : campaigns) {
+    std::size_t taken = 0;
+    for (const char* kind : {"train", "position", "eval"}) {
+      if (per_campaign != 0 && taken >= per_campaign)
+        break;
+      select.Reset();
+      select.Bind(campaign).Bind(kind).Bind(
+          per_campaign == 0 ? std::int64_t{-1} : static_cast<std::int64_t>(per_campaign - taken));
+      while (select.Step()) {
+        ReadyJob job;
+        job.id = select.Text(0);
+        job.campaign_id = select.Text(1);
+        job.key = select.Text(2);
+        job.attempt = static_cast<int>(select.Int(3));
+        job.timeout_s = select.Double(4);
+        job.params = ReadParams(select, 5, job.position, file());
+        out.push_back(std::move(job));
+        ++taken;
+      }
+    }
   }
   return out;
 }
@@ -233,9 +275,12 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
       "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run, x, y, z, "
       "worker_id FROM jobs WHERE id = ?");
   select.Bind(job_id);
-  if (!select.Step()) return JobUpdate::kUnknown;
-  if (select.Text(1) != "running" || select.Int(2) != attempt) return JobUpdate::kStale;
-  if (!worker_id.empty() && select.OptionalText(11) != worker_id) return JobUpdate::kStale;
+  if (!select.Step())
+    return JobUpdate::kUnknown;
+  if (select.Text(1) != "running" || select.Int(2) != attempt)
+    return JobUpdate::kStale;
+  if (!worker_id.empty() && select.OptionalText(11) != worker_id)
+    return JobUpdate::kStale;
   const JobKind kind = ParseJobKind(select.Text(0));
   const int max_attempts = static_cast<int>(select.Int(3));
   const std::string campaign_id = select.Text(4);
@@ -338,9 +383,12 @@ JobUpdate ResultsStore::RecordFailure(const std::string& job_id, int attempt,
   Statement select = db_->Prepare(
       "SELECT state, attempt, max_attempts, campaign_id, worker_id FROM jobs WHERE id = ?");
   select.Bind(job_id);
-  if (!select.Step()) return JobUpdate::kUnknown;
-  if (select.Text(0) != "running" || select.Int(1) != attempt) return JobUpdate::kStale;
-  if (!worker_id.empty() && select.OptionalText(4) != worker_id) return JobUpdate::kStale;
+  if (!select.Step())
+    return JobUpdate::kUnknown;
+  if (select.Text(0) != "running" || select.Int(1) != attempt)
+    return JobUpdate::kStale;
+  if (!worker_id.empty() && select.OptionalText(4) != worker_id)
+    return JobUpdate::kStale;
   const int max_attempts = static_cast<int>(select.Int(2));
   const std::string campaign_id = select.Text(3);
   select.Reset();
@@ -398,7 +446,8 @@ void ResultsStore::UpdateCampaignState(const std::string& campaign_id) {
 void ResultsStore::RequireCampaign(const std::string& campaign_id) {
   Statement select = db_->Prepare("SELECT 1 FROM campaigns WHERE id = ?");
   select.Bind(campaign_id);
-  if (!select.Step()) throw StoreError(file(), "no campaign \"" + campaign_id + "\"");
+  if (!select.Step())
+    throw StoreError(file(), "no campaign \"" + campaign_id + "\"");
 }
 
 std::vector<std::string> ResultsStore::RequeueWorker(const std::string& worker_id) {
@@ -434,8 +483,8 @@ std::vector<RunningJob> ResultsStore::ListRunning() {
       "WHERE state = 'running' ORDER BY started_at, id");
   std::vector<RunningJob> out;
   while (select.Step()) {
-    out.push_back({select.Text(0), select.Text(1), select.Text(2),
-                   static_cast<int>(select.Int(3)), select.Double(4), select.Double(5)});
+    out.push_back({select.Text(0), select.Text(1), select.Text(2), static_cast<int>(select.Int(3)),
+                   select.Double(4), select.Double(5)});
   }
   return out;
 }
@@ -493,7 +542,8 @@ int ResultsStore::RetryFailed(const std::string& campaign_id) {
 CampaignProgress ResultsStore::Progress(const std::string& campaign_id) {
   Statement select = db_->Prepare(std::string(kProgressColumns) + " WHERE campaign_id = ?");
   select.Bind(campaign_id);
-  if (!select.Step()) throw StoreError(file(), "no campaign \"" + campaign_id + "\"");
+  if (!select.Step())
+    throw StoreError(file(), "no campaign \"" + campaign_id + "\"");
   return ReadProgress(select);
 }
 
@@ -501,7 +551,8 @@ std::vector<CampaignProgress> ResultsStore::AllProgress() {
   Statement select =
       db_->Prepare(std::string(kProgressColumns) + " ORDER BY created_utc, campaign_id");
   std::vector<CampaignProgress> out;
-  while (select.Step()) out.push_back(ReadProgress(select));
+  while (select.Step())
+    out.push_back(ReadProgress(select));
   return out;
 }
 
@@ -511,7 +562,8 @@ std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
                   "timeout_s, worker_id, error, result_json, ") +
       kParamColumns + " FROM jobs WHERE id = ?");
   select.Bind(job_id);
-  if (!select.Step()) return std::nullopt;
+  if (!select.Step())
+    return std::nullopt;
   JobRecord r;
   r.id = select.Text(0);
   r.campaign_id = select.Text(1);
@@ -524,7 +576,8 @@ std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
   r.timeout_s = select.Double(8);
   r.worker_id = select.OptionalText(9);
   r.error = select.OptionalText(10);
-  if (const auto result = select.OptionalText(11)) r.result = json::parse(*result);
+  if (const auto result = select.OptionalText(11))
+    r.result = json::parse(*result);
   r.params = ReadParams(select, 12, r.position, file());
   return r;
 }

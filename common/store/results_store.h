@@ -23,6 +23,20 @@
 namespace rlpos {
 
 class Database;
+class Transaction;
+
+// Groups a ResultsStore's writes into one SQLite transaction until Commit (rolled back if it
+// goes out of scope first): one disk write for a whole scheduling round instead of one per job.
+class StoreBatch {
+ public:
+  explicit StoreBatch(std::unique_ptr<Transaction> transaction);
+  ~StoreBatch();
+  StoreBatch(StoreBatch&&) noexcept;
+  void Commit();
+
+ private:
+  std::unique_ptr<Transaction> transaction_;
+};
 
 struct StoreOptions {
   bool read_only = false;  // for readers (status, results, report): never writes, never migrates
@@ -129,12 +143,15 @@ class ResultsStore {
 
   const std::string& file() const;
   int SchemaVersion();
+  // Every write until the batch's Commit goes to disk as one transaction.
+  StoreBatch Batch();
 
   // Inserts the campaign and its jobs; re-submitting the same campaign is a no-op.
   SubmitResult Submit(const ExpandedCampaign& campaign);
 
-  // Ready jobs of active campaigns: oldest campaign first, then expansion order. 0 = no limit.
-  std::vector<ReadyJob> ListReady(std::size_t limit = 0);
+  // Ready jobs of active campaigns: oldest campaign first, then expansion order; at most
+  // `per_campaign` of each (0 = all).
+  std::vector<ReadyJob> ListReady(std::size_t per_campaign = 0);
   // ready -> running for this attempt; false if the job is not ready at that attempt.
   bool MarkRunning(const std::string& job_id, const std::string& worker_id, int attempt);
   // A result of train/position jobs must hold "position": [x, y, z]; of eval jobs, the metrics

@@ -134,6 +134,12 @@ constexpr const char* kVersion3After = R"sql(
 ALTER TABLE jobs DROP COLUMN argv_json;
 )sql";
 
+// Version 4: ready jobs by kind, so that the scheduler reads only as many as it can place
+// (trains first, then positions, then evals) however many wait.
+constexpr const char* kVersion4 = R"sql(
+CREATE INDEX jobs_ready_by_kind ON jobs(state, campaign_id, kind, seq);
+)sql";
+
 void ConvertArgvColumns(Database& db) {
   struct Row {
     std::string id;
@@ -173,7 +179,8 @@ const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations{
       {1, kVersion1, nullptr, nullptr},
       {2, kVersion2, nullptr, nullptr},
-      {3, kVersion3, ConvertArgvColumns, kVersion3After}};
+      {3, kVersion3, ConvertArgvColumns, kVersion3After},
+      {4, kVersion4, nullptr, nullptr}};
   return migrations;
 }
 

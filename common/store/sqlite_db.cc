@@ -11,10 +11,13 @@ namespace rlpos {
 Statement::Statement(sqlite3* db, const std::string& sql, const std::string& file)
     : db_(db), sql_(sql), file_(file) {
   const int rc = sqlite3_prepare_v2(db_, sql.c_str(), -1, &stmt_, nullptr);
-  if (rc != SQLITE_OK) Fail(rc);
+  if (rc != SQLITE_OK)
+    Fail(rc);
 }
 
-Statement::~Statement() { sqlite3_finalize(stmt_); }
+Statement::~Statement() {
+  sqlite3_finalize(stmt_);
+}
 
 Statement::Statement(Statement&& other) noexcept
     : db_(other.db_),
@@ -25,7 +28,8 @@ Statement::Statement(Statement&& other) noexcept
 
 void Statement::Fail(int rc) const {
   std::string message = sqlite3_errmsg(db_);
-  if (message.empty() || message == "not an error") message = sqlite3_errstr(rc);
+  if (message.empty() || message == "not an error")
+    message = sqlite3_errstr(rc);
   // The first line of the statement is enough to find it in the source.
   const std::string first_line = sql_.substr(0, sql_.find('\n'));
   throw StoreError(file_, message + " (in: " + first_line + ")");
@@ -34,13 +38,15 @@ void Statement::Fail(int rc) const {
 Statement& Statement::Bind(const std::string& value) {
   const int rc = sqlite3_bind_text(stmt_, next_++, value.data(), static_cast<int>(value.size()),
                                    SQLITE_TRANSIENT);
-  if (rc != SQLITE_OK) Fail(rc);
+  if (rc != SQLITE_OK)
+    Fail(rc);
   return *this;
 }
 
 Statement& Statement::Bind(std::int64_t value) {
   const int rc = sqlite3_bind_int64(stmt_, next_++, value);
-  if (rc != SQLITE_OK) Fail(rc);
+  if (rc != SQLITE_OK)
+    Fail(rc);
   return *this;
 }
 
@@ -51,20 +57,24 @@ Statement& Statement::Bind(std::uint64_t value) {
 
 Statement& Statement::Bind(double value) {
   const int rc = sqlite3_bind_double(stmt_, next_++, value);
-  if (rc != SQLITE_OK) Fail(rc);
+  if (rc != SQLITE_OK)
+    Fail(rc);
   return *this;
 }
 
 Statement& Statement::BindNull() {
   const int rc = sqlite3_bind_null(stmt_, next_++);
-  if (rc != SQLITE_OK) Fail(rc);
+  if (rc != SQLITE_OK)
+    Fail(rc);
   return *this;
 }
 
 bool Statement::Step() {
   const int rc = sqlite3_step(stmt_);
-  if (rc == SQLITE_ROW) return true;
-  if (rc == SQLITE_DONE) return false;
+  if (rc == SQLITE_ROW)
+    return true;
+  if (rc == SQLITE_DONE)
+    return false;
   Fail(rc);
 }
 
@@ -83,36 +93,43 @@ bool Statement::IsNull(int column) const {
   return sqlite3_column_type(stmt_, column) == SQLITE_NULL;
 }
 
-std::int64_t Statement::Int(int column) const { return sqlite3_column_int64(stmt_, column); }
+std::int64_t Statement::Int(int column) const {
+  return sqlite3_column_int64(stmt_, column);
+}
 
-double Statement::Double(int column) const { return sqlite3_column_double(stmt_, column); }
+double Statement::Double(int column) const {
+  return sqlite3_column_double(stmt_, column);
+}
 
 std::string Statement::Text(int column) const {
   const auto* text = sqlite3_column_text(stmt_, column);
-  if (!text) return {};
+  if (!text)
+    return {};
   return std::string(reinterpret_cast<const char*>(text),
                      static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column)));
 }
 
 std::optional<std::string> Statement::OptionalText(int column) const {
-  if (IsNull(column)) return std::nullopt;
+  if (IsNull(column))
+    return std::nullopt;
   return Text(column);
 }
 
 std::optional<std::int64_t> Statement::OptionalInt(int column) const {
-  if (IsNull(column)) return std::nullopt;
+  if (IsNull(column))
+    return std::nullopt;
   return Int(column);
 }
 
 std::optional<double> Statement::OptionalDouble(int column) const {
-  if (IsNull(column)) return std::nullopt;
+  if (IsNull(column))
+    return std::nullopt;
   return Double(column);
 }
 
 Database::Database(const std::string& file, bool read_only, int busy_timeout_ms)
     : file_(file), read_only_(read_only) {
-  const int flags = read_only ? SQLITE_OPEN_READONLY
-                              : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+  const int flags = read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
   const int rc = sqlite3_open_v2(file.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
   if (rc != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
@@ -131,7 +148,9 @@ Database::Database(const std::string& file, bool read_only, int busy_timeout_ms)
   }
 }
 
-Database::~Database() { sqlite3_close(db_); }
+Database::~Database() {
+  sqlite3_close(db_);
+}
 
 void Database::Exec(const std::string& sql) {
   char* error = nullptr;
@@ -143,23 +162,40 @@ void Database::Exec(const std::string& sql) {
   }
 }
 
-Statement Database::Prepare(const std::string& sql) { return Statement(db_, sql, file_); }
+Statement Database::Prepare(const std::string& sql) {
+  return Statement(db_, sql, file_);
+}
 
-int Database::Changes() const { return sqlite3_changes(db_); }
+int Database::Changes() const {
+  return sqlite3_changes(db_);
+}
 
-Transaction::Transaction(Database& db) : db_(db) { db_.Exec("BEGIN IMMEDIATE"); }
+Transaction::Transaction(Database& db) : db_(db), depth_(db.transaction_depth_) {
+  db_.Exec(depth_ == 0 ? std::string("BEGIN IMMEDIATE")
+                       : "SAVEPOINT rlpos_" + std::to_string(depth_));
+  ++db_.transaction_depth_;
+}
 
 Transaction::~Transaction() {
-  if (done_) return;
+  if (done_)
+    return;
+  --db_.transaction_depth_;
   try {
-    db_.Exec("ROLLBACK");
+    if (depth_ == 0) {
+      db_.Exec("ROLLBACK");
+    } else {
+      const std::string name = "rlpos_" + std::to_string(depth_);
+      db_.Exec("ROLLBACK TO " + name);
+      db_.Exec("RELEASE " + name);
+    }
   } catch (const StoreError&) {
     // Already rolled back by SQLite (e.g. after SQLITE_FULL); nothing left to undo.
   }
 }
 
 void Transaction::Commit() {
-  db_.Exec("COMMIT");
+  db_.Exec(depth_ == 0 ? std::string("COMMIT") : "RELEASE rlpos_" + std::to_string(depth_));
+  --db_.transaction_depth_;
   done_ = true;
 }
 

@@ -73,6 +73,8 @@ class Database {
   int Changes() const;
 
  private:
+  friend class Transaction;
+  int transaction_depth_ = 0;  // open Transactions: the outermost BEGINs, the others SAVEPOINT
   sqlite3* db_ = nullptr;
   std::string file_;
   bool read_only_;
@@ -80,6 +82,8 @@ class Database {
 
 // BEGIN IMMEDIATE ... COMMIT, rolled back if not committed (an exception left the scope).
 // IMMEDIATE takes the write lock up front, so a read-then-write never fails half-way on a lock.
+// Transactions nest: an inner one is a SAVEPOINT, released or rolled back to on its own, and
+// written to disk with the outermost (so a caller can batch many operations in one commit).
 class Transaction {
  public:
   explicit Transaction(Database& db);
@@ -90,6 +94,7 @@ class Transaction {
 
  private:
   Database& db_;
+  int depth_;  // 0: the outermost
   bool done_ = false;
 };
 

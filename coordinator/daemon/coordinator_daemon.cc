@@ -293,11 +293,14 @@ const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campai
   return doc == it->second.end() ? kNone : doc->second;
 }
 
-void CoordinatorDaemon::Schedule() {
+TickResult CoordinatorDaemon::Schedule() {
   std::vector<WorkerSlots> workers;
   for (const auto& [id, w] : live_)
     workers.push_back(w.slots);
-  const TickResult tick = scheduler_.Tick(workers, Now());
+  return scheduler_.Tick(workers, Now());
+}
+
+void CoordinatorDaemon::PublishTick(const TickResult& tick) {
   for (const auto& t : tick.timed_out) {
     Log(LogLevel::kWarning,
         t.job.id + "#" + std::to_string(t.job.attempt) + " on " + t.job.worker_id + ": " + t.error);
@@ -318,12 +321,17 @@ void CoordinatorDaemon::Run() {
                            store_.file());
   while (!StopRequested()) {
     dds_->wait_set.Wait(options_.tick_s);
-    HandleRequests();
+    HandleRequests();  // its replies follow its own commits
+    // One commit for the round's statuses, events and assignments; the assignments go out
+    // only once it is on disk, so a restarted coordinator never forgets a job it handed out.
+    StoreBatch batch = store_.Batch();
     HandleWorkerStatuses();
     HandleJobEvents();
     if (!grace_over_ && Now() - started_ >= options_.restart_grace_s)
       AfterGrace();
-    Schedule();
+    const TickResult tick = Schedule();
+    batch.Commit();
+    PublishTick(tick);
   }
   Log(LogLevel::kInfo, "coordinator stopping");
 }

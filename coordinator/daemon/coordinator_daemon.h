@@ -56,7 +56,9 @@ class CoordinatorDaemon {
   void HandleWorkerStatuses();
   void HandleJobEvents();
   void AfterGrace();
-  void Schedule();
+  // The round's scheduling decisions, written to the store; PublishTick sends them.
+  TickResult Schedule();
+  void PublishTick(const TickResult& tick);
   void Publish(const ReadyJob& job, const std::string& worker_id);
   void Republish(const std::string& worker_id);
   void Withdraw(const std::string& job_id);

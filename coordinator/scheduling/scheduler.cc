@@ -7,23 +7,33 @@ namespace rlpos {
 
 TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double now) {
   TickResult result;
-  for (auto& t : FindTimedOut(store_.ListRunning(), now)) {
+  std::vector<RunningJob> running = store_.ListRunning();
+  for (auto& t : FindTimedOut(running, now)) {
     const JobUpdate update = store_.RecordFailure(t.job.id, t.job.attempt, t.error);
     if (update == JobUpdate::kRetrying || update == JobUpdate::kFailed) {
       result.timed_out.push_back(std::move(t));
     }
   }
+  if (!result.timed_out.empty())
+    running = store_.ListRunning();
 
   std::map<std::string, int> by_worker;
   std::map<std::string, int> by_campaign;
-  for (const auto& job : store_.ListRunning()) {
+  for (const auto& job : running) {
     ++by_worker[job.worker_id];
     ++by_campaign[job.campaign_id];
   }
   std::vector<WorkerSlots> workers = live_workers;
-  for (auto& w : workers) w.busy = std::max(w.busy, by_worker[w.id]);
-
-  for (auto& a : AssignJobs(store_.ListReady(), workers, by_campaign)) {
+  std::size_t free = 0;
+  for (auto& w : workers) {
+    w.busy = std::max(w.busy, by_worker[w.id]);
+    free += static_cast<std::size_t>(std::max(0, w.slots - w.busy));
+  }
+  // Nothing to fill, nothing to read: a busy cluster costs no query per event.
+  if (free == 0)
+    return result;
+  // `free` per campaign is enough for any fair share of the free slots.
+  for (auto& a : AssignJobs(store_.ListReady(free), workers, by_campaign)) {
     if (store_.MarkRunning(a.job.id, a.worker_id, a.job.attempt)) {
       result.assigned.push_back(std::move(a));
     }

@@ -90,17 +90,21 @@ TEST_F(StoreTest, ProducersStartReadyEvalsPending) {
   EXPECT_EQ(p.pending, 36);
   const auto ready = store_.ListReady();
   ASSERT_EQ(ready.size(), 8u);
-  EXPECT_EQ(ready[0].id, Id("position/B/baseline"));  // expansion order
-  EXPECT_EQ(ready[0].attempt, 1);
-  EXPECT_DOUBLE_EQ(ready[0].timeout_s, 300.0);
+  // Trains first, then positions in expansion order: B's, then C's.
+  EXPECT_EQ(ready[0].id, Id("train/B/seed1"));
+  EXPECT_EQ(ready[1].id, Id("train/C/seed1"));
+  EXPECT_EQ(ready[2].id, Id("position/B/baseline"));
+  const ReadyJob& position = ready[2];
+  EXPECT_EQ(position.attempt, 1);
+  EXPECT_DOUBLE_EQ(position.timeout_s, 300.0);
   const rlpos::Job& expected = FindJob(campaign_, "position/B/baseline");
-  EXPECT_EQ(ready[0].params.kind, JobKind::kPosition);
-  EXPECT_EQ(ready[0].params.positioner, "baseline");
-  EXPECT_EQ(ready[0].params.scenario, expected.params.scenario);
-  EXPECT_EQ(ready[0].params.duration_s, expected.params.duration_s);
-  EXPECT_EQ(ready[0].params.warmup_s, expected.params.warmup_s);
-  EXPECT_EQ(ready[0].params.overrides, expected.params.overrides);
-  EXPECT_FALSE(ready[0].position.has_value());
+  EXPECT_EQ(position.params.kind, JobKind::kPosition);
+  EXPECT_EQ(position.params.positioner, "baseline");
+  EXPECT_EQ(position.params.scenario, expected.params.scenario);
+  EXPECT_EQ(position.params.duration_s, expected.params.duration_s);
+  EXPECT_EQ(position.params.warmup_s, expected.params.warmup_s);
+  EXPECT_EQ(position.params.overrides, expected.params.overrides);
+  EXPECT_FALSE(position.position.has_value());
   EXPECT_EQ(store_.ListReady(3).size(), 3u);
 }
 

@@ -73,10 +73,12 @@ TEST(ScenarioDocuments, EveryShippedJobPassesTheWorkersCheck) {
       CheckedOrder c;
       ASSERT_NO_THROW(c = CheckJobOrder(order, campaign.job_timeout_s));
       EXPECT_EQ(c.parsed.name, job.params.scenario);
-      if (job.params.kind == JobKind::kEval)
+      if (job.params.kind == JobKind::kEval) {
         EXPECT_EQ(c.scenario["simulation"]["run"], *job.params.rng_run);
-      if (spec.eval.duration)
+      }
+      if (spec.eval.duration) {
         EXPECT_EQ(c.parsed.simulation.duration, *spec.eval.duration);
+      }
       ++checked[ToString(job.params.kind)];
     }
     EXPECT_EQ(checked["train"] + checked["position"] + checked["eval"],

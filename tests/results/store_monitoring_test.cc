@@ -247,7 +247,7 @@ TEST_F(MonitoringTest, ReadyJobsCarryTheirScenarioName) {
   }
   EXPECT_GT(b, 0);
   EXPECT_GT(c, 0);
-  EXPECT_EQ(ready[0].key, campaign_.jobs[0].key);  // expansion order
+  EXPECT_EQ(ready[0].key, "train/B/seed1");  // trains first, then expansion order
   EXPECT_EQ(ready[0].params.scenario, "B");
 }
 
