@@ -453,12 +453,12 @@ void ResultsStore::RequireCampaign(const std::string& campaign_id) {
 std::vector<std::string> ResultsStore::RequeueWorker(const std::string& worker_id) {
   Transaction transaction(*db_);
   Statement select = db_->Prepare(
-      "SELECT id, attempt, max_attempts, campaign_id FROM jobs "
+      "SELECT id, attempt, infra_losses, campaign_id FROM jobs "
       "WHERE worker_id = ? AND state = 'running' ORDER BY id");
   select.Bind(worker_id);
   struct Held {
     std::string id;
-    int attempt, max_attempts;
+    int attempt, infra_losses;
     std::string campaign_id;
   };
   std::vector<Held> held;
@@ -466,10 +466,31 @@ std::vector<std::string> ResultsStore::RequeueWorker(const std::string& worker_i
     held.push_back({select.Text(0), static_cast<int>(select.Int(1)),
                     static_cast<int>(select.Int(2)), select.Text(3)});
   }
+  select.Reset();
   std::vector<std::string> ids;
+  const std::string why = "worker " + worker_id + " was lost";
   for (const auto& h : held) {
-    // Charged as an attempt: a job that keeps killing its worker must not loop forever.
-    FailAttempt(h.id, h.attempt, h.max_attempts, "worker " + worker_id + " was lost");
+    const int losses = h.infra_losses + 1;
+    if (losses > options_.max_infra_losses) {
+      // A job that keeps taking its worker down must not loop forever: fail it for good.
+      FailAttempt(h.id, h.attempt, h.attempt,
+                  why + ": " + std::to_string(losses) +
+                      " infrastructure losses, more than the cap of " +
+                      std::to_string(options_.max_infra_losses));
+    } else {
+      // Not the job's fault: a new attempt (the lost one's results become stale) that does not
+      // use the job's retries.
+      db_->Prepare(
+             "UPDATE jobs SET state = 'ready', attempt = attempt + 1, "
+             "max_attempts = max_attempts + 1, infra_losses = ?, worker_id = NULL, error = ?, "
+             "finished_at = ? WHERE id = ? AND attempt = ?")
+          .Bind(losses)
+          .Bind(why)
+          .Bind(Now())
+          .Bind(h.id)
+          .Bind(h.attempt)
+          .Run();
+    }
     UpdateCampaignState(h.campaign_id);
     ids.push_back(h.id);
   }
@@ -526,8 +547,8 @@ int ResultsStore::RetryFailed(const std::string& campaign_id) {
          "  THEN 'ready' ELSE 'pending' END, "
          "max_attempts = attempt + (SELECT c.max_attempts FROM campaigns c "
          "  WHERE c.id = jobs.campaign_id), "
-         "attempt = attempt + 1, worker_id = NULL, error = NULL, started_at = NULL, "
-         "finished_at = NULL "
+         "attempt = attempt + 1, infra_losses = 0, worker_id = NULL, error = NULL, "
+         "started_at = NULL, finished_at = NULL "
          "WHERE campaign_id = ? AND state IN ('failed', 'cancelled')")
       .Bind(campaign_id)
       .Run();

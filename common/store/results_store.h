@@ -42,6 +42,9 @@ struct StoreOptions {
   bool read_only = false;  // for readers (status, results, report): never writes, never migrates
   int busy_timeout_ms = 5000;
   std::function<double()> clock;  // seconds since the Unix epoch; default: the system clock
+  // A job lost with its worker goes back to the queue without using its retries, up to this
+  // many times; one more loss fails it.
+  int max_infra_losses = 10;
 };
 
 struct SubmitResult {

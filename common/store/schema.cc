@@ -140,6 +140,12 @@ constexpr const char* kVersion4 = R"sql(
 CREATE INDEX jobs_ready_by_kind ON jobs(state, campaign_id, kind, seq);
 )sql";
 
+// Version 5: losses of a job's worker (killed, host gone) counted apart from its own failures:
+// they give a new attempt without using the job's retries, up to a cap.
+constexpr const char* kVersion5 = R"sql(
+ALTER TABLE jobs ADD COLUMN infra_losses INTEGER NOT NULL DEFAULT 0;
+)sql";
+
 void ConvertArgvColumns(Database& db) {
   struct Row {
     std::string id;
@@ -180,7 +186,8 @@ const std::vector<Migration>& Migrations() {
       {1, kVersion1, nullptr, nullptr},
       {2, kVersion2, nullptr, nullptr},
       {3, kVersion3, ConvertArgvColumns, kVersion3After},
-      {4, kVersion4, nullptr, nullptr}};
+      {4, kVersion4, nullptr, nullptr},
+      {5, kVersion5, nullptr, nullptr}};
   return migrations;
 }
 

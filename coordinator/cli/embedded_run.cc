@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include "campaign/expansion.h"
 #include "cli/campaign_client.h"
 #include "cli/campaign_commands.h"
+#include "cli/crash_loop.h"
 #include "cli/progress_text.h"
 #include "config/number_text.h"
 #include "process/child_process.h"
@@ -68,6 +70,7 @@ class Daemon {
   void Start() {
     const std::string log = restarts_ == 0 ? log_ : log_ + "." + std::to_string(restarts_);
     process_ = std::make_unique<ChildProcess>(argv_(restarts_), "/dev/null", log);
+    started_ = SteadySeconds();
   }
   // Throws if it ended (before it was ever up: no point in restarting).
   void RequireRunning() {
@@ -76,18 +79,22 @@ class Daemon {
                                "): " + TailOfFile(log_));
     }
   }
-  // Restarts it if it ended; returns a line saying so, or "".
-  std::string KeepAlive(int max_restarts) {
+  // Restarts it if it ended, however often, unless it is crash-looping (then throws); returns
+  // a line saying so, or "".
+  std::string KeepAlive() {
     if (!process_ || !process_->Poll())
       return "";
     const std::string how = Describe(process_->exit_status());
-    if (restarts_ >= max_restarts) {
-      throw std::runtime_error(name_ + " ended (" + how + ") " + std::to_string(restarts_) +
-                               " times; see " + log_);
+    const ChildExit& exit = process_->exit_status();
+    crash_loop_.Died(started_, SteadySeconds(),
+                     !exit.exited && (exit.signal == SIGKILL || exit.signal == SIGTERM));
+    if (crash_loop_.CrashLooping()) {
+      throw std::runtime_error(name_ + " is crash-looping: it ended (" + how + ") " +
+                               crash_loop_.Describe() + "; see " + LastLog());
     }
     ++restarts_;
     Start();
-    return name_ + " ended (" + how + "); restarted";
+    return name_ + " ended (" + how + "); restarted (" + std::to_string(restarts_) + ")";
   }
   void Terminate() {
     if (process_)
@@ -102,7 +109,17 @@ class Daemon {
   std::string name_;
   CommandLine argv_;
   std::string log_;
+  static double SteadySeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+  }
+  std::string LastLog() const {
+    return restarts_ == 0 ? log_ : log_ + "." + std::to_string(restarts_);
+  }
+
   int restarts_ = 0;
+  double started_ = 0;
+  CrashLoopGuard crash_loop_;
   std::unique_ptr<ChildProcess> process_;
 };
 
@@ -259,7 +276,7 @@ int RunCampaign(const RunOptions& options) {
         return kExitInterrupted;
       }
       for (auto& d : daemons) {
-        const std::string note = d->KeepAlive(5);
+        const std::string note = d->KeepAlive();
         if (!note.empty())
           printer.Note(note);
       }

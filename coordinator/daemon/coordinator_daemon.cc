@@ -140,6 +140,7 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
       if (is_new) {
         Log(LogLevel::kInfo,
             "worker " + id + " joined (" + std::to_string(r.data.slots) + " slot(s))");
+        WithdrawStale(id, r.data.jobs);
         Republish(id);
       }
       continue;
@@ -167,57 +168,98 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
 }
 
 void CoordinatorDaemon::HandleJobEvents() {
+  // Events whose worker had not announced itself yet: a worker's status and its events travel
+  // on different topics, so after a coordinator restart (or a worker's return) an event can come
+  // first. They wait here a while, bounded, instead of being lost.
+  const double now = Now();
+  std::vector<DeferredEvent> waiting;
+  waiting.swap(deferred_events_);
+  for (auto& d : waiting) {
+    if (live_.count(d.event.worker_id) > 0) {
+      HandleJobEvent(d.event, d.sender);
+    } else if (now - d.since < kEventDeferralS) {
+      deferred_events_.push_back(std::move(d));
+    } else {
+      dropped_events_.Drop(d.sender, "worker " + d.event.worker_id + " is not live");
+    }
+  }
   for (const auto& r : dds_->events.Take()) {
     if (!r.valid)
       continue;
-    const msg::JobEvent& e = r.data;
     const std::string sender = dds_->events.WriterParticipant(r.writer);
-    std::string problem = r.decode_error.empty() ? CheckJobEvent(e) : r.decode_error;
-    if (problem.empty()) {
-      // Only the participant that announced the worker speaks for it.
-      const auto w = live_.find(e.worker_id);
-      if (w == live_.end())
-        problem = "worker " + e.worker_id + " is not live";
-      else if (sender.empty() || w->second.participant != sender)
-        problem = "not written by worker " + e.worker_id + "'s participant";
-    }
+    std::string problem = r.decode_error.empty() ? CheckJobEvent(r.data) : r.decode_error;
     if (!problem.empty()) {
       dropped_events_.Drop(sender.empty() ? "an unknown writer" : sender, problem);
       continue;
     }
-    const std::string key = e.job_id + "#" + std::to_string(e.attempt);
-    if (e.state == msg::JobState::kStarted || e.state == msg::JobState::kProgress) {
-      Log(LogLevel::kDebug, key + " on " + e.worker_id + ": " +
-                                (e.message.empty() ? std::string("started") : e.message));
-      if (e.state == msg::JobState::kProgress)
-        store_.SetProgress(e.job_id, e.attempt, e.message, e.worker_id);
+    if (live_.count(r.data.worker_id) == 0 && !sender.empty() &&
+        deferred_events_.size() < kMaxDeferredEvents) {
+      deferred_events_.push_back({r.data, sender, now});
       continue;
     }
-    JobUpdate update = JobUpdate::kUnknown;
-    if (e.state == msg::JobState::kSucceeded) {
-      nlohmann::json result;
-      try {
-        result = wire::ParseBoundedJson(e.result_json, wire::kMaxResultJson, "the result");
-      } catch (const std::invalid_argument& error) {
-        update = store_.RecordFailure(e.job_id, e.attempt, error.what(), e.worker_id);
-      }
-      if (update == JobUpdate::kUnknown)
-        update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id);
-    } else {
-      update = store_.RecordFailure(e.job_id, e.attempt, e.message, e.worker_id);
+    HandleJobEvent(r.data, sender);
+  }
+}
+
+void CoordinatorDaemon::HandleJobEvent(const msg::JobEvent& e, const std::string& sender) {
+  // Only the participant that announced the worker speaks for it.
+  std::string problem;
+  const auto w = live_.find(e.worker_id);
+  if (w == live_.end())
+    problem = "worker " + e.worker_id + " is not live";
+  else if (sender.empty() || w->second.participant != sender)
+    problem = "not written by worker " + e.worker_id + "'s participant";
+  if (!problem.empty()) {
+    dropped_events_.Drop(sender.empty() ? "an unknown writer" : sender, problem);
+    return;
+  }
+  const std::string key = e.job_id + "#" + std::to_string(e.attempt);
+  if (e.state == msg::JobState::kStarted || e.state == msg::JobState::kProgress) {
+    Log(LogLevel::kDebug, key + " on " + e.worker_id + ": " +
+                              (e.message.empty() ? std::string("started") : e.message));
+    if (e.state == msg::JobState::kProgress)
+      store_.SetProgress(e.job_id, e.attempt, e.message, e.worker_id);
+    return;
+  }
+  JobUpdate update = JobUpdate::kUnknown;
+  if (e.state == msg::JobState::kSucceeded) {
+    nlohmann::json result;
+    try {
+      result = wire::ParseBoundedJson(e.result_json, wire::kMaxResultJson, "the result");
+    } catch (const std::invalid_argument& error) {
+      update = store_.RecordFailure(e.job_id, e.attempt, error.what(), e.worker_id);
     }
-    if (update == JobUpdate::kUnknown || update == JobUpdate::kStale) {
-      // Not the worker's current attempt (late, duplicate, or not its job): nothing changed.
-      dropped_events_.Drop(sender, key + " from " + e.worker_id + " is " + ToString(update));
+    if (update == JobUpdate::kUnknown)
+      update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id);
+  } else {
+    update = store_.RecordFailure(e.job_id, e.attempt, e.message, e.worker_id);
+  }
+  if (update == JobUpdate::kUnknown || update == JobUpdate::kStale) {
+    // Not the worker's current attempt (late, duplicate, or not its job): nothing changed.
+    dropped_events_.Drop(sender, key + " from " + e.worker_id + " is " + ToString(update));
+    return;
+  }
+  Log(update == JobUpdate::kSucceeded ? LogLevel::kInfo : LogLevel::kWarning,
+      key + " from " + e.worker_id + ": " + ToString(update) +
+          (e.state == msg::JobState::kFailed ? " (" + e.message + ")" : ""));
+  // Settled: the assignment of this attempt goes.
+  const auto it = published_.find(e.job_id);
+  if (it != published_.end() && it->second.attempt == e.attempt)
+    Withdraw(e.job_id);
+}
+
+void CoordinatorDaemon::WithdrawStale(const std::string& worker_id,
+                                      const std::vector<std::string>& jobs) {
+  // A worker back after its lease ran out may still run jobs that went back to the queue (and
+  // maybe to another worker) meanwhile: their results would be stale, so stop them.
+  for (const auto& key : jobs) {
+    const std::string job_id = key.substr(0, key.rfind('#'));
+    const auto job = store_.GetJob(job_id);
+    if (job && job->state == "running" && job->worker_id == worker_id)
       continue;
-    }
-    Log(update == JobUpdate::kSucceeded ? LogLevel::kInfo : LogLevel::kWarning,
-        key + " from " + e.worker_id + ": " + ToString(update) +
-            (e.state == msg::JobState::kFailed ? " (" + e.message + ")" : ""));
-    // Settled: the assignment of this attempt goes.
-    const auto it = published_.find(e.job_id);
-    if (it != published_.end() && it->second.attempt == e.attempt)
-      Withdraw(e.job_id);
+    Log(LogLevel::kWarning, "worker " + worker_id + " came back with " + key +
+                                ", which is no longer its job; stopping it there");
+    Withdraw(job_id);
   }
 }
 
@@ -230,6 +272,8 @@ void CoordinatorDaemon::AfterGrace() {
   }
   for (const auto& worker_id : gone) {
     const auto requeued = scheduler_.WorkerLost(worker_id);
+    for (const auto& job_id : requeued)
+      Withdraw(job_id);
     store_.SetWorkerState(worker_id, "lost");
     Log(LogLevel::kWarning, "worker " + worker_id + " did not come back; " +
                                 std::to_string(requeued.size()) + " job(s) back to the queue");

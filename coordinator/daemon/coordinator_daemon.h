@@ -18,6 +18,7 @@
 #include <set>
 #include <string>
 
+#include "dds/messages.h"
 #include "dds/participant.h"
 #include "logging/drop_log.h"
 #include "process/file_lock.h"
@@ -55,10 +56,13 @@ class CoordinatorDaemon {
   void HandleRequests();
   void HandleWorkerStatuses();
   void HandleJobEvents();
+  void HandleJobEvent(const msg::JobEvent& event, const std::string& sender);
   void AfterGrace();
   // The round's scheduling decisions, written to the store; PublishTick sends them.
   TickResult Schedule();
   void PublishTick(const TickResult& tick);
+  // Withdraws the jobs a (re)joining worker lists that the store no longer gives it.
+  void WithdrawStale(const std::string& worker_id, const std::vector<std::string>& jobs);
   void Publish(const ReadyJob& job, const std::string& worker_id);
   void Republish(const std::string& worker_id);
   void Withdraw(const std::string& job_id);
@@ -73,6 +77,15 @@ class CoordinatorDaemon {
   std::unique_ptr<Endpoints> dds_;
   std::map<std::string, LiveWorker> live_;
   std::map<std::string, Published> published_;  // job id -> its live assignment
+  // Events that came before their worker's status (HandleJobEvents), oldest first.
+  struct DeferredEvent {
+    msg::JobEvent event;
+    std::string sender;
+    double since = 0;
+  };
+  static constexpr double kEventDeferralS = 10.0;
+  static constexpr std::size_t kMaxDeferredEvents = 4096;
+  std::vector<DeferredEvent> deferred_events_;
   std::map<std::string, std::map<std::string, std::string>> documents_;  // by campaign
   DropLog dropped_requests_{"campaign request"}, refused_requests_{"campaign request"},
       dropped_statuses_{"worker status"}, dropped_events_{"job event"};

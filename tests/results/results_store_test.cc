@@ -324,6 +324,8 @@ TEST_F(StoreTest, LostWorkerJobsGoBack) {
   const JobRecord job = Job("train/B/seed1");
   EXPECT_EQ(job.state, "ready");
   EXPECT_EQ(job.attempt, 2);
+  EXPECT_EQ(job.max_attempts, 3) << "a lost worker does not use the job's retries";
+  EXPECT_EQ(Query("SELECT infra_losses FROM jobs WHERE id = '" + Id("train/B/seed1") + "'"), "1");
   EXPECT_EQ(job.error, "worker w1 was lost");
   EXPECT_EQ(Job("position/C/oracle").state, "running");
   // The lost worker's result, should it still arrive, is stale.
@@ -334,6 +336,32 @@ TEST_F(StoreTest, LostWorkerJobsGoBack) {
   ASSERT_EQ(running.size(), 1u);
   EXPECT_EQ(running[0].worker_id, "w2");
   EXPECT_DOUBLE_EQ(running[0].started_at, 1000.0);
+}
+
+TEST_F(StoreTest, InfrastructureLossesHaveTheirOwnCap) {
+  store_.Submit(campaign_);
+  const std::string key = "position/B/oracle";
+  // Ten losses: each a new attempt, none of the job's retries used.
+  for (int loss = 1; loss <= 10; ++loss) {
+    Start(key, "w" + std::to_string(loss));
+    ASSERT_EQ(store_.RequeueWorker("w" + std::to_string(loss)).size(), 1u);
+    EXPECT_EQ(Job(key).state, "ready") << loss;
+    EXPECT_EQ(Job(key).max_attempts - Job(key).attempt, 1) << "retries left after loss " << loss;
+  }
+  // The eleventh fails it for good, and its evals with it.
+  Start(key, "w11");
+  store_.RequeueWorker("w11");
+  EXPECT_EQ(Job(key).state, "failed");
+  EXPECT_EQ(Job(key).error,
+            "worker w11 was lost: 11 infrastructure losses, more than the cap of 10");
+  EXPECT_EQ(Job("eval/B/oracle/run1").state, "failed");
+  // Its own failures still count against retries (1 here): a retry of the campaign starts over.
+  store_.RetryFailed(campaign_.id);
+  EXPECT_EQ(Query("SELECT infra_losses FROM jobs WHERE id = '" + Id(key) + "'"), "0");
+  const int attempt = Start(key);
+  EXPECT_EQ(store_.RecordFailure(Id(key), attempt, "boom"), JobUpdate::kRetrying);
+  EXPECT_EQ(store_.RecordFailure(Id(key), attempt + 1, "boom"), JobUpdate::kStale)
+      << "not running";
 }
 
 TEST_F(StoreTest, CancelThenRetry) {

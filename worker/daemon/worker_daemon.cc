@@ -132,8 +132,16 @@ void WorkerDaemon::TakeAssignments() {
       dropped_.Drop(sender.empty() ? "an unknown writer" : sender, r.decode_error);
       continue;
     }
-    if (r.data.worker_id != options_.id)
-      continue;  // another worker's
+    if (r.data.worker_id != options_.id) {
+      // Another worker's. If we run it, the job was requeued while we were away and given to
+      // that worker: our attempt is stale, stop it.
+      if (running_.count(job_id) > 0 && FromCoordinator(sender)) {
+        Log(LogLevel::kWarning, job_id + " now belongs to " + r.data.worker_id + "; stopping ours");
+        Settle(job_id);
+        changed = true;
+      }
+      continue;
+    }
     if (!FromCoordinator(sender)) {
       dropped_.Drop(sender.empty() ? "an unknown writer" : sender,
                     "not the coordinator this worker follows");
