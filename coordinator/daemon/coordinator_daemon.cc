@@ -30,10 +30,20 @@ struct CoordinatorDaemon::Endpoints {
   WaitSet wait_set;
 };
 
+namespace {
+
+StoreOptions StoreOptionsOf(const CoordinatorOptions& options) {
+  StoreOptions store;
+  store.max_infra_losses = options.max_infra_losses;
+  return store;
+}
+
+}  // namespace
+
 CoordinatorDaemon::CoordinatorDaemon(CoordinatorOptions options, const DdsOptions& dds)
     : options_(std::move(options)),
       lock_(options_.db_file + ".coordinator.lock"),
-      store_(options_.db_file),
+      store_(options_.db_file, StoreOptionsOf(options_)),
       scheduler_(store_),
       participant_(dds),
       dds_(std::make_unique<Endpoints>(participant_)) {

@@ -30,6 +30,7 @@ namespace rlpos {
 
 struct CoordinatorOptions {
   std::string db_file;
+  int max_infra_losses = 10;     // a job lost with its worker more often than this fails
   double tick_s = 0.25;          // scheduling period when nothing arrives
   double restart_grace_s = 5.0;  // wait for workers after start before judging running jobs
   SubmitLimits limits;           // what a submitted campaign may hold

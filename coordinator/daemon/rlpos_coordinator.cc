@@ -32,6 +32,10 @@ int main(int argc, char** argv) {
   app.add_option("--max-jobs", options.limits.max_jobs,
                  "Largest campaign a submit may expand to (default 200000)")
       ->check(CLI::Range(1, 10000000));
+  app.add_option("--max-infra-losses", options.max_infra_losses,
+                 "Times a job may be lost with its worker (not using its retries) before it "
+                 "fails (default 10)")
+      ->check(CLI::Range(0, 1000000));
   app.add_option("--log-level", log_level, "error|warning|info|debug")
       ->check(CLI::IsMember({"error", "warning", "info", "debug"}));
   try {

@@ -9,7 +9,9 @@ B=$!
   --tag "$TAG-c" --no-progress >"$WORK/c.out" 2>"$WORK/c.err" &
 C=$!
 BG_PIDS+=("$B" "$C")
-sleep 1
+# Once c's coordinator holds its database (the lock next to it), a second run on it must refuse.
+c_locked() { [ -f "$WORK/c/rlpos.db.coordinator.lock" ] && ! flock -n "$WORK/c/rlpos.db.coordinator.lock" true; }
+wait_until 60 c_locked || fail "campaign c's coordinator never took its database"
 set +e
 "$CAMPAIGN" run "$SRC/tests/e2e/campaigns/tiny_c.json" --workers 1 --db "$WORK/c/rlpos.db" \
   --no-progress >/dev/null 2>"$WORK/busy.err"

@@ -10,15 +10,19 @@ running_on_w0() {
     AND kind = 'eval' AND worker_id = '$TAG-w0'" 2>/dev/null)" = 1 ]
 }
 wait_until 240 running_on_w0 || fail "no eval job ever ran on worker w0"
-sleep 0.5
 JOB=$(sql "$DB" "SELECT id FROM jobs WHERE state = 'running' AND worker_id = '$TAG-w0'")
-# `status` from another terminal while it runs.
-"$CAMPAIGN" status --db "$DB" | grep -q "running" || fail "status shows nothing running"
+# In the middle of the eval: its rlpos-sim runs under w0.
+W0=$(pgrep -f -- "rlpos-worker --id $TAG-w0 ") || fail "no process for worker w0"
+sim_running() { pgrep -P "$W0" -f -- "rlpos-sim eval" >/dev/null; }
+wait_until 60 sim_running || fail "the eval never started on w0"
+# `status` from another terminal while it runs: jobs running.
+"$CAMPAIGN" status --db "$DB" | grep -Eq "(^| )[1-9][0-9]* running" || fail "status does not show the running job"
 pkill -KILL -f -- "rlpos-worker --id $TAG-w0 " || fail "could not kill worker w0"
 wait "$RUN" || { cat "$WORK/err.txt" >&2; fail "run exited non-zero"; }
 
 expect_complete "$DB" 12
 expect_eq "attempt of the killed job" "$(sql "$DB" "SELECT attempt FROM jobs WHERE id = '$JOB'")" 2
+expect_eq "its infrastructure losses" "$(sql "$DB" "SELECT infra_losses FROM jobs WHERE id = '$JOB'")" 1
 grep -q "rlpos-worker $TAG-w0 ended (signal 9" "$WORK/err.txt" || fail "the runner did not restart w0"
 expect_eq "killed worker state" "$(sql "$DB" "SELECT state FROM workers WHERE id = '$TAG-w0'")" lost
 echo "ok: killed worker's job $JOB ran again"
