@@ -361,9 +361,9 @@ void CoordinatorDaemon::PublishTick(const TickResult& tick) {
     Withdraw(t.job.id);
   }
   for (const auto& a : tick.assigned) {
+    // No optimistic busy count here: the store's running jobs count for the next round, and a
+    // job that never reached its worker (and times out) must not hold its slot for ever.
     Publish(a.job, a.worker_id);
-    if (auto it = live_.find(a.worker_id); it != live_.end())
-      ++it->second.slots.busy;
     Log(LogLevel::kDebug,
         "assigned " + a.job.id + "#" + std::to_string(a.job.attempt) + " to " + a.worker_id);
   }

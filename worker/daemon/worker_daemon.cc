@@ -116,6 +116,21 @@ void WorkerDaemon::Start(msg::JobAssignment a) {
 
 void WorkerDaemon::TakeAssignments() {
   bool changed = false;
+  // Assignments from a coordinator this worker does not follow (yet) wait: after a coordinator
+  // restart the new one can publish before the old one's writer is gone (its lease), and its
+  // jobs must not be lost. They run once it is the one followed, or go after a while.
+  const auto now = std::chrono::steady_clock::now();
+  std::map<std::string, PendingAssignment> waiting;
+  waiting.swap(pending_);
+  for (auto& [job_id, p] : waiting) {
+    if (FromCoordinator(p.sender)) {
+      changed = Consider(std::move(p.assignment)) || changed;
+    } else if (now - p.since < kPendingFor) {
+      pending_.emplace(job_id, std::move(p));
+    } else {
+      dropped_.Drop(p.sender, "not the coordinator this worker follows");
+    }
+  }
   for (auto& r : dds_->assignments.Take()) {
     const std::string& job_id = r.data.order.job_id;
     const std::string sender = dds_->assignments.WriterParticipant(r.writer);
@@ -125,6 +140,7 @@ void WorkerDaemon::TakeAssignments() {
       if (r.state == InstanceState::kDisposed && !sender.empty() && sender == coordinator_) {
         changed = changed || running_.count(job_id) > 0;
         Settle(job_id);
+        pending_.erase(job_id);
       }
       continue;
     }
@@ -142,25 +158,33 @@ void WorkerDaemon::TakeAssignments() {
       }
       continue;
     }
-    if (!FromCoordinator(sender)) {
-      dropped_.Drop(sender.empty() ? "an unknown writer" : sender,
-                    "not the coordinator this worker follows");
-      continue;
-    }
-    const auto taken = taken_.find(job_id);
-    if (taken != taken_.end() && taken->second >= r.data.order.attempt)
-      continue;  // republished after a coordinator restart, or older than what we run
     if (!wire::IsSafePath(job_id, wire::kMaxIdLength) || r.data.order.attempt < 1 ||
         r.data.order.attempt > wire::kMaxAttempt) {
       // Not even a job we could report on: drop it.
       dropped_.Drop(sender.empty() ? "an unknown writer" : sender, "bad job id or attempt");
       continue;
     }
-    Start(std::move(r.data));
-    changed = true;
+    if (!FromCoordinator(sender)) {
+      if (sender.empty() || pending_.size() >= kMaxPending) {
+        dropped_.Drop(sender.empty() ? "an unknown writer" : sender,
+                      "not the coordinator this worker follows");
+      } else {
+        pending_[job_id] = {std::move(r.data), sender, now};
+      }
+      continue;
+    }
+    changed = Consider(std::move(r.data)) || changed;
   }
   if (changed)
     PublishStatus();
+}
+
+bool WorkerDaemon::Consider(msg::JobAssignment a) {
+  const auto taken = taken_.find(a.order.job_id);
+  if (taken != taken_.end() && taken->second >= a.order.attempt)
+    return false;  // republished after a coordinator restart, or older than what we run
+  Start(std::move(a));
+  return true;
 }
 
 void WorkerDaemon::PollJobs() {

@@ -5,6 +5,7 @@
 // (JobAttempt), report started / progress / succeeded / failed (JobEvent), and stop a job whose
 // assignment is disposed. A disposed assignment also ends the job's event instance here: the
 // worker keeps nothing per finished job.
+#include <chrono>
 #include <map>
 #include <memory>
 #include <set>
@@ -41,6 +42,9 @@ class WorkerDaemon {
   void ReportProgress();
   void Settle(const std::string& job_id);
   void Start(msg::JobAssignment assignment);
+  // Starts an assignment from the followed coordinator unless it has that attempt already;
+  // true if it started.
+  bool Consider(msg::JobAssignment assignment);
   bool FromCoordinator(const std::string& sender);
 
   WorkerOptions options_;
@@ -51,6 +55,15 @@ class WorkerDaemon {
   // Attempts this worker took, by job id, until the coordinator settles the job: a republished
   // assignment (coordinator restart) never runs twice. Their event instances are registered.
   std::map<std::string, int> taken_;
+  // Assignments from a coordinator not followed yet, by job id (TakeAssignments).
+  struct PendingAssignment {
+    msg::JobAssignment assignment;
+    std::string sender;
+    std::chrono::steady_clock::time_point since;
+  };
+  static constexpr std::chrono::seconds kPendingFor{30};
+  static constexpr std::size_t kMaxPending = 1024;
+  std::map<std::string, PendingAssignment> pending_;
   // The participant whose assignments this worker follows: the first to send it a job, until
   // that participant's writer is gone (a restarted coordinator is a new participant).
   std::string coordinator_;
