@@ -136,6 +136,24 @@ void StoreBatch::Commit() { transaction_->Commit(); }
 
 StoreBatch ResultsStore::Batch() { return StoreBatch(std::make_unique<Transaction>(*db_)); }
 
+std::vector<std::string> ResultsStore::CampaignBuilds(const std::string& campaign_id) {
+  Statement select = db_->Prepare(
+      "SELECT DISTINCT rlpos_version, ns3_version, torch_version, cyclonedds_version FROM jobs "
+      "WHERE campaign_id = ? AND state = 'succeeded' AND rlpos_version IS NOT NULL "
+      "ORDER BY 1, 2, 3, 4");
+  select.Bind(campaign_id);
+  std::vector<std::string> builds;
+  while (select.Step()) {
+    Provenance p;
+    p.rlpos_version = select.Text(0);
+    p.ns3_version = select.OptionalText(1).value_or("?");
+    p.torch_version = select.OptionalText(2).value_or("?");
+    p.cyclonedds_version = select.OptionalText(3).value_or("?");
+    builds.push_back(DescribeBuild(p));
+  }
+  return builds;
+}
+
 int ResultsStore::SchemaVersion() {
   return ReadSchemaVersion(*db_);
 }
@@ -269,7 +287,8 @@ bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& wor
 }
 
 JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, const json& result,
-                                      const std::string& worker_id) {
+                                      const std::string& worker_id,
+                                      const Provenance* provenance) {
   Transaction transaction(*db_);
   Statement select = db_->Prepare(
       "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run, x, y, z, "
@@ -326,6 +345,22 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
       .Bind(job_id)
       .Bind(attempt)
       .Run();
+  if (provenance) {
+    const auto text = [](const std::string& v) {
+      return v.empty() ? std::nullopt : std::optional<std::string>(v);
+    };
+    db_->Prepare(
+           "UPDATE jobs SET host = ?, rlpos_version = ?, ns3_version = ?, torch_version = ?, "
+           "cyclonedds_version = ?, scenario_sha256 = ? WHERE id = ?")
+        .Bind(text(provenance->host))
+        .Bind(text(provenance->rlpos_version))
+        .Bind(text(provenance->ns3_version))
+        .Bind(text(provenance->torch_version))
+        .Bind(text(provenance->cyclonedds_version))
+        .Bind(text(provenance->scenario_sha256))
+        .Bind(job_id)
+        .Run();
+  }
 
   if (kind == JobKind::kEval) {
     // job_id is the primary key: a second row for the same job cannot exist.

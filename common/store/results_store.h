@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "campaign/expansion.h"
+#include "provenance/provenance.h"
 
 namespace rlpos {
 
@@ -146,6 +147,9 @@ class ResultsStore {
 
   const std::string& file() const;
   int SchemaVersion();
+  // The distinct builds (DescribeBuild) of a campaign's succeeded jobs that recorded one: more
+  // than one means its results come from mixed versions.
+  std::vector<std::string> CampaignBuilds(const std::string& campaign_id);
   // Every write until the batch's Commit goes to disk as one transaction.
   StoreBatch Batch();
 
@@ -160,8 +164,10 @@ class ResultsStore {
   // A result of train/position jobs must hold "position": [x, y, z]; of eval jobs, the metrics
   // of rlpos::ToJson(RunMetrics). A malformed result counts as a failed attempt.
   // `worker_id` non-empty: only the worker that holds the attempt may settle it (else kStale).
+  // `provenance` (when given) is kept on the row: host, build versions, scenario sha256.
   JobUpdate RecordSuccess(const std::string& job_id, int attempt, const nlohmann::json& result,
-                          const std::string& worker_id = "");
+                          const std::string& worker_id = "",
+                          const Provenance* provenance = nullptr);
   JobUpdate RecordFailure(const std::string& job_id, int attempt, const std::string& error,
                           const std::string& worker_id = "");
   // The worker is gone: each of its running jobs fails that attempt ("worker W was lost") and

@@ -146,6 +146,17 @@ constexpr const char* kVersion5 = R"sql(
 ALTER TABLE jobs ADD COLUMN infra_losses INTEGER NOT NULL DEFAULT 0;
 )sql";
 
+// Version 6: provenance of each result: the host that ran it, its build, and the sha256 of the
+// scenario document it ran.
+constexpr const char* kVersion6 = R"sql(
+ALTER TABLE jobs ADD COLUMN host TEXT;
+ALTER TABLE jobs ADD COLUMN rlpos_version TEXT;
+ALTER TABLE jobs ADD COLUMN ns3_version TEXT;
+ALTER TABLE jobs ADD COLUMN torch_version TEXT;
+ALTER TABLE jobs ADD COLUMN cyclonedds_version TEXT;
+ALTER TABLE jobs ADD COLUMN scenario_sha256 TEXT;
+)sql";
+
 void ConvertArgvColumns(Database& db) {
   struct Row {
     std::string id;
@@ -187,7 +198,8 @@ const std::vector<Migration>& Migrations() {
       {2, kVersion2, nullptr, nullptr},
       {3, kVersion3, ConvertArgvColumns, kVersion3After},
       {4, kVersion4, nullptr, nullptr},
-      {5, kVersion5, nullptr, nullptr}};
+      {5, kVersion5, nullptr, nullptr},
+      {6, kVersion6, nullptr, nullptr}};
   return migrations;
 }
 

@@ -51,6 +51,12 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
         std::cout << "  failed: " << f.key << " after " << f.attempts << " attempt(s): " << f.error
                   << "\n";
       }
+      if (const auto builds = store.CampaignBuilds(c.campaign_id); builds.size() > 1) {
+        std::cout << "  warning: results from " << builds.size() << " different builds:";
+        for (const auto& b : builds)
+          std::cout << "\n    " << b;
+        std::cout << "\n";
+      }
     }
     bool settled = true;
     for (const auto& c : campaigns)

@@ -240,7 +240,7 @@ void CoordinatorDaemon::HandleJobEvent(const msg::JobEvent& e, const std::string
       update = store_.RecordFailure(e.job_id, e.attempt, error.what(), e.worker_id);
     }
     if (update == JobUpdate::kUnknown)
-      update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id);
+      update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id, &e.provenance);
   } else {
     update = store_.RecordFailure(e.job_id, e.attempt, e.message, e.worker_id);
   }

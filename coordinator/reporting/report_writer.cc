@@ -28,7 +28,18 @@ ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
     return path;
   };
   write("summary.csv", FormatSummaryCsv(summary));
-  write("summary.md", FormatReportMarkdown(progress, summary));
+  std::string markdown = FormatReportMarkdown(progress, summary);
+  const auto builds = store.CampaignBuilds(campaign_id);
+  if (builds.size() > 1) {
+    std::string list;
+    for (const auto& b : builds)
+      list += (list.empty() ? "" : "; ") + b;
+    const std::string warning = "the results come from " + std::to_string(builds.size()) +
+                                " different builds: " + list;
+    result.warnings.push_back(warning);
+    markdown += "\n**Warning:** " + warning + ".\n";
+  }
+  write("summary.md", markdown);
   const std::string throughput_csv =
       write("throughput_ccdf.csv", FormatThroughputCcdfCsv(throughput));
   const std::string delay_csv = write("delay_cdf.csv", FormatDelayCdfCsv(delay));

@@ -64,6 +64,19 @@ std::string CheckJobEvent(const msg::JobEvent& e) {
     return "result too large";
   if (e.message.size() > wire::kMaxMessage)
     return "message too long";
+  const Provenance& p = e.provenance;
+  for (const std::string* field : {&p.host, &p.rlpos_version, &p.ns3_version, &p.torch_version,
+                                   &p.cyclonedds_version}) {
+    if (!IsPrintable(*field, wire::kMaxNameLength))
+      return "bad provenance";
+  }
+  if (!p.scenario_sha256.empty()) {
+    bool hex = p.scenario_sha256.size() == 64;
+    for (const char c : p.scenario_sha256)
+      hex = hex && ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'));
+    if (!hex)
+      return "bad scenario_sha256";
+  }
   return "";
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "provenance/provenance.h"
 #include "wire/job_order.h"
 
 namespace rlpos::msg {
@@ -30,6 +31,7 @@ struct JobEvent {
   std::string worker_id;
   JobState state = JobState::kStarted;
   std::string result_json, message;
+  Provenance provenance;  // kSucceeded, kFailed
 };
 
 enum class RequestKind { kSubmit, kCancel, kRetry };

@@ -284,6 +284,14 @@ struct Traits<msg::JobEvent> {
     h.c.state = static_cast<rlpos_msg_JobState>(m.state);
     h.c.result_json = BorrowOctets(m.result_json, wire::kMaxResultJson, "result_json");
     CopyIn(h.c.message, m.message, "message");
+    const Provenance& p = m.provenance;
+    auto& cp = h.c.provenance;
+    CopyIn(cp.host, p.host, "provenance host");
+    CopyIn(cp.rlpos_version, p.rlpos_version, "provenance rlpos_version");
+    CopyIn(cp.ns3_version, p.ns3_version, "provenance ns3_version");
+    CopyIn(cp.torch_version, p.torch_version, "provenance torch_version");
+    CopyIn(cp.cyclonedds_version, p.cyclonedds_version, "provenance cyclonedds_version");
+    CopyIn(cp.scenario_sha256, p.scenario_sha256, "provenance scenario_sha256");
   }
   static msg::JobEvent FromC(const C& c, bool valid, std::string& error) {
     msg::JobEvent m;
@@ -295,6 +303,10 @@ struct Traits<msg::JobEvent> {
     m.state = CheckedEnum<msg::JobState>(RawEnum(c.state), 4, "state", error);
     m.result_json = CopyOctets(c.result_json, wire::kMaxResultJson, "result_json", error);
     m.message = CopyOut(c.message);
+    m.provenance = {CopyOut(c.provenance.host),          CopyOut(c.provenance.rlpos_version),
+                    CopyOut(c.provenance.ns3_version),   CopyOut(c.provenance.torch_version),
+                    CopyOut(c.provenance.cyclonedds_version),
+                    CopyOut(c.provenance.scenario_sha256)};
     return m;
   }
 };

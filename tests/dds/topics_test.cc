@@ -161,6 +161,8 @@ TEST_F(TopicsTest, JobEventRoundTripEveryState) {
     e.state = states[i];
     e.result_json = i == 2 ? R"({"position":[1.5,2,3]})" : "";
     e.message = i == 3 ? "line one\nline \"two\" [exit code 1]" : "episode 3/10";
+    e.provenance = {"host-" + std::to_string(i), "v0.1-" + std::to_string(i) + "-gabc", "3.37",
+                    "1.13.0", "0.10.2", std::string(64, 'a' + static_cast<char>(i))};
     writer.Write(e);
     sent.push_back(e);
   }
@@ -174,6 +176,11 @@ TEST_F(TopicsTest, JobEventRoundTripEveryState) {
     EXPECT_EQ(got[i].state, sent[i].state);
     EXPECT_EQ(got[i].result_json, sent[i].result_json);
     EXPECT_EQ(got[i].message, sent[i].message);
+    const Provenance &a = got[i].provenance, &b = sent[i].provenance;
+    EXPECT_EQ(std::tie(a.host, a.rlpos_version, a.ns3_version, a.torch_version,
+                       a.cyclonedds_version, a.scenario_sha256),
+              std::tie(b.host, b.rlpos_version, b.ns3_version, b.torch_version,
+                       b.cyclonedds_version, b.scenario_sha256));
   }
 }
 

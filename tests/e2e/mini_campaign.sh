@@ -9,6 +9,11 @@ ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
 [ -n "$ID" ] || fail "run printed no campaign id"
 
 expect_complete "$DB" 44
+# Provenance on every result: the host, this build, and the sha256 of the scenario it ran.
+expect_eq "succeeded jobs without provenance" "$(sql "$DB" "SELECT COUNT(*) FROM jobs
+  WHERE state = 'succeeded' AND (host IS NULL OR rlpos_version IS NULL OR ns3_version IS NULL
+  OR torch_version IS NULL OR cyclonedds_version IS NULL OR length(scenario_sha256) != 64)")" 0
+expect_eq "builds of the campaign" "$(sql "$DB" "SELECT COUNT(DISTINCT rlpos_version) FROM jobs")" 1
 expect_eq "eval jobs" "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE kind = 'eval'")" 36
 # Plausible: throughput within what one 802.11ac UAV can carry, nLoS within 0..N, delays
 # positive; the oracle's position sees every UE of B, and the RL position beats the baseline.

@@ -198,6 +198,9 @@ TEST(WireFuzz, JobEventDecoderAndCheck) {
     FuzzChars(c.job_id, "c0ffee012345/eval/B/baseline/run1", in);
     FuzzChars(c.worker_id, "w1", in);
     FuzzChars(c.message, "", in);
+    FuzzChars(c.provenance.host, "host-a", in);
+    FuzzChars(c.provenance.rlpos_version, "v0.1-12-gabcdef", in);
+    FuzzChars(c.provenance.scenario_sha256, std::string(64, 'e'), in);
     c.attempt = in.Chance(0.97) ? 1 : static_cast<std::int32_t>(in.WeirdInteger());
     FuzzEnum(c.state, rlpos_msg_JOB_SUCCEEDED, in);
     FuzzOctets(c.result_json, storage, result, wire::kMaxResultJson, in, false);

@@ -227,8 +227,9 @@ TEST_F(JobAttemptTest, TheScenarioFileIsTheEffectiveDocumentOfEachKind) {
     EXPECT_EQ(written["name"], "B");
     // Only an eval runs the job's RngRun; the others keep the scenario's.
     EXPECT_EQ(simulation["run"], kind == JobKind::kEval ? 3 : 1);
-    if (kind == JobKind::kTrain)
+    if (kind == JobKind::kTrain) {
       EXPECT_EQ(written["agent"]["train_episodes"], 25);
+    }
   }
 }
 

@@ -338,6 +338,27 @@ TEST_F(StoreTest, LostWorkerJobsGoBack) {
   EXPECT_DOUBLE_EQ(running[0].started_at, 1000.0);
 }
 
+TEST_F(StoreTest, ProvenanceIsKeptAndMixedBuildsAreTold) {
+  store_.Submit(campaign_);
+  Provenance a{"host-a", "v1-3-gabc", "3.37", "1.13.0", "0.10.2", std::string(64, 'f')};
+  int attempt = Start("position/B/baseline");
+  ASSERT_EQ(store_.RecordSuccess(Id("position/B/baseline"), attempt, PositionResult(50, 50, 25),
+                                 "w1", &a),
+            JobUpdate::kSucceeded);
+  EXPECT_EQ(Query("SELECT host || ' ' || rlpos_version || ' ' || ns3_version || ' ' || "
+                  "torch_version || ' ' || cyclonedds_version || ' ' || scenario_sha256 FROM jobs "
+                  "WHERE id = '" + Id("position/B/baseline") + "'"),
+            "host-a v1-3-gabc 3.37 1.13.0 0.10.2 " + std::string(64, 'f'));
+  EXPECT_EQ(store_.CampaignBuilds(campaign_.id),
+            std::vector<std::string>{"rlpos v1-3-gabc, ns-3 3.37, libtorch 1.13.0, Cyclone DDS 0.10.2"});
+  // Another job from another build: the campaign's results are mixed.
+  Provenance b = a;
+  b.rlpos_version = "v1-4-gdef";
+  attempt = Start("position/C/baseline");
+  store_.RecordSuccess(Id("position/C/baseline"), attempt, PositionResult(50, 50, 25), "w1", &b);
+  EXPECT_EQ(store_.CampaignBuilds(campaign_.id).size(), 2u);
+}
+
 TEST_F(StoreTest, InfrastructureLossesHaveTheirOwnCap) {
   store_.Submit(campaign_);
   const std::string key = "position/B/oracle";

@@ -1,5 +1,7 @@
 #include "daemon/job_attempt.h"
 
+#include "dds/security/pki.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -80,10 +82,12 @@ JobAttempt::JobAttempt(JobOrder order, const nlohmann::json& scenario, const std
   if (error)
     throw std::runtime_error(folder_ + ": " + error.message());
   {
+    const std::string text = scenario.dump(2) + '\n';
     std::ofstream out(fs::path(folder_) / kScenarioFileName);
-    out << scenario.dump(2) << '\n';
+    out << text;
     if (!out)
       throw std::runtime_error(folder_ + "/" + kScenarioFileName + ": cannot write");
+    scenario_sha256_ = pki::Sha256Hex(text);
   }
   const auto argv = SimCommandLine(order_, sim_binary, folder_);
   {

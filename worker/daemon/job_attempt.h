@@ -33,6 +33,8 @@ class JobAttempt {
 
   const JobOrder& order() const { return order_; }
   std::string Key() const;  // "<job id>#<attempt>"
+  // Of the scenario file the child runs, as written.
+  const std::string& scenario_sha256() const { return scenario_sha256_; }
   // Non-blocking: the outcome once the child ended or ran past its timeout (then killed).
   std::optional<JobOutcome> Poll();
   // Stops the child (the coordinator withdrew the job); no outcome is reported.
@@ -43,6 +45,7 @@ class JobAttempt {
  private:
   JobOrder order_;
   std::string folder_;
+  std::string scenario_sha256_;
   std::chrono::steady_clock::time_point started_;
   std::unique_ptr<ChildProcess> child_;
 };

@@ -26,8 +26,11 @@ struct WorkerDaemon::Endpoints {
 
 WorkerDaemon::WorkerDaemon(WorkerOptions options, const DdsOptions& dds)
     : options_(std::move(options)),
+      build_(ThisBuild()),
       participant_(dds),
-      dds_(std::make_unique<Endpoints>(participant_)) {}
+      dds_(std::make_unique<Endpoints>(participant_)) {
+  build_.host = HostName();
+}
 
 WorkerDaemon::~WorkerDaemon() = default;
 
@@ -202,6 +205,8 @@ void WorkerDaemon::PollJobs() {
     event.state = outcome->succeeded ? msg::JobState::kSucceeded : msg::JobState::kFailed;
     event.result_json = outcome->result_json;
     event.message = outcome->error.substr(0, wire::kMaxMessage - 1);
+    event.provenance = build_;
+    event.provenance.scenario_sha256 = it->second->scenario_sha256();
     if (event.result_json.size() > wire::kMaxResultJson) {
       event.state = msg::JobState::kFailed;
       event.result_json.clear();

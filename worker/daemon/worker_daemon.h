@@ -48,6 +48,7 @@ class WorkerDaemon {
   bool FromCoordinator(const std::string& sender);
 
   WorkerOptions options_;
+  Provenance build_;  // this build and host, sent with each result
   Participant participant_;
   std::unique_ptr<Endpoints> dds_;
   std::map<std::string, std::unique_ptr<JobAttempt>> running_;  // by job id

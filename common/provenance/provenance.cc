@@ -1,0 +1,21 @@
+#include "provenance/provenance.h"
+
+#include "rlpos_build_info.h"
+
+namespace rlpos {
+
+Provenance ThisBuild() {
+  Provenance p;
+  p.rlpos_version = RLPOS_BUILD_VERSION;
+  p.ns3_version = RLPOS_BUILD_NS3_VERSION;
+  p.torch_version = RLPOS_BUILD_TORCH_VERSION;
+  p.cyclonedds_version = RLPOS_BUILD_CYCLONEDDS_VERSION;
+  return p;
+}
+
+std::string DescribeBuild(const Provenance& p) {
+  return "rlpos " + p.rlpos_version + ", ns-3 " + p.ns3_version + ", libtorch " +
+         p.torch_version + ", Cyclone DDS " + p.cyclonedds_version;
+}
+
+}  // namespace rlpos
