@@ -38,7 +38,8 @@ std::string DescribeDds(const DdsOptions& options) {
 
 msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignRequest request,
                                        double timeout_s,
-                                       const std::function<void()>& while_waiting) {
+                                       const std::function<void()>& while_waiting,
+                                       const ReplyCheck& check) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(timeout_s));
@@ -63,17 +64,25 @@ msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignReque
   }
   request.request_id = NewRequestId();
   requests.Write(request);
+  std::string refused;  // why the first reply that `check` refused was refused
   while (Clock::now() < deadline) {
     const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
     wait_set.Wait(std::max(0.0, std::min(left, 0.1)));
     if (while_waiting)
       while_waiting();
     for (const auto& r : replies.Take()) {
-      if (r.valid && r.decode_error.empty() &&
-          CheckCampaignReply(r.data, request.request_id).empty())
+      if (!r.valid || !r.decode_error.empty() ||
+          !CheckCampaignReply(r.data, request.request_id).empty())
+        continue;
+      const std::string problem = check ? check(r.data) : "";
+      if (problem.empty())
         return r.data;
+      if (refused.empty())
+        refused = problem;
     }
   }
+  if (!refused.empty())
+    throw std::runtime_error(refused);
   throw no_answer();
 }
 

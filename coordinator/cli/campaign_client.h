@@ -24,11 +24,17 @@ std::string DescribeDds(const DdsOptions& options);
 // The submit request of a campaign read by ReadCampaignSubmission.
 msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission);
 
+// What a submit's reply must say beyond CheckCampaignReply: "" to accept it, else why not.
+using ReplyCheck = std::function<std::string(const msg::CampaignReply&)>;
+
 // Fills in request_id; throws NoCoordinatorError when no coordinator is matched or answers
 // within `timeout_s`. `while_waiting` is called every few tens of ms while it waits (the
-// embedded runner checks there that its coordinator is still alive; it may throw).
+// embedded runner checks there that its coordinator is still alive; it may throw). A reply
+// that `check` refuses is not the answer: it keeps waiting (on an unsecured network anyone can
+// forge a reply) and, if no acceptable one comes, throws std::runtime_error with the reason.
 msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignRequest request,
                                        double timeout_s,
-                                       const std::function<void()>& while_waiting = {});
+                                       const std::function<void()>& while_waiting = {},
+                                       const ReplyCheck& check = {});
 
 }  // namespace rlpos

@@ -30,13 +30,15 @@ msg::CampaignReply RequestOnCampaign(msg::RequestKind kind, const std::string& c
 int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, double timeout_s) {
   const CampaignSubmission submission = ReadCampaignSubmission(campaign_file);
   const ExpandedCampaign& campaign = submission.campaign;
-  const msg::CampaignReply reply = SendCampaignRequest(dds, SubmitRequest(submission), timeout_s);
+  const msg::CampaignReply reply = SendCampaignRequest(
+      dds, SubmitRequest(submission), timeout_s, {}, [&](const msg::CampaignReply& r) {
+        return !r.ok || r.campaign_id == campaign.id
+                   ? std::string()
+                   : "the coordinator expanded the campaign to " + r.campaign_id + ", not " +
+                         campaign.id + " (different rlpos versions?)";
+      });
   if (!reply.ok)
     return Refused(reply);
-  if (reply.campaign_id != campaign.id) {
-    throw std::runtime_error("the coordinator expanded the campaign to " + reply.campaign_id +
-                             ", not " + campaign.id + " (different rlpos versions?)");
-  }
   std::cout << reply.campaign_id << "\n";
   std::cerr << (reply.created ? "submitted " : "already submitted ") << campaign.name << ": "
             << reply.jobs << " jobs\n";
