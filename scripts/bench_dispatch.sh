@@ -11,7 +11,8 @@
 #   DB B/job    database size per job
 # Usage: scripts/bench_dispatch.sh [N_JOBS] [WORKERS] [SLOTS] [BUILD_DIR]
 # RLPOS_BENCH_PERF=DIR also records the coordinator with `perf record -g` into DIR/<mode>.data.
-# RLPOS_BENCH_MODES="unsecured secured" (default) picks the modes.
+# RLPOS_BENCH_MODES="xargs unsecured secured" (default) picks the modes; xargs runs the same
+# stand-in N times with `xargs -P W*S` (no runner at all), for the ratio.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 jobs=${1:-1000}
@@ -102,8 +103,22 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
 echo "bench_dispatch: $jobs eval jobs (+1 position), $workers workers x $slots slots, loopback, $(nproc) cores"
 echo "| mode | discovery | jobs | jobs/s | coord CPU ms/job | coord peak RSS | DB B/job |"
 echo "|---|---|---|---|---|---|---|"
-for mode in ${RLPOS_BENCH_MODES:-unsecured secured}; do
+run_xargs() {
+  mkdir -p "$work/xargs"
+  python3 -c "import json,sys; d=json.load(open(sys.argv[1])); json.dump(d, open(sys.argv[2],'w'))" \
+    "$here/campaigns/scenarios/b.json" "$work/xargs/scenario.json"
+  local t0 t1
+  t0=$(date +%s.%N)
+  seq "$jobs" | xargs -P $((workers * slots)) -I{} "$bin/rlpos-standin-sim" eval \
+    --scenario "$work/xargs/scenario.json" --position 50,50,25 --json --no-progress >/dev/null
+  t1=$(date +%s.%N)
+  printf '| xargs -P %d | - | %d | %.0f | - | - | - |\n' $((workers * slots)) "$jobs" \
+    "$(echo "$jobs / ($t1 - $t0)" | bc -l)"
+}
+
+for mode in ${RLPOS_BENCH_MODES:-xargs unsecured secured}; do
   case $mode in
+    xargs) run_xargs ;;
     unsecured) run_mode unsecured ;;
     secured) run_mode secured --security "$work/sec" ;;
     *) echo "unknown mode $mode" >&2; exit 2 ;;
