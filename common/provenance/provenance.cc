@@ -14,8 +14,8 @@ Provenance ThisBuild() {
 }
 
 std::string DescribeBuild(const Provenance& p) {
-  return "rlpos " + p.rlpos_version + ", ns-3 " + p.ns3_version + ", libtorch " +
-         p.torch_version + ", Cyclone DDS " + p.cyclonedds_version;
+  return "rlpos " + p.rlpos_version + ", ns-3 " + p.ns3_version + ", libtorch " + p.torch_version +
+         ", Cyclone DDS " + p.cyclonedds_version;
 }
 
 }  // namespace rlpos

@@ -132,9 +132,13 @@ StoreBatch::StoreBatch(std::unique_ptr<Transaction> transaction)
     : transaction_(std::move(transaction)) {}
 StoreBatch::~StoreBatch() = default;
 StoreBatch::StoreBatch(StoreBatch&&) noexcept = default;
-void StoreBatch::Commit() { transaction_->Commit(); }
+void StoreBatch::Commit() {
+  transaction_->Commit();
+}
 
-StoreBatch ResultsStore::Batch() { return StoreBatch(std::make_unique<Transaction>(*db_)); }
+StoreBatch ResultsStore::Batch() {
+  return StoreBatch(std::make_unique<Transaction>(*db_));
+}
 
 std::vector<std::string> ResultsStore::CampaignBuilds(const std::string& campaign_id) {
   Statement select = db_->Prepare(
@@ -287,8 +291,7 @@ bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& wor
 }
 
 JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, const json& result,
-                                      const std::string& worker_id,
-                                      const Provenance* provenance) {
+                                      const std::string& worker_id, const Provenance* provenance) {
   Transaction transaction(*db_);
   Statement select = db_->Prepare(
       "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run, x, y, z, "

@@ -193,17 +193,18 @@ void ConvertArgvColumns(Database& db) {
 }  // namespace
 
 const std::vector<Migration>& Migrations() {
-  static const std::vector<Migration> migrations{
-      {1, kVersion1, nullptr, nullptr},
-      {2, kVersion2, nullptr, nullptr},
-      {3, kVersion3, ConvertArgvColumns, kVersion3After},
-      {4, kVersion4, nullptr, nullptr},
-      {5, kVersion5, nullptr, nullptr},
-      {6, kVersion6, nullptr, nullptr}};
+  static const std::vector<Migration> migrations{{1, kVersion1, nullptr, nullptr},
+                                                 {2, kVersion2, nullptr, nullptr},
+                                                 {3, kVersion3, ConvertArgvColumns, kVersion3After},
+                                                 {4, kVersion4, nullptr, nullptr},
+                                                 {5, kVersion5, nullptr, nullptr},
+                                                 {6, kVersion6, nullptr, nullptr}};
   return migrations;
 }
 
-int LatestSchemaVersion() { return Migrations().back().version; }
+int LatestSchemaVersion() {
+  return Migrations().back().version;
+}
 
 int ReadSchemaVersion(Database& db) {
   Statement has_version =
@@ -221,9 +222,11 @@ int ReadSchemaVersion(Database& db) {
     return 0;
   }
   Statement version = db.Prepare("SELECT version FROM schema_version");
-  if (!version.Step()) throw StoreError(db.file(), "schema_version table is empty");
+  if (!version.Step())
+    throw StoreError(db.file(), "schema_version table is empty");
   const auto v = version.Int(0);
-  if (version.Step()) throw StoreError(db.file(), "schema_version table has several rows");
+  if (version.Step())
+    throw StoreError(db.file(), "schema_version table has several rows");
   return static_cast<int>(v);
 }
 
@@ -232,13 +235,14 @@ void MigrateSchema(Database& db) {
   const auto check = [&](int version) {
     if (version > latest) {
       throw StoreError(db.file(), "schema version " + std::to_string(version) +
-                                      " is newer than this build knows (" +
-                                      std::to_string(latest) + "); use a newer rlpos");
+                                      " is newer than this build knows (" + std::to_string(latest) +
+                                      "); use a newer rlpos");
     }
   };
   int version = ReadSchemaVersion(db);
   check(version);
-  if (version == latest) return;
+  if (version == latest)
+    return;
   if (db.read_only()) {
     throw StoreError(db.file(), "schema version " + std::to_string(version) +
                                     " needs migrating to " + std::to_string(latest) +
@@ -249,10 +253,13 @@ void MigrateSchema(Database& db) {
     // Re-read under the write lock: another process may have migrated meanwhile.
     version = ReadSchemaVersion(db);
     check(version);
-    if (migration.version <= version) continue;
+    if (migration.version <= version)
+      continue;
     db.Exec(migration.sql);
-    if (migration.convert) migration.convert(db);
-    if (migration.sql_after) db.Exec(migration.sql_after);
+    if (migration.convert)
+      migration.convert(db);
+    if (migration.sql_after)
+      db.Exec(migration.sql_after);
     if (version == 0) {
       db.Exec("CREATE TABLE schema_version (version INTEGER NOT NULL)");
       db.Prepare("INSERT INTO schema_version (version) VALUES (?)").Bind(migration.version).Run();

@@ -25,7 +25,8 @@ msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission) {
   msg::CampaignRequest request;
   request.kind = msg::RequestKind::kSubmit;
   request.campaign_json = submission.campaign_json;
-  for (const auto& s : submission.scenarios) request.scenarios.push_back({s.file, s.document});
+  for (const auto& s : submission.scenarios)
+    request.scenarios.push_back({s.file, s.document});
   return request;
 }
 
@@ -37,8 +38,7 @@ std::string DescribeDds(const DdsOptions& options) {
 }
 
 msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignRequest request,
-                                       double timeout_s,
-                                       const std::function<void()>& while_waiting,
+                                       double timeout_s, const std::function<void()>& while_waiting,
                                        const ReplyCheck& check) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(

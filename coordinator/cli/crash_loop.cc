@@ -5,8 +5,8 @@
 namespace rlpos {
 
 std::string CrashLoopGuard::Describe() const {
-  return std::to_string(short_in_a_row_) + " times in a row within " +
-         FormatNumber(short_life_s_) + " s of starting";
+  return std::to_string(short_in_a_row_) + " times in a row within " + FormatNumber(short_life_s_) +
+         " s of starting";
 }
 
 }  // namespace rlpos

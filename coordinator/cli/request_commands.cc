@@ -47,14 +47,16 @@ int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, doub
 
 int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s) {
   const auto reply = RequestOnCampaign(msg::RequestKind::kCancel, campaign_id, dds, timeout_s);
-  if (!reply.ok) return Refused(reply);
+  if (!reply.ok)
+    return Refused(reply);
   std::cerr << "cancelled " << campaign_id << " (" << reply.jobs << " running job(s) stopped)\n";
   return kExitOk;
 }
 
 int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s) {
   const auto reply = RequestOnCampaign(msg::RequestKind::kRetry, campaign_id, dds, timeout_s);
-  if (!reply.ok) return Refused(reply);
+  if (!reply.ok)
+    return Refused(reply);
   std::cerr << "retrying " << reply.jobs << " job(s) of " << campaign_id << "\n";
   return kExitOk;
 }

@@ -34,8 +34,8 @@ ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
     std::string list;
     for (const auto& b : builds)
       list += (list.empty() ? "" : "; ") + b;
-    const std::string warning = "the results come from " + std::to_string(builds.size()) +
-                                " different builds: " + list;
+    const std::string warning =
+        "the results come from " + std::to_string(builds.size()) + " different builds: " + list;
     result.warnings.push_back(warning);
     markdown += "\n**Warning:** " + warning + ".\n";
   }

@@ -65,8 +65,8 @@ std::string CheckJobEvent(const msg::JobEvent& e) {
   if (e.message.size() > wire::kMaxMessage)
     return "message too long";
   const Provenance& p = e.provenance;
-  for (const std::string* field : {&p.host, &p.rlpos_version, &p.ns3_version, &p.torch_version,
-                                   &p.cyclonedds_version}) {
+  for (const std::string* field :
+       {&p.host, &p.rlpos_version, &p.ns3_version, &p.torch_version, &p.cyclonedds_version}) {
     if (!IsPrintable(*field, wire::kMaxNameLength))
       return "bad provenance";
   }

@@ -303,8 +303,10 @@ struct Traits<msg::JobEvent> {
     m.state = CheckedEnum<msg::JobState>(RawEnum(c.state), 4, "state", error);
     m.result_json = CopyOctets(c.result_json, wire::kMaxResultJson, "result_json", error);
     m.message = CopyOut(c.message);
-    m.provenance = {CopyOut(c.provenance.host),          CopyOut(c.provenance.rlpos_version),
-                    CopyOut(c.provenance.ns3_version),   CopyOut(c.provenance.torch_version),
+    m.provenance = {CopyOut(c.provenance.host),
+                    CopyOut(c.provenance.rlpos_version),
+                    CopyOut(c.provenance.ns3_version),
+                    CopyOut(c.provenance.torch_version),
                     CopyOut(c.provenance.cyclonedds_version),
                     CopyOut(c.provenance.scenario_sha256)};
     return m;

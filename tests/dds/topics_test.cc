@@ -161,8 +161,12 @@ TEST_F(TopicsTest, JobEventRoundTripEveryState) {
     e.state = states[i];
     e.result_json = i == 2 ? R"({"position":[1.5,2,3]})" : "";
     e.message = i == 3 ? "line one\nline \"two\" [exit code 1]" : "episode 3/10";
-    e.provenance = {"host-" + std::to_string(i), "v0.1-" + std::to_string(i) + "-gabc", "3.37",
-                    "1.13.0", "0.10.2", std::string(64, 'a' + static_cast<char>(i))};
+    e.provenance = {"host-" + std::to_string(i),
+                    "v0.1-" + std::to_string(i) + "-gabc",
+                    "3.37",
+                    "1.13.0",
+                    "0.10.2",
+                    std::string(64, 'a' + static_cast<char>(i))};
     writer.Write(e);
     sent.push_back(e);
   }

@@ -347,10 +347,12 @@ TEST_F(StoreTest, ProvenanceIsKeptAndMixedBuildsAreTold) {
             JobUpdate::kSucceeded);
   EXPECT_EQ(Query("SELECT host || ' ' || rlpos_version || ' ' || ns3_version || ' ' || "
                   "torch_version || ' ' || cyclonedds_version || ' ' || scenario_sha256 FROM jobs "
-                  "WHERE id = '" + Id("position/B/baseline") + "'"),
+                  "WHERE id = '" +
+                  Id("position/B/baseline") + "'"),
             "host-a v1-3-gabc 3.37 1.13.0 0.10.2 " + std::string(64, 'f'));
-  EXPECT_EQ(store_.CampaignBuilds(campaign_.id),
-            std::vector<std::string>{"rlpos v1-3-gabc, ns-3 3.37, libtorch 1.13.0, Cyclone DDS 0.10.2"});
+  EXPECT_EQ(
+      store_.CampaignBuilds(campaign_.id),
+      std::vector<std::string>{"rlpos v1-3-gabc, ns-3 3.37, libtorch 1.13.0, Cyclone DDS 0.10.2"});
   // Another job from another build: the campaign's results are mixed.
   Provenance b = a;
   b.rlpos_version = "v1-4-gdef";
@@ -381,8 +383,7 @@ TEST_F(StoreTest, InfrastructureLossesHaveTheirOwnCap) {
   EXPECT_EQ(Query("SELECT infra_losses FROM jobs WHERE id = '" + Id(key) + "'"), "0");
   const int attempt = Start(key);
   EXPECT_EQ(store_.RecordFailure(Id(key), attempt, "boom"), JobUpdate::kRetrying);
-  EXPECT_EQ(store_.RecordFailure(Id(key), attempt + 1, "boom"), JobUpdate::kStale)
-      << "not running";
+  EXPECT_EQ(store_.RecordFailure(Id(key), attempt + 1, "boom"), JobUpdate::kStale) << "not running";
 }
 
 TEST_F(StoreTest, CancelThenRetry) {

@@ -450,7 +450,9 @@ TEST_F(LegacyStoreTest, UnreadableArgvLeavesTheFileAtVersionTwo) {
 
 TEST_F(LegacyStoreTest, ReadOnlyOpenAsksForOneReadWriteOpen) {
   InsertOldCampaign();
-  EXPECT_NE(OpenError(file_, true).find("schema version 2 needs migrating to " + std::to_string(LatestSchemaVersion()) + ""),
+  EXPECT_NE(OpenError(file_, true)
+                .find("schema version 2 needs migrating to " +
+                      std::to_string(LatestSchemaVersion()) + ""),
             std::string::npos);
   EXPECT_EQ(Query("SELECT version FROM schema_version"), "2");
 }

@@ -1,7 +1,5 @@
 #include "daemon/job_attempt.h"
 
-#include "dds/security/pki.h"
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +9,7 @@
 
 #include "config/number_text.h"
 #include "daemon/sim_command.h"
+#include "dds/security/pki.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;
