@@ -34,8 +34,10 @@ trap 'remove_netns; cleanup' EXIT
 ip netns add "$NS_C" || { echo "skip: cannot create a network namespace"; exit 77; }
 ip netns add "$NS_1"
 ip netns add "$NS_2"
-ip -n "$NS_C" link add name rlbr type bridge mcast_snooping 0
-ip link add vc1 netns "$NS_C" type veth peer name vw1 netns "$NS_1"
+ip -n "$NS_C" link add name rlbr type bridge mcast_snooping 0 \
+  || { echo "skip: cannot create a bridge"; exit 77; }
+ip link add vc1 netns "$NS_C" type veth peer name vw1 netns "$NS_1" \
+  || { echo "skip: cannot create a veth pair"; exit 77; }
 ip link add vc2 netns "$NS_C" type veth peer name vw2 netns "$NS_2"
 for port in vc1 vc2; do
   ip -n "$NS_C" link set "$port" master rlbr

@@ -34,7 +34,8 @@ remove_netns() {
 trap 'remove_netns; cleanup' EXIT
 ip netns add "$NS_C" || { echo "skip: cannot create a network namespace"; exit 77; }
 ip netns add "$NS_W"
-ip link add "$IF_C" netns "$NS_C" type veth peer name "$IF_W" netns "$NS_W"
+ip link add "$IF_C" netns "$NS_C" type veth peer name "$IF_W" netns "$NS_W" \
+  || { echo "skip: cannot create a veth pair"; exit 77; }
 ip -n "$NS_C" addr add "$A_C/24" dev "$IF_C"
 ip -n "$NS_W" addr add "$A_W/24" dev "$IF_W"
 for ns in "$NS_C" "$NS_W"; do ip -n "$ns" link set lo up; done
