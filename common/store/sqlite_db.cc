@@ -8,6 +8,10 @@
 
 namespace rlpos {
 
+Statement::Statement(sqlite3* db, sqlite3_stmt* compiled, const std::string& sql,
+                     const std::string& file)
+    : db_(db), stmt_(compiled), sql_(sql), file_(file) {}
+
 Statement::Statement(sqlite3* db, const std::string& sql, const std::string& file)
     : db_(db), sql_(sql), file_(file) {
   const int rc = sqlite3_prepare_v2(db_, sql.c_str(), -1, &stmt_, nullptr);
@@ -16,11 +20,15 @@ Statement::Statement(sqlite3* db, const std::string& sql, const std::string& fil
 }
 
 Statement::~Statement() {
-  sqlite3_finalize(stmt_);
+  if (owner_ && stmt_)
+    owner_->Release(sql_, stmt_);
+  else
+    sqlite3_finalize(stmt_);
 }
 
 Statement::Statement(Statement&& other) noexcept
-    : db_(other.db_),
+    : owner_(std::exchange(other.owner_, nullptr)),
+      db_(other.db_),
       stmt_(std::exchange(other.stmt_, nullptr)),
       sql_(std::move(other.sql_)),
       file_(std::move(other.file_)),
@@ -149,7 +157,23 @@ Database::Database(const std::string& file, bool read_only, int busy_timeout_ms)
 }
 
 Database::~Database() {
+  for (auto& [sql, statements] : idle_) {
+    for (sqlite3_stmt* stmt : statements)
+      sqlite3_finalize(stmt);
+  }
   sqlite3_close(db_);
+}
+
+void Database::Release(const std::string& sql, sqlite3_stmt* stmt) {
+  // A few per text: enough for the statements one operation holds at once.
+  auto& statements = idle_[sql];
+  if (statements.size() >= 4) {
+    sqlite3_finalize(stmt);
+    return;
+  }
+  sqlite3_reset(stmt);
+  sqlite3_clear_bindings(stmt);
+  statements.push_back(stmt);
 }
 
 void Database::Exec(const std::string& sql) {
@@ -163,7 +187,15 @@ void Database::Exec(const std::string& sql) {
 }
 
 Statement Database::Prepare(const std::string& sql) {
-  return Statement(db_, sql, file_);
+  if (const auto it = idle_.find(sql); it != idle_.end() && !it->second.empty()) {
+    Statement statement(db_, it->second.back(), sql, file_);
+    it->second.pop_back();
+    statement.owner_ = this;
+    return statement;
+  }
+  Statement statement(db_, sql, file_);
+  statement.owner_ = this;
+  return statement;
 }
 
 int Database::Changes() const {

@@ -4,15 +4,21 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 struct sqlite3;
 struct sqlite3_stmt;
 
 namespace rlpos {
 
+class Database;
+
 class Statement {
  public:
   Statement(sqlite3* db, const std::string& sql, const std::string& file);
+  // Wraps a statement compiled earlier (from Database's cache).
+  Statement(sqlite3* db, sqlite3_stmt* compiled, const std::string& sql, const std::string& file);
   ~Statement();
   Statement(const Statement&) = delete;
   Statement& operator=(const Statement&) = delete;
@@ -48,7 +54,9 @@ class Statement {
   std::optional<double> OptionalDouble(int column) const;
 
  private:
+  friend class Database;
   [[noreturn]] void Fail(int rc) const;
+  Database* owner_ = nullptr;  // set: the compiled statement goes back to its cache
   sqlite3* db_;
   sqlite3_stmt* stmt_ = nullptr;
   std::string sql_;
@@ -68,12 +76,17 @@ class Database {
   bool read_only() const { return read_only_; }
   // Runs constant SQL with no parameters (schema, pragmas). Throws StoreError.
   void Exec(const std::string& sql);
+  // Compiled statements are cached by their SQL text: a statement the store runs for every job
+  // is parsed once, not once per job.
   Statement Prepare(const std::string& sql);
   // Rows changed by the last INSERT/UPDATE/DELETE.
   int Changes() const;
 
  private:
   friend class Transaction;
+  friend class Statement;
+  void Release(const std::string& sql, sqlite3_stmt* stmt);  // back to the cache, reset
+  std::unordered_map<std::string, std::vector<sqlite3_stmt*>> idle_;
   int transaction_depth_ = 0;  // open Transactions: the outermost BEGINs, the others SAVEPOINT
   sqlite3* db_ = nullptr;
   std::string file_;
