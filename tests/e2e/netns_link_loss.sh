@@ -8,8 +8,7 @@
 # Expected: the campaign completes, every job succeeded exactly once, no job used a retry
 # (retries is 0), and the metrics equal the recorded ones of an undisturbed run. Root only.
 source "$(dirname "$0")/lib.sh"
-[ "$(id -u)" -eq 0 ] || { echo "skip: network namespaces need root"; exit 77; }
-command -v ip >/dev/null || { echo "skip: no ip (iproute2)"; exit 77; }
+source "$(dirname "$0")/netns.sh"
 
 NS_C=rlpos-lc-$$
 NS_1=rlpos-l1-$$
@@ -18,22 +17,9 @@ NET=10.$((150 + $$ % 50)).$(($$ / 50 % 250))
 A_C=$NET.1
 A_1=$NET.2
 A_2=$NET.3
-remove_netns() {
-  for ns in "$NS_C" "$NS_1" "$NS_2"; do
-    for _ in 1 2 3 4 5 6 7 8 9 10; do
-      pids=$(ip netns pids "$ns" 2>/dev/null || true)
-      [ -z "$pids" ] && break
-      kill $pids 2>/dev/null || true
-      sleep 0.2
-    done
-    ip netns pids "$ns" 2>/dev/null | xargs -r kill -9 2>/dev/null || true
-    ip netns del "$ns" 2>/dev/null || true
-  done
-}
-trap 'remove_netns; cleanup' EXIT
-ip netns add "$NS_C" || { echo "skip: cannot create a network namespace"; exit 77; }
-ip netns add "$NS_1"
-ip netns add "$NS_2"
+add_namespace "$NS_C"
+add_namespace "$NS_1"
+add_namespace "$NS_2"
 ip -n "$NS_C" link add name rlbr type bridge mcast_snooping 0 \
   || { echo "skip: cannot create a bridge"; exit 77; }
 ip link add vc1 netns "$NS_C" type veth peer name vw1 netns "$NS_1" \
@@ -49,17 +35,7 @@ ip -n "$NS_2" addr add "$A_2/24" dev vw2
 ip -n "$NS_C" link set rlbr up
 ip -n "$NS_1" link set vw1 up
 ip -n "$NS_2" link set vw2 up
-for ns in "$NS_C" "$NS_1" "$NS_2"; do ip -n "$ns" link set lo up; done
 IN_C=(ip netns exec "$NS_C")
-dds_xml() {  # dds_xml INTERFACE PEER...
-  local interface=$1 peers=""
-  shift
-  for p in "$@"; do peers+="<Peer Address=\"$p\"/>"; done
-  echo "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface name=\"$interface\" \
-multicast=\"true\"/></Interfaces><AllowMulticast>true</AllowMulticast></General><Discovery>\
-<Tag>$TAG</Tag><Peers>$peers</Peers><LeaseDuration>2s</LeaseDuration></Discovery></Domain>\
-</CycloneDDS>"
-}
 DOMAIN=$((1 + $$ % 200))
 SEC=$WORK/sec
 "$CAMPAIGN" security init "$SEC" >/dev/null

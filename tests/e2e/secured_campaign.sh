@@ -8,8 +8,7 @@
 # link finds no job id, campaign name or scenario text (while it does find a clear-text marker
 # sent over the same link: the capture works). Needs root; skips (77) otherwise.
 source "$(dirname "$0")/lib.sh"
-[ "$(id -u)" -eq 0 ] || { echo "skip: network namespaces need root"; exit 77; }
-command -v ip >/dev/null || { echo "skip: no ip (iproute2)"; exit 77; }
+source "$(dirname "$0")/netns.sh"
 
 NS_C=rlpos-c-$$
 NS_W=rlpos-w-$$
@@ -18,39 +17,17 @@ IF_W=rlw$$
 NET=10.$((200 + $$ % 50)).$(($$ / 50 % 250))
 A_C=$NET.1
 A_W=$NET.2
-remove_netns() {
-  # Deleting a namespace kills nothing by itself: stop what runs in it first (bounded).
-  for ns in "$NS_C" "$NS_W"; do
-    for _ in 1 2 3 4 5 6 7 8 9 10; do
-      pids=$(ip netns pids "$ns" 2>/dev/null || true)
-      [ -z "$pids" ] && break
-      kill $pids 2>/dev/null || true
-      sleep 0.2
-    done
-    ip netns pids "$ns" 2>/dev/null | xargs -r kill -9 2>/dev/null || true
-    ip netns del "$ns" 2>/dev/null || true
-  done
-}
-trap 'remove_netns; cleanup' EXIT
-ip netns add "$NS_C" || { echo "skip: cannot create a network namespace"; exit 77; }
-ip netns add "$NS_W"
+add_namespace "$NS_C"
+add_namespace "$NS_W"
 ip link add "$IF_C" netns "$NS_C" type veth peer name "$IF_W" netns "$NS_W" \
   || { echo "skip: cannot create a veth pair"; exit 77; }
 ip -n "$NS_C" addr add "$A_C/24" dev "$IF_C"
 ip -n "$NS_W" addr add "$A_W/24" dev "$IF_W"
-for ns in "$NS_C" "$NS_W"; do ip -n "$ns" link set lo up; done
 ip -n "$NS_C" link set "$IF_C" up
 ip -n "$NS_W" link set "$IF_W" up
 # Prefixes, not functions: a backgrounded function would be a subshell, and $! its pid.
 IN_C=(ip netns exec "$NS_C")
 IN_W=(ip netns exec "$NS_W")
-# Cyclone on the veth only (multicast stays on this private link), the other end as peer.
-dds_xml() {  # dds_xml INTERFACE PEER_ADDRESS
-  echo "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface name=\"$1\" \
-multicast=\"true\"/></Interfaces><AllowMulticast>true</AllowMulticast></General><Discovery>\
-<Tag>$TAG</Tag><Peers><Peer Address=\"$2\"/></Peers><LeaseDuration>2s</LeaseDuration>\
-</Discovery></Domain></CycloneDDS>"
-}
 DOMAIN=$((1 + $$ % 200))
 XML_C=$(dds_xml "$IF_C" "$A_W")
 XML_W=$(dds_xml "$IF_W" "$A_C")

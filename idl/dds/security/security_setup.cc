@@ -59,8 +59,8 @@ void CheckDays(int days, const char* what) {
     throw std::invalid_argument(std::string(what) + ": must be in 1..36500 days");
 }
 
-// Writes identities/NAME into `identities_dir` (which is `dir`'s or its temporary sibling's).
-void WriteIdentity(const std::string& identities_dir, const std::string& name, DdsRole role,
+// Writes identity NAME's files into a new `folder`.
+void WriteIdentity(const std::string& folder, const std::string& name, DdsRole role,
                    const pki::Cert& ca, const pki::Key& ca_key, const IssueOptions& options) {
   const std::time_t now = Now(options);
   const pki::Validity ca_validity = pki::CertValidity(ca);
@@ -71,7 +71,6 @@ void WriteIdentity(const std::string& identities_dir, const std::string& name, D
       key, std::string("/O=RLpos/OU=") + RoleName(role) + "/CN=" + name, validity, ca, ca_key);
   const std::string permissions = PermissionsXml(name, pki::SubjectRfc2253(cert), role,
                                                  validity.not_before, validity.not_after);
-  const std::string folder = identities_dir + "/" + name;
   MakeDir(folder, 0755);
   WriteNewFile(folder + "/cert.pem", pki::CertPem(cert), 0644);
   WriteNewFile(folder + "/key.pem", pki::KeyPem(key), 0600);
@@ -121,7 +120,8 @@ void InitSecurityDir(const std::string& dir, const IssueOptions& options) {
     WriteNewFile(CaCertFile(out), pki::CertPem(ca), 0644);
     WriteNewFile(GovernanceFile(out), pki::SignSmime(GovernanceXml(), ca, ca_key), 0644);
     for (DdsRole role : {DdsRole::kCoordinator, DdsRole::kWorker, DdsRole::kClient})
-      WriteIdentity(out + "/identities", RoleName(role), role, ca, ca_key, options);
+      WriteIdentity(out + "/identities/" + RoleName(role), RoleName(role), role, ca, ca_key,
+                    options);
   });
 }
 
@@ -143,20 +143,8 @@ std::string AddIdentity(const std::string& dir, const std::string& name, DdsRole
   const std::string target = IdentityDir(dir, name);
   if (fs::exists(target, error))
     throw std::invalid_argument(target + ": already exists");
-  const std::string identities = dir + "/identities";
-  // The identity is built beside its final place, then renamed: never half there.
-  const std::string partial = identities + "/." + name + ".partial-" + std::to_string(::getpid());
-  fs::remove_all(partial, error);
-  try {
-    MakeDir(partial, 0700);
-    WriteIdentity(partial, name, role, ca, ca_key, options);
-    if (::rename((partial + "/" + name).c_str(), target.c_str()) != 0)
-      throw std::runtime_error(target + ": cannot create: " + std::strerror(errno));
-    fs::remove_all(partial, error);
-  } catch (...) {
-    fs::remove_all(partial, error);
-    throw;
-  }
+  BuildThenRename(
+      target, [&](const std::string& out) { WriteIdentity(out, name, role, ca, ca_key, options); });
   return target;
 }
 
