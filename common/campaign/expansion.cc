@@ -1,6 +1,9 @@
 #include "campaign/expansion.h"
 
 #include "campaign/campaign_id.h"
+#include "campaign/job_content.h"
+#include "hash/sha256.h"
+#include "provenance/provenance.h"
 
 namespace rlpos {
 namespace {
@@ -47,13 +50,17 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
   out.max_attempts = 1 + spec.retries;
   out.job_timeout_s = spec.job_timeout_s;
 
-  const auto add = [&out](Job job) {
+  const std::string build = ThisBuild().rlpos_version;
+  std::string scenario_sha256;  // of the scenario being expanded
+  const auto add = [&](Job job) {
     job.id = JobId(out.id, job.key);
+    job.content_base = JobContentBase(job.params, scenario_sha256, build);
     out.jobs.push_back(std::move(job));
   };
 
   for (const auto& s : spec.scenarios) {
     const std::string& name = s.scenario.name;
+    scenario_sha256 = Sha256Hex(s.document.dump());
     std::vector<EvalSource> sources;
 
     for (const char* positioner : {"baseline", "centroid", "oracle"}) {

@@ -26,6 +26,9 @@ struct ExpandedCampaign {
   int max_attempts = 3;  // 1 + retries
   double job_timeout_s = 600.0;
   std::vector<Job> jobs;  // every dependency comes before its dependents
+  // Jobs may take the result of a succeeded job of the same content (any campaign) instead of
+  // running; false: every job runs (`--no-cache`).
+  bool use_cache = true;
 };
 
 ExpandedCampaign ExpandCampaign(const CampaignSpec& spec);

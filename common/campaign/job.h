@@ -50,6 +50,7 @@ struct Job {
   std::string depends_on;      // id of the job whose position this one needs, "" for none
   PositionRule position_rule;  // eval jobs: how their position follows from the dependency's
   JobParams params;
+  std::string content_base;  // JobContentBase (campaign/job_content.h): for the result cache
 };
 
 }  // namespace rlpos

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "campaign/job_content.h"
 #include "store/job_result.h"
 #include "store/schema.h"
 #include "store/sqlite_db.h"
@@ -186,20 +187,22 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
   const double now = Now();
   db_->Prepare(
          "INSERT INTO campaigns (id, name, spec_json, created_at, state, max_attempts, "
-         "job_timeout_s) VALUES (?, ?, ?, ?, 'active', ?, ?)")
+         "job_timeout_s, use_cache) VALUES (?, ?, ?, ?, 'active', ?, ?, ?)")
       .Bind(campaign.id)
       .Bind(campaign.name)
       .Bind(spec_text)
       .Bind(now)
       .Bind(campaign.max_attempts)
       .Bind(campaign.job_timeout_s)
+      .Bind(campaign.use_cache ? 1 : 0)
       .Run();
   Statement insert = db_->Prepare(
       "INSERT INTO jobs (id, campaign_id, seq, kind, key, scenario, label, rng_run, train_seed, "
       "fidelity, train_episodes, positioner, duration_s, warmup_s, overrides_json, "
       "depends_on, state, attempt, max_attempts, timeout_s, created_at, "
-      "position_rule_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 1, ?, ?, ?, "
-      "?)");
+      "position_rule_json, content_base, cache_key) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+      "?, ?, ?, ?, 1, ?, ?, ?, ?, ?, ?)");
+  std::vector<std::string> cacheable;  // ready jobs whose content is known
   int seq = 0;
   const auto text_or_null = [](const std::string& text) {
     return text.empty() ? std::nullopt : std::optional<std::string>(text);
@@ -231,8 +234,20 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
         .Bind(campaign.job_timeout_s)
         .Bind(now)
         .Bind(ToJson(job.position_rule).dump())
-        .Run();
+        .Bind(text_or_null(job.content_base));
+    // Dependants learn their content (an eval's position) when their dependency succeeds.
+    const auto key = job.depends_on.empty()
+                         ? JobContentKey(job.content_base, p.kind, std::nullopt)
+                         : std::nullopt;
+    insert.Bind(key).Run();
+    if (key)
+      cacheable.push_back(job.id);
   }
+  if (campaign.use_cache) {
+    for (const auto& id : cacheable)
+      ResolveFromCache(id);
+  }
+  UpdateCampaignState(campaign.id);
   transaction.Commit();
   result.created = true;
   result.jobs = static_cast<int>(campaign.jobs.size());
@@ -250,6 +265,9 @@ std::vector<ReadyJob> ResultsStore::ListReady(std::size_t per_campaign) {
   Statement select = db_->Prepare(
       std::string("SELECT j.id, j.campaign_id, j.key, j.attempt, j.timeout_s, ") + kParamColumns +
       " FROM jobs j WHERE j.state = 'ready' AND j.campaign_id = ? AND j.kind = ? "
+      // A job that waits for an identical one's result runs only if that one will not.
+      "AND (j.cache_twin IS NULL OR NOT EXISTS (SELECT 1 FROM jobs t WHERE t.id = j.cache_twin "
+      "AND t.state IN ('ready', 'running'))) "
       "ORDER BY j.seq LIMIT ?");
   std::vector<ReadyJob> out;
   for (const auto& campaign : campaigns) {
@@ -389,27 +407,51 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         .Run();
   } else {
     // Bind each dependent's position now: the row then shows exactly what it will run.
-    Statement dependents =
-        db_->Prepare("SELECT id, position_rule_json FROM jobs WHERE depends_on = ?");
+    Statement dependents = db_->Prepare(
+        "SELECT id, position_rule_json, kind, content_base, state FROM jobs WHERE depends_on = ?");
     dependents.Bind(job_id);
-    std::vector<std::pair<std::string, Vec3>> bound;
+    struct Bound {
+      std::string id;
+      Vec3 position;
+      std::optional<std::string> cache_key;
+      bool released = false;  // pending -> ready now
+    };
+    std::vector<Bound> bound;
     while (dependents.Step()) {
       PositionRule rule;
+      JobKind dependent_kind;
       try {
         rule = PositionRuleFromJson(json::parse(dependents.Text(1)));
+        dependent_kind = ParseJobKind(dependents.Text(2));
       } catch (const std::exception& e) {
         throw StoreError(file(), "job " + dependents.Text(0) + ": bad position rule: " + e.what());
       }
-      bound.emplace_back(dependents.Text(0), ApplyPositionRule(rule, produced));
+      const Vec3 position = ApplyPositionRule(rule, produced);
+      bound.push_back({dependents.Text(0), position,
+                       JobContentKey(dependents.OptionalText(3).value_or(""), dependent_kind,
+                                     position),
+                       dependents.Text(4) == "pending"});
     }
+    dependents.Reset();
     Statement update = db_->Prepare(
-        "UPDATE jobs SET x = ?, y = ?, z = ?, "
+        "UPDATE jobs SET x = ?, y = ?, z = ?, cache_key = ?, "
         "state = CASE state WHEN 'pending' THEN 'ready' ELSE state END WHERE id = ?");
-    for (const auto& [id, position] : bound) {
+    for (const auto& b : bound) {
       update.Reset();
-      update.Bind(position.x).Bind(position.y).Bind(position.z).Bind(id).Run();
+      update.Bind(b.position.x)
+          .Bind(b.position.y)
+          .Bind(b.position.z)
+          .Bind(b.cache_key)
+          .Bind(b.id)
+          .Run();
+    }
+    update.Reset();
+    for (const auto& b : bound) {
+      if (b.released && b.cache_key)
+        ResolveFromCache(b.id);
     }
   }
+  ServeWaiting(job_id);
   UpdateCampaignState(campaign_id);
   transaction.Commit();
   return JobUpdate::kSucceeded;

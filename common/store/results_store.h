@@ -213,6 +213,14 @@ class ResultsStore {
                         const std::string& error);
   void UpdateCampaignState(const std::string& campaign_id);
   void RequireCampaign(const std::string& campaign_id);
+  // The result cache (results_store_cache.cc). A ready job whose content is known takes the
+  // result of a succeeded job of the same content, or waits for an identical ready or running
+  // one (cache_twin), unless its campaign was submitted with --no-cache.
+  void ResolveFromCache(const std::string& job_id);
+  // Serves the jobs that waited for `job_id`, which just succeeded.
+  void ServeWaiting(const std::string& job_id);
+  // Settles a ready job with the result (and artifacts) of the succeeded job `source`.
+  void ServeFrom(const std::string& job_id, int attempt, const std::string& source);
 
   std::unique_ptr<Database> db_;
   StoreOptions options_;

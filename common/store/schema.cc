@@ -157,6 +157,25 @@ ALTER TABLE jobs ADD COLUMN cyclonedds_version TEXT;
 ALTER TABLE jobs ADD COLUMN scenario_sha256 TEXT;
 )sql";
 
+// Version 7: the result cache and artifacts that come home.
+//  - campaigns.use_cache: 0 when submitted with --no-cache (its jobs always run);
+//  - jobs.content_base: hash of what the job runs but an eval's position
+//    (campaign/job_content.h); cache_key: its full content, once known; cached_from: the
+//    succeeded job whose result this one took; cache_twin: an identical job, ready or running,
+//    whose result this one waits for instead of running too;
+//  - artifacts: each file's sha256 and size; path is relative to the artifacts folder.
+constexpr const char* kVersion7 = R"sql(
+ALTER TABLE campaigns ADD COLUMN use_cache INTEGER NOT NULL DEFAULT 1;
+ALTER TABLE jobs ADD COLUMN content_base TEXT;
+ALTER TABLE jobs ADD COLUMN cache_key TEXT;
+ALTER TABLE jobs ADD COLUMN cached_from TEXT REFERENCES jobs(id);
+ALTER TABLE jobs ADD COLUMN cache_twin TEXT REFERENCES jobs(id);
+CREATE INDEX jobs_by_cache_key ON jobs(cache_key, state) WHERE cache_key IS NOT NULL;
+CREATE INDEX jobs_by_cache_twin ON jobs(cache_twin) WHERE cache_twin IS NOT NULL;
+ALTER TABLE artifacts ADD COLUMN sha256 TEXT;
+ALTER TABLE artifacts ADD COLUMN bytes INTEGER;
+)sql";
+
 void ConvertArgvColumns(Database& db) {
   struct Row {
     std::string id;
@@ -198,7 +217,8 @@ const std::vector<Migration>& Migrations() {
                                                  {3, kVersion3, ConvertArgvColumns, kVersion3After},
                                                  {4, kVersion4, nullptr, nullptr},
                                                  {5, kVersion5, nullptr, nullptr},
-                                                 {6, kVersion6, nullptr, nullptr}};
+                                                 {6, kVersion6, nullptr, nullptr},
+                                                 {7, kVersion7, nullptr, nullptr}};
   return migrations;
 }
 

@@ -21,9 +21,10 @@ std::string NewRequestId() {
 
 }  // namespace
 
-msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission) {
+msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission, bool use_cache) {
   msg::CampaignRequest request;
   request.kind = msg::RequestKind::kSubmit;
+  request.no_cache = !use_cache;
   request.campaign_json = submission.campaign_json;
   for (const auto& s : submission.scenarios)
     request.scenarios.push_back({s.file, s.document});

@@ -21,8 +21,9 @@ class NoCoordinatorError : public std::runtime_error {
 // "DDS domain 0" or "DDS domain 7, loopback tag T".
 std::string DescribeDds(const DdsOptions& options);
 
-// The submit request of a campaign read by ReadCampaignSubmission.
-msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission);
+// The submit request of a campaign read by ReadCampaignSubmission; `use_cache` false: every
+// job runs (--no-cache).
+msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission, bool use_cache);
 
 // What a submit's reply must say beyond CheckCampaignReply: "" to accept it, else why not.
 using ReplyCheck = std::function<std::string(const msg::CampaignReply&)>;

@@ -29,10 +29,12 @@ struct RunOptions {
   std::string tag;         // DDS discovery tag; default: random (rlpos-run-<pid>-<hex>)
   bool dry_run = false;    // print the campaign id and its jobs by scenario and kind; run nothing
   std::string log_dir;     // default results/logs/<tag>
+  bool use_cache = true;   // false: every job runs, none takes a cached result (--no-cache)
 };
 
 int RunCampaign(const RunOptions& options);
-int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, double timeout_s);
+int SubmitCampaign(const std::string& campaign_file, bool use_cache, const DdsOptions& dds,
+                   double timeout_s);
 int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch, double period_s);

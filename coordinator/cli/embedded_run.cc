@@ -252,7 +252,7 @@ int RunCampaign(const RunOptions& options) {
     printer.Note("running " + campaign.name + " (" + std::to_string(campaign.jobs.size()) +
                  " jobs) on " + std::to_string(options.workers) + " worker(s); " +
                  DescribeDds(dds) + "; logs in " + log_dir.string());
-    const msg::CampaignReply reply = SendCampaignRequest(dds, SubmitRequest(submission), 60.0, [&] {
+    const msg::CampaignReply reply = SendCampaignRequest(dds, SubmitRequest(submission, options.use_cache), 60.0, [&] {
       if (StopRequested())
         throw std::runtime_error("interrupted before the campaign started");
       for (auto& d : daemons)

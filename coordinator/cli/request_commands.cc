@@ -27,11 +27,12 @@ msg::CampaignReply RequestOnCampaign(msg::RequestKind kind, const std::string& c
 
 }  // namespace
 
-int SubmitCampaign(const std::string& campaign_file, const DdsOptions& dds, double timeout_s) {
+int SubmitCampaign(const std::string& campaign_file, bool use_cache, const DdsOptions& dds,
+                   double timeout_s) {
   const CampaignSubmission submission = ReadCampaignSubmission(campaign_file);
   const ExpandedCampaign& campaign = submission.campaign;
   const msg::CampaignReply reply = SendCampaignRequest(
-      dds, SubmitRequest(submission), timeout_s, {}, [&](const msg::CampaignReply& r) {
+      dds, SubmitRequest(submission, use_cache), timeout_s, {}, [&](const msg::CampaignReply& r) {
         return !r.ok || r.campaign_id == campaign.id
                    ? std::string()
                    : "the coordinator expanded the campaign to " + r.campaign_id + ", not " +

@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
   run->add_flag("!--no-progress", run_options.progress, "No progress bar");
   run->add_flag("--dry-run", run_options.dry_run,
                 "Print the campaign id and its jobs per scenario; run nothing");
+  const char* const no_cache_help =
+      "Run every job, even one whose result the database already holds from an identical job";
+  run->add_flag("!--no-cache", run_options.use_cache, no_cache_help);
 
   std::string campaign_file, campaign_id, format = "table", out_dir;
   DdsOptions dds;
@@ -62,6 +65,8 @@ int main(int argc, char** argv) {
   double timeout_s = 10;
   auto* submit = app.add_subcommand("submit", "Submit a campaign to a running coordinator");
   submit->add_option("campaign", campaign_file, "Campaign JSON")->required();
+  bool use_cache = true;
+  submit->add_flag("!--no-cache", use_cache, no_cache_help);
   AddRequestOptions(submit, dds, timeout_s);
 
   bool watch = false;
@@ -132,7 +137,7 @@ int main(int argc, char** argv) {
       return RunCampaign(run_options);
     }
     if (submit->parsed())
-      return SubmitCampaign(campaign_file, dds, timeout_s);
+      return SubmitCampaign(campaign_file, use_cache, dds, timeout_s);
     if (status->parsed())
       return ShowStatus(db, campaign_id, watch, period_s);
     if (results->parsed())

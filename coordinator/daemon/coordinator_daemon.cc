@@ -76,8 +76,9 @@ void CoordinatorDaemon::HandleRequests() {
           std::vector<SubmittedScenario> scenarios;
           for (auto& file : r.data.scenarios)
             scenarios.push_back({std::move(file.file), std::move(file.document)});
-          const ExpandedCampaign campaign =
+          ExpandedCampaign campaign =
               ExpandSubmittedCampaign(r.data.campaign_json, scenarios, options_.limits);
+          campaign.use_cache = !r.data.no_cache;
           const SubmitResult result = store_.Submit(campaign);
           reply.campaign_id = result.campaign_id;
           reply.jobs = result.jobs;

@@ -1,5 +1,6 @@
 #include "dds/message_checks.h"
 
+#include "hash/sha256.h"
 #include "wire/identifiers.h"
 #include "wire/limits.h"
 
@@ -70,13 +71,8 @@ std::string CheckJobEvent(const msg::JobEvent& e) {
     if (!IsPrintable(*field, wire::kMaxNameLength))
       return "bad provenance";
   }
-  if (!p.scenario_sha256.empty()) {
-    bool hex = p.scenario_sha256.size() == 64;
-    for (const char c : p.scenario_sha256)
-      hex = hex && ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'));
-    if (!hex)
-      return "bad scenario_sha256";
-  }
+  if (!p.scenario_sha256.empty() && !IsSha256Hex(p.scenario_sha256))
+    return "bad scenario_sha256";
   return "";
 }
 

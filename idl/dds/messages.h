@@ -47,6 +47,7 @@ struct CampaignRequest {
   std::string campaign_id;
   std::string campaign_json;  // submit: the campaign file as written
   std::vector<ScenarioFile> scenarios;
+  bool no_cache = false;  // submit: every job runs, none takes a cached result
 };
 
 struct CampaignReply {

@@ -332,6 +332,7 @@ struct Traits<msg::CampaignRequest> {
     h.c.kind = static_cast<rlpos_msg_RequestKind>(m.kind);
     CopyIn(h.c.campaign_id, m.campaign_id, "campaign_id");
     h.c.campaign_json = BorrowOctets(m.campaign_json, wire::kMaxCampaignJson, "campaign_json");
+    h.c.no_cache = m.no_cache;
     if (m.scenarios.size() > wire::kMaxCampaignScenarios)
       throw DdsError("scenarios: too many");
     h.scenarios.assign(m.scenarios.size(), rlpos_msg_ScenarioFile{});
@@ -352,6 +353,7 @@ struct Traits<msg::CampaignRequest> {
     m.kind = CheckedEnum<msg::RequestKind>(RawEnum(c.kind), 3, "kind", error);
     m.campaign_id = CopyOut(c.campaign_id);
     m.campaign_json = CopyOctets(c.campaign_json, wire::kMaxCampaignJson, "campaign_json", error);
+    m.no_cache = c.no_cache;
     if (c.scenarios._length > wire::kMaxCampaignScenarios ||
         (c.scenarios._length > 0 && !c.scenarios._buffer)) {
       error = "scenarios exceed their bound";

@@ -476,7 +476,9 @@ TEST_F(StoreTest, ListReadyOldestCampaignFirst) {
   CampaignSpec other = testing::MiniSpec();
   other.name = "later";
   now_ += 10;
-  const SubmitResult second = store_.Submit(ExpandCampaign(other));
+  ExpandedCampaign later = ExpandCampaign(other);
+  later.use_cache = false;  // else its jobs would wait for their twins in the first one
+  const SubmitResult second = store_.Submit(later);
   ASSERT_TRUE(second.created);
   const auto ready = store_.ListReady();
   ASSERT_EQ(ready.size(), 16u);

@@ -16,7 +16,7 @@ namespace rlpos::testing {
 std::string SourcePath(const std::string& relative);  // inside the repository
 
 CampaignSpec MiniSpec();          // campaigns/mini.json
-ExpandedCampaign MiniCampaign();  // its jobs
+ExpandedCampaign MiniCampaign();  // its jobs, without the result cache
 const Job& FindJob(const ExpandedCampaign& campaign, const std::string& key);
 
 // stdout of `rlpos-sim train|position --json` and of `rlpos-sim eval --json`.

@@ -9,7 +9,7 @@
 
 #include "config/number_text.h"
 #include "daemon/sim_command.h"
-#include "dds/security/pki.h"
+#include "hash/sha256.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;
@@ -86,7 +86,7 @@ JobAttempt::JobAttempt(JobOrder order, const nlohmann::json& scenario, const std
     out << text;
     if (!out)
       throw std::runtime_error(folder_ + "/" + kScenarioFileName + ": cannot write");
-    scenario_sha256_ = pki::Sha256Hex(text);
+    scenario_sha256_ = Sha256Hex(text);
   }
   const auto argv = SimCommandLine(order_, sim_binary, folder_);
   {

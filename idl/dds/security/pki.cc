@@ -250,18 +250,4 @@ Validity CertValidity(const Cert& cert) {
   return {to_time(X509_get0_notBefore(C(cert))), to_time(X509_get0_notAfter(C(cert)))};
 }
 
-std::string Sha256Hex(const std::string& data) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int size = 0;
-  if (EVP_Digest(data.data(), data.size(), digest, &size, EVP_sha256(), nullptr) != 1)
-    Fail("sha256");
-  static const char kHex[] = "0123456789abcdef";
-  std::string hex;
-  for (unsigned int i = 0; i < size; ++i) {
-    hex += kHex[digest[i] >> 4];
-    hex += kHex[digest[i] & 15];
-  }
-  return hex;
-}
-
 }  // namespace rlpos::pki

@@ -58,7 +58,4 @@ std::string VerifySmimeFile(const std::string& file, const Cert& ca);
 std::string SubjectRfc2253(const Cert& cert);
 Validity CertValidity(const Cert& cert);
 
-// SHA-256 of `data`, 64 lowercase hex digits.
-std::string Sha256Hex(const std::string& data);
-
 }  // namespace rlpos::pki

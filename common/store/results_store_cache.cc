@@ -1,0 +1,106 @@
+// The result cache of ResultsStore: jobs of the same content (campaign/job_content.h) give the
+// same result, so a job takes a succeeded one's result instead of running, and identical jobs
+// that would run at once run once.
+#include "store/results_store.h"
+#include "store/sqlite_db.h"
+#include "store/store_error.h"
+
+namespace rlpos {
+
+void ResultsStore::ResolveFromCache(const std::string& job_id) {
+  Statement job = db_->Prepare(
+      "SELECT j.cache_key, j.attempt, c.use_cache FROM jobs j JOIN campaigns c ON "
+      "c.id = j.campaign_id WHERE j.id = ? AND j.state = 'ready'");
+  job.Bind(job_id);
+  if (!job.Step())
+    return;
+  const std::optional<std::string> key = job.OptionalText(0);
+  const int attempt = static_cast<int>(job.Int(1));
+  const bool use_cache = job.Int(2) != 0;
+  job.Reset();
+  if (!key || !use_cache)
+    return;
+  Statement done = db_->Prepare(
+      "SELECT id FROM jobs WHERE cache_key = ? AND state = 'succeeded' AND id != ? "
+      "ORDER BY cached_from IS NOT NULL, finished_at LIMIT 1");
+  done.Bind(*key).Bind(job_id);
+  if (done.Step()) {
+    const std::string source = done.Text(0);
+    done.Reset();
+    ServeFrom(job_id, attempt, source);
+    return;
+  }
+  done.Reset();
+  // An identical job that will run (and does not itself wait): wait for its result.
+  Statement twin = db_->Prepare(
+      "SELECT id FROM jobs WHERE cache_key = ? AND state IN ('ready', 'running') AND id != ? "
+      "AND cache_twin IS NULL ORDER BY state = 'ready', seq LIMIT 1");
+  twin.Bind(*key).Bind(job_id);
+  if (twin.Step()) {
+    const std::string other = twin.Text(0);
+    twin.Reset();
+    db_->Prepare("UPDATE jobs SET cache_twin = ? WHERE id = ?").Bind(other).Bind(job_id).Run();
+  }
+}
+
+void ResultsStore::ServeWaiting(const std::string& job_id) {
+  Statement waiting =
+      db_->Prepare("SELECT id, attempt FROM jobs WHERE cache_twin = ? AND state = 'ready'");
+  waiting.Bind(job_id);
+  std::vector<std::pair<std::string, int>> jobs;
+  while (waiting.Step())
+    jobs.emplace_back(waiting.Text(0), static_cast<int>(waiting.Int(1)));
+  waiting.Reset();
+  for (const auto& [id, attempt] : jobs)
+    ServeFrom(id, attempt, job_id);
+}
+
+void ResultsStore::ServeFrom(const std::string& job_id, int attempt, const std::string& source) {
+  Statement select = db_->Prepare(
+      "SELECT result_json, host, rlpos_version, ns3_version, torch_version, cyclonedds_version, "
+      "scenario_sha256 FROM jobs WHERE id = ? AND state = 'succeeded'");
+  select.Bind(source);
+  if (!select.Step())
+    return;
+  nlohmann::json result;
+  try {
+    result = nlohmann::json::parse(select.Text(0));
+  } catch (const nlohmann::json::exception& e) {
+    throw StoreError(file(), "job " + source + ": malformed result_json: " + e.what());
+  }
+  Provenance provenance;
+  provenance.host = select.OptionalText(1).value_or("");
+  provenance.rlpos_version = select.OptionalText(2).value_or("");
+  provenance.ns3_version = select.OptionalText(3).value_or("");
+  provenance.torch_version = select.OptionalText(4).value_or("");
+  provenance.cyclonedds_version = select.OptionalText(5).value_or("");
+  provenance.scenario_sha256 = select.OptionalText(6).value_or("");
+  select.Reset();
+
+  Transaction transaction(*db_);
+  db_->Prepare(
+         "UPDATE jobs SET state = 'running', worker_id = NULL, started_at = ?, cache_twin = NULL "
+         "WHERE id = ? AND attempt = ? AND state = 'ready'")
+      .Bind(Now())
+      .Bind(job_id)
+      .Bind(attempt)
+      .Run();
+  if (db_->Changes() != 1)
+    return;
+  // The same path as a worker's result: metrics for an eval, positions bound for dependants
+  // (which may be served in turn).
+  // A result this job would refuse (which the same content rules out) is not served: the
+  // savepoint rolls back and the job runs itself.
+  if (RecordSuccess(job_id, attempt, result, "", &provenance) != JobUpdate::kSucceeded)
+    return;
+  db_->Prepare("UPDATE jobs SET cached_from = ? WHERE id = ?").Bind(source).Bind(job_id).Run();
+  db_->Prepare(
+         "INSERT OR REPLACE INTO artifacts (job_id, name, path, sha256, bytes) "
+         "SELECT ?, name, path, sha256, bytes FROM artifacts WHERE job_id = ?")
+      .Bind(job_id)
+      .Bind(source)
+      .Run();
+  transaction.Commit();
+}
+
+}  // namespace rlpos
