@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "campaign/job_content.h"
+#include "store/artifact_files.h"
 #include "store/job_result.h"
 #include "store/schema.h"
 #include "store/sqlite_db.h"
@@ -309,7 +310,8 @@ bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& wor
 }
 
 JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, const json& result,
-                                      const std::string& worker_id, const Provenance* provenance) {
+                                      const std::string& worker_id, const Provenance* provenance,
+                                      const std::vector<ArtifactFile>& artifacts) {
   Transaction transaction(*db_);
   Statement select = db_->Prepare(
       "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run, x, y, z, "
@@ -353,6 +355,34 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
   } catch (const std::invalid_argument& e) {
     const JobUpdate update =
         FailAttempt(job_id, attempt, max_attempts, std::string("malformed result: ") + e.what());
+    UpdateCampaignState(campaign_id);
+    transaction.Commit();
+    return update;
+  }
+  // The files first, then the rows that list them: a row never names a missing file. A file
+  // written for a commit that then fails is overwritten by the job's next success.
+  try {
+    Transaction rows(*db_);  // none of them if one file fails
+    const std::string root = ArtifactsDirOf(file());
+    Statement insert = db_->Prepare(
+        "INSERT OR REPLACE INTO artifacts (job_id, name, path, sha256, bytes) "
+        "VALUES (?, ?, ?, ?, ?)");
+    for (const auto& a : artifacts) {
+      const std::string path = ArtifactRelativePath(job_id, a.name);
+      WriteArtifactFile(root, path, a.data);
+      insert.Reset();
+      insert.Bind(job_id)
+          .Bind(a.name)
+          .Bind(path)
+          .Bind(a.sha256)
+          .Bind(static_cast<std::int64_t>(a.data.size()))
+          .Run();
+    }
+    insert.Reset();
+    rows.Commit();
+  } catch (const std::exception& e) {
+    const JobUpdate update = FailAttempt(job_id, attempt, max_attempts,
+                                         std::string("cannot store its artifacts: ") + e.what());
     UpdateCampaignState(campaign_id);
     transaction.Commit();
     return update;
@@ -712,15 +742,6 @@ std::vector<MetricRow> ResultsStore::Metrics(const std::string& campaign_id) {
     out.push_back(std::move(m));
   }
   return out;
-}
-
-void ResultsStore::AddArtifact(const std::string& job_id, const std::string& name,
-                               const std::string& path) {
-  db_->Prepare("INSERT OR REPLACE INTO artifacts (job_id, name, path) VALUES (?, ?, ?)")
-      .Bind(job_id)
-      .Bind(name)
-      .Bind(path)
-      .Run();
 }
 
 }  // namespace rlpos

@@ -20,6 +20,7 @@
 
 #include "campaign/expansion.h"
 #include "provenance/provenance.h"
+#include "wire/artifacts.h"
 
 namespace rlpos {
 
@@ -130,6 +131,13 @@ struct CampaignTiming {
   int finished = 0;  // succeeded, failed or cancelled
 };
 
+// A row of the artifacts table; `path` is relative to ArtifactsDirOf(the database).
+struct ArtifactRecord {
+  std::string job_id, job_key, name, path, sha256;
+  std::int64_t bytes = 0;
+  std::optional<std::string> cached_from;  // the job was served from this one's result
+};
+
 struct FailedJob {
   std::string key;
   int attempts = 0;
@@ -165,9 +173,12 @@ class ResultsStore {
   // of rlpos::ToJson(RunMetrics). A malformed result counts as a failed attempt.
   // `worker_id` non-empty: only the worker that holds the attempt may settle it (else kStale).
   // `provenance` (when given) is kept on the row: host, build versions, scenario sha256.
+  // `artifacts` (checked by the caller: wire/artifacts.h) are written under ArtifactsDirOf(file())
+  // and listed in the artifacts table; a failure to write them fails the attempt.
   JobUpdate RecordSuccess(const std::string& job_id, int attempt, const nlohmann::json& result,
                           const std::string& worker_id = "",
-                          const Provenance* provenance = nullptr);
+                          const Provenance* provenance = nullptr,
+                          const std::vector<ArtifactFile>& artifacts = {});
   JobUpdate RecordFailure(const std::string& job_id, int attempt, const std::string& error,
                           const std::string& worker_id = "");
   // The worker is gone: each of its running jobs fails that attempt ("worker W was lost") and
@@ -205,7 +216,8 @@ class ResultsStore {
   std::vector<FailedJob> FailedJobs(const std::string& campaign_id);
   std::optional<nlohmann::json> CampaignSpecJson(const std::string& campaign_id);
 
-  void AddArtifact(const std::string& job_id, const std::string& name, const std::string& path);
+  // The artifacts of a campaign (or of one job, given its id), by job then name.
+  std::vector<ArtifactRecord> Artifacts(const std::string& campaign_or_job_id);
 
  private:
   double Now() const;

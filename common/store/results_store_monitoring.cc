@@ -119,4 +119,25 @@ std::vector<FailedJob> ResultsStore::FailedJobs(const std::string& campaign_id) 
   return out;
 }
 
+std::vector<ArtifactRecord> ResultsStore::Artifacts(const std::string& campaign_or_job_id) {
+  Statement select = db_->Prepare(
+      "SELECT a.job_id, j.key, a.name, a.path, COALESCE(a.sha256, ''), COALESCE(a.bytes, 0), "
+      "j.cached_from FROM artifacts a JOIN jobs j ON j.id = a.job_id "
+      "WHERE j.campaign_id = ? OR j.id = ? ORDER BY j.seq, a.name");
+  select.Bind(campaign_or_job_id).Bind(campaign_or_job_id);
+  std::vector<ArtifactRecord> out;
+  while (select.Step()) {
+    ArtifactRecord a;
+    a.job_id = select.Text(0);
+    a.job_key = select.Text(1);
+    a.name = select.Text(2);
+    a.path = select.Text(3);
+    a.sha256 = select.Text(4);
+    a.bytes = select.Int(5);
+    a.cached_from = select.OptionalText(6);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 }  // namespace rlpos

@@ -32,6 +32,14 @@ struct CoordinatorDaemon::Endpoints {
 
 namespace {
 
+// What a deferred event holds in memory, about.
+std::size_t EventBytes(const msg::JobEvent& e) {
+  std::size_t bytes = sizeof e + e.result_json.size() + e.message.size();
+  for (const auto& a : e.artifacts)
+    bytes += a.data.size();
+  return bytes;
+}
+
 StoreOptions StoreOptionsOf(const CoordinatorOptions& options) {
   StoreOptions store;
   store.max_infra_losses = options.max_infra_losses;
@@ -185,10 +193,12 @@ void CoordinatorDaemon::HandleJobEvents() {
   const double now = Now();
   std::vector<DeferredEvent> waiting;
   waiting.swap(deferred_events_);
+  deferred_bytes_ = 0;
   for (auto& d : waiting) {
     if (live_.count(d.event.worker_id) > 0) {
       HandleJobEvent(d.event, d.sender);
     } else if (now - d.since < kEventDeferralS) {
+      deferred_bytes_ += EventBytes(d.event);
       deferred_events_.push_back(std::move(d));
     } else {
       dropped_events_.Drop(d.sender, "worker " + d.event.worker_id + " is not live");
@@ -204,7 +214,9 @@ void CoordinatorDaemon::HandleJobEvents() {
       continue;
     }
     if (live_.count(r.data.worker_id) == 0 && !sender.empty() &&
-        deferred_events_.size() < kMaxDeferredEvents) {
+        deferred_events_.size() < kMaxDeferredEvents &&
+        deferred_bytes_ + EventBytes(r.data) <= kMaxDeferredBytes) {
+      deferred_bytes_ += EventBytes(r.data);
       deferred_events_.push_back({r.data, sender, now});
       continue;
     }
@@ -241,7 +253,8 @@ void CoordinatorDaemon::HandleJobEvent(const msg::JobEvent& e, const std::string
       update = store_.RecordFailure(e.job_id, e.attempt, error.what(), e.worker_id);
     }
     if (update == JobUpdate::kUnknown)
-      update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id, &e.provenance);
+      update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id, &e.provenance,
+                                    e.artifacts);
   } else {
     update = store_.RecordFailure(e.job_id, e.attempt, e.message, e.worker_id);
   }

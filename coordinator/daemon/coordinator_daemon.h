@@ -86,7 +86,9 @@ class CoordinatorDaemon {
   };
   static constexpr double kEventDeferralS = 10.0;
   static constexpr std::size_t kMaxDeferredEvents = 4096;
+  static constexpr std::size_t kMaxDeferredBytes = 64 * 1048576;  // results with artifacts
   std::vector<DeferredEvent> deferred_events_;
+  std::size_t deferred_bytes_ = 0;
   std::map<std::string, std::map<std::string, std::string>> documents_;  // by campaign
   DropLog dropped_requests_{"campaign request"}, refused_requests_{"campaign request"},
       dropped_statuses_{"worker status"}, dropped_events_{"job event"};

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "reporting/atomic_file.h"
+#include "files/atomic_file.h"
 #include "reporting/campaign_summary.h"
 #include "reporting/distribution_curves.h"
 #include "reporting/plot_script.h"

@@ -63,6 +63,12 @@ std::string CheckJobEvent(const msg::JobEvent& e) {
   }
   if (e.result_json.size() > wire::kMaxResultJson)
     return "result too large";
+  if (!e.artifacts.empty()) {
+    if (e.state != msg::JobState::kSucceeded)
+      return "artifacts with a state that has none";
+    if (std::string problem = CheckArtifacts(e.artifacts); !problem.empty())
+      return problem;
+  }
   if (e.message.size() > wire::kMaxMessage)
     return "message too long";
   const Provenance& p = e.provenance;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "provenance/provenance.h"
+#include "wire/artifacts.h"
 #include "wire/job_order.h"
 
 namespace rlpos::msg {
@@ -32,6 +33,7 @@ struct JobEvent {
   JobState state = JobState::kStarted;
   std::string result_json, message;
   Provenance provenance;  // kSucceeded, kFailed
+  std::vector<ArtifactFile> artifacts;  // kSucceeded of a train job
 };
 
 enum class RequestKind { kSubmit, kCancel, kRetry };

@@ -276,6 +276,7 @@ struct Traits<msg::JobEvent> {
   }
   struct Holder {
     C c{};
+    std::vector<rlpos_msg_ArtifactFile> artifacts;
   };
   static void ToC(const msg::JobEvent& m, Holder& h) {
     CopyIn(h.c.job_id, m.job_id, "job_id");
@@ -292,6 +293,17 @@ struct Traits<msg::JobEvent> {
     CopyIn(cp.torch_version, p.torch_version, "provenance torch_version");
     CopyIn(cp.cyclonedds_version, p.cyclonedds_version, "provenance cyclonedds_version");
     CopyIn(cp.scenario_sha256, p.scenario_sha256, "provenance scenario_sha256");
+    if (m.artifacts.size() > wire::kMaxArtifacts)
+      throw DdsError("artifacts: too many");
+    h.artifacts.assign(m.artifacts.size(), rlpos_msg_ArtifactFile{});
+    for (std::size_t i = 0; i < m.artifacts.size(); ++i) {
+      CopyIn(h.artifacts[i].name, m.artifacts[i].name, "artifact name");
+      CopyIn(h.artifacts[i].sha256, m.artifacts[i].sha256, "artifact sha256");
+      h.artifacts[i].data = BorrowOctets(m.artifacts[i].data, wire::kMaxArtifactBytes, "artifact");
+    }
+    h.c.artifacts._maximum = h.c.artifacts._length = static_cast<uint32_t>(h.artifacts.size());
+    h.c.artifacts._buffer = h.artifacts.empty() ? nullptr : h.artifacts.data();
+    h.c.artifacts._release = false;
   }
   static msg::JobEvent FromC(const C& c, bool valid, std::string& error) {
     msg::JobEvent m;
@@ -309,6 +321,16 @@ struct Traits<msg::JobEvent> {
                     CopyOut(c.provenance.torch_version),
                     CopyOut(c.provenance.cyclonedds_version),
                     CopyOut(c.provenance.scenario_sha256)};
+    if (c.artifacts._length > wire::kMaxArtifacts ||
+        (c.artifacts._length > 0 && !c.artifacts._buffer)) {
+      error = "artifacts exceed their bound";
+      return m;
+    }
+    for (uint32_t i = 0; i < c.artifacts._length; ++i) {
+      const auto& a = c.artifacts._buffer[i];
+      m.artifacts.push_back({CopyOut(a.name), CopyOut(a.sha256),
+                             CopyOctets(a.data, wire::kMaxArtifactBytes, "artifact", error)});
+    }
     return m;
   }
 };

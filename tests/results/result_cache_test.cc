@@ -6,6 +6,7 @@
 #include <map>
 
 #include "campaign/job_content.h"
+#include "hash/sha256.h"
 #include "store/results_store.h"
 #include "test_support.h"
 
@@ -187,13 +188,19 @@ TEST_F(ResultCacheTest, AWaitingJobIsServedWhenItsTwinSucceeds) {
   store_.Submit(again);
   const std::string train = first.id + "/train/B/seed1";
   ASSERT_TRUE(store_.MarkRunning(train, "w1", 1));
-  ASSERT_EQ(store_.RecordSuccess(train, 1, PositionResult(50, 50, 30), "w1"),
+  ASSERT_EQ(store_.RecordSuccess(train, 1, PositionResult(50, 50, 30), "w1", nullptr,
+                                 {{"policy.pt", Sha256Hex("weights"), "weights"}}),
             JobUpdate::kSucceeded);
   const auto served = store_.GetJob(again.id + "/train/B/seed1");
   ASSERT_TRUE(served);
   EXPECT_EQ(served->state, "succeeded");
   EXPECT_EQ(Query("SELECT cached_from FROM jobs WHERE id = '" + again.id + "/train/B/seed1'"),
             train);
+  // Its artifacts are the source's files.
+  const auto artifacts = store_.Artifacts(again.id);
+  ASSERT_EQ(artifacts.size(), 1u);
+  EXPECT_EQ(artifacts[0].path, train + "/policy.pt");
+  EXPECT_EQ(artifacts[0].cached_from, train);
 }
 
 TEST(JobContent, EveryFieldThatChangesARunChangesTheKey) {

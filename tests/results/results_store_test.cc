@@ -3,7 +3,13 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "config/number_text.h"
+#include "hash/sha256.h"
+#include "store/artifact_files.h"
+#include "wire/limits.h"
 #include "store/store_error.h"
 #include "test_support.h"
 
@@ -489,12 +495,70 @@ TEST_F(StoreTest, ListReadyOldestCampaignFirst) {
   EXPECT_EQ(store_.ListReady().size(), 8u);
 }
 
-TEST_F(StoreTest, Artifacts) {
+// A train job's files come with its result: written beside the database, listed with their
+// sha256 and size, and served with the result to a job of the same content.
+TEST_F(StoreTest, ArtifactsAreStoredBesideTheDatabase) {
   store_.Submit(campaign_);
-  store_.AddArtifact(Id("train/B/seed1"), "policy", "/tmp/out/policy.pt");
-  store_.AddArtifact(Id("train/B/seed1"), "policy", "/tmp/out2/policy.pt");  // replaces
-  EXPECT_EQ(Query("SELECT path FROM artifacts WHERE name = 'policy'"), "/tmp/out2/policy.pt");
-  EXPECT_THROW(store_.AddArtifact("no/such/job", "x", "y"), StoreError);  // foreign key
+  const int attempt = Start("train/B/seed1");
+  const std::vector<ArtifactFile> files{{"policy.pt", Sha256Hex("weights"), "weights"},
+                                        {"learning_curve.csv", Sha256Hex("e,r\n1,2\n"),
+                                         "e,r\n1,2\n"}};
+  ASSERT_EQ(store_.RecordSuccess(Id("train/B/seed1"), attempt, PositionResult(50, 50, 30), "w1",
+                                 nullptr, files),
+            JobUpdate::kSucceeded);
+  const auto rows = store_.Artifacts(campaign_.id);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].name, "learning_curve.csv");
+  EXPECT_EQ(rows[1].name, "policy.pt");
+  EXPECT_EQ(rows[1].path, Id("train/B/seed1") + "/policy.pt");
+  EXPECT_EQ(rows[1].sha256, Sha256Hex("weights"));
+  EXPECT_EQ(rows[1].bytes, 7);
+  EXPECT_EQ(ArtifactsDirOf(dir_.File("rlpos.db")), dir_.File("rlpos.artifacts"));
+  std::ifstream policy(dir_.File("rlpos.artifacts") + "/" + rows[1].path);
+  std::string text((std::istreambuf_iterator<char>(policy)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "weights");
+  EXPECT_EQ(store_.Artifacts(Id("train/B/seed1")).size(), 2u);  // by job id too
+  EXPECT_TRUE(store_.Artifacts(Id("position/B/oracle")).empty());
+}
+
+TEST_F(StoreTest, ArtifactsThatCannotBeWrittenFailTheAttempt) {
+  store_.Submit(campaign_);
+  // A file where the artifacts folder should be.
+  std::ofstream(dir_.File("rlpos.artifacts")) << "in the way";
+  const int attempt = Start("train/B/seed1");
+  EXPECT_EQ(store_.RecordSuccess(Id("train/B/seed1"), attempt, PositionResult(50, 50, 30), "w1",
+                                 nullptr, {{"policy.pt", Sha256Hex("w"), "w"}}),
+            JobUpdate::kRetrying);
+  EXPECT_NE(Job("train/B/seed1").error.value_or("").find("cannot store its artifacts"),
+            std::string::npos);
+  EXPECT_TRUE(store_.Artifacts(campaign_.id).empty());
+}
+
+TEST(ArtifactFiles, PathsStayInsideTheFolder) {
+  EXPECT_EQ(ArtifactRelativePath("c0ffee/train/B/seed1", "policy.pt"),
+            "c0ffee/train/B/seed1/policy.pt");
+  EXPECT_THROW(ArtifactRelativePath("c0ffee/../etc", "policy.pt"), std::invalid_argument);
+  EXPECT_THROW(ArtifactRelativePath("/abs/job", "policy.pt"), std::invalid_argument);
+  EXPECT_THROW(ArtifactRelativePath("c0ffee/train", "../x"), std::invalid_argument);
+  EXPECT_THROW(ArtifactRelativePath("c0ffee/train", "a/b"), std::invalid_argument);
+  EXPECT_EQ(ArtifactsDirOf("results/rlpos.db"), "results/rlpos.artifacts");
+  EXPECT_EQ(ArtifactsDirOf("results/db"), "results/db.artifacts");
+}
+
+TEST(ArtifactChecks, NamesSizesAndHashes) {
+  EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex("x"), "x"}}), "");
+  EXPECT_EQ(CheckArtifacts({{"../policy.pt", Sha256Hex("x"), "x"}}), "unknown artifact name");
+  EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex("y"), "x"}}),
+            "artifact policy.pt does not match its sha256");
+  EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex("x"), "x"}, {"policy.pt", Sha256Hex("x"), "x"}}),
+            "artifact policy.pt twice");
+  const std::string big(wire::kMaxArtifactBytes + 1, 'a');
+  EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex(big), big}}), "artifact policy.pt too large");
+  const std::string half(wire::kMaxArtifactBytes, 'a');
+  EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex(half), half},
+                            {"trajectory.csv", Sha256Hex(half), half},
+                            {"result.json", Sha256Hex("x"), "x"}}),
+            "artifacts too large together");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "config/number_text.h"
 #include "daemon/sim_command.h"
 #include "hash/sha256.h"
+#include "wire/limits.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;
@@ -43,6 +44,31 @@ std::string Trim(const std::string& s) {
 }
 
 }  // namespace
+
+std::vector<ArtifactFile> ReadTrainArtifacts(const std::string& out_folder) {
+  std::vector<ArtifactFile> out;
+  std::size_t total = 0;
+  for (const auto& name : TrainArtifactNames()) {
+    const fs::path file = fs::path(out_folder) / name;
+    std::error_code error;
+    const auto size = fs::file_size(file, error);
+    if (error)
+      continue;  // not written by this trainer
+    if (size > wire::kMaxArtifactBytes || total + size > wire::kMaxArtifactsTotal) {
+      throw std::runtime_error("artifact " + name + " (" + std::to_string(size) +
+                               " bytes) is beyond what a result may carry (" +
+                               std::to_string(wire::kMaxArtifactBytes) + " bytes a file, " +
+                               std::to_string(wire::kMaxArtifactsTotal) + " in all)");
+    }
+    total += size;
+    ArtifactFile artifact;
+    artifact.name = name;
+    artifact.data = ReadFile(file.string());
+    artifact.sha256 = Sha256Hex(artifact.data);
+    out.push_back(std::move(artifact));
+  }
+  return out;
+}
 
 std::string AttemptFolder(const std::string& work_dir, const std::string& job_id, int attempt) {
   fs::path folder(work_dir);
@@ -120,9 +146,13 @@ std::optional<JobOutcome> JobAttempt::Poll() {
     const std::string text = ReadFile((fs::path(folder_) / "stdout.json").string());
     try {
       outcome.result_json = nlohmann::json::parse(text).dump();
+      if (order_.params.kind == JobKind::kTrain)
+        outcome.artifacts = ReadTrainArtifacts((fs::path(folder_) / kOutFolderName).string());
       outcome.succeeded = true;
     } catch (const nlohmann::json::exception&) {
       outcome.error = "rlpos-sim ended well but printed no JSON result";
+    } catch (const std::runtime_error& e) {
+      outcome.error = e.what();
     }
     return outcome;
   }

@@ -6,6 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "wire/artifacts.h"
 
 #include "process/child_process.h"
 #include "wire/job_order.h"
@@ -16,7 +19,12 @@ struct JobOutcome {
   bool succeeded = false;
   std::string result_json;  // compact JSON printed by the child
   std::string error;        // one line
+  std::vector<ArtifactFile> artifacts;  // a train job's files, to send home
 };
+
+// The TrainArtifactNames() files in a train job's output folder, with their sha256. Throws
+// std::runtime_error naming a file that is larger than the wire allows.
+std::vector<ArtifactFile> ReadTrainArtifacts(const std::string& out_folder);
 
 // <work_dir>/<job id with each path component made safe>/attempt<N>.
 std::string AttemptFolder(const std::string& work_dir, const std::string& job_id, int attempt);

@@ -207,9 +207,11 @@ void WorkerDaemon::PollJobs() {
     event.message = outcome->error.substr(0, wire::kMaxMessage - 1);
     event.provenance = build_;
     event.provenance.scenario_sha256 = it->second->scenario_sha256();
+    event.artifacts = outcome->artifacts;
     if (event.result_json.size() > wire::kMaxResultJson) {
       event.state = msg::JobState::kFailed;
       event.result_json.clear();
+      event.artifacts.clear();
       event.message =
           "the result is larger than " + std::to_string(wire::kMaxResultJson) + " bytes";
     }

@@ -1,4 +1,4 @@
-#include "reporting/atomic_file.h"
+#include "files/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -1,6 +1,6 @@
 #pragma once
-// Report files are replaced whole: a reader (or a report run that dies half way) never sees a
-// half-written summary, because each file is written under a temporary name in the same folder
+// Files replaced whole (reports, artifacts): a reader (or a writer that dies half way) never
+// sees a half-written file, because each is written under a temporary name in the same folder
 // and renamed over the old one.
 #include <string>
 

@@ -1,0 +1,40 @@
+#include "store/artifact_files.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "files/atomic_file.h"
+#include "wire/identifiers.h"
+#include "wire/limits.h"
+
+namespace rlpos {
+
+namespace fs = std::filesystem;
+
+std::string ArtifactsDirOf(const std::string& db_file) {
+  fs::path dir(db_file);
+  if (dir.extension() == ".artifacts")
+    return db_file + ".artifacts";
+  return dir.replace_extension(".artifacts").string();
+}
+
+std::string ArtifactRelativePath(const std::string& job_id, const std::string& name) {
+  if (!wire::IsSafePath(job_id, wire::kMaxIdLength))
+    throw std::invalid_argument("job id " + wire::Printable(job_id) + " is not a safe path");
+  if (!wire::IsSafeName(name, wire::kMaxNameLength))
+    throw std::invalid_argument("artifact name " + wire::Printable(name) + " is not a safe name");
+  return job_id + "/" + name;
+}
+
+void WriteArtifactFile(const std::string& root, const std::string& relative,
+                       const std::string& data) {
+  const fs::path file = fs::path(root) / relative;
+  std::error_code error;
+  fs::create_directories(file.parent_path(), error);
+  if (error)
+    throw std::runtime_error("cannot create " + file.parent_path().string() + ": " +
+                             error.message());
+  WriteFileAtomically(file.string(), data);
+}
+
+}  // namespace rlpos
