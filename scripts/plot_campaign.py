@@ -4,7 +4,10 @@
 `rlpos-campaign report` writes throughput_ccdf.csv and delay_cdf.csv (columns: scenario,
 positioner, x, p) and runs this script on them; per scenario it draws one throughput CCDF and
 one delay CDF, one step curve per positioner, into the output folder as
-throughput_ccdf_<scenario>.png and delay_cdf_<scenario>.png.
+throughput_ccdf_<scenario>.png and delay_cdf_<scenario>.png. With --learning-curves
+(learning_curves.csv: scenario, label, episode, phase, total_reward, mean_loss, epsilon) it also
+draws learning_curve_<scenario>.png: reward and loss per training episode, one line per train
+job.
 
 Prints "wrote <path>" for every file written. Exit status: 0 done, 1 error, 2 bad arguments,
 3 matplotlib is not available (the caller may try another interpreter).
@@ -34,6 +37,42 @@ def read_curves(path):
             xs.append(x)
             ps.append(p)
     return curves
+
+
+def read_learning_curves(path):
+    """{scenario: {label: [(episode, total_reward, mean_loss)]}}, training episodes only."""
+    curves = {}
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            if row["phase"] != "train":
+                continue
+            points = curves.setdefault(row["scenario"], {}).setdefault(row["label"], [])
+            points.append((int(row["episode"]), float(row["total_reward"]),
+                           float(row["mean_loss"])))
+    return curves
+
+
+def plot_learning(plt, curves, title, path):
+    """Reward (top) and mean loss (bottom, log scale) per training episode, one line per job."""
+    figure, (reward, loss) = plt.subplots(2, 1, figsize=(6.4, 5.6), sharex=True)
+    for label, points in curves.items():
+        episodes = [p[0] for p in points]
+        reward.plot(episodes, [p[1] for p in points], marker=".", label=label)
+        losses = [(e, p[2]) for e, p in zip(episodes, points) if p[2] > 0]
+        if losses:
+            loss.plot([e for e, _ in losses], [v for _, v in losses], marker=".", label=label)
+    reward.set_ylabel("Episode reward")
+    reward.set_title(title)
+    reward.grid(True, alpha=0.3)
+    reward.legend(fontsize="small")
+    loss.set_ylabel("Mean TD loss")
+    loss.set_yscale("log")
+    loss.set_xlabel("Training episode")
+    loss.grid(True, alpha=0.3)
+    figure.tight_layout()
+    save_atomically(figure, path)
+    plt.close(figure)
+    print(f"wrote {path}", flush=True)
 
 
 def file_stem(scenario, used):
@@ -83,6 +122,7 @@ def main():
     parser.add_argument("--delay-cdf", required=True, help="delay_cdf.csv")
     parser.add_argument("--out-dir", required=True, help="folder for the PNGs")
     parser.add_argument("--title", default="", help="figure title prefix (campaign name)")
+    parser.add_argument("--learning-curves", help="learning_curves.csv (optional)")
     args = parser.parse_args()
 
     try:
@@ -108,6 +148,12 @@ def main():
             plot(plt, delay[scenario], 0.0, "Mean delay (ms)", "P(X \u2264 x)",
                  f"{prefix}scenario {scenario}: delay CDF",
                  os.path.join(args.out_dir, f"delay_cdf_{stem}.png"))
+    if args.learning_curves:
+        used = set()
+        for scenario, curves in read_learning_curves(args.learning_curves).items():
+            plot_learning(plt, curves, f"{prefix}scenario {scenario}: learning curve",
+                          os.path.join(args.out_dir,
+                                       f"learning_curve_{file_stem(scenario, used)}.png"))
     return 0
 
 

@@ -133,7 +133,7 @@ struct CampaignTiming {
 
 // A row of the artifacts table; `path` is relative to ArtifactsDirOf(the database).
 struct ArtifactRecord {
-  std::string job_id, job_key, name, path, sha256;
+  std::string job_id, job_key, scenario, label, name, path, sha256;
   std::int64_t bytes = 0;
   std::optional<std::string> cached_from;  // the job was served from this one's result
 };

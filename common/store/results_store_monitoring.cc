@@ -122,7 +122,7 @@ std::vector<FailedJob> ResultsStore::FailedJobs(const std::string& campaign_id) 
 std::vector<ArtifactRecord> ResultsStore::Artifacts(const std::string& campaign_or_job_id) {
   Statement select = db_->Prepare(
       "SELECT a.job_id, j.key, a.name, a.path, COALESCE(a.sha256, ''), COALESCE(a.bytes, 0), "
-      "j.cached_from FROM artifacts a JOIN jobs j ON j.id = a.job_id "
+      "j.cached_from, j.scenario, j.label FROM artifacts a JOIN jobs j ON j.id = a.job_id "
       "WHERE j.campaign_id = ? OR j.id = ? ORDER BY j.seq, a.name");
   select.Bind(campaign_or_job_id).Bind(campaign_or_job_id);
   std::vector<ArtifactRecord> out;
@@ -135,6 +135,8 @@ std::vector<ArtifactRecord> ResultsStore::Artifacts(const std::string& campaign_
     a.sha256 = select.Text(4);
     a.bytes = select.Int(5);
     a.cached_from = select.OptionalText(6);
+    a.scenario = select.Text(7);
+    a.label = select.Text(8);
     out.push_back(std::move(a));
   }
   return out;

@@ -89,6 +89,14 @@ int main(int argc, char** argv) {
   report->add_option("--out", out_dir, "Report folder")->required();
   add_db(report);
 
+  std::string artifacts_out;
+  auto* artifacts = app.add_subcommand(
+      "artifacts", "List a campaign's (or a job's) artifacts: policies, learning curves, ...");
+  artifacts->add_option("id", campaign_id, "Campaign id or job id")->required();
+  artifacts->add_option("--out", artifacts_out,
+                        "Export them to this new folder, as <job key>/<name>");
+  add_db(artifacts);
+
   auto* cancel = app.add_subcommand("cancel", "Cancel a campaign's unfinished jobs");
   cancel->add_option("id", campaign_id, "Campaign id")->required();
   AddRequestOptions(cancel, dds, timeout_s);
@@ -144,6 +152,8 @@ int main(int argc, char** argv) {
       return ShowResults(db, campaign_id, format);
     if (report->parsed())
       return WriteCampaignReport(db, campaign_id, out_dir);
+    if (artifacts->parsed())
+      return ListOrExportArtifacts(db, campaign_id, artifacts_out);
     if (cancel->parsed())
       return CancelCampaign(campaign_id, dds, timeout_s);
     if (retry->parsed())

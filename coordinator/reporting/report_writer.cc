@@ -5,6 +5,7 @@
 #include "files/atomic_file.h"
 #include "reporting/campaign_summary.h"
 #include "reporting/distribution_curves.h"
+#include "reporting/learning_curves.h"
 #include "reporting/plot_script.h"
 #include "reporting/report_markdown.h"
 #include "reporting/results_format.h"
@@ -43,11 +44,15 @@ ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
   const std::string throughput_csv =
       write("throughput_ccdf.csv", FormatThroughputCcdfCsv(throughput));
   const std::string delay_csv = write("delay_cdf.csv", FormatDelayCdfCsv(delay));
+  const std::vector<LearningCurvePoint> learning =
+      ReadLearningCurves(store, campaign_id, result.warnings);
+  const std::string learning_csv =
+      learning.empty() ? "" : write("learning_curves.csv", FormatLearningCurvesCsv(learning));
 
-  if (options.plot_script.empty() || (throughput.empty() && delay.empty()))
+  if (options.plot_script.empty() || (throughput.empty() && delay.empty() && learning.empty()))
     return result;
-  const PlotOutcome plots = DrawPlots(
-      {options.plot_script, options.python, throughput_csv, delay_csv, out_dir, progress.name});
+  const PlotOutcome plots = DrawPlots({options.plot_script, options.python, throughput_csv,
+                                       delay_csv, learning_csv, out_dir, progress.name});
   result.files.insert(result.files.end(), plots.files.begin(), plots.files.end());
   result.warnings.insert(result.warnings.end(), plots.warnings.begin(), plots.warnings.end());
   return result;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 #include "cli/command.h"
 
@@ -40,10 +41,26 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   EXPECT_TRUE(fs::exists(out_ / "scenario.json"));
   std::ifstream curve(out_ / "learning_curve.csv");
   std::string line;
-  int rows = -1;  // header
-  while (std::getline(curve, line))
-    ++rows;
-  EXPECT_EQ(rows, 3);  // 2 training episodes + 1 evaluation
+  std::getline(curve, line);
+  EXPECT_EQ(line,
+            "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
+            "x,y,z,n_los,throughput_mbps");
+  std::vector<std::vector<std::string>> episodes;
+  while (std::getline(curve, line)) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');)
+      cells.push_back(cell);
+    episodes.push_back(cells);
+  }
+  ASSERT_EQ(episodes.size(), 3u);  // 2 training episodes + 1 evaluation
+  // Training episodes learn (updates, a positive loss); the greedy evaluation does not.
+  EXPECT_EQ(episodes[1][1], "train");
+  EXPECT_GT(std::stoi(episodes[1][6]), 0);
+  EXPECT_GT(std::stod(episodes[1][7]), 0.0);
+  EXPECT_EQ(episodes[2][1], "eval");
+  EXPECT_EQ(episodes[2][6], "0");
+  int rows = 0;
   // The evaluation episode's flight, one row per step; it ends at the result's position.
   std::ifstream trajectory(out_ / "trajectory.csv");
   std::getline(trajectory, line);

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The README's main command: campaigns/mini.json on 2 local workers completes, every job
-# succeeds exactly once, the metrics are plausible, and the report is written.
+# succeeds exactly once, the metrics are plausible, and the report is written. Then: the train
+# jobs' artifacts are home and an rl eval re-runs from an exported policy with the same numbers;
+# the same campaign under a new name is served whole from the result cache.
 source "$(dirname "$0")/lib.sh"
 DB=$WORK/rlpos.db
 "$CAMPAIGN" run "$SRC/campaigns/mini.json" --workers 2 --db "$DB" --tag "$TAG" \
@@ -35,11 +37,11 @@ expect_eq "metrics of the fixed positions" "$(sql "$DB" "SELECT scenario, positi
   "$(cat "$SRC/tests/e2e/golden/mini_fixed_positions.txt")"
 
 REPORT=$WORK/reports/$ID
-for f in summary.csv summary.md throughput_ccdf.csv delay_cdf.csv; do
+for f in summary.csv summary.md throughput_ccdf.csv delay_cdf.csv learning_curves.csv; do
   [ -s "$REPORT/$f" ] || fail "report file $f missing"
 done
 if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
-  for f in throughput_ccdf_B.png delay_cdf_C.png; do
+  for f in throughput_ccdf_B.png delay_cdf_C.png learning_curve_B.png; do
     [ -s "$REPORT/$f" ] || fail "plot $f missing"
   done
 fi
@@ -52,4 +54,48 @@ grep -q "jobs: 44 total, 0 pending, 0 ready, 0 running, 44 succeeded, 0 failed" 
 expect_eq "results csv rows" "$("$CAMPAIGN" results "$ID" --db "$DB" --format csv | wc -l)" 19
 "$CAMPAIGN" results "$ID" --db "$DB" --format json | python3 -c 'import json,sys; json.load(sys.stdin)' \
   || fail "results json"
-echo "ok: mini campaign $ID"
+# Artifacts: each train job's five files, beside the database, matching their sha256.
+expect_eq "artifacts" "$(sql "$DB" "SELECT COUNT(*) FROM artifacts a JOIN jobs j ON j.id = a.job_id
+  WHERE j.kind = 'train'")" 10
+ARTIFACTS=$WORK/rlpos.artifacts
+while IFS='|' read -r path sha; do
+  [ "$(sha256sum "$ARTIFACTS/$path" | cut -d' ' -f1)" = "$sha" ] || fail "artifact $path: sha256"
+done < <(sql "$DB" "SELECT path, sha256 FROM artifacts")
+# An rl eval on "another machine": from the exported policy alone, the same position and the
+# same metrics as the campaign's.
+"$CAMPAIGN" artifacts "$ID" --db "$DB" --out "$WORK/export" 2>/dev/null || fail "artifacts --out"
+POLICY=$WORK/export/train/B/seed1
+SIM=$BIN/rlpos-sim
+POSITION=$("$SIM" position --scenario "$POLICY/scenario.json" --positioner rl --policy "$POLICY" \
+  --json | python3 -c 'import json,sys; print(",".join(str(v) for v in json.load(sys.stdin)["position"]))')
+expect_eq "rl position from the exported policy" "$POSITION" "$(sql "$DB" "SELECT x || ',' || y ||
+  ',' || z FROM v_eval_runs WHERE scenario = 'B' AND positioner = 'rl' AND rng_run = 1")"
+THROUGHPUT=$("$SIM" eval --scenario "$POLICY/scenario.json" --position "$POSITION" --run 1 --json \
+  | python3 -c 'import json,sys; print("%.9f" % json.load(sys.stdin)["aggregate_throughput_mbps"])')
+expect_eq "rl eval from the exported policy" "$THROUGHPUT" "$(sql "$DB" "SELECT printf('%.9f',
+  throughput_mbps) FROM v_eval_runs WHERE scenario = 'B' AND positioner = 'rl' AND rng_run = 1")"
+
+# The same campaign under another name: every job is served from the cache, with the same
+# metrics, each row naming the job it came from.
+python3 - "$SRC/campaigns/mini.json" "$WORK/again.json" <<'PY'
+import json, os, sys
+campaign = json.load(open(sys.argv[1]))
+campaign["name"] = "mini-again"
+folder = os.path.dirname(os.path.abspath(sys.argv[1]))
+campaign["scenarios"] = [os.path.join(folder, s) for s in campaign["scenarios"]]
+json.dump(campaign, open(sys.argv[2], "w"))
+PY
+START=$SECONDS
+"$CAMPAIGN" run "$WORK/again.json" --workers 2 --db "$DB" --tag "$TAG" --no-progress \
+  >"$WORK/again.txt" 2>"$WORK/again.err" || { cat "$WORK/again.err" >&2; fail "re-run exited $?"; }
+AGAIN=$(sed -n 's/^campaign //p' "$WORK/again.txt")
+[ -n "$AGAIN" ] && [ "$AGAIN" != "$ID" ] || fail "the renamed campaign has id '$AGAIN'"
+expect_eq "re-run jobs not served by the cache" "$(sql "$DB" "SELECT COUNT(*) FROM jobs
+  WHERE campaign_id = '$AGAIN' AND (state != 'succeeded' OR cached_from IS NULL)")" 0
+METRICS_OF="SELECT scenario, positioner, rng_run, throughput_mbps, delay_ms FROM v_eval_runs
+  WHERE campaign_id = '%s' ORDER BY 1, 2, 3"
+# shellcheck disable=SC2059
+expect_eq "metrics of the re-run" "$(sql "$DB" "$(printf "$METRICS_OF" "$AGAIN")")" \
+  "$(sql "$DB" "$(printf "$METRICS_OF" "$ID")")"
+echo "ok: mini campaign $ID; artifacts exported and replayed; renamed re-run $AGAIN served \
+from the cache in $((SECONDS - START)) s"

@@ -10,14 +10,19 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
   std::vector<float> obs = space.Normalise(env.Reset(seed));
   ActionMask mask = env.ValidActions();
   double reward = 0.0;
+  double loss_sum = 0.0;
   for (;;) {
     const int action = agent.Act(obs, mask, learn);
     StepResult step = env.Step(action);
     std::vector<float> next = space.Normalise(step.observation);
     ActionMask next_mask = env.ValidActions();
     if (learn) {
-      agent.Observe(
+      const double loss = agent.Observe(
           {obs, action, static_cast<float>(step.reward), next, step.terminated, next_mask});
+      if (loss >= 0) {
+        ++record.updates;
+        loss_sum += loss;
+      }
     }
     record.total_reward += step.reward;
     reward = step.reward;
@@ -30,6 +35,7 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
       break;
   }
   record.epsilon = learn ? agent.Epsilon() : 0.0;
+  record.mean_loss = record.updates > 0 ? loss_sum / record.updates : 0.0;
   record.final_reward = reward;
   record.final_info = env.LastInfo();
   return record;

@@ -17,6 +17,8 @@ struct EpisodeRecord {
   int steps = 0;
   double total_reward = 0.0;
   double epsilon = 0.0;
+  int updates = 0;         // learning steps the agent took in this episode
+  double mean_loss = 0.0;  // their mean loss (0 without updates)
   double final_reward = 0.0;
   StepInfo final_info;
 };

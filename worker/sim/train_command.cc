@@ -39,7 +39,7 @@ void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
   const Vec3& p = r.final_info.position;
   out << r.episode << ',' << (r.evaluation ? "eval" : "train") << ',' << r.steps << ','
       << r.total_reward << ',' << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ','
-      << r.final_reward << ',' << p.x << ',' << p.y << ',' << p.z << ',' << r.final_info.n_los
+      << r.updates << ',' << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ',' << p.z << ',' << r.final_info.n_los
       << ',' << r.final_info.throughput_mbps << '\n';
 }
 
@@ -68,8 +68,8 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     UavPositioningEnv env(s);
     DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
     std::ofstream curve(partial / "learning_curve.csv");
-    curve << "episode,phase,steps,total_reward,mean_reward,epsilon,final_reward,x,y,z,n_los,"
-             "throughput_mbps\n";
+    curve << "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
+             "x,y,z,n_los,throughput_mbps\n";
     std::ofstream trajectory(partial / "trajectory.csv");
     trajectory << "episode,step,action,x,y,z,n_los,throughput_mbps,reward\n";
     int eval_episode = s.agent.train_episodes;
