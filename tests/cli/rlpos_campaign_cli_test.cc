@@ -5,8 +5,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
+#include "campaign/campaign_spec.h"
+#include "campaign/expansion.h"
 #include "cli/command.h"
+#include "hash/sha256.h"
+#include "store/results_store.h"
 
 namespace rlpos::testing {
 namespace {
@@ -175,6 +180,7 @@ TEST_F(RlposCampaignCli, DaemonsRefuseABadIdentityOrAnUnsecuredNetwork) {
 TEST_F(RlposCampaignCli, ReadCommandsOnAMissingDatabase) {
   ExpectOneLineError(Campaign("status --db none.db"), 2, "results store none.db: cannot open");
   ExpectOneLineError(Campaign("results abc --db none.db"), 2, "results store none.db");
+  ExpectOneLineError(Campaign("artifacts abc --db none.db"), 2, "results store none.db");
   EXPECT_FALSE(fs::exists(dir_ + "/none.db"));
 }
 
@@ -194,6 +200,46 @@ TEST_F(RlposCampaignCli, DryRunPrintsThePlanAndWritesNothing) {
   EXPECT_NE(r.out.find("(paper): 822 jobs"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("  B: 1 train, 3 position, 270 eval"), std::string::npos) << r.out;
   ExpectNothingWritten();
+}
+
+// A database where the mini campaign's train job of B succeeded with one artifact.
+TEST_F(RlposCampaignCli, ArtifactsListExportAndTheirBadInputs) {
+  std::string id, job;
+  {
+    ResultsStore store(dir_ + "/r.db");
+    const ExpandedCampaign campaign =
+        ExpandCampaign(ReadCampaignFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/mini.json"));
+    store.Submit(campaign);
+    id = campaign.id;
+    job = id + "/train/B/seed1";
+    ASSERT_TRUE(store.MarkRunning(job, "w1", 1));
+    ASSERT_EQ(store.RecordSuccess(job, 1, {{"position", {50, 50, 30}}}, "w1", nullptr,
+                                  {{"policy.pt", Sha256Hex("weights"), "weights"}}),
+              JobUpdate::kSucceeded);
+  }
+  const auto list = Campaign("artifacts " + id + " --db r.db");
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  EXPECT_NE(list.out.find("train/B/seed1"), std::string::npos) << list.out;
+  EXPECT_NE(list.out.find(Sha256Hex("weights").substr(0, 16)), std::string::npos) << list.out;
+  EXPECT_EQ(Campaign("artifacts " + job + " --db r.db").out, list.out);  // by job id
+
+  ExpectOneLineError(Campaign("artifacts nosuch --db r.db"), 2, "no campaign \"nosuch\"");
+  fs::create_directories(dir_ + "/taken");
+  ExpectOneLineError(Campaign("artifacts " + id + " --db r.db --out taken"), 2,
+                     "--out: taken already exists");
+
+  const auto exported = Campaign("artifacts " + id + " --db r.db --out out");
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  std::ifstream policy(dir_ + "/out/train/B/seed1/policy.pt");
+  std::string text((std::istreambuf_iterator<char>(policy)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "weights");
+
+  // A file changed on disk is refused, and nothing of the export is left.
+  std::ofstream(dir_ + "/r.artifacts/" + job + "/policy.pt") << "tampered";
+  ExpectOneLineError(Campaign("artifacts " + id + " --db r.db --out out2"), 1,
+                     "does not match the sha256 the database holds");
+  EXPECT_FALSE(fs::exists(dir_ + "/out2"));
+  EXPECT_FALSE(fs::exists(dir_ + "/out2.partial"));
 }
 
 TEST_F(RlposCampaignCli, UsageErrors) {

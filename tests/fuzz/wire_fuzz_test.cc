@@ -9,6 +9,7 @@
 // Cyclone's own CDR deserializer, which runs before DecodeSample, is upstream's to fuzz.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -21,8 +22,10 @@
 #include "dds/message_checks.h"
 #include "dds/topics.h"
 #include "fuzz/fuzz_input.h"
+#include "hash/sha256.h"
 #include "rlpos_messages.h"
 #include "store/job_result.h"
+#include "wire/artifacts.h"
 #include "wire/campaign_request.h"
 #include "wire/identifiers.h"
 #include "wire/job_order.h"
@@ -204,12 +207,33 @@ TEST(WireFuzz, JobEventDecoderAndCheck) {
     c.attempt = in.Chance(0.97) ? 1 : static_cast<std::int32_t>(in.WeirdInteger());
     FuzzEnum(c.state, rlpos_msg_JOB_SUCCEEDED, in);
     FuzzOctets(c.result_json, storage, result, wire::kMaxResultJson, in, false);
+    // Artifacts: mostly none or valid ones (name, data and its true sha256), sometimes a name,
+    // hash or size that is off, or a length beyond the sequence's bound.
+    std::vector<rlpos_msg_ArtifactFile> artifacts(in.Chance(0.7) ? 0 : in.Below(4));
+    std::vector<std::string> artifact_data(artifacts.size());
+    for (std::size_t k = 0; k < artifacts.size(); ++k) {
+      const std::string data = "episode,reward\n" + std::to_string(k) + ",1\n";
+      FuzzChars(artifacts[k].name, TrainArtifactNames()[k % TrainArtifactNames().size()], in);
+      FuzzChars(artifacts[k].sha256, Sha256Hex(data), in);
+      FuzzOctets(artifacts[k].data, artifact_data[k], data, wire::kMaxArtifactBytes, in, false);
+    }
+    c.artifacts._buffer = artifacts.empty() ? nullptr : artifacts.data();
+    c.artifacts._length = c.artifacts._maximum = static_cast<uint32_t>(
+        in.Chance(0.99) ? artifacts.size() : artifacts.size() + wire::kMaxArtifacts);
+    if (c.artifacts._length > artifacts.size())
+      c.artifacts._buffer = nullptr;  // a length the decoder must refuse without reading
     const auto r = DecodeSample<msg::JobEvent>(&c, true);
     const bool ok = r.decode_error.empty() && CheckJobEvent(r.data).empty();
     if (ok) {
       EXPECT_TRUE(wire::IsSafePath(r.data.job_id, wire::kMaxIdLength)) << i;
       EXPECT_TRUE(r.data.attempt >= 1 && r.data.attempt <= wire::kMaxAttempt) << i;
       EXPECT_LE(r.data.result_json.size(), wire::kMaxResultJson) << i;
+      for (const auto& a : r.data.artifacts) {
+        EXPECT_EQ(Sha256Hex(a.data), a.sha256) << i;
+        EXPECT_NE(std::find(TrainArtifactNames().begin(), TrainArtifactNames().end(), a.name),
+                  TrainArtifactNames().end())
+            << i;
+      }
     }
     ++(ok ? outcomes.accepted : outcomes.refused);
   }
