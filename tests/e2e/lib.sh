@@ -1,8 +1,8 @@
 # Shared by the end-to-end scripts: paths, a private temporary folder, and checks.
 # Usage in a script: source lib.sh BIN_DIR SOURCE_DIR
 set -euo pipefail
-BIN=$1
-SRC=$2
+BIN=$(cd "$1" && pwd)
+SRC=$(cd "$2" && pwd)
 CAMPAIGN=$BIN/rlpos-campaign
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/rlpos-e2e.XXXXXX")
 # Each run gets its own DDS discovery tag; runs always stay on loopback.
