@@ -8,7 +8,10 @@
 #   jobs/s      jobs / (submit to campaign finished)
 #   coord ms/job  coordinator CPU (user + system) per job during the campaign
 #   coord RSS   coordinator peak resident memory
-#   DB B/job    database size per job
+#   worker ms/job  the workers' own CPU per job (their stand-in children not included)
+#   worker RSS  the largest worker peak resident memory
+#   DB B/job    database size per job, and without the results (result_json and the metrics
+#               table with its indexes)
 # Usage: scripts/bench_dispatch.sh [N_JOBS] [WORKERS] [SLOTS] [BUILD_DIR]
 # RLPOS_BENCH_PERF=DIR also records the coordinator with `perf record -g` into DIR/<mode>.data.
 # RLPOS_BENCH_MODES="xargs unsecured secured" (default) picks the modes; xargs runs the same
@@ -60,15 +63,17 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
     [ "$code" -eq 2 ] || { echo "$name: the coordinator did not answer (exit $code)" >&2; exit 1; }
     samples+=("$(echo "$t1 - $t0" | bc)")
   done
-  local discovery
+  local discovery worker_pids=()
   discovery=$(printf '%s\n' "${samples[@]}" | median)
   for w in $(seq 1 "$workers"); do
     "$bin/rlpos-worker" --id "$name-w$w" --slots "$slots" --work-dir "$dir/work-$w" \
       --sim "$bin/rlpos-standin-sim" --log-level warning "${dds[@]}" 2>"$dir/worker-$w.log" &
     pids+=("$!")
+    worker_pids+=("$!")
   done
-  local cpu0 t0 id
+  local cpu0 t0 id wcpu0=0
   cpu0=$(cpu_ticks "$coordinator")
+  for pid in "${worker_pids[@]}"; do wcpu0=$((wcpu0 + $(cpu_ticks "$pid"))); done
   t0=$(date +%s.%N)
   local perf=""
   if [ -n "${RLPOS_BENCH_PERF:-}" ]; then
@@ -81,19 +86,33 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
     kill -0 "$coordinator" 2>/dev/null || { echo "$name: the coordinator died" >&2; exit 1; }
     sleep 0.2
   done
-  local t1 cpu1 total failed rss db_bytes
+  local t1 cpu1 total failed rss db_bytes wcpu1=0 wrss=0 result_bytes
   t1=$(date +%s.%N)
   cpu1=$(cpu_ticks "$coordinator")
+  for pid in "${worker_pids[@]}"; do
+    wcpu1=$((wcpu1 + $(cpu_ticks "$pid")))
+    local r
+    r=$(awk '/VmHWM/ {print $2}' "/proc/$pid/status")
+    [ "$r" -gt "$wrss" ] && wrss=$r
+  done
   if [ -n "$perf" ]; then kill -INT "$perf"; wait "$perf" || true; fi
   total=$(sqlite3 "$dir/rlpos.db" "SELECT COUNT(*) FROM jobs WHERE campaign_id = '$id'")
   failed=$(sqlite3 "$dir/rlpos.db" "SELECT COUNT(*) FROM jobs WHERE state != 'succeeded'")
   [ "$failed" -eq 0 ] || { echo "$name: $failed job(s) did not succeed" >&2; exit 1; }
   rss=$(awk '/VmHWM/ {print $2}' "/proc/$coordinator/status")
+  sqlite3 "$dir/rlpos.db" "PRAGMA wal_checkpoint(TRUNCATE)" >/dev/null
   db_bytes=$(stat -c %s "$dir/rlpos.db")
-  printf '| %s | %.3f s | %d | %.0f | %.2f | %.0f MiB | %.0f |\n' "$name" "$discovery" "$total" \
+  result_bytes=$(sqlite3 "$dir/rlpos.db" "SELECT (SELECT SUM(length(result_json)) FROM jobs) +
+    (SELECT SUM(pgsize) FROM dbstat WHERE name IN ('metrics', 'sqlite_autoindex_metrics_1',
+    'metrics_by_campaign'))")
+  printf '| %s | %.3f s | %d | %.0f | %.2f | %.0f MiB | %.2f | %.0f MiB | %.0f (%.0f) |\n' \
+    "$name" "$discovery" "$total" \
     "$(echo "$total / ($t1 - $t0)" | bc -l)" \
     "$(echo "($cpu1 - $cpu0) * 1000 / $ticks / $total" | bc -l)" \
-    "$(echo "$rss / 1024" | bc -l)" "$(echo "$db_bytes / $total" | bc -l)"
+    "$(echo "$rss / 1024" | bc -l)" \
+    "$(echo "($wcpu1 - $wcpu0) * 1000 / $ticks / $total" | bc -l)" \
+    "$(echo "$wrss / 1024" | bc -l)" \
+    "$(echo "$db_bytes / $total" | bc -l)" "$(echo "($db_bytes - $result_bytes) / $total" | bc -l)"
   for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null || true; done
   wait 2>/dev/null || true
   pids=()
@@ -101,8 +120,8 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
 
 "$bin/rlpos-campaign" security init "$work/sec" >/dev/null
 echo "bench_dispatch: $jobs eval jobs (+1 position), $workers workers x $slots slots, loopback, $(nproc) cores"
-echo "| mode | discovery | jobs | jobs/s | coord CPU ms/job | coord peak RSS | DB B/job |"
-echo "|---|---|---|---|---|---|---|"
+echo "| mode | discovery | jobs | jobs/s | coord CPU ms/job | coord peak RSS | worker CPU ms/job | worker peak RSS | DB B/job (without results) |"
+echo "|---|---|---|---|---|---|---|---|---|"
 run_xargs() {
   mkdir -p "$work/xargs"
   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); json.dump(d, open(sys.argv[2],'w'))" \
@@ -112,7 +131,7 @@ run_xargs() {
   seq "$jobs" | xargs -P $((workers * slots)) -I{} "$bin/rlpos-standin-sim" eval \
     --scenario "$work/xargs/scenario.json" --position 50,50,25 --json --no-progress >/dev/null
   t1=$(date +%s.%N)
-  printf '| xargs -P %d | - | %d | %.0f | - | - | - |\n' $((workers * slots)) "$jobs" \
+  printf '| xargs -P %d | - | %d | %.0f | - | - | - | - | - |\n' $((workers * slots)) "$jobs" \
     "$(echo "$jobs / ($t1 - $t0)" | bc -l)"
 }
 

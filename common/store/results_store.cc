@@ -234,13 +234,13 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
     insert.Bind(campaign.max_attempts)
         .Bind(campaign.job_timeout_s)
         .Bind(now)
-        .Bind(ToJson(job.position_rule).dump())
-        .Bind(text_or_null(job.content_base));
-    // Dependants learn their content (an eval's position) when their dependency succeeds.
+        .Bind(ToJson(job.position_rule).dump());
+    // Dependants learn their content (an eval's position) when their dependency succeeds; until
+    // then they keep its base. The others know it now, and need no base.
     const auto key = job.depends_on.empty()
                          ? JobContentKey(job.content_base, p.kind, std::nullopt)
                          : std::nullopt;
-    insert.Bind(key).Run();
+    insert.Bind(key ? std::nullopt : text_or_null(job.content_base)).Bind(key).Run();
     if (key)
       cacheable.push_back(job.id);
   }
@@ -464,7 +464,7 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
     }
     dependents.Reset();
     Statement update = db_->Prepare(
-        "UPDATE jobs SET x = ?, y = ?, z = ?, cache_key = ?, "
+        "UPDATE jobs SET x = ?, y = ?, z = ?, cache_key = ?, content_base = NULL, "
         "state = CASE state WHEN 'pending' THEN 'ready' ELSE state END WHERE id = ?");
     for (const auto& b : bound) {
       update.Reset();
