@@ -359,59 +359,42 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
     transaction.Commit();
     return update;
   }
-  // The files first, then the rows that list them: a row never names a missing file. A file
-  // written for a commit that then fails is overwritten by the job's next success.
-  try {
-    Transaction rows(*db_);  // none of them if one file fails
-    const std::string root = ArtifactsDirOf(file());
-    Statement insert = db_->Prepare(
-        "INSERT OR REPLACE INTO artifacts (job_id, name, path, sha256, bytes) "
-        "VALUES (?, ?, ?, ?, ?)");
-    for (const auto& a : artifacts) {
-      const std::string path = ArtifactRelativePath(job_id, a.name);
-      WriteArtifactFile(root, path, a.data);
-      insert.Reset();
-      insert.Bind(job_id)
-          .Bind(a.name)
-          .Bind(path)
-          .Bind(a.sha256)
-          .Bind(static_cast<std::int64_t>(a.data.size()))
-          .Run();
+  if (!artifacts.empty()) {
+    try {
+      StoreArtifacts(job_id, artifacts);
+    } catch (const std::exception& e) {
+      const JobUpdate update = FailAttempt(
+          job_id, attempt, max_attempts, std::string("cannot store its artifacts: ") + e.what());
+      UpdateCampaignState(campaign_id);
+      transaction.Commit();
+      return update;
     }
-    insert.Reset();
-    rows.Commit();
-  } catch (const std::exception& e) {
-    const JobUpdate update = FailAttempt(job_id, attempt, max_attempts,
-                                         std::string("cannot store its artifacts: ") + e.what());
-    UpdateCampaignState(campaign_id);
-    transaction.Commit();
-    return update;
   }
 
+  // One statement for the row: the result and, when given, where it came from.
+  const auto text = [](const std::string& v) {
+    return v.empty() ? std::nullopt : std::optional<std::string>(v);
+  };
+  const Provenance none;
+  const Provenance& p = provenance ? *provenance : none;
   db_->Prepare(
-         "UPDATE jobs SET state = 'succeeded', finished_at = ?, result_json = ?, error = NULL "
+         "UPDATE jobs SET state = 'succeeded', finished_at = ?, result_json = ?, error = NULL, "
+         "host = COALESCE(?, host), rlpos_version = COALESCE(?, rlpos_version), "
+         "ns3_version = COALESCE(?, ns3_version), torch_version = COALESCE(?, torch_version), "
+         "cyclonedds_version = COALESCE(?, cyclonedds_version), "
+         "scenario_sha256 = COALESCE(?, scenario_sha256) "
          "WHERE id = ? AND attempt = ? AND state = 'running'")
       .Bind(Now())
       .Bind(result.dump())
+      .Bind(text(p.host))
+      .Bind(text(p.rlpos_version))
+      .Bind(text(p.ns3_version))
+      .Bind(text(p.torch_version))
+      .Bind(text(p.cyclonedds_version))
+      .Bind(text(p.scenario_sha256))
       .Bind(job_id)
       .Bind(attempt)
       .Run();
-  if (provenance) {
-    const auto text = [](const std::string& v) {
-      return v.empty() ? std::nullopt : std::optional<std::string>(v);
-    };
-    db_->Prepare(
-           "UPDATE jobs SET host = ?, rlpos_version = ?, ns3_version = ?, torch_version = ?, "
-           "cyclonedds_version = ?, scenario_sha256 = ? WHERE id = ?")
-        .Bind(text(provenance->host))
-        .Bind(text(provenance->rlpos_version))
-        .Bind(text(provenance->ns3_version))
-        .Bind(text(provenance->torch_version))
-        .Bind(text(provenance->cyclonedds_version))
-        .Bind(text(provenance->scenario_sha256))
-        .Bind(job_id)
-        .Run();
-  }
 
   if (kind == JobKind::kEval) {
     // job_id is the primary key: a second row for the same job cannot exist.
@@ -485,6 +468,29 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
   UpdateCampaignState(campaign_id);
   transaction.Commit();
   return JobUpdate::kSucceeded;
+}
+
+void ResultsStore::StoreArtifacts(const std::string& job_id,
+                                  const std::vector<ArtifactFile>& artifacts) {
+  // The files first, then the rows that list them: a row never names a missing file. A file
+  // written for a commit that then fails is overwritten by the job's next success.
+  Transaction rows(*db_);  // none of them if one file fails
+  const std::string root = ArtifactsDirOf(file());
+  Statement insert = db_->Prepare(
+      "INSERT OR REPLACE INTO artifacts (job_id, name, path, sha256, bytes) VALUES (?, ?, ?, ?, ?)");
+  for (const auto& a : artifacts) {
+    const std::string path = ArtifactRelativePath(job_id, a.name);
+    WriteArtifactFile(root, path, a.data);
+    insert.Reset();
+    insert.Bind(job_id)
+        .Bind(a.name)
+        .Bind(path)
+        .Bind(a.sha256)
+        .Bind(static_cast<std::int64_t>(a.data.size()))
+        .Run();
+  }
+  insert.Reset();
+  rows.Commit();
 }
 
 JobUpdate ResultsStore::RecordFailure(const std::string& job_id, int attempt,
@@ -617,6 +623,16 @@ std::vector<RunningJob> ResultsStore::ListRunning() {
     out.push_back({select.Text(0), select.Text(1), select.Text(2), static_cast<int>(select.Int(3)),
                    select.Double(4), select.Double(5)});
   }
+  return out;
+}
+
+std::vector<ResultsStore::RunningCount> ResultsStore::CountRunning() {
+  Statement select = db_->Prepare(
+      "SELECT COALESCE(worker_id, ''), campaign_id, COUNT(*) FROM jobs WHERE state = 'running' "
+      "GROUP BY worker_id, campaign_id");
+  std::vector<RunningCount> out;
+  while (select.Step())
+    out.push_back({select.Text(0), select.Text(1), static_cast<int>(select.Int(2))});
   return out;
 }
 

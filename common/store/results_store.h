@@ -185,6 +185,12 @@ class ResultsStore {
   // goes back to ready while attempts remain. Returns the ids of the jobs it held.
   std::vector<std::string> RequeueWorker(const std::string& worker_id);
   std::vector<RunningJob> ListRunning();
+  // Running jobs counted per worker and campaign (cheaper than ListRunning each round).
+  struct RunningCount {
+    std::string worker_id, campaign_id;
+    int jobs = 0;
+  };
+  std::vector<RunningCount> CountRunning();
 
   // Cancels every unfinished job; returns the ones that were running (their workers should
   // stop them). Throws StoreError for an unknown campaign.
@@ -224,6 +230,8 @@ class ResultsStore {
   JobUpdate FailAttempt(const std::string& job_id, int attempt, int max_attempts,
                         const std::string& error);
   void UpdateCampaignState(const std::string& campaign_id);
+  // Writes the files beside the database and lists them. Throws (files or rows).
+  void StoreArtifacts(const std::string& job_id, const std::vector<ArtifactFile>& artifacts);
   void RequireCampaign(const std::string& campaign_id);
   // The result cache (results_store_cache.cc). A ready job whose content is known takes the
   // result of a succeeded job of the same content, or waits for an identical ready or running

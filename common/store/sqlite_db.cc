@@ -202,9 +202,12 @@ int Database::Changes() const {
   return sqlite3_changes(db_);
 }
 
+// BEGIN, COMMIT, SAVEPOINT and RELEASE go through the statement cache: the coordinator opens
+// one or more per job, and sqlite3_exec would parse each every time.
 Transaction::Transaction(Database& db) : db_(db), depth_(db.transaction_depth_) {
-  db_.Exec(depth_ == 0 ? std::string("BEGIN IMMEDIATE")
-                       : "SAVEPOINT rlpos_" + std::to_string(depth_));
+  db_.Prepare(depth_ == 0 ? std::string("BEGIN IMMEDIATE")
+                          : "SAVEPOINT rlpos_" + std::to_string(depth_))
+      .Run();
   ++db_.transaction_depth_;
 }
 
@@ -226,7 +229,8 @@ Transaction::~Transaction() {
 }
 
 void Transaction::Commit() {
-  db_.Exec(depth_ == 0 ? std::string("COMMIT") : "RELEASE rlpos_" + std::to_string(depth_));
+  db_.Prepare(depth_ == 0 ? std::string("COMMIT") : "RELEASE rlpos_" + std::to_string(depth_))
+      .Run();
   --db_.transaction_depth_;
   done_ = true;
 }

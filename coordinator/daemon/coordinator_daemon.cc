@@ -1,6 +1,7 @@
 #include "daemon/coordinator_daemon.h"
 
 #include <chrono>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "daemon/scenario_documents.h"
@@ -149,13 +150,22 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
       w.participant = sender;
       w.slots = {id, r.data.slots, r.data.busy};
       w.jobs = {r.data.jobs.begin(), r.data.jobs.end()};
-      WorkerRecord record;
-      record.id = id;
-      record.host = r.data.host;
-      record.pid = r.data.pid;
-      record.slots = r.data.slots;
-      record.busy = r.data.busy;
-      store_.UpsertWorker(record);
+      // The workers table is for `status`: a busy count a second old is news enough, and a
+      // write per status (two per job) is not free.
+      const double now = Now();
+      if (is_new || w.host != r.data.host || w.pid != r.data.pid ||
+          now - w.written_at >= kWorkerRowPeriodS) {
+        WorkerRecord record;
+        record.id = id;
+        record.host = r.data.host;
+        record.pid = r.data.pid;
+        record.slots = r.data.slots;
+        record.busy = r.data.busy;
+        store_.UpsertWorker(record);
+        w.host = r.data.host;
+        w.pid = r.data.pid;
+        w.written_at = now;
+      }
       if (is_new) {
         Log(LogLevel::kInfo,
             "worker " + id + " joined (" + std::to_string(r.data.slots) + " slot(s))");
@@ -387,8 +397,15 @@ void CoordinatorDaemon::Run() {
   Log(LogLevel::kInfo, "coordinator ready on DDS domain " +
                            std::to_string(participant_.options().domain) + ", database " +
                            store_.file());
+  auto last_round = std::chrono::steady_clock::now();
   while (!StopRequested()) {
     dds_->wait_set.Wait(options_.tick_s);
+    // Rounds at least kMinRoundS apart: at hundreds of samples a second, each round then
+    // takes several events and one commit, instead of one commit per sample.
+    const auto since = std::chrono::steady_clock::now() - last_round;
+    if (since < kMinRound)
+      std::this_thread::sleep_for(kMinRound - since);
+    last_round = std::chrono::steady_clock::now();
     HandleRequests();  // its replies follow its own commits
     // One commit for the round's statuses, events and assignments; the assignments go out
     // only once it is on disk, so a restarted coordinator never forgets a job it handed out.

@@ -13,6 +13,8 @@
 // After a restart it waits one grace period for the workers to reappear, then requeues the
 // running jobs of workers that did not, and republishes the assignments of those that did (a
 // worker ignores an attempt it already has).
+#include <chrono>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <set>
@@ -49,7 +51,12 @@ class CoordinatorDaemon {
     WorkerSlots slots;
     std::string participant;     // DDS participant GUID that announced it
     std::set<std::string> jobs;  // "<job id>#<attempt>" it reported
+    std::string host;            // as last written to the workers table
+    std::int64_t pid = 0;
+    double written_at = 0;
   };
+  static constexpr double kWorkerRowPeriodS = 1.0;
+  static constexpr std::chrono::milliseconds kMinRound{20};
   struct Published {
     int attempt = 0;
     std::string worker_id;

@@ -7,21 +7,21 @@ namespace rlpos {
 
 TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double now) {
   TickResult result;
-  std::vector<RunningJob> running = store_.ListRunning();
-  for (auto& t : FindTimedOut(running, now)) {
-    const JobUpdate update = store_.RecordFailure(t.job.id, t.job.attempt, t.error);
-    if (update == JobUpdate::kRetrying || update == JobUpdate::kFailed) {
-      result.timed_out.push_back(std::move(t));
+  if (now >= next_timeout_check_) {
+    next_timeout_check_ = now + kTimeoutCheckS;
+    for (auto& t : FindTimedOut(store_.ListRunning(), now)) {
+      const JobUpdate update = store_.RecordFailure(t.job.id, t.job.attempt, t.error);
+      if (update == JobUpdate::kRetrying || update == JobUpdate::kFailed) {
+        result.timed_out.push_back(std::move(t));
+      }
     }
   }
-  if (!result.timed_out.empty())
-    running = store_.ListRunning();
 
   std::map<std::string, int> by_worker;
   std::map<std::string, int> by_campaign;
-  for (const auto& job : running) {
-    ++by_worker[job.worker_id];
-    ++by_campaign[job.campaign_id];
+  for (const auto& count : store_.CountRunning()) {
+    by_worker[count.worker_id] += count.jobs;
+    by_campaign[count.campaign_id] += count.jobs;
   }
   std::vector<WorkerSlots> workers = live_workers;
   std::size_t free = 0;

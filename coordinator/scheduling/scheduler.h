@@ -21,9 +21,12 @@ class Scheduler {
  public:
   explicit Scheduler(ResultsStore& store) : store_(store) {}
 
-  // Fails timed-out jobs, then assigns ready jobs to `live_workers`. A worker's busy count is
-  // the larger of what it reported and what the store has running on it.
+  // Fails timed-out jobs (looked for at most once per kTimeoutCheckS), then assigns ready jobs
+  // to `live_workers`. A worker's busy count is the larger of what it reported and what the
+  // store has running on it.
   TickResult Tick(const std::vector<WorkerSlots>& live_workers, double now);
+  // Timeouts are minutes; the coordinator ticks hundreds of times a second.
+  static constexpr double kTimeoutCheckS = 1.0;
 
   // The worker's lease was lost: its running jobs go back to ready (or fail when out of
   // attempts). Returns their ids.
@@ -31,6 +34,7 @@ class Scheduler {
 
  private:
   ResultsStore& store_;
+  double next_timeout_check_ = 0;
 };
 
 }  // namespace rlpos
