@@ -165,8 +165,8 @@ ALTER TABLE jobs ADD COLUMN scenario_sha256 TEXT;
 //    whose result this one waits for instead of running too;
 //  - artifacts: each file's sha256 and size; path is relative to the artifacts folder;
 //  - fewer indexes that hold a job's state, each updated on every state change (three per
-//    job): jobs_by_state goes (jobs_ready_by_kind starts with the same columns), and the cache
-//    key's index leaves the state out.
+//    job): jobs_by_state goes (jobs_ready_by_kind starts with the same columns), and the
+//    indexes by worker and by cache key leave the state out.
 constexpr const char* kVersion7 = R"sql(
 ALTER TABLE campaigns ADD COLUMN use_cache INTEGER NOT NULL DEFAULT 1;
 ALTER TABLE jobs ADD COLUMN content_base TEXT;
@@ -178,6 +178,8 @@ CREATE INDEX jobs_by_cache_twin ON jobs(cache_twin) WHERE cache_twin IS NOT NULL
 ALTER TABLE artifacts ADD COLUMN sha256 TEXT;
 ALTER TABLE artifacts ADD COLUMN bytes INTEGER;
 DROP INDEX jobs_by_state;
+DROP INDEX jobs_by_worker;
+CREATE INDEX jobs_by_worker ON jobs(worker_id);
 )sql";
 
 void ConvertArgvColumns(Database& db) {

@@ -54,7 +54,8 @@ void WorkerDaemon::Settle(const std::string& job_id) {
     running_.erase(it);
   }
   progress_sent_.erase(job_id);
-  if (taken_.erase(job_id)) {
+  taken_.erase(job_id);
+  if (announced_.erase(job_id)) {
     msg::JobEvent key;
     key.job_id = job_id;
     dds_->events.Unregister(key);
@@ -101,8 +102,10 @@ void WorkerDaemon::Start(msg::JobAssignment a) {
     }
     running_[job_id] = std::make_unique<JobAttempt>(std::move(a.order), checked.scenario,
                                                     options_.work_dir, options_.sim_binary);
-    event.state = msg::JobState::kStarted;
+    // No event for a start: the coordinator marked the job running when it assigned it, and
+    // one sample fewer per job is the coordinator's time.
     Log(LogLevel::kInfo, "started " + key);
+    return;
   } catch (const std::exception& e) {
     event.state = msg::JobState::kFailed;
     event.message = std::string("worker could not start the job: ") + e.what();
@@ -112,9 +115,7 @@ void WorkerDaemon::Start(msg::JobAssignment a) {
     taken_.erase(job_id);
     dds_->events.Write(event);
     dds_->events.Unregister(event);
-    return;
   }
-  dds_->events.Write(event);
 }
 
 void WorkerDaemon::TakeAssignments() {
@@ -127,7 +128,7 @@ void WorkerDaemon::TakeAssignments() {
   waiting.swap(pending_);
   for (auto& [job_id, p] : waiting) {
     if (FromCoordinator(p.sender)) {
-      changed = Consider(std::move(p.assignment)) || changed;
+      Consider(std::move(p.assignment));
     } else if (now - p.since < kPendingFor) {
       pending_.emplace(job_id, std::move(p));
     } else {
@@ -176,18 +177,19 @@ void WorkerDaemon::TakeAssignments() {
       }
       continue;
     }
-    changed = Consider(std::move(r.data)) || changed;
+    Consider(std::move(r.data));
   }
+  // A start needs no status (the coordinator counts the jobs it assigned); a job stopped here
+  // frees a slot, which it says.
   if (changed)
     PublishStatus();
 }
 
-bool WorkerDaemon::Consider(msg::JobAssignment a) {
+void WorkerDaemon::Consider(msg::JobAssignment a) {
   const auto taken = taken_.find(a.order.job_id);
   if (taken != taken_.end() && taken->second >= a.order.attempt)
-    return false;  // republished after a coordinator restart, or older than what we run
+    return;  // republished after a coordinator restart, or older than what we run
   Start(std::move(a));
-  return true;
 }
 
 void WorkerDaemon::PollJobs() {
@@ -218,6 +220,7 @@ void WorkerDaemon::PollJobs() {
     Log(outcome->succeeded ? LogLevel::kInfo : LogLevel::kWarning,
         it->second->Key() + (outcome->succeeded ? " succeeded" : " failed: " + outcome->error));
     dds_->events.Write(event);
+    announced_.insert(it->first);
     progress_sent_.erase(it->first);
     it = running_.erase(it);
     changed = true;
@@ -239,6 +242,7 @@ void WorkerDaemon::ReportProgress() {
     event.state = msg::JobState::kProgress;
     event.message = line.substr(0, wire::kMaxMessage - 1);
     dds_->events.Write(event);
+    announced_.insert(job_id);
   }
 }
 

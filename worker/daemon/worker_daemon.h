@@ -42,9 +42,8 @@ class WorkerDaemon {
   void ReportProgress();
   void Settle(const std::string& job_id);
   void Start(msg::JobAssignment assignment);
-  // Starts an assignment from the followed coordinator unless it has that attempt already;
-  // true if it started.
-  bool Consider(msg::JobAssignment assignment);
+  // Starts an assignment from the followed coordinator unless it has that attempt already.
+  void Consider(msg::JobAssignment assignment);
   bool FromCoordinator(const std::string& sender);
 
   WorkerOptions options_;
@@ -54,8 +53,10 @@ class WorkerDaemon {
   std::map<std::string, std::unique_ptr<JobAttempt>> running_;  // by job id
   std::map<std::string, std::string> progress_sent_;            // by job id
   // Attempts this worker took, by job id, until the coordinator settles the job: a republished
-  // assignment (coordinator restart) never runs twice. Their event instances are registered.
+  // assignment (coordinator restart) never runs twice.
   std::map<std::string, int> taken_;
+  // Jobs whose event instance this worker wrote (progress, result): unregistered when settled.
+  std::set<std::string> announced_;
   // Assignments from a coordinator not followed yet, by job id (TakeAssignments).
   struct PendingAssignment {
     msg::JobAssignment assignment;
