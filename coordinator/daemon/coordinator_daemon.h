@@ -56,14 +56,15 @@ class CoordinatorDaemon {
     double written_at = 0;
   };
   static constexpr double kWorkerRowPeriodS = 1.0;
-  static constexpr std::chrono::milliseconds kMinRound{20};
+  static constexpr std::chrono::milliseconds kMinRound{50};
   struct Published {
     int attempt = 0;
     std::string worker_id;
   };
   void HandleRequests();
   void HandleWorkerStatuses();
-  void HandleJobEvents();
+  // Returns how many samples it took.
+  std::size_t HandleJobEvents();
   void HandleJobEvent(const msg::JobEvent& event, const std::string& sender);
   void AfterGrace();
   // The round's scheduling decisions, written to the store; PublishTick sends them.
