@@ -10,7 +10,8 @@ namespace {
 
 std::vector<ScenarioOverride> Overrides(const CampaignScenario& s) {
   std::vector<ScenarioOverride> out;
-  for (const auto& text : s.overrides) out.push_back(ParseOverride(text));
+  for (const auto& text : s.overrides)
+    out.push_back(ParseOverride(text));
   return out;
 }
 
@@ -38,7 +39,8 @@ struct EvalSource {
 
 std::string EvalLabel(int k, std::size_t seed_index, std::uint64_t seed) {
   std::string label = k == 0 ? "rl" : "offset" + std::to_string(k);
-  if (seed_index > 0) label += "@seed" + std::to_string(seed);
+  if (seed_index > 0)
+    label += "@seed" + std::to_string(seed);
   return label;
 }
 
@@ -64,7 +66,8 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
     std::vector<EvalSource> sources;
 
     for (const char* positioner : {"baseline", "centroid", "oracle"}) {
-      if (!spec.Uses(positioner)) continue;
+      if (!spec.Uses(positioner))
+        continue;
       Job job;
       job.key = "position/" + name + "/" + positioner;
       job.label = positioner;
@@ -85,7 +88,8 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
         job.params.train_seed = seed;
         job.params.fidelity = spec.train.fidelity;
         job.params.train_episodes = spec.train.episodes;
-        if (spec.Uses("rl")) sources.push_back({EvalLabel(0, i, seed), job.key, seed, {}});
+        if (spec.Uses("rl"))
+          sources.push_back({EvalLabel(0, i, seed), job.key, seed, {}});
         if (spec.Uses("offsets")) {
           for (int k = 1; k <= kOffsetCount; ++k) {
             PositionRule rule;

@@ -22,7 +22,7 @@ namespace rlpos {
 struct ExpandedCampaign {
   std::string id;
   std::string name;
-  nlohmann::json spec;  // ToJson(CampaignSpec): what the id hashes
+  nlohmann::json spec;   // ToJson(CampaignSpec): what the id hashes
   int max_attempts = 3;  // 1 + retries
   double job_timeout_s = 600.0;
   std::vector<Job> jobs;  // every dependency comes before its dependents

@@ -237,9 +237,8 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
         .Bind(ToJson(job.position_rule).dump());
     // Dependants learn their content (an eval's position) when their dependency succeeds; until
     // then they keep its base. The others know it now, and need no base.
-    const auto key = job.depends_on.empty()
-                         ? JobContentKey(job.content_base, p.kind, std::nullopt)
-                         : std::nullopt;
+    const auto key = job.depends_on.empty() ? JobContentKey(job.content_base, p.kind, std::nullopt)
+                                            : std::nullopt;
     insert.Bind(key ? std::nullopt : text_or_null(job.content_base)).Bind(key).Run();
     if (key)
       cacheable.push_back(job.id);
@@ -363,8 +362,8 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
     try {
       StoreArtifacts(job_id, artifacts);
     } catch (const std::exception& e) {
-      const JobUpdate update = FailAttempt(
-          job_id, attempt, max_attempts, std::string("cannot store its artifacts: ") + e.what());
+      const JobUpdate update = FailAttempt(job_id, attempt, max_attempts,
+                                           std::string("cannot store its artifacts: ") + e.what());
       UpdateCampaignState(campaign_id);
       transaction.Commit();
       return update;
@@ -440,10 +439,10 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         throw StoreError(file(), "job " + dependents.Text(0) + ": bad position rule: " + e.what());
       }
       const Vec3 position = ApplyPositionRule(rule, produced);
-      bound.push_back({dependents.Text(0), position,
-                       JobContentKey(dependents.OptionalText(3).value_or(""), dependent_kind,
-                                     position),
-                       dependents.Text(4) == "pending"});
+      bound.push_back(
+          {dependents.Text(0), position,
+           JobContentKey(dependents.OptionalText(3).value_or(""), dependent_kind, position),
+           dependents.Text(4) == "pending"});
     }
     dependents.Reset();
     Statement update = db_->Prepare(
@@ -477,7 +476,8 @@ void ResultsStore::StoreArtifacts(const std::string& job_id,
   Transaction rows(*db_);  // none of them if one file fails
   const std::string root = ArtifactsDirOf(file());
   Statement insert = db_->Prepare(
-      "INSERT OR REPLACE INTO artifacts (job_id, name, path, sha256, bytes) VALUES (?, ?, ?, ?, ?)");
+      "INSERT OR REPLACE INTO artifacts (job_id, name, path, sha256, bytes) VALUES (?, ?, ?, ?, "
+      "?)");
   for (const auto& a : artifacts) {
     const std::string path = ArtifactRelativePath(job_id, a.name);
     WriteArtifactFile(root, path, a.data);

@@ -176,8 +176,7 @@ class ResultsStore {
   // `artifacts` (checked by the caller: wire/artifacts.h) are written under ArtifactsDirOf(file())
   // and listed in the artifacts table; a failure to write them fails the attempt.
   JobUpdate RecordSuccess(const std::string& job_id, int attempt, const nlohmann::json& result,
-                          const std::string& worker_id = "",
-                          const Provenance* provenance = nullptr,
+                          const std::string& worker_id = "", const Provenance* provenance = nullptr,
                           const std::vector<ArtifactFile>& artifacts = {});
   JobUpdate RecordFailure(const std::string& job_id, int attempt, const std::string& error,
                           const std::string& worker_id = "");

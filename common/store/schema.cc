@@ -160,8 +160,8 @@ ALTER TABLE jobs ADD COLUMN scenario_sha256 TEXT;
 // Version 7: the result cache and artifacts that come home.
 //  - campaigns.use_cache: 0 when submitted with --no-cache (its jobs always run);
 //  - jobs.content_base: hash of what the job runs but an eval's position
-//    (campaign/job_content.h), kept only until cache_key, its full content, is known; cached_from: the
-//    succeeded job whose result this one took; cache_twin: an identical job, ready or running,
+//    (campaign/job_content.h), kept only until cache_key, its full content, is known; cached_from:
+//    the succeeded job whose result this one took; cache_twin: an identical job, ready or running,
 //    whose result this one waits for instead of running too;
 //  - artifacts: each file's sha256 and size; path is relative to the artifacts folder;
 //  - fewer indexes that hold a job's state, each updated on every state change (three per

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "campaign/campaign_spec.h"
+#include "campaign/offsets.h"
 #include "config/config_error.h"
 #include "scenario/scenario_parser.h"
 #include "wire/json_text.h"
@@ -43,12 +44,20 @@ ExpandedCampaign ExpandSubmittedCampaign(const std::string& campaign_json,
   } catch (const ConfigError& e) {
     throw std::invalid_argument("campaign: " + e.describe());
   }
-  // Count before expanding: a hostile campaign must not make the coordinator build a huge list.
-  std::size_t jobs_per_scenario =
-      3 + spec.train.seeds.size() * (1 + 6 * spec.rng_runs.size()) + 3 * spec.rng_runs.size();
-  if (spec.scenarios.size() * jobs_per_scenario > 4 * limits.max_jobs) {
-    throw std::invalid_argument("the campaign has more than " + std::to_string(limits.max_jobs) +
-                                " jobs (the coordinator's limit)");
+  // Count before expanding, as ExpandCampaign will: a hostile campaign must not make the
+  // coordinator build a huge list.
+  std::size_t producers = 0;  // position jobs of a scenario
+  for (const char* positioner : {"baseline", "centroid", "oracle"})
+    producers += spec.Uses(positioner) ? 1 : 0;
+  const std::size_t trains = spec.NeedsTraining() ? spec.train.seeds.size() : 0;
+  const std::size_t labels =
+      producers + trains * ((spec.Uses("rl") ? 1 : 0) + (spec.Uses("offsets") ? kOffsetCount : 0));
+  const std::size_t jobs_per_scenario = producers + trains + labels * spec.rng_runs.size();
+  if (spec.scenarios.size() * jobs_per_scenario > limits.max_jobs) {
+    throw std::invalid_argument("the campaign has " +
+                                std::to_string(spec.scenarios.size() * jobs_per_scenario) +
+                                " jobs, more than the coordinator's limit of " +
+                                std::to_string(limits.max_jobs));
   }
   ExpandedCampaign expanded = ExpandCampaign(spec);
   if (expanded.jobs.size() > limits.max_jobs) {

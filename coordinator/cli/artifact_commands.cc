@@ -45,7 +45,8 @@ int ListOrExportArtifacts(const std::string& db, const std::string& id,
   const fs::path root = ArtifactsDirOf(db);
   if (out_dir.empty()) {
     std::cout << std::left << std::setw(40) << "job" << std::setw(20) << "name" << std::right
-              << std::setw(10) << "bytes" << "  sha256\n";
+              << std::setw(10) << "bytes"
+              << "  sha256\n";
     for (const auto& a : artifacts) {
       std::cout << std::left << std::setw(40) << a.job_key << std::setw(20) << a.name << std::right
                 << std::setw(10) << a.bytes << "  " << a.sha256.substr(0, 16)

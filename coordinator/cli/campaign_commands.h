@@ -44,8 +44,7 @@ int InitSecurity(const std::string& dir, int days);
 int AddSecurityIdentity(const std::string& dir, const std::string& name, DdsRole role, int days);
 // Lists the artifacts of a campaign or job, or (out_dir given) exports them to
 // out_dir/<job key>/<name>, checked against their sha256; out_dir must not exist.
-int ListOrExportArtifacts(const std::string& db, const std::string& id,
-                          const std::string& out_dir);
+int ListOrExportArtifacts(const std::string& db, const std::string& id, const std::string& out_dir);
 int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
                         const std::string& out_dir);
 

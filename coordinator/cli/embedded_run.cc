@@ -252,12 +252,13 @@ int RunCampaign(const RunOptions& options) {
     printer.Note("running " + campaign.name + " (" + std::to_string(campaign.jobs.size()) +
                  " jobs) on " + std::to_string(options.workers) + " worker(s); " +
                  DescribeDds(dds) + "; logs in " + log_dir.string());
-    const msg::CampaignReply reply = SendCampaignRequest(dds, SubmitRequest(submission, options.use_cache), 60.0, [&] {
-      if (StopRequested())
-        throw std::runtime_error("interrupted before the campaign started");
-      for (auto& d : daemons)
-        d->RequireRunning();
-    });
+    const msg::CampaignReply reply =
+        SendCampaignRequest(dds, SubmitRequest(submission, options.use_cache), 60.0, [&] {
+          if (StopRequested())
+            throw std::runtime_error("interrupted before the campaign started");
+          for (auto& d : daemons)
+            d->RequireRunning();
+        });
     if (!reply.ok)
       throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
     if (reply.campaign_id != campaign.id) {

@@ -1,8 +1,8 @@
 #include "daemon/coordinator_daemon.h"
 
 #include <chrono>
-#include <thread>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "daemon/scenario_documents.h"
 #include "dds/message_checks.h"

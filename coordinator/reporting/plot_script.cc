@@ -38,10 +38,10 @@ PlotOutcome DrawPlots(const PlotRequest& request) {
                              : std::vector<std::string>{request.python};
   std::vector<std::string> failures;
   for (const auto& python : interpreters) {
-    std::vector<std::string> argv{python,        request.script,    "--throughput-ccdf",
-                                  request.throughput_csv, "--delay-cdf", request.delay_csv,
-                                  "--out-dir",   request.out_dir,   "--title",
-                                  request.title};
+    std::vector<std::string> argv{
+        python,        request.script,    "--throughput-ccdf", request.throughput_csv,
+        "--delay-cdf", request.delay_csv, "--out-dir",         request.out_dir,
+        "--title",     request.title};
     if (!request.learning_csv.empty()) {
       argv.push_back("--learning-curves");
       argv.push_back(request.learning_csv);

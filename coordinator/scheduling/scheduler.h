@@ -13,7 +13,7 @@
 namespace rlpos {
 
 struct TickResult {
-  std::vector<TimedOut> timed_out;  // failed in the store: their workers should stop them
+  std::vector<TimedOut> timed_out;   // failed in the store: their workers should stop them
   std::vector<Assignment> assigned;  // marked running in the store: send them to the workers
 };
 

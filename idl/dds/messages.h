@@ -32,7 +32,7 @@ struct JobEvent {
   std::string worker_id;
   JobState state = JobState::kStarted;
   std::string result_json, message;
-  Provenance provenance;  // kSucceeded, kFailed
+  Provenance provenance;                // kSucceeded, kFailed
   std::vector<ArtifactFile> artifacts;  // kSucceeded of a train job
 };
 

@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 
 #include "campaign/campaign_id.h"
 #include "config/number_text.h"
 #include "test_support.h"
+#include "wire/campaign_request.h"
 
 namespace rlpos {
 namespace {
@@ -259,6 +262,43 @@ TEST(NumberText, NumbersReadBackExactly) {
   EXPECT_EQ(FormatNumber(-3.25), "-3.25");
   EXPECT_EQ(std::stod(FormatNumber(1.0 / 3.0)), 1.0 / 3.0);
   EXPECT_EQ(FormatPosition({50, 35.5, 10}), "50,35.5,10");
+}
+
+}  // namespace
+}  // namespace rlpos
+
+namespace rlpos {
+namespace {
+
+// The coordinator's job limit counts a submitted campaign's jobs before expanding it, exactly:
+// a campaign of exactly the limit passes, one job more is refused with its count.
+TEST(SubmitLimits, CountJobsExactlyBeforeExpanding) {
+  std::ifstream in(SourcePath("campaigns/scenarios/b.json"));
+  const std::string document((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+  const std::vector<SubmittedScenario> files{{"b.json", document}};
+  for (const std::string positioners :
+       {R"(["baseline"])", R"(["rl"])", R"(["offsets", "oracle"])",
+        R"(["baseline", "offsets", "centroid", "oracle", "rl"])"}) {
+    for (const std::string seeds : {"[1]", "[1, 2, 3]"}) {
+      const std::string campaign = R"({"name": "n", "scenarios": ["b.json"], "rng_runs": [1, 7],
+        "positioners": )" + positioners + R"(, "train": {"seeds": )" + seeds + "}}";
+      const std::size_t jobs = ExpandSubmittedCampaign(campaign, files, {}).jobs.size();
+      SubmitLimits limits;
+      limits.max_jobs = jobs;
+      EXPECT_EQ(ExpandSubmittedCampaign(campaign, files, limits).jobs.size(), jobs);
+      limits.max_jobs = jobs - 1;
+      try {
+        ExpandSubmittedCampaign(campaign, files, limits);
+        ADD_FAILURE() << positioners << " " << seeds << ": not refused";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_EQ(std::string(e.what()), "the campaign has " + std::to_string(jobs) +
+                                             " jobs, more than the coordinator's limit of " +
+                                             std::to_string(jobs - 1))
+            << positioners << " " << seeds;
+      }
+    }
+  }
 }
 
 }  // namespace

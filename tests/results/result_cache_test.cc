@@ -99,7 +99,8 @@ TEST_F(ResultCacheTest, ACampaignUnderANewNameIsServedWholeAtSubmit) {
                   "' AND cached_from IS NULL"),
             "0");
   EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs a JOIN jobs f ON f.id = a.cached_from WHERE "
-                  "a.campaign_id = '" + again.id + "' AND f.campaign_id = '" + first.id + "'"),
+                  "a.campaign_id = '" +
+                  again.id + "' AND f.campaign_id = '" + first.id + "'"),
             std::to_string(first.jobs.size()));
   const auto metrics_first = store_.Metrics(first.id), metrics_again = store_.Metrics(again.id);
   ASSERT_EQ(metrics_again.size(), metrics_first.size());

@@ -9,9 +9,9 @@
 #include "config/number_text.h"
 #include "hash/sha256.h"
 #include "store/artifact_files.h"
-#include "wire/limits.h"
 #include "store/store_error.h"
 #include "test_support.h"
+#include "wire/limits.h"
 
 namespace rlpos {
 namespace {
@@ -500,9 +500,9 @@ TEST_F(StoreTest, ListReadyOldestCampaignFirst) {
 TEST_F(StoreTest, ArtifactsAreStoredBesideTheDatabase) {
   store_.Submit(campaign_);
   const int attempt = Start("train/B/seed1");
-  const std::vector<ArtifactFile> files{{"policy.pt", Sha256Hex("weights"), "weights"},
-                                        {"learning_curve.csv", Sha256Hex("e,r\n1,2\n"),
-                                         "e,r\n1,2\n"}};
+  const std::vector<ArtifactFile> files{
+      {"policy.pt", Sha256Hex("weights"), "weights"},
+      {"learning_curve.csv", Sha256Hex("e,r\n1,2\n"), "e,r\n1,2\n"}};
   ASSERT_EQ(store_.RecordSuccess(Id("train/B/seed1"), attempt, PositionResult(50, 50, 30), "w1",
                                  nullptr, files),
             JobUpdate::kSucceeded);
@@ -550,8 +550,9 @@ TEST(ArtifactChecks, NamesSizesAndHashes) {
   EXPECT_EQ(CheckArtifacts({{"../policy.pt", Sha256Hex("x"), "x"}}), "unknown artifact name");
   EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex("y"), "x"}}),
             "artifact policy.pt does not match its sha256");
-  EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex("x"), "x"}, {"policy.pt", Sha256Hex("x"), "x"}}),
-            "artifact policy.pt twice");
+  EXPECT_EQ(
+      CheckArtifacts({{"policy.pt", Sha256Hex("x"), "x"}, {"policy.pt", Sha256Hex("x"), "x"}}),
+      "artifact policy.pt twice");
   const std::string big(wire::kMaxArtifactBytes + 1, 'a');
   EXPECT_EQ(CheckArtifacts({{"policy.pt", Sha256Hex(big), big}}), "artifact policy.pt too large");
   const std::string half(wire::kMaxArtifactBytes, 'a');

@@ -8,17 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "wire/artifacts.h"
-
 #include "process/child_process.h"
+#include "wire/artifacts.h"
 #include "wire/job_order.h"
 
 namespace rlpos {
 
 struct JobOutcome {
   bool succeeded = false;
-  std::string result_json;  // compact JSON printed by the child
-  std::string error;        // one line
+  std::string result_json;              // compact JSON printed by the child
+  std::string error;                    // one line
   std::vector<ArtifactFile> artifacts;  // a train job's files, to send home
 };
 

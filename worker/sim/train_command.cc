@@ -39,8 +39,8 @@ void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
   const Vec3& p = r.final_info.position;
   out << r.episode << ',' << (r.evaluation ? "eval" : "train") << ',' << r.steps << ','
       << r.total_reward << ',' << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ','
-      << r.updates << ',' << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ',' << p.z << ',' << r.final_info.n_los
-      << ',' << r.final_info.throughput_mbps << '\n';
+      << r.updates << ',' << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ','
+      << p.z << ',' << r.final_info.n_los << ',' << r.final_info.throughput_mbps << '\n';
 }
 
 }  // namespace
