@@ -81,7 +81,7 @@ run_mode() {  # run_mode NAME [SECURITY FLAGS...]
     perf record -q -F 499 -g -p "$coordinator" -o "$RLPOS_BENCH_PERF/$name.data" 2>/dev/null &
     perf=$!
   fi
-  id=$("$bin/rlpos-campaign" submit "$work/campaign.json" "${dds[@]}" 2>/dev/null)
+  id=$("$bin/rlpos-campaign" submit "$work/campaign.json" "${dds[@]}" --timeout 120 2>/dev/null)
   until [ "$(sqlite3 "$dir/rlpos.db" "SELECT state FROM campaigns WHERE id = '$id'")" = finished ]; do
     kill -0 "$coordinator" 2>/dev/null || { echo "$name: the coordinator died" >&2; exit 1; }
     sleep 0.2
