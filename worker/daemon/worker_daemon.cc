@@ -111,8 +111,10 @@ void WorkerDaemon::Start(msg::JobAssignment a) {
     event.message = std::string("worker could not start the job: ") + e.what();
     event.message = event.message.substr(0, wire::kMaxMessage - 1);
     Log(LogLevel::kWarning, key + ": " + event.message);
-    // Said once and forgotten: a refused order keeps no state here.
+    // Said once and forgotten: a refused order keeps no state here (its event instance is
+    // unregistered at once).
     taken_.erase(job_id);
+    announced_.erase(job_id);
     dds_->events.Write(event);
     dds_->events.Unregister(event);
   }
