@@ -277,12 +277,12 @@ TEST(SubmitLimits, CountJobsExactlyBeforeExpanding) {
   const std::string document((std::istreambuf_iterator<char>(in)),
                              std::istreambuf_iterator<char>());
   const std::vector<SubmittedScenario> files{{"b.json", document}};
-  for (const std::string positioners :
-       {R"(["baseline"])", R"(["rl"])", R"(["offsets", "oracle"])",
-        R"(["baseline", "offsets", "centroid", "oracle", "rl"])"}) {
+  for (const std::string positioners : {R"(["baseline"])", R"(["rl"])", R"(["offsets", "oracle"])",
+                                        R"(["baseline", "offsets", "centroid", "oracle", "rl"])"}) {
     for (const std::string seeds : {"[1]", "[1, 2, 3]"}) {
       const std::string campaign = R"({"name": "n", "scenarios": ["b.json"], "rng_runs": [1, 7],
-        "positioners": )" + positioners + R"(, "train": {"seeds": )" + seeds + "}}";
+        "positioners": )" + positioners +
+                                   R"(, "train": {"seeds": )" + seeds + "}}";
       const std::size_t jobs = ExpandSubmittedCampaign(campaign, files, {}).jobs.size();
       SubmitLimits limits;
       limits.max_jobs = jobs;

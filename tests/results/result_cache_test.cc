@@ -1,8 +1,8 @@
 // The result cache: a job takes the result of a succeeded job of the same content instead of
 // running; identical jobs that would run at once run once; --no-cache runs everything.
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 
+#include <functional>
 #include <map>
 
 #include "campaign/job_content.h"
@@ -32,9 +32,9 @@ class ResultCacheTest : public ::testing::Test {
       return {36, 12, 30};
     return {50, 50, 30};
   }
-  // Plays the workers: runs every ready job until none is left; evals give a throughput of
-  // 100 + run. Returns how many jobs ran.
-  int RunAll() {
+  // Plays the workers: runs every ready job until none is left; trains and positions end where
+  // `produced` says, evals give a throughput of 100 + run. Returns how many jobs ran.
+  int RunAll(const std::function<Vec3(const ReadyJob&)>& produced = Produced) {
     int ran = 0;
     for (auto ready = store_.ListReady(); !ready.empty(); ready = store_.ListReady()) {
       for (const auto& job : ready) {
@@ -43,7 +43,7 @@ class ResultCacheTest : public ::testing::Test {
             job.params.kind == JobKind::kEval
                 ? AtJobPosition(store_, job.id,
                                 EvalResult(*job.params.rng_run, 100.0 + *job.params.rng_run, 5))
-                : PositionResult(Produced(job).x, Produced(job).y, Produced(job).z);
+                : PositionResult(produced(job).x, produced(job).y, produced(job).z);
         EXPECT_EQ(store_.RecordSuccess(job.id, job.attempt, result, "w1"), JobUpdate::kSucceeded)
             << job.id;
         ++ran;
@@ -52,22 +52,7 @@ class ResultCacheTest : public ::testing::Test {
     return ran;
   }
   std::string Query(const std::string& sql) {
-    sqlite3* db = nullptr;
-    sqlite3_open_v2(dir_.File("rlpos.db").c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
-    sqlite3_stmt* stmt = nullptr;
-    std::string out = "<error>";
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) == SQLITE_OK) {
-      out = "<no row>";
-      if (sqlite3_step(stmt) == SQLITE_ROW) {
-        const auto* text = sqlite3_column_text(stmt, 0);
-        out = text ? reinterpret_cast<const char*>(text) : "<null>";
-      }
-    } else {
-      out = sqlite3_errmsg(db);
-    }
-    sqlite3_finalize(stmt);
-    sqlite3_close(db);
-    return out;
+    return testing::QueryOne(dir_.File("rlpos.db"), sql);
   }
   static ExpandedCampaign Named(const std::string& name, bool use_cache = true) {
     CampaignSpec spec = testing::MiniSpec();
@@ -146,19 +131,9 @@ TEST_F(ResultCacheTest, AnotherPositionOrRunIsAnotherContent) {
   const ExpandedCampaign campaign = ExpandCampaign(spec);
   store_.Submit(campaign);
   // Seed 2's training ends elsewhere: nothing is shared.
-  int ran = 0;
-  for (auto ready = store_.ListReady(); !ready.empty(); ready = store_.ListReady()) {
-    for (const auto& job : ready) {
-      ASSERT_TRUE(store_.MarkRunning(job.id, "w1", job.attempt));
-      const double x = job.params.train_seed == 2u ? 55 : 50;
-      const nlohmann::json result =
-          job.params.kind == JobKind::kEval
-              ? AtJobPosition(store_, job.id, EvalResult(*job.params.rng_run, 100, 5))
-              : PositionResult(x, 50, 30);
-      store_.RecordSuccess(job.id, job.attempt, result, "w1");
-      ++ran;
-    }
-  }
+  const int ran = RunAll([](const ReadyJob& job) {
+    return Vec3{job.params.train_seed == 2u ? 55.0 : 50.0, 50, 30};
+  });
   EXPECT_EQ(ran, static_cast<int>(campaign.jobs.size()));
   EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE cached_from IS NOT NULL"), "0");
 }

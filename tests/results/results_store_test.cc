@@ -1,7 +1,6 @@
 #include "store/results_store.h"
 
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 
 #include <fstream>
 #include <iterator>
@@ -47,22 +46,7 @@ class StoreTest : public ::testing::Test {
   }
   // One value from SQL, through the C API (what a user's own query sees).
   std::string Query(const std::string& sql) {
-    sqlite3* db = nullptr;
-    sqlite3_open_v2(dir_.File("rlpos.db").c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
-    sqlite3_stmt* stmt = nullptr;
-    std::string out = "<error>";
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) == SQLITE_OK) {
-      out = "<no row>";
-      if (sqlite3_step(stmt) == SQLITE_ROW) {
-        const auto* text = sqlite3_column_text(stmt, 0);
-        out = text ? reinterpret_cast<const char*>(text) : "<null>";
-      }
-    } else {
-      out = sqlite3_errmsg(db);
-    }
-    sqlite3_finalize(stmt);
-    sqlite3_close(db);
-    return out;
+    return testing::QueryOne(dir_.File("rlpos.db"), sql);
   }
 
   testing::TempDir dir_;

@@ -320,21 +320,7 @@ class LegacyStoreTest : public ::testing::Test {
   }
 
   // One value through the C API, "<null>" for NULL.
-  std::string Query(const std::string& sql) {
-    sqlite3* db = nullptr;
-    sqlite3_open_v2(file_.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
-    sqlite3_stmt* stmt = nullptr;
-    std::string out = "<no row>";
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) != SQLITE_OK) {
-      out = sqlite3_errmsg(db);
-    } else if (sqlite3_step(stmt) == SQLITE_ROW) {
-      const auto* text = sqlite3_column_text(stmt, 0);
-      out = text ? reinterpret_cast<const char*>(text) : "<null>";
-    }
-    sqlite3_finalize(stmt);
-    sqlite3_close(db);
-    return out;
-  }
+  std::string Query(const std::string& sql) { return testing::QueryOne(file_, sql); }
   std::string Column(const std::string& column, const std::string& key) {
     return Query("SELECT " + column + " FROM jobs WHERE key = '" + key + "'");
   }

@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include <sqlite3.h>
+
 #include <sstream>
 
 #include "config/number_text.h"
@@ -102,6 +104,22 @@ nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id,
     result["position"] = {job->position->x, job->position->y, job->position->z};
   }
   return result;
+}
+
+std::string QueryOne(const std::string& db_file, const std::string& sql) {
+  sqlite3* db = nullptr;
+  sqlite3_open_v2(db_file.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+  sqlite3_stmt* stmt = nullptr;
+  std::string out = "<no row>";
+  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) != SQLITE_OK) {
+    out = sqlite3_errmsg(db);
+  } else if (sqlite3_step(stmt) == SQLITE_ROW) {
+    const auto* text = sqlite3_column_text(stmt, 0);
+    out = text ? reinterpret_cast<const char*>(text) : "<null>";
+  }
+  sqlite3_finalize(stmt);
+  sqlite3_close(db);
+  return out;
 }
 
 }  // namespace rlpos::testing
