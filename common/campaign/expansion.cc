@@ -2,6 +2,7 @@
 
 #include "campaign/campaign_id.h"
 #include "campaign/job_content.h"
+#include "campaign/offsets.h"
 #include "hash/sha256.h"
 #include "provenance/provenance.h"
 
@@ -44,20 +45,36 @@ std::string EvalLabel(int k, std::size_t seed_index, std::uint64_t seed) {
   return label;
 }
 
-ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
-  ExpandedCampaign out;
+CampaignPlan PlanCampaign(const CampaignSpec& spec) {
+  CampaignPlan out;
   out.id = CampaignId(spec);
   out.name = spec.name;
   out.spec = ToJson(spec);
   out.max_attempts = 1 + spec.retries;
   out.job_timeout_s = spec.job_timeout_s;
+  out.parsed = spec;
+  return out;
+}
 
+std::size_t CampaignPlan::JobCount() const {
+  const CampaignSpec& spec = parsed;
+  std::size_t producers = 0;  // position jobs of a scenario
+  for (const char* positioner : {"baseline", "centroid", "oracle"})
+    producers += spec.Uses(positioner) ? 1 : 0;
+  const std::size_t trains = spec.NeedsTraining() ? spec.train.seeds.size() : 0;
+  const std::size_t labels =
+      producers + trains * ((spec.Uses("rl") ? 1 : 0) + (spec.Uses("offsets") ? kOffsetCount : 0));
+  return spec.scenarios.size() * (producers + trains + labels * spec.rng_runs.size());
+}
+
+void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
+  const CampaignSpec& spec = parsed;
   const std::string build = ThisBuild().rlpos_version;
   std::string scenario_sha256;  // of the scenario being expanded
   const auto add = [&](Job job) {
-    job.id = JobId(out.id, job.key);
+    job.id = JobId(id, job.key);
     job.content_base = JobContentBase(job.params, scenario_sha256, build);
-    out.jobs.push_back(std::move(job));
+    emit(std::move(job));
   };
 
   for (const auto& s : spec.scenarios) {
@@ -107,7 +124,7 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
         Job job;
         job.key = "eval/" + name + "/" + source.label + "/run" + std::to_string(run);
         job.label = source.label;
-        job.depends_on = JobId(out.id, source.depends_on_key);
+        job.depends_on = JobId(id, source.depends_on_key);
         job.position_rule = source.rule;
         job.params = ScenarioParams(spec, s, JobKind::kEval);
         job.params.rng_run = run;
@@ -116,6 +133,13 @@ ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
       }
     }
   }
+}
+
+ExpandedCampaign ExpandCampaign(const CampaignSpec& spec) {
+  ExpandedCampaign out;
+  static_cast<CampaignPlan&>(out) = PlanCampaign(spec);
+  out.jobs.reserve(out.JobCount());
+  out.ForEachJob([&](Job&& job) { out.jobs.push_back(std::move(job)); });
   return out;
 }
 

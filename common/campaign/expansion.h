@@ -10,6 +10,8 @@
 // Several train seeds: every seed gets its own rl/offset evals. The first seed's labels are the
 // plain "rl", "offset1".."offset5" (the paper's curves); later seeds' carry "@seed<N>"
 // ("rl@seed2", "offset3@seed2"), so adding a seed never renames the first seed's results.
+#include <cstddef>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -19,16 +21,30 @@
 
 namespace rlpos {
 
-struct ExpandedCampaign {
+// A campaign ready to store: its settings, and its jobs made one at a time from its spec, so
+// that a campaign of 100k jobs is never held in memory whole.
+struct CampaignPlan {
   std::string id;
   std::string name;
   nlohmann::json spec;   // ToJson(CampaignSpec): what the id hashes
   int max_attempts = 3;  // 1 + retries
   double job_timeout_s = 600.0;
-  std::vector<Job> jobs;  // every dependency comes before its dependents
   // Jobs may take the result of a succeeded job of the same content (any campaign) instead of
   // running; false: every job runs (`--no-cache`).
   bool use_cache = true;
+  CampaignSpec parsed;  // what the jobs are made from
+
+  // How many jobs ForEachJob makes, counted without making them.
+  std::size_t JobCount() const;
+  // Every job in order: each dependency comes before its dependents.
+  void ForEachJob(const std::function<void(Job&&)>& emit) const;
+};
+
+CampaignPlan PlanCampaign(const CampaignSpec& spec);
+
+// A plan with its jobs in memory: for readers of small campaigns (tests, `run --dry-run`).
+struct ExpandedCampaign : CampaignPlan {
+  std::vector<Job> jobs;
 };
 
 ExpandedCampaign ExpandCampaign(const CampaignSpec& spec);

@@ -168,7 +168,7 @@ double ResultsStore::Now() const {
   return options_.clock();
 }
 
-SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
+SubmitResult ResultsStore::Submit(const CampaignPlan& campaign) {
   Transaction transaction(*db_);
   SubmitResult result{campaign.id, false, 0};
   const std::string spec_text = campaign.spec.dump();
@@ -208,7 +208,7 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
   const auto text_or_null = [](const std::string& text) {
     return text.empty() ? std::nullopt : std::optional<std::string>(text);
   };
-  for (const Job& job : campaign.jobs) {
+  campaign.ForEachJob([&](Job&& job) {
     const JobParams& p = job.params;
     insert.Reset();
     insert.Bind(job.id)
@@ -242,7 +242,7 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
     insert.Bind(key ? std::nullopt : text_or_null(job.content_base)).Bind(key).Run();
     if (key)
       cacheable.push_back(job.id);
-  }
+  });
   if (campaign.use_cache) {
     for (const auto& id : cacheable)
       ResolveFromCache(id);
@@ -250,7 +250,7 @@ SubmitResult ResultsStore::Submit(const ExpandedCampaign& campaign) {
   UpdateCampaignState(campaign.id);
   transaction.Commit();
   result.created = true;
-  result.jobs = static_cast<int>(campaign.jobs.size());
+  result.jobs = seq;
   return result;
 }
 

@@ -162,7 +162,7 @@ class ResultsStore {
   StoreBatch Batch();
 
   // Inserts the campaign and its jobs; re-submitting the same campaign is a no-op.
-  SubmitResult Submit(const ExpandedCampaign& campaign);
+  SubmitResult Submit(const CampaignPlan& campaign);
 
   // Ready jobs of active campaigns: oldest campaign first, then expansion order; at most
   // `per_campaign` of each (0 = all).

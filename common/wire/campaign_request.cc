@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "campaign/campaign_spec.h"
-#include "campaign/offsets.h"
 #include "config/config_error.h"
 #include "scenario/scenario_parser.h"
 #include "wire/json_text.h"
@@ -12,9 +11,9 @@
 
 namespace rlpos {
 
-ExpandedCampaign ExpandSubmittedCampaign(const std::string& campaign_json,
-                                         const std::vector<SubmittedScenario>& scenarios,
-                                         const SubmitLimits& limits) {
+CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
+                                   const std::vector<SubmittedScenario>& scenarios,
+                                   const SubmitLimits& limits) {
   std::size_t bytes = campaign_json.size();
   for (const auto& s : scenarios)
     bytes += s.file.size() + s.document.size();
@@ -44,35 +43,21 @@ ExpandedCampaign ExpandSubmittedCampaign(const std::string& campaign_json,
   } catch (const ConfigError& e) {
     throw std::invalid_argument("campaign: " + e.describe());
   }
-  // Count before expanding, as ExpandCampaign will: a hostile campaign must not make the
-  // coordinator build a huge list.
-  std::size_t producers = 0;  // position jobs of a scenario
-  for (const char* positioner : {"baseline", "centroid", "oracle"})
-    producers += spec.Uses(positioner) ? 1 : 0;
-  const std::size_t trains = spec.NeedsTraining() ? spec.train.seeds.size() : 0;
-  const std::size_t labels =
-      producers + trains * ((spec.Uses("rl") ? 1 : 0) + (spec.Uses("offsets") ? kOffsetCount : 0));
-  const std::size_t jobs_per_scenario = producers + trains + labels * spec.rng_runs.size();
-  if (spec.scenarios.size() * jobs_per_scenario > limits.max_jobs) {
-    throw std::invalid_argument("the campaign has " +
-                                std::to_string(spec.scenarios.size() * jobs_per_scenario) +
+  // Counted, never expanded here: the store makes the jobs one at a time.
+  CampaignPlan plan = PlanCampaign(spec);
+  if (plan.JobCount() > limits.max_jobs) {
+    throw std::invalid_argument("the campaign has " + std::to_string(plan.JobCount()) +
                                 " jobs, more than the coordinator's limit of " +
                                 std::to_string(limits.max_jobs));
   }
-  ExpandedCampaign expanded = ExpandCampaign(spec);
-  if (expanded.jobs.size() > limits.max_jobs) {
-    throw std::invalid_argument("the campaign has " + std::to_string(expanded.jobs.size()) +
-                                " jobs, more than the coordinator's limit of " +
-                                std::to_string(limits.max_jobs));
-  }
-  return expanded;
+  return plan;
 }
 
 CampaignSubmission ReadCampaignSubmission(const std::string& campaign_file) {
   CampaignSubmission out;
   const nlohmann::json document = ReadJsonFile(campaign_file);
   const CampaignSpec spec = ReadCampaignFile(campaign_file);
-  out.campaign = ExpandCampaign(spec);
+  out.campaign = PlanCampaign(spec);
   out.campaign_json = document.dump();
   std::map<std::string, bool> sent;
   for (const auto& s : spec.scenarios) {

@@ -1,7 +1,7 @@
 #pragma once
 // A campaign submitted over the network: the campaign file as written and the scenario files it
 // names, as the client read them. The coordinator validates it with the same validator as
-// `rlpos-campaign run` and expands it itself, so the campaign id is the hash of what it checked.
+// `rlpos-campaign run` and plans it itself, so the campaign id is the hash of what it checked.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -23,14 +23,14 @@ struct SubmitLimits {
 
 // Throws std::invalid_argument with one line that says what is wrong (the reply's message):
 // over a limit, malformed JSON, or the campaign's ConfigError with its JSON path.
-ExpandedCampaign ExpandSubmittedCampaign(const std::string& campaign_json,
-                                         const std::vector<SubmittedScenario>& scenarios,
-                                         const SubmitLimits& limits);
+CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
+                                   const std::vector<SubmittedScenario>& scenarios,
+                                   const SubmitLimits& limits);
 
 // What a client sends for a campaign file: its text and the scenario files it names. Reads
 // and validates the campaign first (ConfigError as ReadCampaignFile).
 struct CampaignSubmission {
-  ExpandedCampaign campaign;  // as the client expands it (its id is the one to expect)
+  CampaignPlan campaign;  // as the client plans it (its id is the one to expect)
   std::string campaign_json;
   std::vector<SubmittedScenario> scenarios;
 };

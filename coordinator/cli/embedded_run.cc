@@ -154,15 +154,15 @@ class ProgressPrinter {
 };
 
 // What a campaign would run: its id and its jobs per scenario and kind.
-void PrintPlan(const ExpandedCampaign& campaign) {
+void PrintPlan(const CampaignPlan& campaign) {
   std::map<std::string, std::map<std::string, int>> counts;  // scenario -> kind -> jobs
   std::vector<std::string> order;
-  for (const auto& job : campaign.jobs) {
+  campaign.ForEachJob([&](Job&& job) {
     if (!counts.count(job.params.scenario))
       order.push_back(job.params.scenario);
     ++counts[job.params.scenario][ToString(job.params.kind)];
-  }
-  std::cout << "campaign " << campaign.id << " (" << campaign.name << "): " << campaign.jobs.size()
+  });
+  std::cout << "campaign " << campaign.id << " (" << campaign.name << "): " << campaign.JobCount()
             << " jobs, " << campaign.max_attempts << " attempt(s) each at most, timeout "
             << FormatNumber(campaign.job_timeout_s) << " s\n";
   for (const auto& scenario : order) {
@@ -177,7 +177,7 @@ void PrintPlan(const ExpandedCampaign& campaign) {
 int RunCampaign(const RunOptions& options) {
   // Bad input stops here, before anything starts.
   const CampaignSubmission submission = ReadCampaignSubmission(options.campaign_file);
-  const ExpandedCampaign& campaign = submission.campaign;
+  const CampaignPlan& campaign = submission.campaign;
   if (options.dry_run) {
     PrintPlan(campaign);
     return kExitOk;
@@ -249,7 +249,7 @@ int RunCampaign(const RunOptions& options) {
   try {
     for (auto& d : daemons)
       d->Start();
-    printer.Note("running " + campaign.name + " (" + std::to_string(campaign.jobs.size()) +
+    printer.Note("running " + campaign.name + " (" + std::to_string(campaign.JobCount()) +
                  " jobs) on " + std::to_string(options.workers) + " worker(s); " +
                  DescribeDds(dds) + "; logs in " + log_dir.string());
     const msg::CampaignReply reply =

@@ -30,7 +30,7 @@ msg::CampaignReply RequestOnCampaign(msg::RequestKind kind, const std::string& c
 int SubmitCampaign(const std::string& campaign_file, bool use_cache, const DdsOptions& dds,
                    double timeout_s) {
   const CampaignSubmission submission = ReadCampaignSubmission(campaign_file);
-  const ExpandedCampaign& campaign = submission.campaign;
+  const CampaignPlan& campaign = submission.campaign;
   const msg::CampaignReply reply = SendCampaignRequest(
       dds, SubmitRequest(submission, use_cache), timeout_s, {}, [&](const msg::CampaignReply& r) {
         return !r.ok || r.campaign_id == campaign.id

@@ -85,8 +85,8 @@ void CoordinatorDaemon::HandleRequests() {
           std::vector<SubmittedScenario> scenarios;
           for (auto& file : r.data.scenarios)
             scenarios.push_back({std::move(file.file), std::move(file.document)});
-          ExpandedCampaign campaign =
-              ExpandSubmittedCampaign(r.data.campaign_json, scenarios, options_.limits);
+          CampaignPlan campaign =
+              PlanSubmittedCampaign(r.data.campaign_json, scenarios, options_.limits);
           campaign.use_cache = !r.data.no_cache;
           const SubmitResult result = store_.Submit(campaign);
           reply.campaign_id = result.campaign_id;

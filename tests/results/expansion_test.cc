@@ -283,13 +283,16 @@ TEST(SubmitLimits, CountJobsExactlyBeforeExpanding) {
       const std::string campaign = R"({"name": "n", "scenarios": ["b.json"], "rng_runs": [1, 7],
         "positioners": )" + positioners +
                                    R"(, "train": {"seeds": )" + seeds + "}}";
-      const std::size_t jobs = ExpandSubmittedCampaign(campaign, files, {}).jobs.size();
+      // The count the limit uses must be the number of jobs the store will make.
+      const CampaignPlan plan = PlanSubmittedCampaign(campaign, files, {});
+      const std::size_t jobs = ExpandCampaign(plan.parsed).jobs.size();
+      EXPECT_EQ(plan.JobCount(), jobs) << positioners << " " << seeds;
       SubmitLimits limits;
       limits.max_jobs = jobs;
-      EXPECT_EQ(ExpandSubmittedCampaign(campaign, files, limits).jobs.size(), jobs);
+      EXPECT_EQ(PlanSubmittedCampaign(campaign, files, limits).JobCount(), jobs);
       limits.max_jobs = jobs - 1;
       try {
-        ExpandSubmittedCampaign(campaign, files, limits);
+        PlanSubmittedCampaign(campaign, files, limits);
         ADD_FAILURE() << positioners << " " << seeds << ": not refused";
       } catch (const std::invalid_argument& e) {
         EXPECT_EQ(std::string(e.what()), "the campaign has " + std::to_string(jobs) +
