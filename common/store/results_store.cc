@@ -33,6 +33,20 @@ std::string OverridesJson(const std::vector<ScenarioOverride>& overrides) {
   return out.dump();
 }
 
+// The columns ReadRunningJob reads, in order.
+constexpr const char* kRunningJobColumns =
+    "id, campaign_id, COALESCE(worker_id, ''), COALESCE(slot, 0), attempt, started_at, timeout_s";
+
+RunningJob ReadRunningJob(const Statement& row) {
+  return {row.Text(0),
+          row.Text(1),
+          row.Text(2),
+          static_cast<int>(row.Int(3)),
+          static_cast<int>(row.Int(4)),
+          row.Double(5),
+          row.Double(6)};
+}
+
 // Reads kParamColumns starting at `first`; sets `position` from x, y, z.
 JobParams ReadParams(const Statement& row, int first, std::optional<Vec3>& position,
                      const std::string& file) {
@@ -294,13 +308,14 @@ std::vector<ReadyJob> ResultsStore::ListReady(std::size_t per_campaign) {
   return out;
 }
 
-bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& worker_id,
+bool ResultsStore::MarkRunning(const std::string& job_id, const std::string& worker_id, int slot,
                                int attempt) {
   db_->Prepare(
-         "UPDATE jobs SET state = 'running', worker_id = ?, started_at = ?, finished_at = NULL, "
-         "progress = NULL "
+         "UPDATE jobs SET state = 'running', worker_id = ?, slot = ?, started_at = ?, "
+         "finished_at = NULL, progress = NULL "
          "WHERE id = ? AND attempt = ? AND state = 'ready'")
       .Bind(worker_id)
+      .Bind(slot)
       .Bind(Now())
       .Bind(job_id)
       .Bind(attempt)
@@ -616,21 +631,19 @@ std::vector<std::string> ResultsStore::RequeueWorker(const std::string& worker_i
 
 std::vector<RunningJob> ResultsStore::ListRunning() {
   Statement select = db_->Prepare(
-      "SELECT id, campaign_id, worker_id, attempt, started_at, timeout_s FROM jobs "
-      "WHERE state = 'running' ORDER BY started_at, id");
+      std::string("SELECT ") + kRunningJobColumns +
+      " FROM jobs WHERE state = 'running' ORDER BY started_at, id");
   std::vector<RunningJob> out;
-  while (select.Step()) {
-    out.push_back({select.Text(0), select.Text(1), select.Text(2), static_cast<int>(select.Int(3)),
-                   select.Double(4), select.Double(5)});
-  }
+  while (select.Step())
+    out.push_back(ReadRunningJob(select));
   return out;
 }
 
-std::vector<ResultsStore::RunningCount> ResultsStore::CountRunning() {
+std::vector<ResultsStore::RunningSlot> ResultsStore::RunningSlots() {
   Statement select = db_->Prepare(
-      "SELECT COALESCE(worker_id, ''), campaign_id, COUNT(*) FROM jobs WHERE state = 'running' "
-      "GROUP BY worker_id, campaign_id");
-  std::vector<RunningCount> out;
+      "SELECT COALESCE(worker_id, ''), campaign_id, COALESCE(slot, 0) FROM jobs "
+      "WHERE state = 'running'");
+  std::vector<RunningSlot> out;
   while (select.Step())
     out.push_back({select.Text(0), select.Text(1), static_cast<int>(select.Int(2))});
   return out;
@@ -640,14 +653,12 @@ std::vector<RunningJob> ResultsStore::CancelCampaign(const std::string& campaign
   Transaction transaction(*db_);
   RequireCampaign(campaign_id);
   Statement running = db_->Prepare(
-      "SELECT id, campaign_id, worker_id, attempt, started_at, timeout_s FROM jobs "
-      "WHERE campaign_id = ? AND state = 'running' ORDER BY id");
+      std::string("SELECT ") + kRunningJobColumns +
+      " FROM jobs WHERE campaign_id = ? AND state = 'running' ORDER BY id");
   running.Bind(campaign_id);
   std::vector<RunningJob> stopped;
-  while (running.Step()) {
-    stopped.push_back({running.Text(0), running.Text(1), running.Text(2),
-                       static_cast<int>(running.Int(3)), running.Double(4), running.Double(5)});
-  }
+  while (running.Step())
+    stopped.push_back(ReadRunningJob(running));
   db_->Prepare(
          "UPDATE jobs SET state = 'cancelled', finished_at = ? "
          "WHERE campaign_id = ? AND state IN ('pending', 'ready', 'running')")
@@ -706,7 +717,7 @@ std::vector<CampaignProgress> ResultsStore::AllProgress() {
 std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
   Statement select = db_->Prepare(
       std::string("SELECT id, campaign_id, key, label, state, depends_on, attempt, max_attempts, "
-                  "timeout_s, worker_id, error, result_json, ") +
+                  "timeout_s, worker_id, error, result_json, COALESCE(slot, 0), ") +
       kParamColumns + " FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step())
@@ -725,7 +736,8 @@ std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
   r.error = select.OptionalText(10);
   if (const auto result = select.OptionalText(11))
     r.result = json::parse(*result);
-  r.params = ReadParams(select, 12, r.position, file());
+  r.slot = static_cast<int>(select.Int(12));
+  r.params = ReadParams(select, 13, r.position, file());
   return r;
 }
 

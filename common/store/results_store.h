@@ -69,6 +69,7 @@ struct RunningJob {
   std::string id;
   std::string campaign_id;
   std::string worker_id;
+  int slot = 0;  // which of the worker's slots runs it
   int attempt = 1;
   double started_at = 0;
   double timeout_s = 0;
@@ -79,6 +80,7 @@ struct JobRecord {
   int attempt = 1, max_attempts = 1;
   double timeout_s = 0;
   std::optional<std::string> worker_id, error;
+  int slot = 0;  // while running: which of the worker's slots
   JobParams params;
   std::optional<Vec3> position;
   std::optional<nlohmann::json> result;
@@ -168,7 +170,7 @@ class ResultsStore {
   // `per_campaign` of each (0 = all).
   std::vector<ReadyJob> ListReady(std::size_t per_campaign = 0);
   // ready -> running for this attempt; false if the job is not ready at that attempt.
-  bool MarkRunning(const std::string& job_id, const std::string& worker_id, int attempt);
+  bool MarkRunning(const std::string& job_id, const std::string& worker_id, int slot, int attempt);
   // A result of train/position jobs must hold "position": [x, y, z]; of eval jobs, the metrics
   // of rlpos::ToJson(RunMetrics). A malformed result counts as a failed attempt.
   // `worker_id` non-empty: only the worker that holds the attempt may settle it (else kStale).
@@ -184,12 +186,13 @@ class ResultsStore {
   // goes back to ready while attempts remain. Returns the ids of the jobs it held.
   std::vector<std::string> RequeueWorker(const std::string& worker_id);
   std::vector<RunningJob> ListRunning();
-  // Running jobs counted per worker and campaign (cheaper than ListRunning each round).
-  struct RunningCount {
+  // Where the running jobs run: worker, campaign and slot of each (cheaper than ListRunning
+  // each round).
+  struct RunningSlot {
     std::string worker_id, campaign_id;
-    int jobs = 0;
+    int slot = 0;
   };
-  std::vector<RunningCount> CountRunning();
+  std::vector<RunningSlot> RunningSlots();
 
   // Cancels every unfinished job; returns the ones that were running (their workers should
   // stop them). Throws StoreError for an unknown campaign.

@@ -182,6 +182,12 @@ DROP INDEX jobs_by_worker;
 CREATE INDEX jobs_by_worker ON jobs(worker_id);
 )sql";
 
+// Version 8: jobs.slot, which of its worker's slots runs a running job (the DDS instance of its
+// assignment, idl/rlpos_messages.idl); a restarted coordinator gives it back to the same slot.
+constexpr const char* kVersion8 = R"sql(
+ALTER TABLE jobs ADD COLUMN slot INTEGER;
+)sql";
+
 void ConvertArgvColumns(Database& db) {
   struct Row {
     std::string id;
@@ -224,7 +230,8 @@ const std::vector<Migration>& Migrations() {
                                                  {4, kVersion4, nullptr, nullptr},
                                                  {5, kVersion5, nullptr, nullptr},
                                                  {6, kVersion6, nullptr, nullptr},
-                                                 {7, kVersion7, nullptr, nullptr}};
+                                                 {7, kVersion7, nullptr, nullptr},
+                                                 {8, kVersion8, nullptr, nullptr}};
   return migrations;
 }
 

@@ -169,7 +169,7 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
       if (is_new) {
         Log(LogLevel::kInfo,
             "worker " + id + " joined (" + std::to_string(r.data.slots) + " slot(s))");
-        WithdrawStale(id, r.data.jobs);
+        WithdrawStale(id, r.data.slots, r.data.jobs);
         Republish(id);
       }
       continue;
@@ -184,11 +184,21 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
                              "dispose of worker " + id + "'s status by another participant");
       continue;
     }
+    const int slots = known->second.slots.slots;
     live_.erase(known);
     store_.SetWorkerState(id, stopped ? "stopped" : "lost");
     const auto requeued = scheduler_.WorkerLost(id);
     for (const auto& job_id : requeued)
       Withdraw(job_id);
+    if (stopped) {
+      // Gone for good: its slots' instances go too (a lost worker may come back to them).
+      for (int slot = 0; slot < slots; ++slot) {
+        msg::JobAssignment key;
+        key.worker_id = id;
+        key.slot = slot;
+        dds_->assignments.Unregister(key);
+      }
+    }
     Log(LogLevel::kWarning, "worker " + id + (stopped ? " stopped" : " lost") +
                                 (requeued.empty() ? ""
                                                   : "; " + std::to_string(requeued.size()) +
@@ -284,18 +294,33 @@ void CoordinatorDaemon::HandleJobEvent(const msg::JobEvent& e, const std::string
     Withdraw(e.job_id);
 }
 
-void CoordinatorDaemon::WithdrawStale(const std::string& worker_id,
+void CoordinatorDaemon::WithdrawStale(const std::string& worker_id, int slots,
                                       const std::vector<std::string>& jobs) {
   // A worker back after its lease ran out may still run jobs that went back to the queue (and
-  // maybe to another worker) meanwhile: their results would be stale, so stop them.
+  // maybe to another worker) meanwhile: their results would be stale, so empty their slots.
+  // Which slot the worker put a stale job in is its own business: every slot that the store
+  // does not give a job of this worker is emptied.
+  std::set<std::string> held;
+  std::set<int> held_slots;
+  for (const auto& job : store_.ListRunning()) {
+    if (job.worker_id == worker_id) {
+      held.insert(job.id + "#" + std::to_string(job.attempt));
+      held_slots.insert(job.slot);
+    }
+  }
+  bool stale = false;
   for (const auto& key : jobs) {
-    const std::string job_id = key.substr(0, key.rfind('#'));
-    const auto job = store_.GetJob(job_id);
-    if (job && job->state == "running" && job->worker_id == worker_id)
+    if (held.count(key))
       continue;
     Log(LogLevel::kWarning, "worker " + worker_id + " came back with " + key +
                                 ", which is no longer its job; stopping it there");
-    Withdraw(job_id);
+    stale = true;
+  }
+  if (!stale)
+    return;
+  for (int slot = 0; slot < slots; ++slot) {
+    if (!held_slots.count(slot))
+      DisposeSlot(worker_id, slot);
   }
 }
 
@@ -316,9 +341,10 @@ void CoordinatorDaemon::AfterGrace() {
   }
 }
 
-void CoordinatorDaemon::Publish(const ReadyJob& job, const std::string& worker_id) {
+void CoordinatorDaemon::Publish(const ReadyJob& job, const std::string& worker_id, int slot) {
   msg::JobAssignment a;
   a.worker_id = worker_id;
+  a.slot = slot;
   a.order.job_id = job.id;
   a.order.campaign_id = job.campaign_id;
   a.order.attempt = job.attempt;
@@ -327,7 +353,7 @@ void CoordinatorDaemon::Publish(const ReadyJob& job, const std::string& worker_i
   a.order.position = job.position;
   a.order.scenario_document = ScenarioDocument(job.campaign_id, job.params.scenario);
   dds_->assignments.Write(a);
-  published_[job.id] = {job.attempt, worker_id};
+  published_[job.id] = {job.attempt, worker_id, slot};
 }
 
 void CoordinatorDaemon::Republish(const std::string& worker_id) {
@@ -345,17 +371,28 @@ void CoordinatorDaemon::Republish(const std::string& worker_id) {
       ready.timeout_s = record->timeout_s;
       ready.params = record->params;
       ready.position = record->position;
-      Publish(ready, worker_id);
+      Publish(ready, worker_id, record->slot);
     }
   }
 }
 
 void CoordinatorDaemon::Withdraw(const std::string& job_id) {
+  // A job this coordinator did not publish is on a worker that has not come back since a
+  // restart: WithdrawStale empties its slot when it does.
+  const auto it = published_.find(job_id);
+  if (it == published_.end())
+    return;
+  DisposeSlot(it->second.worker_id, it->second.slot);
+  published_.erase(it);
+}
+
+void CoordinatorDaemon::DisposeSlot(const std::string& worker_id, int slot) {
+  // Disposed, never unregistered: the slot's instance is used again by its next job, and a
+  // worker that comes back after a partition still learns that the slot was emptied.
   msg::JobAssignment key;
-  key.order.job_id = job_id;
+  key.worker_id = worker_id;
+  key.slot = slot;
   dds_->assignments.Dispose(key);
-  dds_->assignments.Unregister(key);
-  published_.erase(job_id);
 }
 
 const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campaign_id,
@@ -389,9 +426,9 @@ void CoordinatorDaemon::PublishTick(const TickResult& tick) {
   for (const auto& a : tick.assigned) {
     // No optimistic busy count here: the store's running jobs count for the next round, and a
     // job that never reached its worker (and times out) must not hold its slot for ever.
-    Publish(a.job, a.worker_id);
-    Log(LogLevel::kDebug,
-        "assigned " + a.job.id + "#" + std::to_string(a.job.attempt) + " to " + a.worker_id);
+    Publish(a.job, a.worker_id, a.slot);
+    Log(LogLevel::kDebug, "assigned " + a.job.id + "#" + std::to_string(a.job.attempt) + " to " +
+                              a.worker_id + " slot " + std::to_string(a.slot));
   }
 }
 

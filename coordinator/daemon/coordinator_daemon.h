@@ -60,6 +60,7 @@ class CoordinatorDaemon {
   struct Published {
     int attempt = 0;
     std::string worker_id;
+    int slot = 0;
   };
   void HandleRequests();
   void HandleWorkerStatuses();
@@ -70,11 +71,14 @@ class CoordinatorDaemon {
   // The round's scheduling decisions, written to the store; PublishTick sends them.
   TickResult Schedule();
   void PublishTick(const TickResult& tick);
-  // Withdraws the jobs a (re)joining worker lists that the store no longer gives it.
-  void WithdrawStale(const std::string& worker_id, const std::vector<std::string>& jobs);
-  void Publish(const ReadyJob& job, const std::string& worker_id);
+  // Empties the slots of a (re)joining worker that run jobs the store no longer gives it.
+  void WithdrawStale(const std::string& worker_id, int slots,
+                     const std::vector<std::string>& jobs);
+  void Publish(const ReadyJob& job, const std::string& worker_id, int slot);
   void Republish(const std::string& worker_id);
+  // Empties the slot of a job this coordinator published (nothing for one it did not).
   void Withdraw(const std::string& job_id);
+  void DisposeSlot(const std::string& worker_id, int slot);
   const std::string& ScenarioDocument(const std::string& campaign_id, const std::string& name);
   double Now() const;
 

@@ -24,6 +24,7 @@ struct WorkerSlots {
 struct Assignment {
   ReadyJob job;
   std::string worker_id;
+  int slot = 0;  // which of the worker's slots: set by the Scheduler, which knows the free ones
 };
 
 // `running_by_campaign`: jobs running now per campaign id (absent = 0).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace rlpos {
 
@@ -19,9 +20,11 @@ TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double 
 
   std::map<std::string, int> by_worker;
   std::map<std::string, int> by_campaign;
-  for (const auto& count : store_.CountRunning()) {
-    by_worker[count.worker_id] += count.jobs;
-    by_campaign[count.campaign_id] += count.jobs;
+  std::map<std::string, std::set<int>> taken;  // worker -> slots that run a job
+  for (const auto& running : store_.RunningSlots()) {
+    ++by_worker[running.worker_id];
+    ++by_campaign[running.campaign_id];
+    taken[running.worker_id].insert(running.slot);
   }
   std::vector<WorkerSlots> workers = live_workers;
   std::size_t free = 0;
@@ -33,8 +36,19 @@ TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double 
   if (free == 0)
     return result;
   // `free` per campaign is enough for any fair share of the free slots.
+  std::map<std::string, int> slots;
+  for (const auto& w : workers)
+    slots[w.id] = w.slots;
   for (auto& a : AssignJobs(store_.ListReady(free), workers, by_campaign)) {
-    if (store_.MarkRunning(a.job.id, a.worker_id, a.job.attempt)) {
+    std::set<int>& used = taken[a.worker_id];
+    int slot = 0;
+    while (used.count(slot))
+      ++slot;
+    if (slot >= slots[a.worker_id])
+      continue;  // every slot holds a job (its report of busy was behind): next round
+    if (store_.MarkRunning(a.job.id, a.worker_id, slot, a.job.attempt)) {
+      used.insert(slot);
+      a.slot = slot;
       result.assigned.push_back(std::move(a));
     }
   }

@@ -22,8 +22,8 @@ class Scheduler {
   explicit Scheduler(ResultsStore& store) : store_(store) {}
 
   // Fails timed-out jobs (looked for at most once per kTimeoutCheckS), then assigns ready jobs
-  // to `live_workers`. A worker's busy count is the larger of what it reported and what the
-  // store has running on it.
+  // to `live_workers`, each to the lowest slot of its worker that runs nothing in the store. A
+  // worker's busy count is the larger of what it reported and what the store has running on it.
   TickResult Tick(const std::vector<WorkerSlots>& live_workers, double now);
   // Timeouts are minutes; the coordinator ticks hundreds of times a second.
   static constexpr double kTimeoutCheckS = 1.0;

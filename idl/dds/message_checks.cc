@@ -47,6 +47,8 @@ std::string CheckJobEvent(const msg::JobEvent& e) {
     return "attempt out of range";
   if (!wire::IsSafeName(e.worker_id, wire::kMaxNameLength))
     return "bad worker_id";
+  if (e.slot < 0 || e.slot >= wire::kMaxSlots)
+    return "slot out of 0..1023";
   switch (e.state) {
     case msg::JobState::kStarted:
     case msg::JobState::kProgress:

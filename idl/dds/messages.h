@@ -21,15 +21,17 @@ struct WorkerStatus {
 
 struct JobAssignment {
   std::string worker_id;  // the worker it is for
+  int slot = 0;           // which of its slots runs it
   JobOrder order;
 };
 
 enum class JobState { kStarted, kProgress, kSucceeded, kFailed };
 
 struct JobEvent {
+  std::string worker_id;
+  int slot = 0;  // the slot that runs the attempt
   std::string job_id;
   int attempt = 1;
-  std::string worker_id;
   JobState state = JobState::kStarted;
   std::string result_json, message;
   Provenance provenance;                // kSucceeded, kFailed

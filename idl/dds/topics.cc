@@ -150,9 +150,14 @@ struct Traits<msg::JobAssignment> {
   static void Qos(dds_qos_t* qos, bool writer) {
     dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
     dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
-    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
-    if (writer)
+    if (writer) {
+      dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
       dds_qset_writer_data_lifecycle(qos, false);
+    } else {
+      // Every sample of a slot, in order: an emptied slot followed by its next job, and no
+      // other writer's sample of the same slot can take the coordinator's place unread.
+      dds_qset_history(qos, DDS_HISTORY_KEEP_ALL, 0);
+    }
   }
   struct Holder {
     C c{};
@@ -161,9 +166,10 @@ struct Traits<msg::JobAssignment> {
   static void ToC(const msg::JobAssignment& m, Holder& h) {
     const JobOrder& o = m.order;
     const JobParams& p = o.params;
+    CopyIn(h.c.worker_id, m.worker_id, "worker_id");
+    h.c.slot = m.slot;
     CopyIn(h.c.job_id, o.job_id, "job_id");
     h.c.attempt = o.attempt;
-    CopyIn(h.c.worker_id, m.worker_id, "worker_id");
     CopyIn(h.c.campaign_id, o.campaign_id, "campaign_id");
     h.c.timeout_s = o.timeout_s;
     h.c.kind = static_cast<rlpos_msg_JobKind>(p.kind);
@@ -204,11 +210,12 @@ struct Traits<msg::JobAssignment> {
     msg::JobAssignment m;
     JobOrder& o = m.order;
     JobParams& p = o.params;
-    o.job_id = CopyOut(c.job_id);
+    m.worker_id = CopyOut(c.worker_id);
+    m.slot = c.slot;
     if (!valid)
       return m;
+    o.job_id = CopyOut(c.job_id);
     o.attempt = c.attempt;
-    m.worker_id = CopyOut(c.worker_id);
     o.campaign_id = CopyOut(c.campaign_id);
     o.timeout_s = c.timeout_s;
     p.kind = CheckedEnum<JobKind>(RawEnum(c.kind), 3, "kind", error);
@@ -279,9 +286,10 @@ struct Traits<msg::JobEvent> {
     std::vector<rlpos_msg_ArtifactFile> artifacts;
   };
   static void ToC(const msg::JobEvent& m, Holder& h) {
+    CopyIn(h.c.worker_id, m.worker_id, "worker_id");
+    h.c.slot = m.slot;
     CopyIn(h.c.job_id, m.job_id, "job_id");
     h.c.attempt = m.attempt;
-    CopyIn(h.c.worker_id, m.worker_id, "worker_id");
     h.c.state = static_cast<rlpos_msg_JobState>(m.state);
     h.c.result_json = BorrowOctets(m.result_json, wire::kMaxResultJson, "result_json");
     CopyIn(h.c.message, m.message, "message");
@@ -307,11 +315,12 @@ struct Traits<msg::JobEvent> {
   }
   static msg::JobEvent FromC(const C& c, bool valid, std::string& error) {
     msg::JobEvent m;
-    m.job_id = CopyOut(c.job_id);
+    m.worker_id = CopyOut(c.worker_id);
+    m.slot = c.slot;
     if (!valid)
       return m;
+    m.job_id = CopyOut(c.job_id);
     m.attempt = c.attempt;
-    m.worker_id = CopyOut(c.worker_id);
     m.state = CheckedEnum<msg::JobState>(RawEnum(c.state), 4, "state", error);
     m.result_json = CopyOctets(c.result_json, wire::kMaxResultJson, "result_json", error);
     m.message = CopyOut(c.message);

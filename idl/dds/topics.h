@@ -5,12 +5,15 @@
 //                    the participant's config); the worker disposes it when it stops
 //                    cleanly, so that readers tell "stopped" (disposed) from "lost" (no
 //                    writers)
-//   JobAssignment    reliable, transient-local, keep last 1; a coordinator that stops does NOT
+//   JobAssignment    reliable, transient-local, key (worker, slot); the writer keeps the last
+//                    sample of each slot, readers keep all; a coordinator that stops does NOT
 //                    dispose its assignments (a restart must not stop the workers' jobs); a
-//                    settled job's instance is disposed and unregistered
-//   JobEvent         reliable, transient-local (the worker keeps its last event per job until
-//                    the job is settled, so a restarted coordinator still gets results);
-//                    readers keep all
+//                    settled job's slot is disposed, and unregistered only when its worker
+//                    stops cleanly (Cyclone 0.10 keeps a little of every key a writer ever
+//                    wrote: keys reused per slot keep that bounded)
+//   JobEvent         reliable, transient-local, key (worker, slot): the worker keeps its
+//                    slot's last event until the job is settled, so a restarted coordinator
+//                    still gets results, then disposes it; readers keep all
 //   CampaignRequest  reliable, volatile, keep all
 //   CampaignReply    reliable, volatile, keep all: the client waits for the coordinator's
 //                    writer before it asks, and each reply is unregistered once written, so

@@ -212,7 +212,7 @@ TEST_F(RlposCampaignCli, ArtifactsListExportAndTheirBadInputs) {
     store.Submit(campaign);
     id = campaign.id;
     job = id + "/train/B/seed1";
-    ASSERT_TRUE(store.MarkRunning(job, "w1", 1));
+    ASSERT_TRUE(store.MarkRunning(job, "w1", 0, 1));
     ASSERT_EQ(store.RecordSuccess(job, 1, {{"position", {50, 50, 30}}}, "w1", nullptr,
                                   {{"policy.pt", Sha256Hex("weights"), "weights"}}),
               JobUpdate::kSucceeded);

@@ -42,9 +42,10 @@ msg::WorkerStatus Status(const std::string& id, int busy) {
   return s;
 }
 
-msg::JobAssignment Assignment(const std::string& job_id, int attempt) {
+msg::JobAssignment Assignment(const std::string& job_id, int attempt, int slot = 0) {
   msg::JobAssignment a;
   a.worker_id = "w1";
+  a.slot = slot;
   JobOrder& o = a.order;
   o.job_id = job_id;
   o.attempt = attempt;
@@ -99,6 +100,7 @@ void ExpectSame(const msg::WorkerStatus& a, const msg::WorkerStatus& b) {
 
 void ExpectSame(const msg::JobAssignment& a, const msg::JobAssignment& b) {
   EXPECT_EQ(a.worker_id, b.worker_id);
+  EXPECT_EQ(a.slot, b.slot);
   const JobOrder &x = a.order, &y = b.order;
   EXPECT_EQ(x.job_id, y.job_id);
   EXPECT_EQ(x.attempt, y.attempt);
@@ -140,7 +142,7 @@ TEST_F(TopicsTest, WorkerStatusRoundTrip) {
 TEST_F(TopicsTest, JobAssignmentRoundTrip) {
   Reader<msg::JobAssignment> reader(participant_);
   Writer<msg::JobAssignment> writer(participant_);
-  const msg::JobAssignment sent = Assignment("c0ffee/eval/B/rl/run1", 3);
+  const msg::JobAssignment sent = Assignment("c0ffee/eval/B/rl/run1", 3, 1023);
   writer.Write(sent);
   const auto got = AwaitData(reader, 1);
   ASSERT_EQ(got.size(), 1u);
@@ -158,6 +160,7 @@ TEST_F(TopicsTest, JobEventRoundTripEveryState) {
     e.job_id = "job" + std::to_string(i);
     e.attempt = static_cast<int>(i) + 2;
     e.worker_id = "w" + std::to_string(i);
+    e.slot = static_cast<int>(i) * 341;  // up to 1023
     e.state = states[i];
     e.result_json = i == 2 ? R"({"position":[1.5,2,3]})" : "";
     e.message = i == 3 ? "line one\nline \"two\" [exit code 1]" : "episode 3/10";
@@ -177,6 +180,7 @@ TEST_F(TopicsTest, JobEventRoundTripEveryState) {
     EXPECT_EQ(got[i].job_id, sent[i].job_id);
     EXPECT_EQ(got[i].attempt, sent[i].attempt);
     EXPECT_EQ(got[i].worker_id, sent[i].worker_id);
+    EXPECT_EQ(got[i].slot, sent[i].slot);
     EXPECT_EQ(got[i].state, sent[i].state);
     EXPECT_EQ(got[i].result_json, sent[i].result_json);
     EXPECT_EQ(got[i].message, sent[i].message);
@@ -266,20 +270,23 @@ TEST_F(TopicsTest, CampaignReplyRoundTrip) {
 TEST_F(TopicsTest, DisposeArrivesAsAnInvalidSampleWithTheKey) {
   Reader<msg::JobAssignment> reader(participant_);
   Writer<msg::JobAssignment> writer(participant_);
-  writer.Write(Assignment("job-a", 1));
-  writer.Write(Assignment("job-b", 1));
+  writer.Write(Assignment("job-a", 1, 0));
+  writer.Write(Assignment("job-b", 1, 1));
   ASSERT_EQ(AwaitData(reader, 2).size(), 2u);
 
   msg::JobAssignment key;
-  key.order.job_id = "job-a";
+  key.worker_id = "w1";
+  key.slot = 0;
   writer.Dispose(key);
   const auto disposed = AwaitSample(reader, [](const auto& r) { return !r.valid; });
   ASSERT_TRUE(disposed.has_value());
   EXPECT_EQ(disposed->state, InstanceState::kDisposed);
-  EXPECT_EQ(disposed->data.order.job_id, "job-a");
-  EXPECT_TRUE(disposed->data.order.scenario_document.empty());  // only the key travels
-  // job-b is untouched: nothing of it came before a marker written after the disposal.
-  writer.Write(Assignment("job-marker", 1));
+  EXPECT_EQ(disposed->data.worker_id, "w1");
+  EXPECT_EQ(disposed->data.slot, 0);
+  EXPECT_EQ(disposed->data.order.job_id, "");  // only the key travels
+  EXPECT_TRUE(disposed->data.order.scenario_document.empty());
+  // job-b's slot is untouched: nothing of it came before a marker written after the disposal.
+  writer.Write(Assignment("job-marker", 1, 2));
   const auto before =
       TakenBeforeMarker(reader, [](const auto& a) { return a.order.job_id == "job-marker"; });
   ASSERT_TRUE(before.has_value()) << "the marker did not arrive";
@@ -325,7 +332,7 @@ TEST_F(TopicsTest, EveryKindOfAssignmentRoundTrips) {
   Reader<msg::JobAssignment> reader(participant_);
   Writer<msg::JobAssignment> writer(participant_);
   const std::vector<msg::JobAssignment> sent{TrainAssignment(), PositionAssignment(),
-                                             Assignment("c0ffee/eval/B/rl/run7", 1)};
+                                             Assignment("c0ffee/eval/B/rl/run7", 1, 1)};
   for (const auto& a : sent)
     writer.Write(a);
   std::vector<Received<msg::JobAssignment>> got;
@@ -578,7 +585,8 @@ TEST_F(TopicsTest, DeletedAssignmentWriterDoesNotDispose) {
   const auto gone = AwaitSample(reader, [](const auto& r) { return !r.valid; });
   ASSERT_TRUE(gone.has_value());
   EXPECT_EQ(gone->state, InstanceState::kNoWriters);
-  EXPECT_EQ(gone->data.order.job_id, "job-a");
+  EXPECT_EQ(gone->data.worker_id, "w1");
+  EXPECT_EQ(gone->data.slot, 0);
 }
 
 TEST_F(TopicsTest, DeletedWorkerStatusWriterDoesNotDispose) {

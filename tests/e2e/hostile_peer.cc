@@ -43,6 +43,7 @@ dds_sequence_octet Octets(const std::string& s) {
 struct RunningJob {
   std::string id;
   int attempt;
+  int slot;
 };
 
 std::vector<RunningJob> RunningJobs(const std::string& db_file) {
@@ -50,11 +51,11 @@ std::vector<RunningJob> RunningJobs(const std::string& db_file) {
   sqlite3* db = nullptr;
   if (sqlite3_open_v2(db_file.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
     sqlite3_stmt* st = nullptr;
-    if (sqlite3_prepare_v2(db, "SELECT id, attempt FROM jobs WHERE state = 'running'", -1, &st,
+    if (sqlite3_prepare_v2(db, "SELECT id, attempt, COALESCE(slot, 0) FROM jobs WHERE state = 'running'", -1, &st,
                            nullptr) == SQLITE_OK) {
       while (sqlite3_step(st) == SQLITE_ROW) {
-        out.push_back(
-            {reinterpret_cast<const char*>(sqlite3_column_text(st, 0)), sqlite3_column_int(st, 1)});
+        out.push_back({reinterpret_cast<const char*>(sqlite3_column_text(st, 0)),
+                       sqlite3_column_int(st, 1), sqlite3_column_int(st, 2)});
       }
     }
     sqlite3_finalize(st);
@@ -177,8 +178,12 @@ int main(int argc, char** argv) {
         {"evil/eval/B/big/run" + r, "evil", "B", oversize, "name", "B", 2, 60, 0},
         {"evil/eval/B/valid/run" + r, "evil", "B", scenario, "wifi.mode", "\"ap\"", 2, 60, 0},
     };
-    for (const auto& b : bad) {
+    // Into its slots, and slots it does not have.
+    const std::vector<int> slots{0, 1, 2, 3, -1, 1024, 99999, 5, 0};
+    for (std::size_t i = 0; i < bad.size(); ++i) {
+      const Bad& b = bad[i];
       rlpos_msg_JobAssignment a{};
+      a.slot = slots[i % slots.size()];
       Set(a.job_id, b.job_id);
       a.attempt = 1;
       Set(a.worker_id, worker);
@@ -206,6 +211,7 @@ int main(int argc, char** argv) {
       Set(e.job_id, job.id);
       e.attempt = job.attempt;
       Set(e.worker_id, worker);
+      e.slot = job.slot;
       e.state = rlpos_msg_JOB_SUCCEEDED;
       const std::string result =
           "{\"position\": [50, 50, 25], \"aggregate_throughput_mbps\": 9999, \"mean_delay_ms\": "

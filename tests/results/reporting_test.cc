@@ -78,7 +78,7 @@ class ReportingTest : public ::testing::Test {
   std::string Id(const std::string& key) const { return campaign_.id + "/" + key; }
 
   void Produce(const std::string& key) {
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 1)) << key;
+    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1)) << key;
     ASSERT_EQ(store_.RecordSuccess(Id(key), 1, testing::PositionResult(50, 35, 10)),
               JobUpdate::kSucceeded)
         << key;
@@ -92,14 +92,14 @@ class ReportingTest : public ::testing::Test {
       result["mean_delay_ms"] = nullptr;
     result["n_los"] = n_los;
     result = testing::AtJobPosition(store_, Id(key), result);
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 1)) << key;
+    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1)) << key;
     ASSERT_EQ(store_.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded) << key;
   }
 
   void FailTwice(const std::string& key) {
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 1));
+    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1));
     ASSERT_EQ(store_.RecordFailure(Id(key), 1, "exit code 1"), JobUpdate::kRetrying);
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 2));
+    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 2));
     ASSERT_EQ(store_.RecordFailure(Id(key), 2, "exit code 1"), JobUpdate::kFailed);
   }
 

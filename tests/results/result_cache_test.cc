@@ -38,7 +38,7 @@ class ResultCacheTest : public ::testing::Test {
     int ran = 0;
     for (auto ready = store_.ListReady(); !ready.empty(); ready = store_.ListReady()) {
       for (const auto& job : ready) {
-        EXPECT_TRUE(store_.MarkRunning(job.id, "w1", job.attempt));
+        EXPECT_TRUE(store_.MarkRunning(job.id, "w1", 0, job.attempt));
         nlohmann::json result =
             job.params.kind == JobKind::kEval
                 ? AtJobPosition(store_, job.id,
@@ -149,7 +149,7 @@ TEST_F(ResultCacheTest, AJobWaitingForATwinThatFailsRunsItself) {
   const std::string train = first.id + "/train/B/seed1";
   const std::string twin = again.id + "/train/B/seed1";
   const int attempt = store_.GetJob(train)->attempt;
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", attempt));
+  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, attempt));
   store_.CancelCampaign(first.id);
   bool listed = false;
   for (const auto& job : store_.ListReady())
@@ -163,7 +163,7 @@ TEST_F(ResultCacheTest, AWaitingJobIsServedWhenItsTwinSucceeds) {
   store_.Submit(first);
   store_.Submit(again);
   const std::string train = first.id + "/train/B/seed1";
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", 1));
+  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, 1));
   ASSERT_EQ(store_.RecordSuccess(train, 1, PositionResult(50, 50, 30), "w1", nullptr,
                                  {{"policy.pt", Sha256Hex("weights"), "weights"}}),
             JobUpdate::kSucceeded);

@@ -41,7 +41,7 @@ class StoreTest : public ::testing::Test {
   // Runs a job's current attempt on `worker` and returns that attempt.
   int Start(const std::string& key, const std::string& worker = "w1") {
     const int attempt = Job(key).attempt;
-    EXPECT_TRUE(store_.MarkRunning(Id(key), worker, attempt)) << key;
+    EXPECT_TRUE(store_.MarkRunning(Id(key), worker, 0, attempt)) << key;
     return attempt;
   }
   // One value from SQL, through the C API (what a user's own query sees).
@@ -198,9 +198,9 @@ TEST_F(StoreTest, StaleAttemptsAreIgnored) {
   const std::string job = Id("position/B/baseline");
   // Not running yet: no result counts.
   EXPECT_EQ(store_.RecordSuccess(job, 1, PositionResult(50, 50, 25)), JobUpdate::kStale);
-  EXPECT_FALSE(store_.MarkRunning(job, "w1", 2));  // not its attempt
+  EXPECT_FALSE(store_.MarkRunning(job, "w1", 0, 2));  // not its attempt
   const int attempt = Start("position/B/baseline");
-  EXPECT_FALSE(store_.MarkRunning(job, "w2", attempt));  // already running
+  EXPECT_FALSE(store_.MarkRunning(job, "w2", 0, attempt));  // already running
   EXPECT_EQ(store_.RecordSuccess(job, attempt + 1, PositionResult(50, 50, 25)), JobUpdate::kStale);
   EXPECT_EQ(store_.RecordFailure(job, attempt - 1, "old"), JobUpdate::kStale);
   EXPECT_EQ(Job("position/B/baseline").state, "running");
@@ -216,7 +216,7 @@ TEST_F(StoreTest, StaleAttemptsAreIgnored) {
 
 TEST_F(StoreTest, SuccessCountsExactlyOnce) {
   store_.Submit(campaign_);
-  store_.MarkRunning(Id("position/B/baseline"), "w1", 1);
+  store_.MarkRunning(Id("position/B/baseline"), "w1", 0, 1);
   store_.RecordSuccess(Id("position/B/baseline"), 1, PositionResult(50, 50, 25));
   const std::string eval = Id("eval/B/baseline/run2");
   const int attempt = Start("eval/B/baseline/run2");
@@ -229,7 +229,7 @@ TEST_F(StoreTest, SuccessCountsExactlyOnce) {
       JobUpdate::kStale);
   EXPECT_EQ(store_.RecordSuccess(eval, attempt, EvalResult(2, 999.0, 1.0)), JobUpdate::kStale);
   EXPECT_EQ(store_.RecordFailure(eval, attempt, "late"), JobUpdate::kStale);
-  EXPECT_FALSE(store_.MarkRunning(eval, "w2", attempt));
+  EXPECT_FALSE(store_.MarkRunning(eval, "w2", 0, attempt));
   EXPECT_EQ(Job("eval/B/baseline/run2").state, "succeeded");
   EXPECT_EQ(Query("SELECT COUNT(*) FROM metrics"), "1");
   EXPECT_EQ(Query("SELECT aggregate_throughput_mbps FROM metrics"), "120.5");
@@ -240,7 +240,7 @@ TEST_F(StoreTest, SuccessCountsExactlyOnce) {
 
 TEST_F(StoreTest, MetricsRowHoldsTheEvalResult) {
   store_.Submit(campaign_);
-  store_.MarkRunning(Id("position/C/oracle"), "w1", 1);
+  store_.MarkRunning(Id("position/C/oracle"), "w1", 0, 1);
   store_.RecordSuccess(Id("position/C/oracle"), 1, PositionResult(50, 35, 10));
   Start("eval/C/oracle/run1");
   json result = EvalResult(1, 80.25, 0.0);
@@ -267,14 +267,14 @@ TEST_F(StoreTest, RetriesUntilExhaustedThenFailsWithDependents) {
   store_.Submit(campaign_);
   const std::string train = Id("train/C/seed1");
   ASSERT_EQ(Job("train/C/seed1").max_attempts, 2);  // mini: retries 1
-  store_.MarkRunning(train, "w1", 1);
+  store_.MarkRunning(train, "w1", 0, 1);
   EXPECT_EQ(store_.RecordFailure(train, 1, "exit code 3: ns-3 aborted"), JobUpdate::kRetrying);
   JobRecord job = Job("train/C/seed1");
   EXPECT_EQ(job.state, "ready");
   EXPECT_EQ(job.attempt, 2);
   EXPECT_EQ(job.error, "exit code 3: ns-3 aborted");
   EXPECT_FALSE(job.worker_id.has_value());
-  store_.MarkRunning(train, "w2", 2);
+  store_.MarkRunning(train, "w2", 0, 2);
   EXPECT_EQ(store_.RecordFailure(train, 2, "exit code 1: out of memory"), JobUpdate::kFailed);
   job = Job("train/C/seed1");
   EXPECT_EQ(job.state, "failed");
@@ -289,11 +289,11 @@ TEST_F(StoreTest, RetriesUntilExhaustedThenFailsWithDependents) {
 
 TEST_F(StoreTest, MalformedResultIsAFailedAttempt) {
   store_.Submit(campaign_);
-  store_.MarkRunning(Id("position/B/centroid"), "w1", 1);
+  store_.MarkRunning(Id("position/B/centroid"), "w1", 0, 1);
   EXPECT_EQ(store_.RecordSuccess(Id("position/B/centroid"), 1, {{"n_los", 2}}),
             JobUpdate::kRetrying);
   EXPECT_EQ(Job("position/B/centroid").error, "malformed result: result has no \"position\"");
-  store_.MarkRunning(Id("position/B/centroid"), "w1", 2);
+  store_.MarkRunning(Id("position/B/centroid"), "w1", 0, 2);
   store_.RecordSuccess(Id("position/B/centroid"), 2, PositionResult(40, 40, 10));
   Start("eval/B/centroid/run1");
   // An eval result of the wrong run is a wiring bug, not data.
@@ -378,7 +378,7 @@ TEST_F(StoreTest, InfrastructureLossesHaveTheirOwnCap) {
 
 TEST_F(StoreTest, CancelThenRetry) {
   store_.Submit(campaign_);
-  store_.MarkRunning(Id("position/B/baseline"), "w1", 1);
+  store_.MarkRunning(Id("position/B/baseline"), "w1", 0, 1);
   store_.RecordSuccess(Id("position/B/baseline"), 1, PositionResult(50, 50, 25));
   Start("eval/B/baseline/run1", "w1");
   Start("train/B/seed1", "w2");
@@ -413,7 +413,7 @@ TEST_F(StoreTest, CancelThenRetry) {
 TEST_F(StoreTest, RetryBringsFailedDependencyAndDependentsBack) {
   store_.Submit(campaign_);
   for (int attempt = 1; attempt <= 2; ++attempt) {
-    store_.MarkRunning(Id("train/B/seed1"), "w1", attempt);
+    store_.MarkRunning(Id("train/B/seed1"), "w1", 0, attempt);
     store_.RecordFailure(Id("train/B/seed1"), attempt, "boom");
   }
   ASSERT_EQ(Job("eval/B/rl/run1").state, "failed");
@@ -429,7 +429,7 @@ TEST_F(StoreTest, CampaignFinishesAndViewsAnswer) {
   int evals = 0;
   for (int round = 0; round < 3; ++round) {
     for (const auto& job : store_.ListReady()) {
-      ASSERT_TRUE(store_.MarkRunning(job.id, "w1", job.attempt));
+      ASSERT_TRUE(store_.MarkRunning(job.id, "w1", 0, job.attempt));
       const JobRecord record = *store_.GetJob(job.id);
       const json result = job.params.kind == JobKind::kEval
                               ? EvalResult(static_cast<std::uint64_t>(*record.params.rng_run),

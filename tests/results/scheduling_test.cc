@@ -98,9 +98,9 @@ TEST(Assignment, FairBetweenCampaigns) {
 }
 
 TEST(Timeouts, OnlyPastTheirTimeout) {
-  const std::vector<RunningJob> running{{"c/a", "c", "w1", 1, 0.0, 600.0},
-                                        {"c/b", "c", "w2", 2, 100.0, 600.0},
-                                        {"c/c", "c", "w2", 1, 640.0, 5.0}};
+  const std::vector<RunningJob> running{{"c/a", "c", "w1", 0, 1, 0.0, 600.0},
+                                        {"c/b", "c", "w2", 0, 2, 100.0, 600.0},
+                                        {"c/c", "c", "w2", 1, 1, 640.0, 5.0}};
   EXPECT_TRUE(FindTimedOut(running, 600.0).empty());  // exactly at the limit: still fine
   const auto late = FindTimedOut(running, 650.5);
   ASSERT_EQ(late.size(), 2u);

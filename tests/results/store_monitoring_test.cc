@@ -147,9 +147,9 @@ TEST_F(MonitoringTest, TimingFollowsStartsAndFinishes) {
   EXPECT_EQ(t.finished, 0);
 
   now_ = 1010;
-  ASSERT_TRUE(store_.MarkRunning(Id("position/B/centroid"), "w1", 1));
+  ASSERT_TRUE(store_.MarkRunning(Id("position/B/centroid"), "w1", 0, 1));
   now_ = 1025;
-  ASSERT_TRUE(store_.MarkRunning(Id("position/C/oracle"), "w1", 1));
+  ASSERT_TRUE(store_.MarkRunning(Id("position/C/oracle"), "w1", 0, 1));
   t = store_.Timing(campaign_.id);
   ASSERT_TRUE(t.first_started_at.has_value());
   EXPECT_DOUBLE_EQ(*t.first_started_at, 1010);
@@ -180,10 +180,10 @@ TEST_F(MonitoringTest, FailedJobsListExhaustedJobsAndTheirDependents) {
   store_.Submit(campaign_);
   EXPECT_TRUE(store_.FailedJobs(campaign_.id).empty());
   const std::string train = Id("train/B/seed1");
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", 1));
+  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, 1));
   ASSERT_EQ(store_.RecordFailure(train, 1, "first crash"), JobUpdate::kRetrying);
   EXPECT_TRUE(store_.FailedJobs(campaign_.id).empty());  // retrying is not failed
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", 2));
+  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, 2));
   ASSERT_EQ(store_.RecordFailure(train, 2, "second crash"), JobUpdate::kFailed);
 
   const auto failed = store_.FailedJobs(campaign_.id);
@@ -211,9 +211,9 @@ TEST_F(MonitoringTest, FailedJobsListExhaustedJobsAndTheirDependents) {
 TEST_F(MonitoringTest, RunningJobsShowWorkerAttemptAndProgress) {
   store_.Submit(campaign_);
   now_ = 1005;
-  ASSERT_TRUE(store_.MarkRunning(Id("position/B/oracle"), "w7", 1));
+  ASSERT_TRUE(store_.MarkRunning(Id("position/B/oracle"), "w7", 0, 1));
   now_ = 1007;
-  ASSERT_TRUE(store_.MarkRunning(Id("train/C/seed1"), "w8", 1));
+  ASSERT_TRUE(store_.MarkRunning(Id("train/C/seed1"), "w8", 0, 1));
   store_.SetProgress(Id("train/C/seed1"), 1, "episode 3/10");
   store_.SetProgress(Id("train/C/seed1"), 2, "stale attempt");  // ignored
   store_.SetProgress(Id("train/B/seed1"), 1, "not running");    // ignored

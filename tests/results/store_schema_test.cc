@@ -406,7 +406,7 @@ TEST_F(LegacyStoreTest, MigratedJobsReadAndRunAsTheyWould) {
   ASSERT_TRUE(waiting.has_value());
   EXPECT_EQ(waiting->state, "pending");
   EXPECT_FALSE(waiting->position.has_value());
-  ASSERT_TRUE(store.MarkRunning("c0ffee/position/B/oracle", "w1", 1));
+  ASSERT_TRUE(store.MarkRunning("c0ffee/position/B/oracle", "w1", 0, 1));
   ASSERT_EQ(store.RecordSuccess("c0ffee/position/B/oracle", 1, testing::PositionResult(20, 30, 15)),
             JobUpdate::kSucceeded);
   const auto bound = store.GetJob("c0ffee/eval/B/oracle/run1");

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "dds/topics.h"
@@ -28,7 +29,8 @@ WorkerDaemon::WorkerDaemon(WorkerOptions options, const DdsOptions& dds)
     : options_(std::move(options)),
       build_(ThisBuild()),
       participant_(dds),
-      dds_(std::make_unique<Endpoints>(participant_)) {
+      dds_(std::make_unique<Endpoints>(participant_)),
+      slots_(static_cast<std::size_t>(options_.slots)) {
   build_.host = HostName();
 }
 
@@ -40,26 +42,32 @@ void WorkerDaemon::PublishStatus() {
   status.host = HostName();
   status.pid = getpid();
   status.slots = options_.slots;
-  status.busy = static_cast<int>(running_.size());
-  for (const auto& [id, job] : running_)
-    status.jobs.push_back(job->Key());
+  for (const auto& slot : slots_) {
+    if (slot.run)
+      status.jobs.push_back(slot.run->Key());
+  }
+  status.busy = static_cast<int>(status.jobs.size());
   dds_->status.Write(status);
 }
 
-void WorkerDaemon::Settle(const std::string& job_id) {
-  const auto it = running_.find(job_id);
-  if (it != running_.end()) {
-    Log(LogLevel::kInfo, "stopping " + it->second->Key() + " (withdrawn by the coordinator)");
-    it->second->Stop();
-    running_.erase(it);
+msg::JobEvent WorkerDaemon::EventOf(int slot) const {
+  msg::JobEvent event;
+  event.worker_id = options_.id;
+  event.slot = slot;
+  event.job_id = slots_[slot].job_id;
+  event.attempt = slots_[slot].attempt;
+  return event;
+}
+
+void WorkerDaemon::Empty(int slot, const std::string& why) {
+  Slot& s = slots_[slot];
+  if (s.run) {
+    Log(LogLevel::kInfo, "stopping " + s.run->Key() + " (" + why + ")");
+    s.run->Stop();
   }
-  progress_sent_.erase(job_id);
-  taken_.erase(job_id);
-  if (announced_.erase(job_id)) {
-    msg::JobEvent key;
-    key.job_id = job_id;
-    dds_->events.Unregister(key);
-  }
+  if (s.announced)
+    dds_->events.Dispose(EventOf(slot));
+  s = Slot{};
 }
 
 bool WorkerDaemon::FromCoordinator(const std::string& sender) {
@@ -75,24 +83,12 @@ bool WorkerDaemon::FromCoordinator(const std::string& sender) {
   return true;
 }
 
-void WorkerDaemon::Start(msg::JobAssignment a) {
-  const std::string job_id = a.order.job_id;
-  const int attempt = a.order.attempt;
-  const std::string key = job_id + "#" + std::to_string(attempt);
-  if (const auto it = running_.find(job_id); it != running_.end()) {
-    // A newer attempt of a job we still run: the old one is out of date.
-    it->second->Stop();
-    running_.erase(it);
-  }
-  taken_[job_id] = attempt;
-  msg::JobEvent event;
-  event.job_id = job_id;
-  event.attempt = attempt;
-  event.worker_id = options_.id;
+void WorkerDaemon::Start(int slot, msg::JobAssignment a) {
+  Slot& s = slots_[slot];
+  s.job_id = a.order.job_id;
+  s.attempt = a.order.attempt;
+  const std::string key = s.job_id + "#" + std::to_string(s.attempt);
   try {
-    if (static_cast<int>(running_.size()) >= options_.slots) {
-      throw std::runtime_error("no free slot (" + std::to_string(options_.slots) + " busy)");
-    }
     // Checked before anything is written: a bad order leaves no trace but the event.
     CheckedOrder checked;
     try {
@@ -100,23 +96,20 @@ void WorkerDaemon::Start(msg::JobAssignment a) {
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error(std::string("invalid job: ") + e.what());
     }
-    running_[job_id] = std::make_unique<JobAttempt>(std::move(a.order), checked.scenario,
-                                                    options_.work_dir, options_.sim_binary);
+    s.run = std::make_unique<JobAttempt>(std::move(a.order), checked.scenario, options_.work_dir,
+                                         options_.sim_binary);
     // No event for a start: the coordinator marked the job running when it assigned it, and
     // one sample fewer per job is the coordinator's time.
-    Log(LogLevel::kInfo, "started " + key);
-    return;
+    Log(LogLevel::kInfo, "started " + key + " in slot " + std::to_string(slot));
   } catch (const std::exception& e) {
+    msg::JobEvent event = EventOf(slot);
     event.state = msg::JobState::kFailed;
     event.message = std::string("worker could not start the job: ") + e.what();
     event.message = event.message.substr(0, wire::kMaxMessage - 1);
     Log(LogLevel::kWarning, key + ": " + event.message);
-    // Said once and forgotten: a refused order keeps no state here (its event instance is
-    // unregistered at once).
-    taken_.erase(job_id);
-    announced_.erase(job_id);
+    // The slot keeps the refused attempt until the coordinator empties it.
     dds_->events.Write(event);
-    dds_->events.Unregister(event);
+    s.announced = true;
   }
 }
 
@@ -126,27 +119,35 @@ void WorkerDaemon::TakeAssignments() {
   // restart the new one can publish before the old one's writer is gone (its lease), and its
   // jobs must not be lost. They run once it is the one followed, or go after a while.
   const auto now = std::chrono::steady_clock::now();
-  std::map<std::string, PendingAssignment> waiting;
+  std::map<int, PendingAssignment> waiting;
   waiting.swap(pending_);
-  for (auto& [job_id, p] : waiting) {
+  for (auto& [slot, p] : waiting) {
     if (FromCoordinator(p.sender)) {
       Consider(std::move(p.assignment));
     } else if (now - p.since < kPendingFor) {
-      pending_.emplace(job_id, std::move(p));
+      pending_.emplace(slot, std::move(p));
     } else {
       dropped_.Drop(p.sender, "not the coordinator this worker follows");
     }
   }
   for (auto& r : dds_->assignments.Take()) {
-    const std::string& job_id = r.data.order.job_id;
     const std::string sender = dds_->assignments.WriterParticipant(r.writer);
+    const bool mine = r.data.worker_id == options_.id;
+    const int slot = r.data.slot;
+    if (mine && (slot < 0 || slot >= options_.slots)) {
+      dropped_.Drop(sender.empty() ? "an unknown writer" : sender,
+                    "slot " + std::to_string(slot) + " is not one of this worker's " +
+                        std::to_string(options_.slots));
+      continue;
+    }
     if (!r.valid) {
-      // Disposed: the coordinator withdrew the job (cancelled, timed out, or its result is in).
+      // Disposed: the coordinator emptied the slot (cancelled, timed out, or its result is in).
       // A coordinator that merely went away (no writers) leaves our jobs running.
-      if (r.state == InstanceState::kDisposed && !sender.empty() && sender == coordinator_) {
-        changed = changed || running_.count(job_id) > 0;
-        Settle(job_id);
-        pending_.erase(job_id);
+      if (mine && r.state == InstanceState::kDisposed && !sender.empty() &&
+          sender == coordinator_) {
+        changed = changed || slots_[slot].run != nullptr;
+        Empty(slot, "withdrawn by the coordinator");
+        pending_.erase(slot);
       }
       continue;
     }
@@ -154,13 +155,15 @@ void WorkerDaemon::TakeAssignments() {
       dropped_.Drop(sender.empty() ? "an unknown writer" : sender, r.decode_error);
       continue;
     }
-    if (r.data.worker_id != options_.id) {
-      // Another worker's. If we run it, the job was requeued while we were away and given to
+    const std::string& job_id = r.data.order.job_id;
+    if (!mine) {
+      // Another worker's. If we hold it, the job was requeued while we were away and given to
       // that worker: our attempt is stale, stop it.
-      if (running_.count(job_id) > 0 && FromCoordinator(sender)) {
-        Log(LogLevel::kWarning, job_id + " now belongs to " + r.data.worker_id + "; stopping ours");
-        Settle(job_id);
-        changed = true;
+      for (std::size_t i = 0; i < slots_.size(); ++i) {
+        if (slots_[i].job_id == job_id && FromCoordinator(sender)) {
+          Empty(static_cast<int>(i), "now " + r.data.worker_id + "'s");
+          changed = true;
+        }
       }
       continue;
     }
@@ -171,14 +174,14 @@ void WorkerDaemon::TakeAssignments() {
       continue;
     }
     if (!FromCoordinator(sender)) {
-      if (sender.empty() || pending_.size() >= kMaxPending) {
-        dropped_.Drop(sender.empty() ? "an unknown writer" : sender,
-                      "not the coordinator this worker follows");
+      if (sender.empty()) {
+        dropped_.Drop("an unknown writer", "not the coordinator this worker follows");
       } else {
-        pending_[job_id] = {std::move(r.data), sender, now};
+        pending_[slot] = {std::move(r.data), sender, now};
       }
       continue;
     }
+    pending_.erase(slot);
     Consider(std::move(r.data));
   }
   // A start needs no status (the coordinator counts the jobs it assigned); a job stopped here
@@ -188,29 +191,35 @@ void WorkerDaemon::TakeAssignments() {
 }
 
 void WorkerDaemon::Consider(msg::JobAssignment a) {
-  const auto taken = taken_.find(a.order.job_id);
-  if (taken != taken_.end() && taken->second >= a.order.attempt)
-    return;  // republished after a coordinator restart, or older than what we run
-  Start(std::move(a));
+  const int slot = a.slot;
+  Slot& s = slots_[slot];
+  if (s.job_id == a.order.job_id && s.attempt >= a.order.attempt)
+    return;  // republished after a coordinator restart, or older than what the slot holds
+  if (!s.job_id.empty())
+    Empty(slot, "its slot was given " + a.order.job_id);
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    // A newer attempt of a job another slot holds: the old one is out of date.
+    if (slots_[i].job_id == a.order.job_id)
+      Empty(static_cast<int>(i), "a newer attempt came");
+  }
+  Start(slot, std::move(a));
 }
 
 void WorkerDaemon::PollJobs() {
   bool changed = false;
-  for (auto it = running_.begin(); it != running_.end();) {
-    const auto outcome = it->second->Poll();
-    if (!outcome) {
-      ++it;
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    Slot& s = slots_[i];
+    if (!s.run)
       continue;
-    }
-    msg::JobEvent event;
-    event.job_id = it->first;
-    event.attempt = it->second->order().attempt;
-    event.worker_id = options_.id;
+    const auto outcome = s.run->Poll();
+    if (!outcome)
+      continue;
+    msg::JobEvent event = EventOf(static_cast<int>(i));
     event.state = outcome->succeeded ? msg::JobState::kSucceeded : msg::JobState::kFailed;
     event.result_json = outcome->result_json;
     event.message = outcome->error.substr(0, wire::kMaxMessage - 1);
     event.provenance = build_;
-    event.provenance.scenario_sha256 = it->second->scenario_sha256();
+    event.provenance.scenario_sha256 = s.run->scenario_sha256();
     event.artifacts = outcome->artifacts;
     if (event.result_json.size() > wire::kMaxResultJson) {
       event.state = msg::JobState::kFailed;
@@ -220,11 +229,11 @@ void WorkerDaemon::PollJobs() {
           "the result is larger than " + std::to_string(wire::kMaxResultJson) + " bytes";
     }
     Log(outcome->succeeded ? LogLevel::kInfo : LogLevel::kWarning,
-        it->second->Key() + (outcome->succeeded ? " succeeded" : " failed: " + outcome->error));
+        s.run->Key() + (outcome->succeeded ? " succeeded" : " failed: " + outcome->error));
     dds_->events.Write(event);
-    announced_.insert(it->first);
-    progress_sent_.erase(it->first);
-    it = running_.erase(it);
+    s.announced = true;
+    s.progress_sent.clear();
+    s.run.reset();  // the slot holds the attempt until the coordinator empties it
     changed = true;
   }
   if (changed)
@@ -232,19 +241,19 @@ void WorkerDaemon::PollJobs() {
 }
 
 void WorkerDaemon::ReportProgress() {
-  for (const auto& [job_id, job] : running_) {
-    const std::string line = job->ProgressLine();
-    if (line.empty() || progress_sent_[job_id] == line)
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    Slot& s = slots_[i];
+    if (!s.run)
       continue;
-    progress_sent_[job_id] = line;
-    msg::JobEvent event;
-    event.job_id = job_id;
-    event.attempt = job->order().attempt;
-    event.worker_id = options_.id;
+    const std::string line = s.run->ProgressLine();
+    if (line.empty() || s.progress_sent == line)
+      continue;
+    s.progress_sent = line;
+    msg::JobEvent event = EventOf(static_cast<int>(i));
     event.state = msg::JobState::kProgress;
     event.message = line.substr(0, wire::kMaxMessage - 1);
     dds_->events.Write(event);
-    announced_.insert(job_id);
+    s.announced = true;
   }
 }
 
@@ -255,7 +264,8 @@ void WorkerDaemon::Run() {
   auto next_progress = std::chrono::steady_clock::now();
   while (!StopRequested()) {
     // Children are polled, not waited for: a short wait keeps job ends prompt.
-    dds_->wait_set.Wait(running_.empty() ? 0.2 : 0.05);
+    const bool busy = std::any_of(slots_.begin(), slots_.end(), [](const Slot& s) { return !!s.run; });
+    dds_->wait_set.Wait(busy ? 0.05 : 0.2);
     TakeAssignments();
     PollJobs();
     if (std::chrono::steady_clock::now() >= next_progress) {
@@ -264,9 +274,11 @@ void WorkerDaemon::Run() {
           std::chrono::duration<double>(options_.progress_period_s));
     }
   }
-  for (auto& [id, job] : running_)
-    job->Stop();
-  running_.clear();
+  for (auto& slot : slots_) {
+    if (slot.run)
+      slot.run->Stop();
+  }
+  slots_.clear();
   msg::WorkerStatus key;
   key.worker_id = options_.id;
   dds_->status.Dispose(key);  // "stopped", not "lost"

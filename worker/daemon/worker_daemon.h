@@ -1,14 +1,14 @@
 #pragma once
 // rlpos-worker's loop: announce itself (WorkerStatus, automatic liveliness), take the
-// assignments addressed to it, check each (CheckJobOrder: bounds, kinds, the scenario parsed,
-// a timeout in (0, cap], a free slot) before anything is written, run it in a child rlpos-sim
-// (JobAttempt), report started / progress / succeeded / failed (JobEvent), and stop a job whose
-// assignment is disposed. A disposed assignment also ends the job's event instance here: the
-// worker keeps nothing per finished job.
+// assignments of its slots, check each (CheckJobOrder: bounds, kinds, the scenario parsed, a
+// timeout in (0, cap]) before anything is written, run it in a child rlpos-sim (JobAttempt),
+// report progress / succeeded / failed on the slot's JobEvent, and stop a job whose slot the
+// coordinator empties (disposes) or gives another job. An emptied slot also disposes its event:
+// the worker keeps nothing per finished job.
 #include <chrono>
 #include <map>
 #include <memory>
-#include <set>
+#include <vector>
 #include <string>
 
 #include "daemon/job_attempt.h"
@@ -40,32 +40,37 @@ class WorkerDaemon {
   void TakeAssignments();
   void PollJobs();
   void ReportProgress();
-  void Settle(const std::string& job_id);
-  void Start(msg::JobAssignment assignment);
-  // Starts an assignment from the followed coordinator unless it has that attempt already.
+  // Stops what the slot runs and forgets it; `why` goes in the log.
+  void Empty(int slot, const std::string& why);
+  void Start(int slot, msg::JobAssignment assignment);
+  // Starts an assignment from the followed coordinator unless its slot holds that attempt
+  // already.
   void Consider(msg::JobAssignment assignment);
   bool FromCoordinator(const std::string& sender);
+  msg::JobEvent EventOf(int slot) const;  // its key and job, to fill in
 
   WorkerOptions options_;
   Provenance build_;  // this build and host, sent with each result
   Participant participant_;
   std::unique_ptr<Endpoints> dds_;
-  std::map<std::string, std::unique_ptr<JobAttempt>> running_;  // by job id
-  std::map<std::string, std::string> progress_sent_;            // by job id
-  // Attempts this worker took, by job id, until the coordinator settles the job: a republished
-  // assignment (coordinator restart) never runs twice.
-  std::map<std::string, int> taken_;
-  // Jobs whose event instance this worker wrote (progress, result): unregistered when settled.
-  std::set<std::string> announced_;
-  // Assignments from a coordinator not followed yet, by job id (TakeAssignments).
+  // What each slot holds: the attempt the coordinator put there, until it empties the slot (a
+  // republished assignment, after a coordinator restart, never runs twice).
+  struct Slot {
+    std::string job_id;  // "": empty
+    int attempt = 0;
+    std::unique_ptr<JobAttempt> run;  // while its child runs
+    std::string progress_sent;
+    bool announced = false;  // its event instance holds an event (disposed when emptied)
+  };
+  std::vector<Slot> slots_;
+  // Assignments from a coordinator not followed yet, by slot (TakeAssignments).
   struct PendingAssignment {
     msg::JobAssignment assignment;
     std::string sender;
     std::chrono::steady_clock::time_point since;
   };
   static constexpr std::chrono::seconds kPendingFor{30};
-  static constexpr std::size_t kMaxPending = 1024;
-  std::map<std::string, PendingAssignment> pending_;
+  std::map<int, PendingAssignment> pending_;
   // The participant whose assignments this worker follows: the first to send it a job, until
   // that participant's writer is gone (a restarted coordinator is a new participant).
   std::string coordinator_;
