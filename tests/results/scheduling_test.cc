@@ -149,6 +149,26 @@ TEST_F(SchedulerTest, AssignsMarksRunningAndRespectsTheStoresCount) {
   EXPECT_EQ(scheduler_.Tick({{"w1", 2, 0}, {"w2", 1, 0}, {"w3", 4, 0}}, now_).assigned.size(), 4u);
 }
 
+TEST_F(SchedulerTest, EachJobGetsTheLowestFreeSlotOfItsWorker) {
+  const TickResult first = scheduler_.Tick({{"w1", 3, 0}, {"w2", 1, 0}}, now_);
+  std::map<std::string, std::vector<int>> slots;
+  for (const auto& a : first.assigned)
+    slots[a.worker_id].push_back(a.slot);
+  EXPECT_EQ(slots, (std::map<std::string, std::vector<int>>{{"w1", {0, 1, 2}}, {"w2", {0}}}));
+  const auto middle =
+      std::find_if(first.assigned.begin(), first.assigned.end(),
+                   [](const Assignment& a) { return a.worker_id == "w1" && a.slot == 1; });
+  ASSERT_NE(middle, first.assigned.end());
+  EXPECT_EQ(store_.GetJob(middle->job.id)->slot, 1);
+  // Slot 1 frees: the next job goes there, and w1's other slots stay as they are.
+  ASSERT_EQ(store_.RecordFailure(middle->job.id, middle->job.attempt, "boom"),
+            JobUpdate::kRetrying);
+  const TickResult next = scheduler_.Tick({{"w1", 3, 0}, {"w2", 1, 0}}, now_);
+  ASSERT_EQ(next.assigned.size(), 1u);
+  EXPECT_EQ(next.assigned[0].worker_id, "w1");
+  EXPECT_EQ(next.assigned[0].slot, 1);
+}
+
 TEST_F(SchedulerTest, TimedOutJobsFailAndAreReassigned) {
   const TickResult first = scheduler_.Tick({{"w1", 2, 0}}, now_);
   ASSERT_EQ(first.assigned.size(), 2u);

@@ -123,7 +123,7 @@ void WorkerDaemon::TakeAssignments() {
   waiting.swap(pending_);
   for (auto& [slot, p] : waiting) {
     if (FromCoordinator(p.sender)) {
-      Consider(std::move(p.assignment));
+      changed = Consider(std::move(p.assignment)) || changed;
     } else if (now - p.since < kPendingFor) {
       pending_.emplace(slot, std::move(p));
     } else {
@@ -182,7 +182,7 @@ void WorkerDaemon::TakeAssignments() {
       continue;
     }
     pending_.erase(slot);
-    Consider(std::move(r.data));
+    changed = Consider(std::move(r.data)) || changed;
   }
   // A start needs no status (the coordinator counts the jobs it assigned); a job stopped here
   // frees a slot, which it says.
@@ -190,19 +190,21 @@ void WorkerDaemon::TakeAssignments() {
     PublishStatus();
 }
 
-void WorkerDaemon::Consider(msg::JobAssignment a) {
+bool WorkerDaemon::Consider(msg::JobAssignment a) {
   const int slot = a.slot;
   Slot& s = slots_[slot];
   if (s.job_id == a.order.job_id && s.attempt >= a.order.attempt)
-    return;  // republished after a coordinator restart, or older than what the slot holds
-  if (!s.job_id.empty())
-    Empty(slot, "its slot was given " + a.order.job_id);
+    return false;  // republished after a coordinator restart, or older than the slot's
+  bool stopped = false;
   for (std::size_t i = 0; i < slots_.size(); ++i) {
-    // A newer attempt of a job another slot holds: the old one is out of date.
-    if (slots_[i].job_id == a.order.job_id)
-      Empty(static_cast<int>(i), "a newer attempt came");
+    // The slot's job, or an older attempt of this job in another slot: out of date.
+    if (static_cast<int>(i) == slot ? !s.job_id.empty() : slots_[i].job_id == a.order.job_id) {
+      stopped = stopped || slots_[i].run != nullptr;
+      Empty(static_cast<int>(i), "its slot was given " + a.order.job_id);
+    }
   }
   Start(slot, std::move(a));
+  return stopped;
 }
 
 void WorkerDaemon::PollJobs() {
@@ -264,7 +266,8 @@ void WorkerDaemon::Run() {
   auto next_progress = std::chrono::steady_clock::now();
   while (!StopRequested()) {
     // Children are polled, not waited for: a short wait keeps job ends prompt.
-    const bool busy = std::any_of(slots_.begin(), slots_.end(), [](const Slot& s) { return !!s.run; });
+    const bool busy =
+        std::any_of(slots_.begin(), slots_.end(), [](const Slot& s) { return !!s.run; });
     dds_->wait_set.Wait(busy ? 0.05 : 0.2);
     TakeAssignments();
     PollJobs();

@@ -8,8 +8,8 @@
 #include <chrono>
 #include <map>
 #include <memory>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "daemon/job_attempt.h"
 #include "dds/messages.h"
@@ -44,8 +44,8 @@ class WorkerDaemon {
   void Empty(int slot, const std::string& why);
   void Start(int slot, msg::JobAssignment assignment);
   // Starts an assignment from the followed coordinator unless its slot holds that attempt
-  // already.
-  void Consider(msg::JobAssignment assignment);
+  // already. True when it stopped a running job to do so.
+  bool Consider(msg::JobAssignment assignment);
   bool FromCoordinator(const std::string& sender);
   msg::JobEvent EventOf(int slot) const;  // its key and job, to fill in
 
