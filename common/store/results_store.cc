@@ -93,12 +93,13 @@ CampaignProgress ReadProgress(const Statement& row) {
   p.succeeded = static_cast<int>(row.Int(7));
   p.failed = static_cast<int>(row.Int(8));
   p.cancelled = static_cast<int>(row.Int(9));
+  p.cached = static_cast<int>(row.Int(10));
   return p;
 }
 
 constexpr const char* kProgressColumns =
     "SELECT campaign_id, name, state, total, pending, ready, running, succeeded, failed, "
-    "cancelled FROM v_campaign_progress";
+    "cancelled, cached FROM v_campaign_progress";
 
 }  // namespace
 
@@ -433,10 +434,14 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         .Bind(eval.position.z)
         .Run();
   } else {
-    // Bind each dependent's position now: the row then shows exactly what it will run.
+    // Bind each dependent's position now: the row then shows exactly what it will run. A chunk
+    // at a time: one baseline with RngRun 1..100000 has 100k dependants, never all in memory.
     Statement dependents = db_->Prepare(
-        "SELECT id, position_rule_json, kind, content_base, state FROM jobs WHERE depends_on = ?");
-    dependents.Bind(job_id);
+        "SELECT rowid, id, position_rule_json, kind, content_base, state FROM jobs "
+        "WHERE depends_on = ? AND rowid > ? ORDER BY rowid LIMIT 1024");
+    Statement update = db_->Prepare(
+        "UPDATE jobs SET x = ?, y = ?, z = ?, cache_key = ?, content_base = NULL, "
+        "state = CASE state WHEN 'pending' THEN 'ready' ELSE state END WHERE id = ?");
     struct Bound {
       std::string id;
       Vec3 position;
@@ -444,38 +449,43 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
       bool released = false;  // pending -> ready now
     };
     std::vector<Bound> bound;
-    while (dependents.Step()) {
-      PositionRule rule;
-      JobKind dependent_kind;
-      try {
-        rule = PositionRuleFromJson(json::parse(dependents.Text(1)));
-        dependent_kind = ParseJobKind(dependents.Text(2));
-      } catch (const std::exception& e) {
-        throw StoreError(file(), "job " + dependents.Text(0) + ": bad position rule: " + e.what());
+    for (std::int64_t after = 0;; bound.clear()) {
+      dependents.Reset();
+      dependents.Bind(job_id).Bind(after);
+      while (dependents.Step()) {
+        after = dependents.Int(0);
+        const std::string id = dependents.Text(1);
+        PositionRule rule;
+        JobKind dependent_kind;
+        try {
+          rule = PositionRuleFromJson(json::parse(dependents.Text(2)));
+          dependent_kind = ParseJobKind(dependents.Text(3));
+        } catch (const std::exception& e) {
+          throw StoreError(file(), "job " + id + ": bad position rule: " + e.what());
+        }
+        const Vec3 position = ApplyPositionRule(rule, produced);
+        bound.push_back(
+            {id, position,
+             JobContentKey(dependents.OptionalText(4).value_or(""), dependent_kind, position),
+             dependents.Text(5) == "pending"});
       }
-      const Vec3 position = ApplyPositionRule(rule, produced);
-      bound.push_back(
-          {dependents.Text(0), position,
-           JobContentKey(dependents.OptionalText(3).value_or(""), dependent_kind, position),
-           dependents.Text(4) == "pending"});
-    }
-    dependents.Reset();
-    Statement update = db_->Prepare(
-        "UPDATE jobs SET x = ?, y = ?, z = ?, cache_key = ?, content_base = NULL, "
-        "state = CASE state WHEN 'pending' THEN 'ready' ELSE state END WHERE id = ?");
-    for (const auto& b : bound) {
+      dependents.Reset();
+      if (bound.empty())
+        break;
+      for (const auto& b : bound) {
+        update.Reset();
+        update.Bind(b.position.x)
+            .Bind(b.position.y)
+            .Bind(b.position.z)
+            .Bind(b.cache_key)
+            .Bind(b.id)
+            .Run();
+      }
       update.Reset();
-      update.Bind(b.position.x)
-          .Bind(b.position.y)
-          .Bind(b.position.z)
-          .Bind(b.cache_key)
-          .Bind(b.id)
-          .Run();
-    }
-    update.Reset();
-    for (const auto& b : bound) {
-      if (b.released && b.cache_key)
-        ResolveFromCache(b.id);
+      for (const auto& b : bound) {
+        if (b.released && b.cache_key)
+          ResolveFromCache(b.id);
+      }
     }
   }
   ServeWaiting(job_id);
@@ -630,9 +640,8 @@ std::vector<std::string> ResultsStore::RequeueWorker(const std::string& worker_i
 }
 
 std::vector<RunningJob> ResultsStore::ListRunning() {
-  Statement select = db_->Prepare(
-      std::string("SELECT ") + kRunningJobColumns +
-      " FROM jobs WHERE state = 'running' ORDER BY started_at, id");
+  Statement select = db_->Prepare(std::string("SELECT ") + kRunningJobColumns +
+                                  " FROM jobs WHERE state = 'running' ORDER BY started_at, id");
   std::vector<RunningJob> out;
   while (select.Step())
     out.push_back(ReadRunningJob(select));
@@ -652,9 +661,9 @@ std::vector<ResultsStore::RunningSlot> ResultsStore::RunningSlots() {
 std::vector<RunningJob> ResultsStore::CancelCampaign(const std::string& campaign_id) {
   Transaction transaction(*db_);
   RequireCampaign(campaign_id);
-  Statement running = db_->Prepare(
-      std::string("SELECT ") + kRunningJobColumns +
-      " FROM jobs WHERE campaign_id = ? AND state = 'running' ORDER BY id");
+  Statement running =
+      db_->Prepare(std::string("SELECT ") + kRunningJobColumns +
+                   " FROM jobs WHERE campaign_id = ? AND state = 'running' ORDER BY id");
   running.Bind(campaign_id);
   std::vector<RunningJob> stopped;
   while (running.Step())
@@ -675,6 +684,13 @@ std::vector<RunningJob> ResultsStore::CancelCampaign(const std::string& campaign
 int ResultsStore::RetryFailed(const std::string& campaign_id) {
   Transaction transaction(*db_);
   RequireCampaign(campaign_id);
+  Statement revive = db_->Prepare(
+      "SELECT id FROM jobs WHERE campaign_id = ? AND state IN ('failed', 'cancelled')");
+  revive.Bind(campaign_id);
+  std::vector<std::string> revived_ids;
+  while (revive.Step())
+    revived_ids.push_back(revive.Text(0));
+  revive.Reset();
   // A job whose dependency has not succeeded (it is being retried too) waits as pending.
   // attempt + 1 makes any late result of the old attempt stale.
   db_->Prepare(
@@ -692,6 +708,10 @@ int ResultsStore::RetryFailed(const std::string& campaign_id) {
   const int revived = db_->Changes();
   if (revived > 0) {
     db_->Prepare("UPDATE campaigns SET state = 'active' WHERE id = ?").Bind(campaign_id).Run();
+    // What another campaign computed meanwhile need not run again.
+    for (const auto& id : revived_ids)
+      ResolveFromCache(id);
+    UpdateCampaignState(campaign_id);
   }
   transaction.Commit();
   return revived;

@@ -99,6 +99,7 @@ const char* ToString(JobUpdate update);
 struct CampaignProgress {
   std::string campaign_id, name, state;  // state: active | cancelled | finished
   int total = 0, pending = 0, ready = 0, running = 0, succeeded = 0, failed = 0, cancelled = 0;
+  int cached = 0;  // of the succeeded: served from the result cache
 };
 
 struct MetricRow {

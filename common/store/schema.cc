@@ -184,8 +184,23 @@ CREATE INDEX jobs_by_worker ON jobs(worker_id);
 
 // Version 8: jobs.slot, which of its worker's slots runs a running job (the DDS instance of its
 // assignment, idl/rlpos_messages.idl); a restarted coordinator gives it back to the same slot.
+// v_campaign_progress counts the jobs served from the result cache.
 constexpr const char* kVersion8 = R"sql(
 ALTER TABLE jobs ADD COLUMN slot INTEGER;
+DROP VIEW v_campaign_progress;
+CREATE VIEW v_campaign_progress AS
+SELECT c.id AS campaign_id, c.name, c.state, datetime(c.created_at, 'unixepoch') AS created_utc,
+       COUNT(j.id) AS total,
+       COALESCE(SUM(j.state = 'pending'), 0) AS pending,
+       COALESCE(SUM(j.state = 'ready'), 0) AS ready,
+       COALESCE(SUM(j.state = 'running'), 0) AS running,
+       COALESCE(SUM(j.state = 'succeeded'), 0) AS succeeded,
+       COALESCE(SUM(j.state = 'failed'), 0) AS failed,
+       COALESCE(SUM(j.state = 'cancelled'), 0) AS cancelled,
+       COALESCE(SUM(j.state = 'succeeded' AND j.cached_from IS NOT NULL), 0) AS cached
+FROM campaigns c
+LEFT JOIN jobs j ON j.campaign_id = c.id
+GROUP BY c.id;
 )sql";
 
 void ConvertArgvColumns(Database& db) {

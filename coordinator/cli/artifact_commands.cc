@@ -39,8 +39,14 @@ int ListOrExportArtifacts(const std::string& db, const std::string& id,
   if (artifacts.empty()) {
     if (!store.GetJob(id))
       store.Progress(id);  // throws StoreError naming an unknown campaign
-    std::cerr << "no artifacts for " << id << "\n";
-    return out_dir.empty() ? kExitOk : kExitFailure;
+    // Listing nothing is an answer; exporting nothing is a failure the caller must see.
+    if (out_dir.empty()) {
+      std::cerr << "no artifacts for " << id << "\n";
+      return kExitOk;
+    }
+    std::cerr << "rlpos-campaign: error: " << id << ": no artifacts to export to " << out_dir
+              << "\n";
+    return kExitFailure;
   }
   const fs::path root = ArtifactsDirOf(db);
   if (out_dir.empty()) {

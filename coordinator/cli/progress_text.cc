@@ -61,8 +61,10 @@ std::string FormatStatus(const std::vector<CampaignProgress>& campaigns,
     const auto& p = campaigns[i];
     out << p.campaign_id << "  " << p.name << "  " << p.state << "\n";
     out << "  jobs: " << p.total << " total, " << p.pending << " pending, " << p.ready << " ready, "
-        << p.running << " running, " << p.succeeded << " succeeded, " << p.failed << " failed, "
-        << p.cancelled << " cancelled\n";
+        << p.running << " running, " << p.succeeded << " succeeded";
+    if (p.cached > 0)
+      out << " (" << p.cached << " from the cache)";
+    out << ", " << p.failed << " failed, " << p.cancelled << " cancelled\n";
     const auto eta =
         i < timings.size() ? EstimateRemainingSeconds(p, timings[i], now) : std::optional<double>{};
     out << "  " << ProgressLine(p, IsSettled(p) ? std::nullopt : eta) << "\n";

@@ -240,6 +240,15 @@ TEST_F(RlposCampaignCli, ArtifactsListExportAndTheirBadInputs) {
                      "does not match the sha256 the database holds");
   EXPECT_FALSE(fs::exists(dir_ + "/out2"));
   EXPECT_FALSE(fs::exists(dir_ + "/out2.partial"));
+
+  // A job without artifacts: listing says so and succeeds; an export of nothing fails.
+  const std::string eval = id + "/eval/B/baseline/run1";
+  const auto none = Campaign("artifacts " + eval + " --db r.db");
+  EXPECT_EQ(none.exit_code, 0) << none.err;
+  EXPECT_EQ(none.err, "no artifacts for " + eval + "\n");
+  ExpectOneLineError(Campaign("artifacts " + eval + " --db r.db --out out3"), 1,
+                     eval + ": no artifacts to export to out3");
+  EXPECT_FALSE(fs::exists(dir_ + "/out3"));
 }
 
 TEST_F(RlposCampaignCli, UsageErrors) {

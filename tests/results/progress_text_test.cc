@@ -102,6 +102,7 @@ TEST(ProgressText, FormatStatusWithoutCampaigns) {
 TEST(ProgressText, FormatStatusShowsCampaignsAndAliveWorkers) {
   CampaignProgress running = Progress(100, 39, 1, 0, 2, 50, 8);
   CampaignProgress done = Progress(4, 3, 1, 0, 0);
+  done.cached = 2;
   done.campaign_id = "deadbeef";
   done.name = "paper";
   done.state = "finished";
@@ -121,6 +122,10 @@ TEST(ProgressText, FormatStatusShowsCampaignsAndAliveWorkers) {
       Contains(text, "  [#########...............] 40/100  running 2  failed 1  ETA 5m00s\n"))
       << text;
   EXPECT_TRUE(Contains(text, "deadbeef  paper  finished\n")) << text;
+  EXPECT_TRUE(Contains(text,
+                       "  jobs: 4 total, 0 pending, 0 ready, 0 running, 3 succeeded (2 from "
+                       "the cache), 1 failed, 0 cancelled\n"))
+      << text;
   // A settled campaign shows no ETA.
   EXPECT_TRUE(Contains(text, "] 4/4  running 0  failed 1\n")) << text;
   EXPECT_TRUE(Contains(text, "workers: 2 alive (5/6 slots busy), 2 gone\n")) << text;

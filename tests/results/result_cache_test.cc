@@ -78,6 +78,8 @@ TEST_F(ResultCacheTest, ACampaignUnderANewNameIsServedWholeAtSubmit) {
   EXPECT_TRUE(store_.ListReady().empty());
   const CampaignProgress progress = store_.Progress(again.id);
   EXPECT_EQ(progress.succeeded, progress.total);
+  EXPECT_EQ(progress.cached, progress.total);
+  EXPECT_EQ(store_.Progress(first.id).cached, 0);
   EXPECT_EQ(progress.state, "finished");
   // Every row says where its result came from, and the metrics are the same.
   EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE campaign_id = '" + again.id +
@@ -95,6 +97,21 @@ TEST_F(ResultCacheTest, ACampaignUnderANewNameIsServedWholeAtSubmit) {
     EXPECT_EQ(metrics_again[i].aggregate_throughput_mbps,
               metrics_first[i].aggregate_throughput_mbps);
   }
+}
+
+TEST_F(ResultCacheTest, RetryTakesWhatAnotherCampaignComputedMeanwhile) {
+  const ExpandedCampaign stopped = Named("stopped");
+  store_.Submit(stopped);
+  store_.CancelCampaign(stopped.id);
+  const ExpandedCampaign done = Named("done");
+  store_.Submit(done);
+  EXPECT_EQ(RunAll(), static_cast<int>(done.jobs.size()));
+
+  EXPECT_EQ(store_.RetryFailed(stopped.id), static_cast<int>(stopped.jobs.size()));
+  EXPECT_TRUE(store_.ListReady().empty());  // nothing left to run
+  const CampaignProgress progress = store_.Progress(stopped.id);
+  EXPECT_EQ(progress.cached, progress.total);
+  EXPECT_EQ(progress.state, "finished");
 }
 
 TEST_F(ResultCacheTest, NoCacheRunsEveryJob) {

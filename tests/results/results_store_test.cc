@@ -130,6 +130,28 @@ TEST_F(StoreTest, ProducerSuccessBindsPositionsOfItsEvals) {
   EXPECT_EQ(evals, 2 * 6);
 }
 
+TEST(StoreDependants, AProducerReleasesMoreDependantsThanOneChunk) {
+  testing::TempDir dir;
+  ResultsStore store(dir.File("s.db"));
+  CampaignSpec spec = testing::MiniSpec();
+  spec.scenarios.resize(1);  // B
+  spec.positioners = {"baseline"};
+  spec.rng_runs.clear();
+  for (std::uint64_t run = 1; run <= 2500; ++run)  // dependants come 1024 at a time
+    spec.rng_runs.push_back(run);
+  ExpandedCampaign campaign = ExpandCampaign(spec);
+  campaign.use_cache = false;
+  store.Submit(campaign);
+  const std::string producer = campaign.id + "/position/B/baseline";
+  ASSERT_TRUE(store.MarkRunning(producer, "w1", 0, 1));
+  ASSERT_EQ(store.RecordSuccess(producer, 1, PositionResult(50, 35, 10)), JobUpdate::kSucceeded);
+  EXPECT_EQ(store.Progress(campaign.id).ready, 2500);
+  EXPECT_EQ(testing::QueryOne(dir.File("s.db"),
+                              "SELECT COUNT(*) FROM jobs WHERE kind = 'eval' AND x = 50 AND y = 35 "
+                              "AND z = 10 AND cache_key IS NOT NULL AND content_base IS NULL"),
+            "2500");
+}
+
 TEST_F(StoreTest, EveryTypedFieldSurvivesTheStore) {
   CampaignSpec spec = testing::MiniSpec();
   spec.scenarios[0].overrides = {"wifi.mode=adhoc", "/ues/0/demand=12.5"};
