@@ -12,7 +12,9 @@ namespace {
 
 const std::string kScenarioB = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json";
 
-std::string Sim(const std::string& args) { return BuiltBinary("rlpos-sim") + " " + args; }
+std::string Sim(const std::string& args) {
+  return BuiltBinary("rlpos-sim") + " " + args;
+}
 
 // Writes `text` to a fresh file and returns its path.
 std::string TempFile(const std::string& text) {
@@ -44,7 +46,8 @@ TEST(RlposSimCli, MissingFile) {
 
 TEST(RlposSimCli, MalformedJson) {
   const std::string file = TempFile("{\"ues\": [}");
-  ExpectOneLineError(RunCommand(Sim("validate " + file)), 2, file + ": /: malformed JSON at line 1");
+  ExpectOneLineError(RunCommand(Sim("validate " + file)), 2,
+                     file + ": /: malformed JSON at line 1");
 }
 
 TEST(RlposSimCli, UnknownKeyWithSuggestion) {
@@ -54,10 +57,11 @@ TEST(RlposSimCli, UnknownKeyWithSuggestion) {
 
 TEST(RlposSimCli, UnknownTypeId) {
   ExpectOneLineError(
-      RunCommand(Sim("validate " + kScenarioB +
-                     " --set propagation.type=ns3::FriisPropagationLosModel")),
-      2, "/propagation/type: unknown ns-3 TypeId \"ns3::FriisPropagationLosModel\"; did you mean "
-         "\"ns3::FriisPropagationLossModel\"?");
+      RunCommand(
+          Sim("validate " + kScenarioB + " --set propagation.type=ns3::FriisPropagationLosModel")),
+      2,
+      "/propagation/type: unknown ns-3 TypeId \"ns3::FriisPropagationLosModel\"; did you mean "
+      "\"ns3::FriisPropagationLossModel\"?");
 }
 
 TEST(RlposSimCli, TypeOfTheWrongKind) {
@@ -93,8 +97,8 @@ TEST(RlposSimCli, BadPositions) {
                      "--position: expected x,y,z");
   ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,50,10")), 2,
                      "--position: (50, 50, 10) is inside building 0 (\"tower\")");
-  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,150,10")),
-                     2, "--position: (50, 150, 10) is outside the venue");
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,150,10")), 2,
+                     "--position: (50, 150, 10) is outside the venue");
 }
 
 TEST(RlposSimCli, UsageErrorsExitTwo) {
@@ -134,6 +138,24 @@ TEST(RlposSimCli, SameRunSameMetricsOtherRunCloseButDifferent) {
   EXPECT_NEAR(t2, t1, 0.1 * t1);
   std::printf("RngRun 1: %.3f Mbit/s %.3f ms; RngRun 2: %.3f Mbit/s %.3f ms\n", t1,
               run1["mean_delay_ms"].get<double>(), t2, run2["mean_delay_ms"].get<double>());
+}
+
+TEST(RlposSimCli, OracleCandidatesNotRescoredCarryNull) {
+  const auto r =
+      RunCommand(Sim("position --scenario " + kScenarioB + " --positioner oracle --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  const auto& candidates = out.at("candidates");
+  ASSERT_EQ(candidates.size(), 5u) << r.out;
+  // The best three analytic positions are re-scored at packet level, the others are not.
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto& reward = candidates[i].at("packet_reward");
+    if (i < 3) {
+      EXPECT_TRUE(reward.is_number()) << i << ": " << reward;
+    } else {
+      EXPECT_TRUE(reward.is_null()) << i << ": " << reward;
+    }
+  }
 }
 
 }  // namespace

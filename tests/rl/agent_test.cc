@@ -123,6 +123,27 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   EXPECT_TRUE(spec.normalise_rewards);
 }
 
+TEST(DqnAgent, LearnsOnlyOnceTheBufferHoldsABatch) {
+  AgentSpec spec = SmallSpec(1);
+  spec.warmup_steps = 0;  // a scenario may ask for none: the batch alone holds learning back
+  spec.batch_size = 8;
+  DqnAgent agent(spec, 1, 2);
+  for (int i = 1; i <= 8; ++i) {
+    Transition t;
+    t.observation = {0.5f};
+    t.action = i % 2;
+    t.reward = 1.0f;
+    t.next_observation = {0.5f};
+    t.next_mask = {1, 1};
+    const double loss = agent.Observe(std::move(t));
+    if (i < 8) {
+      EXPECT_LT(loss, 0.0) << "learned from " << i << " transitions, fewer than a batch";
+    } else {
+      EXPECT_GE(loss, 0.0) << "did not learn from a full batch";
+    }
+  }
+}
+
 TEST(DqnAgent, ActsOnlyAmongAllowedActions) {
   DqnAgent agent(SmallSpec(4), 1, 3);  // epsilon 1: exploring picks uniformly
   const ActionMask no_middle{1, 0, 1};

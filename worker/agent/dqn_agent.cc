@@ -184,7 +184,7 @@ double DqnAgent::Observe(Transition transition) {
   ++m.steps;
   double loss = -1.0;
   if (m.steps >= m.spec.warmup_steps &&
-      m.replay.Size() >= static_cast<std::size_t>(std::min<std::int64_t>(m.spec.batch_size, 1))) {
+      m.replay.Size() >= static_cast<std::size_t>(std::max<std::int64_t>(m.spec.batch_size, 1))) {
     loss = m.Learn();
   }
   if (m.steps % m.spec.target_update_interval == 0)

@@ -64,7 +64,7 @@ std::vector<ScoredPosition> OracleSearch(const Scenario& s, const OracleOptions&
           const StepInfo info = analytic.Evaluate(p);
           scored.push_back(
               {p, (*reward)(RewardInputOf(s, info.n_los, info.throughput_mbps, info.demands_met)),
-               -1.0, info.n_los, info.throughput_mbps});
+               std::nullopt, info.n_los, info.throughput_mbps});
         }
       }
     }

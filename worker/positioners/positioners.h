@@ -5,6 +5,7 @@
 //   oracle    exhaustive search of the zone grid scored with the analytic model; the best few
 //             re-scored at packet level
 //   rl        the trained policy's final greedy position (agent/trainer.h)
+#include <optional>
 #include <vector>
 
 #include "scenario/scenario.h"
@@ -19,14 +20,14 @@ Vec3 CentroidPosition(const Scenario& scenario);
 struct ScoredPosition {
   Vec3 position;
   double analytic_reward = 0.0;
-  double packet_reward = -1.0;  // < 0: not re-scored
+  std::optional<double> packet_reward;  // unset: not re-scored at packet level
   int n_los = 0;
   double throughput_mbps = 0.0;
 };
 
 struct OracleOptions {
-  double grid_step = 0.0;       // m; 0: the env's move step (every position the agent can reach)
-  int packet_candidates = 3;    // best analytic positions re-scored at packet level (0: none)
+  double grid_step = 0.0;        // m; 0: the env's move step (every position the agent can reach)
+  int packet_candidates = 3;     // best analytic positions re-scored at packet level (0: none)
   double packet_duration = 2.0;  // s per packet-level re-score
 };
 

@@ -27,7 +27,9 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
       const auto& c = ranked[i];
       candidates.push_back({{"position", {c.position.x, c.position.y, c.position.z}},
                             {"analytic_reward", c.analytic_reward},
-                            {"packet_reward", c.packet_reward},
+                            // null: not re-scored at packet level
+                            {"packet_reward", c.packet_reward ? nlohmann::json(*c.packet_reward)
+                                                              : nlohmann::json(nullptr)},
                             {"n_los", c.n_los}});
     }
   } else if (p.positioner == "offsets") {
