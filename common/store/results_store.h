@@ -223,7 +223,11 @@ class ResultsStore {
   std::vector<RunningJobView> RunningJobs(const std::string& campaign_id);
   CampaignTiming Timing(const std::string& campaign_id);
   std::vector<FailedJob> FailedJobs(const std::string& campaign_id);
-  std::optional<nlohmann::json> CampaignSpecJson(const std::string& campaign_id);
+  // The campaign's spec with only its top-level `key` ({} when the spec has none), read out by
+  // SQLite: a spec lists every RngRun, and a 100k-run list need not be parsed to get at the
+  // scenarios. nullopt for an unknown campaign.
+  std::optional<nlohmann::json> CampaignSpecPart(const std::string& campaign_id,
+                                                 const std::string& key);
 
   // The artifacts of a campaign (or of one job, given its id), by job then name.
   std::vector<ArtifactRecord> Artifacts(const std::string& campaign_or_job_id);

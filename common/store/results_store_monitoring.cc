@@ -54,12 +54,19 @@ std::vector<WorkerRecord> ResultsStore::ListWorkers() {
   return out;
 }
 
-std::optional<nlohmann::json> ResultsStore::CampaignSpecJson(const std::string& campaign_id) {
-  Statement select = db_->Prepare("SELECT spec_json FROM campaigns WHERE id = ?");
-  select.Bind(campaign_id);
+std::optional<nlohmann::json> ResultsStore::CampaignSpecPart(const std::string& campaign_id,
+                                                             const std::string& key) {
+  // json_quote keeps an extracted object or array as it is and quotes a string.
+  Statement select = db_->Prepare(
+      "SELECT json_type(spec_json, ?1) IS NOT NULL, json_quote(json_extract(spec_json, ?1)) "
+      "FROM campaigns WHERE id = ?2");
+  select.Bind("$.\"" + key + "\"").Bind(campaign_id);
   if (!select.Step())
     return std::nullopt;
-  return nlohmann::json::parse(select.Text(0));
+  nlohmann::json part = nlohmann::json::object();
+  if (select.Int(0) != 0)
+    part[key] = nlohmann::json::parse(select.Text(1));
+  return part;
 }
 
 void ResultsStore::SetProgress(const std::string& job_id, int attempt, const std::string& line,

@@ -399,7 +399,7 @@ const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campai
                                                        const std::string& name) {
   auto it = documents_.find(campaign_id);
   if (it == documents_.end()) {
-    const auto spec = store_.CampaignSpecJson(campaign_id);
+    const auto spec = store_.CampaignSpecPart(campaign_id, "scenarios");
     it = documents_
              .emplace(campaign_id,
                       spec ? ScenarioDocumentsByName(*spec) : std::map<std::string, std::string>{})

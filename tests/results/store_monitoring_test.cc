@@ -132,10 +132,13 @@ TEST_F(MonitoringTest, UnknownCampaignThrows) {
   EXPECT_THROW(store_.Timing("nope"), StoreError);
   EXPECT_THROW(store_.FailedJobs("nope"), StoreError);
   EXPECT_THROW(store_.RunningJobs("nope"), StoreError);
-  EXPECT_FALSE(store_.CampaignSpecJson("nope").has_value());
-  const auto spec = store_.CampaignSpecJson(campaign_.id);
-  ASSERT_TRUE(spec.has_value());
-  EXPECT_EQ(*spec, campaign_.spec);
+  EXPECT_FALSE(store_.CampaignSpecPart("nope", "scenarios").has_value());
+  for (const std::string key : {"scenarios", "name", "rng_runs", "retries"}) {
+    const auto part = store_.CampaignSpecPart(campaign_.id, key);
+    ASSERT_TRUE(part.has_value()) << key;
+    EXPECT_EQ(*part, nlohmann::json({{key, campaign_.spec.at(key)}})) << key;
+  }
+  EXPECT_EQ(store_.CampaignSpecPart(campaign_.id, "nosuchkey"), nlohmann::json::object());
 }
 
 TEST_F(MonitoringTest, TimingFollowsStartsAndFinishes) {
