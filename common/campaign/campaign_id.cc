@@ -15,9 +15,12 @@ std::uint64_t Fnv1a64(const std::string& bytes) {
 
 std::string CampaignId(const CampaignSpec& spec) {
   // nlohmann::json keeps object keys sorted, so dump() is canonical.
+  return CampaignIdOfSpecText(ToJson(spec).dump());
+}
+
+std::string CampaignIdOfSpecText(const std::string& spec_text) {
   char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx",
-                static_cast<unsigned long long>(Fnv1a64(ToJson(spec).dump())));
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(Fnv1a64(spec_text)));
   return std::string(hex, 12);
 }
 

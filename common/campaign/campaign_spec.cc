@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <set>
 
-#include "config/number_text.h"
 #include "config/config_error.h"
 #include "config/did_you_mean.h"
+#include "config/number_text.h"
 #include "config/object_reader.h"
 #include "scenario/scenario_parser.h"
 #include "wire/identifiers.h"
@@ -28,11 +28,13 @@ std::uint64_t ReadUnsigned(const json& v, const std::string& path, std::uint64_t
   }
   if (v.is_number_unsigned()) {
     const auto x = v.get<std::uint64_t>();
-    if (x <= max) return x;
+    if (x <= max)
+      return x;
     throw ConfigError(path, "must be <= " + std::to_string(max) + ", got " + std::to_string(x));
   }
   const auto x = v.get<long long>();
-  if (x < 0) throw ConfigError(path, "must not be negative, got " + std::to_string(x));
+  if (x < 0)
+    throw ConfigError(path, "must not be negative, got " + std::to_string(x));
   return static_cast<std::uint64_t>(x);
 }
 
@@ -40,7 +42,8 @@ std::uint64_t ReadUnsigned(const json& v, const std::string& path, std::uint64_t
 [[noreturn]] void MissingKey(const json& object, const std::string& parent, const std::string& key,
                              const std::vector<std::string>& known, const std::string& hint) {
   for (auto it = object.begin(); it != object.end(); ++it) {
-    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
+    if (std::find(known.begin(), known.end(), it.key()) != known.end())
+      continue;
     if (!ClosestMatch(it.key(), {key}).empty()) {
       throw ConfigError(JoinPath(parent, it.key()),
                         "unknown key \"" + it.key() + "\"; did you mean \"" + key + "\"?");
@@ -61,8 +64,8 @@ const json& NonEmptyArray(const json& v, const std::string& path) {
 }
 
 // A sorted list of unique integers, rejecting duplicates (a duplicate is always a mistake here).
-std::vector<std::uint64_t> ReadUniqueList(const json& v, const std::string& path,
-                                          std::uint64_t max, bool sort) {
+std::vector<std::uint64_t> ReadUniqueList(const json& v, const std::string& path, std::uint64_t max,
+                                          bool sort) {
   std::vector<std::uint64_t> out;
   for (std::size_t i = 0; i < NonEmptyArray(v, path).size(); ++i) {
     const std::uint64_t x = ReadUnsigned(v[i], JoinPath(path, i), max);
@@ -71,7 +74,8 @@ std::vector<std::uint64_t> ReadUniqueList(const json& v, const std::string& path
     }
     out.push_back(x);
   }
-  if (sort) std::sort(out.begin(), out.end());
+  if (sort)
+    std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -79,7 +83,8 @@ std::vector<std::uint64_t> ReadRngRuns(const json& v, const std::string& path) {
   if (v.is_object()) {
     ObjectReader r(v, path);
     const json* list = r.Child("list");
-    if (!list) MissingKey(v, path, "list", {}, " ({\"list\": [1, 2, 5]})");
+    if (!list)
+      MissingKey(v, path, "list", {}, " ({\"list\": [1, 2, 5]})");
     auto runs = ReadUniqueList(*list, r.PathOf("list"), UINT64_MAX, true);
     r.Finish();
     if (runs.size() > kMaxRngRuns) {
@@ -92,12 +97,14 @@ std::vector<std::uint64_t> ReadRngRuns(const json& v, const std::string& path) {
   }
   const std::uint64_t first = ReadUnsigned(v[0], JoinPath(path, 0), UINT64_MAX);
   const std::uint64_t last = ReadUnsigned(v[1], JoinPath(path, 1), UINT64_MAX);
-  if (last < first) throw ConfigError(path, "first must not be above last");
+  if (last < first)
+    throw ConfigError(path, "first must not be above last");
   if (last - first >= kMaxRngRuns) {
     throw ConfigError(path, "more than " + std::to_string(kMaxRngRuns) + " runs");
   }
   std::vector<std::uint64_t> runs;
-  for (std::uint64_t r = first; r <= last; ++r) runs.push_back(r);
+  for (std::uint64_t r = first; r <= last; ++r)
+    runs.push_back(r);
   return runs;
 }
 
@@ -106,14 +113,17 @@ std::vector<std::string> ReadPositioners(const json& v, const std::string& path)
   std::vector<std::string> chosen;
   for (std::size_t i = 0; i < NonEmptyArray(v, path).size(); ++i) {
     const std::string item_path = JoinPath(path, i);
-    if (!v[i].is_string()) throw ConfigError(item_path, "expected a string, got " + TypeName(v[i]));
+    if (!v[i].is_string())
+      throw ConfigError(item_path, "expected a string, got " + TypeName(v[i]));
     const std::string name = v[i].get<std::string>();
     if (std::find(all.begin(), all.end(), name) == all.end()) {
       std::string list;
-      for (const auto& a : all) list += (list.empty() ? "" : ", ") + a;
+      for (const auto& a : all)
+        list += (list.empty() ? "" : ", ") + a;
       std::string message = "unknown positioner \"" + name + "\" (one of: " + list + ")";
       const std::string hint = ClosestMatch(name, all);
-      if (!hint.empty()) message += "; did you mean \"" + hint + "\"?";
+      if (!hint.empty())
+        message += "; did you mean \"" + hint + "\"?";
       throw ConfigError(item_path, message);
     }
     if (std::find(chosen.begin(), chosen.end(), name) != chosen.end()) {
@@ -124,7 +134,8 @@ std::vector<std::string> ReadPositioners(const json& v, const std::string& path)
   // Canonical order: the listing order changes no job, so it must not change the campaign id.
   std::vector<std::string> ordered;
   for (const auto& a : all) {
-    if (std::find(chosen.begin(), chosen.end(), a) != chosen.end()) ordered.push_back(a);
+    if (std::find(chosen.begin(), chosen.end(), a) != chosen.end())
+      ordered.push_back(a);
   }
   return ordered;
 }
@@ -137,7 +148,8 @@ TrainSettings ReadTrain(const json& v) {
     train.seeds = ReadUniqueList(*seeds, r.PathOf("seeds"), UINT32_MAX, false);
   }
   train.fidelity = r.String("fidelity", train.fidelity, {"analytic", "packet"});
-  if (r.Has("episodes")) train.episodes = static_cast<int>(r.Integer("episodes", 0, 1, 1000000));
+  if (r.Has("episodes"))
+    train.episodes = static_cast<int>(r.Integer("episodes", 0, 1, 1000000));
   r.Finish();
   return train;
 }
@@ -145,8 +157,10 @@ TrainSettings ReadTrain(const json& v) {
 EvalSettings ReadEval(const json& v) {
   ObjectReader r(v, "/eval");
   EvalSettings eval;
-  if (r.Has("duration")) eval.duration = r.Number("duration", 0, Positive());
-  if (r.Has("warmup")) eval.warmup = r.Number("warmup", 0, NonNegative());
+  if (r.Has("duration"))
+    eval.duration = r.Number("duration", 0, Positive());
+  if (r.Has("warmup"))
+    eval.warmup = r.Number("warmup", 0, NonNegative());
   r.Finish();
   if (eval.duration && eval.warmup && *eval.warmup >= *eval.duration) {
     throw ConfigError("/eval/warmup", "must be shorter than the duration");
@@ -163,12 +177,14 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
     entry.file = v.get<std::string>();
   } else if (v.is_object()) {
     ObjectReader r(v, path);
-    if (!r.Has("file")) MissingKey(v, path, "file", {"set"}, " (the scenario JSON)");
+    if (!r.Has("file"))
+      MissingKey(v, path, "file", {"set"}, " (the scenario JSON)");
     entry.file = r.String("file", "");
     file_path = r.PathOf("file");
     if (const json* set = r.Child("set")) {
       set_path = r.PathOf("set");
-      if (!set->is_array()) throw ConfigError(set_path, "expected an array, got " + TypeName(*set));
+      if (!set->is_array())
+        throw ConfigError(set_path, "expected an array, got " + TypeName(*set));
       for (std::size_t i = 0; i < set->size(); ++i) {
         if (!(*set)[i].is_string()) {
           throw ConfigError(JoinPath(set_path, i),
@@ -181,7 +197,8 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
   } else {
     throw ConfigError(path, "expected a file name or {\"file\", \"set\"}, got " + TypeName(v));
   }
-  if (entry.file.empty()) throw ConfigError(file_path, "the file name is empty");
+  if (entry.file.empty())
+    throw ConfigError(file_path, "the file name is empty");
 
   entry.document = source(entry.file, file_path, entry.path);
 
@@ -228,7 +245,9 @@ bool CampaignSpec::Uses(const std::string& positioner) const {
   return std::find(positioners.begin(), positioners.end(), positioner) != positioners.end();
 }
 
-bool CampaignSpec::NeedsTraining() const { return Uses("rl") || Uses("offsets"); }
+bool CampaignSpec::NeedsTraining() const {
+  return Uses("rl") || Uses("offsets");
+}
 
 ScenarioSource FileScenarioSource(const std::string& base_dir) {
   return [base_dir](const std::string& file_name, const std::string& where, std::string& path) {
@@ -266,12 +285,16 @@ CampaignSpec ParseCampaign(const json& document, const std::string& base_dir) {
 CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
   ObjectReader r(document, "");
   CampaignSpec spec;
-  if (!r.Has("name")) MissingKey(document, "", "name", kCampaignKeys, "");
+  if (!r.Has("name"))
+    MissingKey(document, "", "name", kCampaignKeys, "");
   spec.name = r.String("name", "");
-  if (spec.name.empty()) throw ConfigError("/name", "must not be empty");
+  if (spec.name.empty())
+    throw ConfigError("/name", "must not be empty");
 
-  if (const json* train = r.Child("train")) spec.train = ReadTrain(*train);
-  if (const json* eval = r.Child("eval")) spec.eval = ReadEval(*eval);
+  if (const json* train = r.Child("train"))
+    spec.train = ReadTrain(*train);
+  if (const json* eval = r.Child("eval"))
+    spec.eval = ReadEval(*eval);
 
   const json* scenarios = r.Child("scenarios");
   if (!scenarios) {
@@ -316,8 +339,10 @@ CampaignSpec ReadCampaignFile(const std::string& file) {
 
 std::vector<std::string> EvalOverrides(const EvalSettings& eval) {
   std::vector<std::string> out;
-  if (eval.duration) out.push_back("simulation.duration=" + FormatNumber(*eval.duration));
-  if (eval.warmup) out.push_back("simulation.warmup=" + FormatNumber(*eval.warmup));
+  if (eval.duration)
+    out.push_back("simulation.duration=" + FormatNumber(*eval.duration));
+  if (eval.warmup)
+    out.push_back("simulation.warmup=" + FormatNumber(*eval.warmup));
   return out;
 }
 
@@ -328,10 +353,13 @@ json ToJson(const CampaignSpec& spec) {
   }
   json train = {
       {"seeds", spec.train.seeds}, {"fidelity", spec.train.fidelity}, {"episodes", nullptr}};
-  if (spec.train.episodes) train["episodes"] = *spec.train.episodes;
+  if (spec.train.episodes)
+    train["episodes"] = *spec.train.episodes;
   json eval = {{"duration", nullptr}, {"warmup", nullptr}};
-  if (spec.eval.duration) eval["duration"] = *spec.eval.duration;
-  if (spec.eval.warmup) eval["warmup"] = *spec.eval.warmup;
+  if (spec.eval.duration)
+    eval["duration"] = *spec.eval.duration;
+  if (spec.eval.warmup)
+    eval["warmup"] = *spec.eval.warmup;
   return {{"name", spec.name},
           {"scenarios", scenarios},
           {"rng_runs", spec.rng_runs},

@@ -45,14 +45,15 @@ std::string EvalLabel(int k, std::size_t seed_index, std::uint64_t seed) {
   return label;
 }
 
-CampaignPlan PlanCampaign(const CampaignSpec& spec) {
+CampaignPlan PlanCampaign(CampaignSpec spec) {
   CampaignPlan out;
-  out.id = CampaignId(spec);
+  // Text, not a JSON tree: a spec lists every RngRun, and 100k of them as a tree are megabytes.
+  out.spec_json = ToJson(spec).dump();
+  out.id = CampaignIdOfSpecText(out.spec_json);
   out.name = spec.name;
-  out.spec = ToJson(spec);
   out.max_attempts = 1 + spec.retries;
   out.job_timeout_s = spec.job_timeout_s;
-  out.parsed = spec;
+  out.parsed = std::move(spec);
   return out;
 }
 

@@ -26,8 +26,8 @@ namespace rlpos {
 struct CampaignPlan {
   std::string id;
   std::string name;
-  nlohmann::json spec;   // ToJson(CampaignSpec): what the id hashes
-  int max_attempts = 3;  // 1 + retries
+  std::string spec_json;  // ToJson(CampaignSpec).dump(): what the id hashes
+  int max_attempts = 3;   // 1 + retries
   double job_timeout_s = 600.0;
   // Jobs may take the result of a succeeded job of the same content (any campaign) instead of
   // running; false: every job runs (`--no-cache`).
@@ -40,7 +40,7 @@ struct CampaignPlan {
   void ForEachJob(const std::function<void(Job&&)>& emit) const;
 };
 
-CampaignPlan PlanCampaign(const CampaignSpec& spec);
+CampaignPlan PlanCampaign(CampaignSpec spec);
 
 // A plan with its jobs in memory: for readers of small campaigns (tests, `run --dry-run`).
 struct ExpandedCampaign : CampaignPlan {

@@ -25,12 +25,14 @@ double EntryDistance(const Vec3& origin, const Vec3& u, const Box& b) {
   double leave = std::numeric_limits<double>::infinity();
   for (int a = 0; a < 3; ++a) {
     if (d[a] == 0.0) {
-      if (o[a] < lo[a] || o[a] > hi[a]) return std::numeric_limits<double>::infinity();
+      if (o[a] < lo[a] || o[a] > hi[a])
+        return std::numeric_limits<double>::infinity();
       continue;
     }
     double t0 = (lo[a] - o[a]) / d[a];
     double t1 = (hi[a] - o[a]) / d[a];
-    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > t1)
+      std::swap(t0, t1);
     enter = std::max(enter, t0);
     leave = std::min(leave, t1);
   }
@@ -46,36 +48,46 @@ OffsetGeometry OffsetGeometryOf(const Scenario& s) {
   g.bounds = {std::max(zone.xmin, venue.xmin), std::min(zone.xmax, venue.xmax),
               std::max(zone.ymin, venue.ymin), std::min(zone.ymax, venue.ymax),
               std::max(zone.zmin, venue.zmin), std::min(zone.zmax, venue.zmax)};
-  for (const auto& b : s.buildings) g.obstacles.push_back(b.Footprint3d());
+  for (const auto& b : s.buildings)
+    g.obstacles.push_back(b.Footprint3d());
   return g;
 }
 
 Vec3 OffsetDirection(int k) {
   switch (k) {
-    case 1: return {1, 0, 0};
-    case 2: return {-1, 0, 0};
-    case 3: return {0, 1, 0};
-    case 4: return {0, -1, 0};
-    case 5: return {0, 0, 1};
-    default: throw std::out_of_range("offset position " + std::to_string(k) + " is not in 1..5");
+    case 1:
+      return {1, 0, 0};
+    case 2:
+      return {-1, 0, 0};
+    case 3:
+      return {0, 1, 0};
+    case 4:
+      return {0, -1, 0};
+    case 5:
+      return {0, 0, 1};
+    default:
+      throw std::out_of_range("offset position " + std::to_string(k) + " is not in 1..5");
   }
 }
 
 Vec3 OffsetPosition(const Vec3& center, int k, const OffsetGeometry& geometry, double distance) {
   const Vec3 d = OffsetDirection(k);
-  const Vec3 target = Clamp({center.x + distance * d.x, center.y + distance * d.y,
-                             center.z + distance * d.z},
-                            geometry.bounds);
+  const Vec3 target =
+      Clamp({center.x + distance * d.x, center.y + distance * d.y, center.z + distance * d.z},
+            geometry.bounds);
   const Vec3 step{target.x - center.x, target.y - center.y, target.z - center.z};
   const double length = std::sqrt(step.x * step.x + step.y * step.y + step.z * step.z);
-  if (length == 0.0) return target;
+  if (length == 0.0)
+    return target;
   const Vec3 u{step.x / length, step.y / length, step.z / length};
   double reach = length;
   for (const auto& obstacle : geometry.obstacles) {
     // A centre inside a building is the agent's problem, not something to route around.
-    if (obstacle.Contains(center)) continue;
+    if (obstacle.Contains(center))
+      continue;
     const double entry = EntryDistance(center, u, obstacle);
-    if (entry <= length) reach = std::min(reach, std::max(0.0, entry - kObstacleMargin));
+    if (entry <= length)
+      reach = std::min(reach, std::max(0.0, entry - kObstacleMargin));
   }
   return {center.x + reach * u.x, center.y + reach * u.y, center.z + reach * u.z};
 }

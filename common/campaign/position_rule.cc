@@ -7,12 +7,16 @@ namespace {
 
 using nlohmann::json;
 
-json BoxJson(const Box& b) { return {b.xmin, b.xmax, b.ymin, b.ymax, b.zmin, b.zmax}; }
+json BoxJson(const Box& b) {
+  return {b.xmin, b.xmax, b.ymin, b.ymax, b.zmin, b.zmax};
+}
 
 Box BoxFromJson(const json& v) {
-  if (!v.is_array() || v.size() != 6) throw std::invalid_argument("a box needs 6 numbers");
+  if (!v.is_array() || v.size() != 6)
+    throw std::invalid_argument("a box needs 6 numbers");
   for (const auto& x : v) {
-    if (!x.is_number()) throw std::invalid_argument("a box needs 6 numbers");
+    if (!x.is_number())
+      throw std::invalid_argument("a box needs 6 numbers");
   }
   return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>(),
           v[3].get<double>(), v[4].get<double>(), v[5].get<double>()};
@@ -21,14 +25,17 @@ Box BoxFromJson(const json& v) {
 }  // namespace
 
 Vec3 ApplyPositionRule(const PositionRule& rule, const Vec3& produced) {
-  if (rule.offset == 0) return produced;
+  if (rule.offset == 0)
+    return produced;
   return OffsetPosition(produced, rule.offset, rule.geometry, rule.distance);
 }
 
 json ToJson(const PositionRule& rule) {
-  if (rule.offset == 0) return {{"offset", 0}};
+  if (rule.offset == 0)
+    return {{"offset", 0}};
   json obstacles = json::array();
-  for (const auto& b : rule.geometry.obstacles) obstacles.push_back(BoxJson(b));
+  for (const auto& b : rule.geometry.obstacles)
+    obstacles.push_back(BoxJson(b));
   return {{"offset", rule.offset},
           {"distance", rule.distance},
           {"bounds", BoxJson(rule.geometry.bounds)},
@@ -45,14 +52,16 @@ PositionRule PositionRuleFromJson(const json& v) {
     throw std::invalid_argument("position rule offset " + std::to_string(rule.offset) +
                                 " is not in 0..5");
   }
-  if (rule.offset == 0) return rule;
+  if (rule.offset == 0)
+    return rule;
   if (!v.contains("distance") || !v["distance"].is_number() || !v.contains("bounds") ||
       !v.contains("obstacles") || !v["obstacles"].is_array()) {
     throw std::invalid_argument("an offset rule needs distance, bounds and obstacles");
   }
   rule.distance = v["distance"].get<double>();
   rule.geometry.bounds = BoxFromJson(v["bounds"]);
-  for (const auto& b : v["obstacles"]) rule.geometry.obstacles.push_back(BoxFromJson(b));
+  for (const auto& b : v["obstacles"])
+    rule.geometry.obstacles.push_back(BoxFromJson(b));
   return rule;
 }
 

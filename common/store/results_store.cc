@@ -186,7 +186,7 @@ double ResultsStore::Now() const {
 SubmitResult ResultsStore::Submit(const CampaignPlan& campaign) {
   Transaction transaction(*db_);
   SubmitResult result{campaign.id, false, 0};
-  const std::string spec_text = campaign.spec.dump();
+  const std::string& spec_text = campaign.spec_json;
   Statement existing = db_->Prepare("SELECT spec_json FROM campaigns WHERE id = ?");
   existing.Bind(campaign.id);
   if (existing.Step()) {

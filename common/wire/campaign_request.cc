@@ -44,7 +44,7 @@ CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
     throw std::invalid_argument("campaign: " + e.describe());
   }
   // Counted, never expanded here: the store makes the jobs one at a time.
-  CampaignPlan plan = PlanCampaign(spec);
+  CampaignPlan plan = PlanCampaign(std::move(spec));
   if (plan.JobCount() > limits.max_jobs) {
     throw std::invalid_argument("the campaign has " + std::to_string(plan.JobCount()) +
                                 " jobs, more than the coordinator's limit of " +

@@ -57,7 +57,7 @@ TEST(ScenarioDocuments, EveryShippedJobPassesTheWorkersCheck) {
     SCOPED_TRACE(file);
     const CampaignSpec spec = ReadCampaignFile(testing::SourcePath(file));
     const ExpandedCampaign campaign = ExpandCampaign(spec);
-    const auto documents = ScenarioDocumentsByName(campaign.spec);
+    const auto documents = ScenarioDocumentsByName(json::parse(campaign.spec_json));
     ASSERT_EQ(documents.size(), spec.scenarios.size());
     std::map<std::string, int> checked;
     for (const auto& job : campaign.jobs) {
