@@ -15,7 +15,7 @@ std::uint64_t Fnv1a64(const std::string& bytes) {
 
 std::string CampaignId(const CampaignSpec& spec) {
   // nlohmann::json keeps object keys sorted, so dump() is canonical.
-  return CampaignIdOfSpecText(ToJson(spec).dump());
+  return CampaignIdOfSpecText(ToJsonText(spec));
 }
 
 std::string CampaignIdOfSpecText(const std::string& spec_text) {

@@ -370,4 +370,13 @@ json ToJson(const CampaignSpec& spec) {
           {"job_timeout_s", spec.job_timeout_s}};
 }
 
+std::string ToJsonText(const CampaignSpec& spec) {
+  json tree = ToJson(spec);
+  std::string text = tree.dump();
+  // nlohmann's destructor first moves an array's elements to a growing stack of its own: for
+  // 100k RngRuns that tripled the submit's peak memory. Numbers destroyed in place move nothing.
+  tree["rng_runs"].get_ref<json::array_t&>().clear();
+  return text;
+}
+
 }  // namespace rlpos

@@ -80,5 +80,7 @@ std::vector<std::string> EvalOverrides(const EvalSettings& eval);
 // scenario's document included, no absolute path (so the campaign id does not depend on where
 // the repository is checked out). This is what the campaign id hashes and the store keeps.
 nlohmann::json ToJson(const CampaignSpec& spec);
+// ToJson(spec).dump(), the canonical text, without the tree's transient cost (below).
+std::string ToJsonText(const CampaignSpec& spec);
 
 }  // namespace rlpos

@@ -48,7 +48,7 @@ std::string EvalLabel(int k, std::size_t seed_index, std::uint64_t seed) {
 CampaignPlan PlanCampaign(CampaignSpec spec) {
   CampaignPlan out;
   // Text, not a JSON tree: a spec lists every RngRun, and 100k of them as a tree are megabytes.
-  out.spec_json = ToJson(spec).dump();
+  out.spec_json = ToJsonText(spec);
   out.id = CampaignIdOfSpecText(out.spec_json);
   out.name = spec.name;
   out.max_attempts = 1 + spec.retries;
