@@ -2,13 +2,14 @@
 // rlpos-coordinator's loop. The results store is the memory; DDS is only the wire, and every
 // sample from it is checked before use (bounds, kinds, plausibility, sender):
 //  - campaign requests: submit sends a campaign and its scenario documents, which are validated
-//    and expanded here like `run` does; cancel and retry name an existing campaign;
+//    like `run` does, its jobs streamed into the store; cancel and retry name a campaign;
 //  - worker statuses keep the set of live workers, each bound to the DDS participant that first
 //    announced it; a lost lease (or a clean stop) sends the worker's running jobs back to ready;
 //  - job events count only from the participant of the worker that holds the job's current
-//    attempt; they are recorded exactly once per attempt, and the assignment is then disposed
-//    and unregistered, which tells the worker the job is settled and frees its DDS instance;
-//  - each tick fails timed-out jobs and assigns ready jobs to free slots.
+//    attempt; they are recorded exactly once per attempt, and the job's slot is then disposed,
+//    which tells the worker the job is settled (the slot's instance serves its next job);
+//  - each tick fails timed-out jobs and assigns ready jobs to free slots, each to a slot of its
+//    own (jobs.slot), so the DDS instances are as many as the workers' slots.
 // A dropped sample costs one rate-limited warning line and nothing else.
 // After a restart it waits one grace period for the workers to reappear, then requeues the
 // running jobs of workers that did not, and republishes the assignments of those that did (a
