@@ -51,8 +51,9 @@ std::vector<RunningJob> RunningJobs(const std::string& db_file) {
   sqlite3* db = nullptr;
   if (sqlite3_open_v2(db_file.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
     sqlite3_stmt* st = nullptr;
-    if (sqlite3_prepare_v2(db, "SELECT id, attempt, COALESCE(slot, 0) FROM jobs WHERE state = 'running'", -1, &st,
-                           nullptr) == SQLITE_OK) {
+    if (sqlite3_prepare_v2(
+            db, "SELECT id, attempt, COALESCE(slot, 0) FROM jobs WHERE state = 'running'", -1, &st,
+            nullptr) == SQLITE_OK) {
       while (sqlite3_step(st) == SQLITE_ROW) {
         out.push_back({reinterpret_cast<const char*>(sqlite3_column_text(st, 0)),
                        sqlite3_column_int(st, 1), sqlite3_column_int(st, 2)});
@@ -106,10 +107,13 @@ int main(int argc, char** argv) {
   const dds_entity_t request_topic = dds_create_topic(p, &rlpos_msg_CampaignRequest_desc,
                                                       "rlpos_campaign_request", nullptr, nullptr);
   const dds_entity_t request_reader = dds_create_reader(p, request_topic, nullptr, nullptr);
-  // Listeners on what the daemons publish: transient-local, so history arrives too.
+  // Listeners on what the daemons publish: transient-local, so history arrives too; keep all,
+  // for the peer writes the same (worker, slot) keys and its own samples must not take the
+  // place of the daemons' unread ones.
   dds_qos_t* durable = dds_create_qos();
   dds_qset_reliability(durable, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
   dds_qset_durability(durable, DDS_DURABILITY_TRANSIENT_LOCAL);
+  dds_qset_history(durable, DDS_HISTORY_KEEP_ALL, 0);
   struct Heard {
     const char* name;
     dds_entity_t reader;
