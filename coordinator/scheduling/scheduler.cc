@@ -35,17 +35,17 @@ TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double 
   // Nothing to fill, nothing to read: a busy cluster costs no query per event.
   if (free == 0)
     return result;
-  // `free` per campaign is enough for any fair share of the free slots.
   std::map<std::string, int> slots;
   for (const auto& w : workers)
     slots[w.id] = w.slots;
+  // `free` per campaign is enough for any fair share of the free slots.
   for (auto& a : AssignJobs(store_.ListReady(free), workers, by_campaign)) {
     std::set<int>& used = taken[a.worker_id];
     int slot = 0;
     while (used.count(slot))
       ++slot;
     if (slot >= slots[a.worker_id])
-      continue;  // every slot holds a job (its report of busy was behind): next round
+      continue;  // not reached: AssignJobs gives no worker more jobs than free slots
     if (store_.MarkRunning(a.job.id, a.worker_id, slot, a.job.attempt)) {
       used.insert(slot);
       a.slot = slot;
