@@ -42,7 +42,7 @@ struct CampaignPlan {
 
 CampaignPlan PlanCampaign(CampaignSpec spec);
 
-// A plan with its jobs in memory: for readers of small campaigns (tests, `run --dry-run`).
+// A plan with its jobs in memory, for tests that look at them; the daemons and the CLI stream.
 struct ExpandedCampaign : CampaignPlan {
   std::vector<Job> jobs;
 };
