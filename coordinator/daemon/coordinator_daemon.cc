@@ -41,6 +41,14 @@ std::size_t EventBytes(const msg::JobEvent& e) {
   return bytes;
 }
 
+// The key of a worker slot's assignment instance (the other fields are ignored).
+msg::JobAssignment SlotKey(const std::string& worker_id, int slot) {
+  msg::JobAssignment key;
+  key.worker_id = worker_id;
+  key.slot = slot;
+  return key;
+}
+
 StoreOptions StoreOptionsOf(const CoordinatorOptions& options) {
   StoreOptions store;
   store.max_infra_losses = options.max_infra_losses;
@@ -192,12 +200,8 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
       Withdraw(job_id);
     if (stopped) {
       // Gone for good: its slots' instances go too (a lost worker may come back to them).
-      for (int slot = 0; slot < slots; ++slot) {
-        msg::JobAssignment key;
-        key.worker_id = id;
-        key.slot = slot;
-        dds_->assignments.Unregister(key);
-      }
+      for (int slot = 0; slot < slots; ++slot)
+        dds_->assignments.Unregister(SlotKey(id, slot));
     }
     Log(LogLevel::kWarning, "worker " + id + (stopped ? " stopped" : " lost") +
                                 (requeued.empty() ? ""
@@ -389,10 +393,7 @@ void CoordinatorDaemon::Withdraw(const std::string& job_id) {
 void CoordinatorDaemon::DisposeSlot(const std::string& worker_id, int slot) {
   // Disposed, never unregistered: the slot's instance is used again by its next job, and a
   // worker that comes back after a partition still learns that the slot was emptied.
-  msg::JobAssignment key;
-  key.worker_id = worker_id;
-  key.slot = slot;
-  dds_->assignments.Dispose(key);
+  dds_->assignments.Dispose(SlotKey(worker_id, slot));
 }
 
 const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campaign_id,
