@@ -108,8 +108,11 @@ std::vector<std::uint64_t> ReadRngRuns(const json& v, const std::string& path) {
   return runs;
 }
 
-std::vector<std::string> ReadPositioners(const json& v, const std::string& path) {
-  const auto& all = AllPositioners();
+// A non-empty list of distinct names among `all` (`what` names one in messages), returned in
+// the order of `all`: the listing order changes no job, so it must not change the campaign id.
+std::vector<std::string> ReadCanonicalList(const json& v, const std::string& path,
+                                           const std::vector<std::string>& all,
+                                           const std::string& what) {
   std::vector<std::string> chosen;
   for (std::size_t i = 0; i < NonEmptyArray(v, path).size(); ++i) {
     const std::string item_path = JoinPath(path, i);
@@ -120,7 +123,7 @@ std::vector<std::string> ReadPositioners(const json& v, const std::string& path)
       std::string list;
       for (const auto& a : all)
         list += (list.empty() ? "" : ", ") + a;
-      std::string message = "unknown positioner \"" + name + "\" (one of: " + list + ")";
+      std::string message = "unknown " + what + " \"" + name + "\" (one of: " + list + ")";
       const std::string hint = ClosestMatch(name, all);
       if (!hint.empty())
         message += "; did you mean \"" + hint + "\"?";
@@ -131,7 +134,6 @@ std::vector<std::string> ReadPositioners(const json& v, const std::string& path)
     }
     chosen.push_back(name);
   }
-  // Canonical order: the listing order changes no job, so it must not change the campaign id.
   std::vector<std::string> ordered;
   for (const auto& a : all) {
     if (std::find(chosen.begin(), chosen.end(), a) != chosen.end())
@@ -150,6 +152,10 @@ TrainSettings ReadTrain(const json& v) {
   train.fidelity = r.String("fidelity", train.fidelity, {"analytic", "packet"});
   if (r.Has("episodes"))
     train.episodes = static_cast<int>(r.Integer("episodes", 0, 1, 1000000));
+  if (const json* algorithms = r.Child("algorithms")) {
+    train.algorithms =
+        ReadCanonicalList(*algorithms, r.PathOf("algorithms"), AllAlgorithms(), "algorithm");
+  }
   r.Finish();
   return train;
 }
@@ -169,7 +175,8 @@ EvalSettings ReadEval(const json& v) {
 }
 
 CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
-                                   const ScenarioSource& source, const EvalSettings& eval) {
+                                   const ScenarioSource& source, const EvalSettings& eval,
+                                   const std::vector<std::string>& algorithms) {
   CampaignScenario entry;
   std::string file_path = path;  // where a problem with the file itself is reported
   std::string set_path;
@@ -225,6 +232,17 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
     entry.scenario = ParseScenario(effective);
   } catch (const ConfigError& e) {
     throw ConfigError(path, entry.file + ": " + e.describe());
+  }
+  // Each algorithm trains on the scenario with its own agent settings: those must hold too.
+  for (std::size_t i = 0; i < algorithms.size(); ++i) {
+    json trained = effective;
+    try {
+      ApplyOverrides(trained, AlgorithmOverrides(algorithms[i]));
+      ParseScenario(trained);
+    } catch (const ConfigError& e) {
+      throw ConfigError(path, entry.file + " with /train/algorithms/" + std::to_string(i) + " (" +
+                                  algorithms[i] + "): " + e.describe());
+    }
   }
   if (!wire::IsSafeName(entry.scenario.name, wire::kMaxNameLength)) {
     // Job keys are "<kind>/<scenario>/..." and name the workers' folders.
@@ -303,7 +321,8 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
   NonEmptyArray(*scenarios, "/scenarios");
   for (std::size_t i = 0; i < scenarios->size(); ++i) {
     const std::string path = JoinPath("/scenarios", i);
-    CampaignScenario entry = ReadScenarioEntry((*scenarios)[i], path, source, spec.eval);
+    CampaignScenario entry = ReadScenarioEntry((*scenarios)[i], path, source, spec.eval,
+                                                spec.train.algorithms);
     for (std::size_t j = 0; j < spec.scenarios.size(); ++j) {
       if (spec.scenarios[j].scenario.name == entry.scenario.name) {
         throw ConfigError(path, "scenario name \"" + entry.scenario.name +
@@ -321,7 +340,7 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
   spec.rng_runs = ReadRngRuns(*runs, "/rng_runs");
 
   if (const json* positioners = r.Child("positioners")) {
-    spec.positioners = ReadPositioners(*positioners, "/positioners");
+    spec.positioners = ReadCanonicalList(*positioners, "/positioners", AllPositioners(), "positioner");
   } else {
     spec.positioners = AllPositioners();
   }
@@ -355,6 +374,8 @@ json ToJson(const CampaignSpec& spec) {
       {"seeds", spec.train.seeds}, {"fidelity", spec.train.fidelity}, {"episodes", nullptr}};
   if (spec.train.episodes)
     train["episodes"] = *spec.train.episodes;
+  if (!spec.train.algorithms.empty())  // absent otherwise: older campaigns keep their ids
+    train["algorithms"] = spec.train.algorithms;
   json eval = {{"duration", nullptr}, {"warmup", nullptr}};
   if (spec.eval.duration)
     eval["duration"] = *spec.eval.duration;

@@ -30,6 +30,9 @@ struct TrainSettings {
   std::vector<std::uint64_t> seeds{1};  // the first seed gives the plain "rl"/"offsetK" labels
   std::string fidelity = "analytic";    // analytic | packet
   std::optional<int> episodes;          // passed as --set agent.train_episodes=N when set
+  // Each trains its own policies, labelled "rl@<algorithm>" (and "offsetK@<algorithm>"), in
+  // AllAlgorithms() order. Empty: the scenario's agent.algorithm, with the plain labels.
+  std::vector<std::string> algorithms;
 };
 
 struct EvalSettings {

@@ -5,6 +5,7 @@
 #include "campaign/offsets.h"
 #include "hash/sha256.h"
 #include "provenance/provenance.h"
+#include "scenario/scenario_parser.h"
 
 namespace rlpos {
 namespace {
@@ -38,8 +39,11 @@ struct EvalSource {
 
 }  // namespace
 
-std::string EvalLabel(int k, std::size_t seed_index, std::uint64_t seed) {
+std::string EvalLabel(int k, const std::string& algorithm, std::size_t seed_index,
+                      std::uint64_t seed) {
   std::string label = k == 0 ? "rl" : "offset" + std::to_string(k);
+  if (!algorithm.empty())
+    label += "@" + algorithm;
   if (seed_index > 0)
     label += "@seed" + std::to_string(seed);
   return label;
@@ -62,7 +66,10 @@ std::size_t CampaignPlan::JobCount() const {
   std::size_t producers = 0;  // position jobs of a scenario
   for (const char* positioner : {"baseline", "centroid", "oracle"})
     producers += spec.Uses(positioner) ? 1 : 0;
-  const std::size_t trains = spec.NeedsTraining() ? spec.train.seeds.size() : 0;
+  const std::size_t trains =
+      spec.NeedsTraining()
+          ? spec.train.seeds.size() * std::max<std::size_t>(1, spec.train.algorithms.size())
+          : 0;
   const std::size_t labels =
       producers + trains * ((spec.Uses("rl") ? 1 : 0) + (spec.Uses("offsets") ? kOffsetCount : 0));
   return spec.scenarios.size() * (producers + trains + labels * spec.rng_runs.size());
@@ -97,26 +104,37 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
 
     if (spec.NeedsTraining()) {
       const OffsetGeometry geometry = OffsetGeometryOf(s.scenario);
-      for (std::size_t i = 0; i < spec.train.seeds.size(); ++i) {
-        const std::uint64_t seed = spec.train.seeds[i];
-        Job job;
-        job.key = "train/" + name + "/seed" + std::to_string(seed);
-        job.label = EvalLabel(0, i, seed);
-        job.params = ScenarioParams(spec, s, JobKind::kTrain);
-        job.params.train_seed = seed;
-        job.params.fidelity = spec.train.fidelity;
-        job.params.train_episodes = spec.train.episodes;
-        if (spec.Uses("rl"))
-          sources.push_back({EvalLabel(0, i, seed), job.key, seed, {}});
-        if (spec.Uses("offsets")) {
-          for (int k = 1; k <= kOffsetCount; ++k) {
-            PositionRule rule;
-            rule.offset = k;
-            rule.geometry = geometry;
-            sources.push_back({EvalLabel(k, i, seed), job.key, seed, rule});
+      // "" trains with the scenario's own agent.algorithm, under the plain labels.
+      std::vector<std::string> algorithms = spec.train.algorithms;
+      if (algorithms.empty())
+        algorithms.push_back("");
+      for (const std::string& algorithm : algorithms) {
+        for (std::size_t i = 0; i < spec.train.seeds.size(); ++i) {
+          const std::uint64_t seed = spec.train.seeds[i];
+          Job job;
+          job.key = "train/" + name + "/" + (algorithm.empty() ? "" : algorithm + "/") + "seed" +
+                    std::to_string(seed);
+          job.label = EvalLabel(0, algorithm, i, seed);
+          job.params = ScenarioParams(spec, s, JobKind::kTrain);
+          job.params.train_seed = seed;
+          job.params.fidelity = spec.train.fidelity;
+          job.params.train_episodes = spec.train.episodes;
+          if (!algorithm.empty()) {
+            for (const auto& text : AlgorithmOverrides(algorithm))
+              job.params.overrides.push_back(ParseOverride(text));
           }
+          if (spec.Uses("rl"))
+            sources.push_back({EvalLabel(0, algorithm, i, seed), job.key, seed, {}});
+          if (spec.Uses("offsets")) {
+            for (int k = 1; k <= kOffsetCount; ++k) {
+              PositionRule rule;
+              rule.offset = k;
+              rule.geometry = geometry;
+              sources.push_back({EvalLabel(k, algorithm, i, seed), job.key, seed, rule});
+            }
+          }
+          add(std::move(job));
         }
-        add(std::move(job));
       }
     }
 

@@ -10,6 +10,9 @@
 // Several train seeds: every seed gets its own rl/offset evals. The first seed's labels are the
 // plain "rl", "offset1".."offset5" (the paper's curves); later seeds' carry "@seed<N>"
 // ("rl@seed2", "offset3@seed2"), so adding a seed never renames the first seed's results.
+// With train.algorithms, each algorithm trains its own seeds (train/<scenario>/<algorithm>/
+// seed<N>, with the algorithm's overrides) and its labels carry "@<algorithm>" before any
+// seed: "rl@ppo", "offset2@sac", "rl@dqn@seed2".
 #include <cstddef>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -49,7 +52,9 @@ struct ExpandedCampaign : CampaignPlan {
 
 ExpandedCampaign ExpandCampaign(const CampaignSpec& spec);
 
-// The eval label of offset position k (1..5) or of "rl" (k = 0) for the seed at `seed_index`.
-std::string EvalLabel(int k, std::size_t seed_index, std::uint64_t seed);
+// The eval label of offset position k (1..5) or of "rl" (k = 0) for the seed at `seed_index`
+// of `algorithm` ("": the scenario's own, no suffix).
+std::string EvalLabel(int k, const std::string& algorithm, std::size_t seed_index,
+                      std::uint64_t seed);
 
 }  // namespace rlpos

@@ -3,6 +3,7 @@
 // Plain data, no ns-3: the worker turns it into ns-3 objects.
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -111,11 +112,41 @@ struct EnvSpec {
   // Moves into a wall of the zone or a building are masked out (not only clamped): otherwise
   // a policy can press "up" at the ceiling for the whole episode (README, RL).
   bool action_mask = true;
+  // "discrete": the moves above. "continuous": a displacement (dx, dy, dz) in metres, each
+  // component within [-step, step] (Gymnasium's Box), clamped to the zone like a move.
+  std::string action_space = "discrete";
   RewardSpec reward;
 };
 
+// PPO (clipped objective, GAE) on the discrete moves. Defaults: the well-known Atari/CleanRL set,
+// except where this problem needed otherwise (README, RL).
+struct PpoSpec {
+  double learning_rate = 2.5e-4;
+  double gamma = 0.99;
+  double gae_lambda = 0.95;
+  double clip = 0.2;
+  double entropy_coefficient = 0.01;
+  double value_coefficient = 0.5;
+  double max_grad_norm = 0.5;
+  int rollout_steps = 128;  // transitions per update
+  int epochs = 4;           // passes over a rollout
+  int minibatches = 4;      // per pass
+};
+
+// SAC (twin Q, tanh-squashed Gaussian policy, automatic temperature) on the continuous action
+// space. Defaults: Haarnoja et al. 2018 / CleanRL, except where this problem needed otherwise.
+struct SacSpec {
+  double policy_learning_rate = 3e-4;
+  double q_learning_rate = 3e-4;
+  double gamma = 0.99;
+  double tau = 0.005;
+  int batch_size = 256;
+  int warmup_steps = 1000;  // uniformly random actions before learning starts
+  std::optional<double> alpha;  // unset: tuned automatically towards -|A| entropy
+};
+
 struct AgentSpec {
-  std::string algorithm = "dqn";
+  std::string algorithm = "dqn";  // dqn | ppo | sac (sac needs env.action_space "continuous")
   std::vector<int> hidden = {32, 32};
   double learning_rate = 1e-2;
   std::int64_t replay_capacity = 1000000;
@@ -141,6 +172,8 @@ struct AgentSpec {
   int train_episodes = 10;
   int eval_episodes = 1;
   std::uint64_t seed = 1;
+  PpoSpec ppo;
+  SacSpec sac;
 };
 
 struct Scenario {

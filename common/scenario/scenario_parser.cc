@@ -247,6 +247,7 @@ EnvSpec ReadEnv(const json& v) {
   e.decision_interval = r.Number("decision_interval", e.decision_interval, Positive());
   e.episode_duration = r.Number("episode_duration", e.episode_duration, Positive());
   e.action_mask = r.Bool("action_mask", e.action_mask);
+  e.action_space = r.String("action_space", e.action_space, {"discrete", "continuous"});
   if (e.decision_interval > e.episode_duration) {
     throw ConfigError(r.PathOf("decision_interval"), "must not exceed the episode duration");
   }
@@ -264,10 +265,45 @@ EnvSpec ReadEnv(const json& v) {
   return e;
 }
 
+PpoSpec ReadPpo(const json& v) {
+  ObjectReader r(v, "/agent/ppo");
+  PpoSpec p;
+  p.learning_rate = r.Number("learning_rate", p.learning_rate, {0.0, 1.0, true});
+  p.gamma = r.Number("gamma", p.gamma, Between(0.0, 1.0));
+  p.gae_lambda = r.Number("gae_lambda", p.gae_lambda, Between(0.0, 1.0));
+  p.clip = r.Number("clip", p.clip, {0.0, 1.0, true});
+  p.entropy_coefficient = r.Number("entropy_coefficient", p.entropy_coefficient, NonNegative());
+  p.value_coefficient = r.Number("value_coefficient", p.value_coefficient, NonNegative());
+  p.max_grad_norm = r.Number("max_grad_norm", p.max_grad_norm, Positive());
+  p.rollout_steps = static_cast<int>(r.Integer("rollout_steps", p.rollout_steps, 2, 1000000));
+  p.epochs = static_cast<int>(r.Integer("epochs", p.epochs, 1, 1000));
+  p.minibatches = static_cast<int>(r.Integer("minibatches", p.minibatches, 1, 1000000));
+  if (p.minibatches > p.rollout_steps)
+    throw ConfigError(r.PathOf("minibatches"), "must not exceed rollout_steps");
+  r.Finish();
+  return p;
+}
+
+SacSpec ReadSac(const json& v) {
+  ObjectReader r(v, "/agent/sac");
+  SacSpec p;
+  p.policy_learning_rate =
+      r.Number("policy_learning_rate", p.policy_learning_rate, {0.0, 1.0, true});
+  p.q_learning_rate = r.Number("q_learning_rate", p.q_learning_rate, {0.0, 1.0, true});
+  p.gamma = r.Number("gamma", p.gamma, Between(0.0, 1.0));
+  p.tau = r.Number("tau", p.tau, {0.0, 1.0, true});
+  p.batch_size = static_cast<int>(r.Integer("batch_size", p.batch_size, 1, 65536));
+  p.warmup_steps = static_cast<int>(r.Integer("warmup_steps", p.warmup_steps, 0, 1000000000));
+  if (const json* alpha = r.Child("alpha"); alpha && !alpha->is_null())
+    p.alpha = CheckedNumber(*alpha, r.PathOf("alpha"), NonNegative());
+  r.Finish();
+  return p;
+}
+
 AgentSpec ReadAgent(const json& v) {
   ObjectReader r(v, "/agent");
   AgentSpec a;
-  a.algorithm = r.String("algorithm", a.algorithm, {"dqn"});
+  a.algorithm = r.String("algorithm", a.algorithm, AllAlgorithms());
   if (const json* h = r.Child("hidden")) {
     if (!h->is_array() || h->empty()) throw ConfigError(r.PathOf("hidden"), "expected [units, ...]");
     a.hidden.clear();
@@ -290,6 +326,8 @@ AgentSpec ReadAgent(const json& v) {
   a.train_episodes = static_cast<int>(r.Integer("train_episodes", a.train_episodes, 1, 1000000));
   a.eval_episodes = static_cast<int>(r.Integer("eval_episodes", a.eval_episodes, 1, 1000000));
   a.seed = static_cast<std::uint64_t>(r.Integer("seed", static_cast<long long>(a.seed), 0, 9007199254740991LL));
+  if (const json* p = r.Child("ppo")) a.ppo = ReadPpo(*p);
+  if (const json* p = r.Child("sac")) a.sac = ReadSac(*p);
   r.Finish();
   return a;
 }
@@ -398,6 +436,13 @@ Scenario ParseScenario(const json& document) {
   if (const json* v = r.Child("env")) s.env = ReadEnv(*v);
   if (const json* v = r.Child("agent")) s.agent = ReadAgent(*v);
   r.Finish();
+  // SAC acts on displacements, DQN and PPO choose among the moves.
+  const bool continuous_agent = s.agent.algorithm == "sac";
+  if (continuous_agent != (s.env.action_space == "continuous")) {
+    throw ConfigError("/agent/algorithm", s.agent.algorithm + " needs env.action_space \"" +
+                                              (continuous_agent ? "continuous" : "discrete") +
+                                              "\", not \"" + s.env.action_space + "\"");
+  }
   CheckScenarioGeometry(s);
   return s;
 }
@@ -462,6 +507,7 @@ json ToJson(const Scenario& s) {
             {"decision_interval", s.env.decision_interval},
             {"episode_duration", s.env.episode_duration},
             {"action_mask", s.env.action_mask},
+            {"action_space", s.env.action_space},
             {"reward",
              {{"name", s.env.reward.name},
               {"w1", s.env.reward.w1},
@@ -483,7 +529,36 @@ json ToJson(const Scenario& s) {
             {"normalise_rewards", s.agent.normalise_rewards},
             {"train_episodes", s.agent.train_episodes},
             {"eval_episodes", s.agent.eval_episodes},
-            {"seed", s.agent.seed}}}};
+            {"seed", s.agent.seed},
+            {"ppo",
+             {{"learning_rate", s.agent.ppo.learning_rate},
+              {"gamma", s.agent.ppo.gamma},
+              {"gae_lambda", s.agent.ppo.gae_lambda},
+              {"clip", s.agent.ppo.clip},
+              {"entropy_coefficient", s.agent.ppo.entropy_coefficient},
+              {"value_coefficient", s.agent.ppo.value_coefficient},
+              {"max_grad_norm", s.agent.ppo.max_grad_norm},
+              {"rollout_steps", s.agent.ppo.rollout_steps},
+              {"epochs", s.agent.ppo.epochs},
+              {"minibatches", s.agent.ppo.minibatches}}},
+            {"sac",
+             {{"policy_learning_rate", s.agent.sac.policy_learning_rate},
+              {"q_learning_rate", s.agent.sac.q_learning_rate},
+              {"gamma", s.agent.sac.gamma},
+              {"tau", s.agent.sac.tau},
+              {"batch_size", s.agent.sac.batch_size},
+              {"warmup_steps", s.agent.sac.warmup_steps},
+              {"alpha", s.agent.sac.alpha ? json(*s.agent.sac.alpha) : json(nullptr)}}}}}};
+}
+
+const std::vector<std::string>& AllAlgorithms() {
+  static const std::vector<std::string> all{"dqn", "ppo", "sac"};
+  return all;
+}
+
+std::vector<std::string> AlgorithmOverrides(const std::string& algorithm) {
+  return {"agent.algorithm=" + algorithm,
+          std::string("env.action_space=") + (algorithm == "sac" ? "continuous" : "discrete")};
 }
 
 }  // namespace rlpos

@@ -20,6 +20,11 @@ nlohmann::json ReadJsonFile(const std::string& file);
 // pointers ("/wifi/mode"); the value is JSON if it parses as JSON, else a string.
 void ApplyOverrides(nlohmann::json& document, const std::vector<std::string>& overrides);
 
+// The agent algorithms, in report order, and the overrides that select one: its
+// agent.algorithm and the action space it acts on (sac: continuous; dqn, ppo: discrete).
+const std::vector<std::string>& AllAlgorithms();
+std::vector<std::string> AlgorithmOverrides(const std::string& algorithm);
+
 // Full model, validated (structure, ranges, geometry). Missing fields take the paper's defaults.
 Scenario ParseScenario(const nlohmann::json& document);
 

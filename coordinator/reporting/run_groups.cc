@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "campaign/campaign_spec.h"
+#include "scenario/scenario_parser.h"
 
 namespace rlpos {
 namespace {
@@ -29,23 +30,35 @@ const std::vector<std::string>& CanonicalLabels() {
   return labels;
 }
 
-// (rank of the plain label, seed: 0 for the plain label itself, the label) for sorting.
-std::tuple<std::size_t, std::uint64_t, std::string> SortKey(const std::string& label) {
+// (rank of the plain label, rank of its algorithm: 0 for none, seed: 0 for the first, the
+// label) for sorting "<plain>[@<algorithm>][@seed<N>]".
+std::tuple<std::size_t, std::size_t, std::uint64_t, std::string> SortKey(
+    const std::string& label) {
   const auto at = label.find('@');
   const std::string plain = label.substr(0, at);
   const auto& canonical = CanonicalLabels();
   const auto it = std::find(canonical.begin(), canonical.end(), plain);
   const std::size_t rank = static_cast<std::size_t>(it - canonical.begin());  // end: unknown
+  std::size_t algorithm_rank = 0;
   std::uint64_t seed = 0;
-  if (at != std::string::npos) {
-    const std::string suffix = label.substr(at + 1);
-    const std::string digits = suffix.rfind("seed", 0) == 0 ? suffix.substr(4) : "";
+  std::string rest = at == std::string::npos ? "" : label.substr(at + 1);
+  const auto& algorithms = AllAlgorithms();
+  for (std::size_t a = 0; a < algorithms.size() && !rest.empty(); ++a) {
+    const std::string& name = algorithms[a];
+    if (rest.compare(0, name.size(), name) == 0 &&
+        (rest.size() == name.size() || rest[name.size()] == '@')) {
+      algorithm_rank = a + 1;
+      rest = rest.size() == name.size() ? "" : rest.substr(name.size() + 1);
+    }
+  }
+  if (!rest.empty()) {
+    const std::string digits = rest.rfind("seed", 0) == 0 ? rest.substr(4) : "";
     const bool numeric =
         !digits.empty() && digits.size() < 19 &&
         std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(c) != 0; });
     seed = numeric ? std::stoull(digits) + 1 : std::numeric_limits<std::uint64_t>::max();
   }
-  return {rank, seed, label};
+  return {rank, algorithm_rank, seed, label};
 }
 
 }  // namespace

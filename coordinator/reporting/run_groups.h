@@ -10,7 +10,8 @@
 namespace rlpos {
 
 // Report order of eval labels: AllPositioners() with "offsets" expanded, i.e. baseline,
-// offset1..offset5, centroid, oracle, rl; "<label>@seed<N>" right after its plain label (by N);
+// offset1..offset5, centroid, oracle, rl; "<label>@<algorithm>" after its plain label (in
+// AllAlgorithms() order), each followed by its "@seed<N>" labels (by N);
 // labels outside that list last, by name.
 bool ReportLabelLess(const std::string& a, const std::string& b);
 

@@ -34,7 +34,8 @@ Figures Run(rlpos::Scenario s, const std::string& fidelity, int steps) {
     const auto r = env.Step(action);
     auto next = space.Normalise(r.observation);
     auto next_mask = env.ValidActions();
-    agent.Observe({obs, action, static_cast<float>(r.reward), next, r.terminated, next_mask});
+    agent.Observe({obs, action, static_cast<float>(r.reward), next, r.terminated, next_mask, {},
+                   r.terminated || r.truncated});
     obs = std::move(next);
     mask = std::move(next_mask);
   }

@@ -14,7 +14,7 @@ namespace {
 TEST(ReplayBuffer, RingOverwritesTheOldest) {
   ReplayBuffer buffer(3);
   for (int i = 0; i < 5; ++i)
-    buffer.Add({{static_cast<float>(i)}, i, 0.0f, {0.0f}, false, {}});
+    buffer.Add({{static_cast<float>(i)}, i, 0.0f, {0.0f}, false, {}, {}, false});
   ASSERT_EQ(buffer.Size(), 3u);
   std::vector<int> actions;
   for (std::size_t i = 0; i < buffer.Size(); ++i)
@@ -26,7 +26,7 @@ TEST(ReplayBuffer, RingOverwritesTheOldest) {
 TEST(ReplayBuffer, SeededSamplingIsReproducible) {
   ReplayBuffer buffer(100);
   for (int i = 0; i < 100; ++i)
-    buffer.Add({{0.0f}, i, 0.0f, {0.0f}, false, {}});
+    buffer.Add({{0.0f}, i, 0.0f, {0.0f}, false, {}, {}, false});
   std::mt19937_64 a(7), b(7), c(8);
   EXPECT_EQ(buffer.SampleIndices(64, a), buffer.SampleIndices(64, b));
   std::mt19937_64 a2(7);
@@ -178,9 +178,9 @@ float LearnedValueBehindAMaskedAction(bool mask_the_jackpot) {
   DqnAgent agent(spec, 1, 2);
   const ActionMask only_a0 = mask_the_jackpot ? ActionMask{1, 0} : ActionMask{};
   for (int i = 0; i < 700; ++i) {
-    agent.Observe({{-1.0f}, 0, 0.0f, {1.0f}, false, only_a0});
-    agent.Observe({{1.0f}, 0, 0.0f, {1.0f}, false, only_a0});
-    agent.Observe({{1.0f}, 1, 10.0f, {1.0f}, true, {}});
+    agent.Observe({{-1.0f}, 0, 0.0f, {1.0f}, false, only_a0, {}, false});
+    agent.Observe({{1.0f}, 0, 0.0f, {1.0f}, false, only_a0, {}, false});
+    agent.Observe({{1.0f}, 1, 10.0f, {1.0f}, true, {}, {}, true});
   }
   return agent.QValues({-1.0f})[0];
 }

@@ -1,6 +1,7 @@
 #pragma once
-// What an RL algorithm offers the trainer; it sees only the env's spaces and transitions, so a
-// second algorithm drops in beside DQN.
+// What an RL algorithm offers the trainer; it sees only the env's spaces and transitions, so the
+// algorithms (DQN, PPO, SAC) are interchangeable behind it.
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,12 +12,22 @@ namespace rlpos {
 class Agent {
  public:
   virtual ~Agent() = default;
+  virtual std::string Algorithm() const = 0;  // "dqn" | "ppo" | "sac"
+  // True for an agent of a continuous action space (ActContinuous, not Act).
+  virtual bool Continuous() const { return false; }
   // An action for `observation` (already normalised) among those `mask` allows; `explore`
   // enables the behaviour policy.
   virtual int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) = 0;
+  // A continuous action, each component in [-1, 1] (the trainer maps it onto the env's Box).
+  virtual std::vector<float> ActContinuous(const std::vector<float>& /*observation*/,
+                                           bool /*explore*/) {
+    throw std::logic_error(Algorithm() + " acts on discrete actions");
+  }
   // Learns from one transition (stores it, maybe trains). Returns the loss, or < 0 if no update.
+  // The transition is of the last Act/ActContinuous with explore.
   virtual double Observe(Transition transition) = 0;
-  virtual double Epsilon() const = 0;
+  // DQN's exploration rate; 0 for the algorithms that explore by a stochastic policy.
+  virtual double Epsilon() const { return 0.0; }
   virtual void Save(const std::string& directory) const = 0;
   virtual void Load(const std::string& directory) = 0;
 };

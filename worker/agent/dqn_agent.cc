@@ -7,22 +7,11 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "agent/mlp.h"
 #include "agent/running_moments.h"
 
 namespace rlpos {
 namespace {
-
-torch::nn::Sequential MakeNetwork(const std::vector<int>& hidden, int in, int out) {
-  torch::nn::Sequential net;
-  int width = in;
-  for (int units : hidden) {
-    net->push_back(torch::nn::Linear(width, units));
-    net->push_back(torch::nn::ReLU());
-    width = units;
-  }
-  net->push_back(torch::nn::Linear(width, out));
-  return net;
-}
 
 // Adds -inf to the Q-values of actions a row's mask forbids, so that max and argmax skip them.
 // A mask that forbids everything is taken as no mask (a max over nothing has no value).
@@ -39,14 +28,6 @@ torch::Tensor MaskPenalty(const std::vector<const ActionMask*>& masks, int actio
     }
   }
   return penalty;
-}
-
-void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to) {
-  torch::NoGradGuard no_grad;
-  auto source = from->parameters();
-  auto target = to->parameters();
-  for (std::size_t i = 0; i < source.size(); ++i)
-    target[i].copy_(source[i]);
 }
 
 }  // namespace
@@ -72,8 +53,8 @@ struct DqnAgent::Impl {
         epsilon{s.epsilon_start, s.epsilon_end, s.epsilon_decay_steps},
         rng(s.seed) {
     torch::manual_seed(s.seed);  // weight initialisation
-    online = MakeNetwork(s.hidden, obs_dim, actions);
-    target = MakeNetwork(s.hidden, obs_dim, actions);
+    online = MakeMlp(s.hidden, obs_dim, actions);
+    target = MakeMlp(s.hidden, obs_dim, actions);
     CopyParameters(online, target);
     optimizer = std::make_unique<torch::optim::Adam>(online->parameters(),
                                                      torch::optim::AdamOptions(s.learning_rate));
@@ -146,10 +127,7 @@ DqnAgent::~DqnAgent() = default;
 
 std::vector<float> DqnAgent::QValues(const std::vector<float>& observation) const {
   torch::NoGradGuard no_grad;
-  torch::Tensor x = torch::from_blob(const_cast<float*>(observation.data()),
-                                     {1, static_cast<long>(observation.size())}, torch::kFloat)
-                        .clone();
-  torch::Tensor q = impl_->online->forward(x).squeeze(0).contiguous();
+  torch::Tensor q = impl_->online->forward(Row(observation)).squeeze(0).contiguous();
   return std::vector<float>(q.data_ptr<float>(), q.data_ptr<float>() + q.numel());
 }
 
@@ -192,6 +170,10 @@ double DqnAgent::Observe(Transition transition) {
   return loss;
 }
 
+std::string DqnAgent::Algorithm() const {
+  return "dqn";
+}
+
 double DqnAgent::Epsilon() const {
   return impl_->epsilon.At(impl_->steps);
 }
@@ -202,28 +184,8 @@ void DqnAgent::Save(const std::string& directory) const {
 }
 
 void DqnAgent::Load(const std::string& directory) {
-  const std::string file = directory + "/policy.pt";
-  if (!std::filesystem::exists(file))
-    throw std::runtime_error(file + ": no such policy file");
-  // Loaded into a scratch network first: torch::load takes any tensor shapes it finds.
-  torch::nn::Sequential loaded =
-      MakeNetwork(impl_->spec.hidden, impl_->observation_dim, impl_->action_count);
-  const auto expected = impl_->online->parameters();
-  try {
-    torch::load(loaded, file);
-  } catch (const c10::Error&) {
-    throw std::runtime_error(file + ": not a policy file of this network");
-  }
-  const auto got = loaded->parameters();
-  bool same = got.size() == expected.size();
-  for (std::size_t i = 0; same && i < got.size(); ++i)
-    same = got[i].sizes() == expected[i].sizes();
-  if (!same) {
-    throw std::runtime_error(file +
-                             ": the policy's network shape differs from the scenario's "
-                             "(observations, actions or agent.hidden changed)");
-  }
-  CopyParameters(loaded, impl_->online);
+  LoadNetwork(directory + "/policy.pt", impl_->online, impl_->spec.hidden, impl_->observation_dim,
+              impl_->action_count);
   CopyParameters(impl_->online, impl_->target);
 }
 

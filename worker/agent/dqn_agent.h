@@ -16,6 +16,7 @@ class DqnAgent : public Agent {
   int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) override;
   double Observe(Transition transition) override;
   double Epsilon() const override;
+  std::string Algorithm() const override;
   void Save(const std::string& directory) const override;
   void Load(const std::string& directory) override;
   // Q-values of an observation (for tests and inspection).

@@ -15,6 +15,8 @@ struct Transition {
   std::vector<float> next_observation;
   bool terminal = false;  // no bootstrap from next_observation (truncation is not terminal)
   ActionMask next_mask;   // actions allowed after the step (the bootstrap maximises over them)
+  std::vector<float> continuous_action;  // continuous agents: the action, in [-1, 1]
+  bool episode_end = false;  // terminal or truncated: returns are not carried across it
 };
 
 class ReplayBuffer {

@@ -1,6 +1,18 @@
 #include "agent/trainer.h"
 
+#include <algorithm>
+
 namespace rlpos {
+
+std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& box) {
+  std::vector<double> out(unit.size());
+  for (std::size_t i = 0; i < unit.size() && i < box.Dim(); ++i) {
+    const double u = std::clamp(static_cast<double>(unit[i]), -1.0, 1.0);
+    out[i] = std::clamp(box.low[i] + 0.5 * (u + 1.0) * (box.high[i] - box.low[i]), box.low[i],
+                        box.high[i]);
+  }
+  return out;
+}
 
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
                          const StepCallback& on_step) {
@@ -11,14 +23,28 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
   ActionMask mask = env.ValidActions();
   double reward = 0.0;
   double loss_sum = 0.0;
+  const BoxSpace box = env.ContinuousActionSpace();
   for (;;) {
-    const int action = agent.Act(obs, mask, learn);
-    StepResult step = env.Step(action);
+    Transition t;
+    StepResult step;
+    if (agent.Continuous()) {
+      t.continuous_action = agent.ActContinuous(obs, learn);
+      step = env.StepContinuous(ScaleToBox(t.continuous_action, box));
+    } else {
+      t.action = agent.Act(obs, mask, learn);
+      step = env.Step(t.action);
+    }
+    const int action = t.action;
     std::vector<float> next = space.Normalise(step.observation);
     ActionMask next_mask = env.ValidActions();
     if (learn) {
-      const double loss = agent.Observe(
-          {obs, action, static_cast<float>(step.reward), next, step.terminated, next_mask});
+      t.observation = obs;
+      t.reward = static_cast<float>(step.reward);
+      t.next_observation = next;
+      t.terminal = step.terminated;
+      t.next_mask = next_mask;
+      t.episode_end = step.terminated || step.truncated;
+      const double loss = agent.Observe(std::move(t));
       if (loss >= 0) {
         ++record.updates;
         loss_sum += loss;

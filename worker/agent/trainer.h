@@ -30,8 +30,12 @@ struct TrainResult {
 };
 
 using EpisodeCallback = std::function<void(const EpisodeRecord&)>;
-// Called after every step: step number (from 1), the action taken and what it led to.
+// Called after every step: step number (from 1), the action taken (its index; 0 for a
+// continuous one) and what it led to.
 using StepCallback = std::function<void(int step, int action, const StepResult&)>;
+
+// A continuous agent's action (each component in [-1, 1]) mapped onto the env's Box.
+std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& box);
 
 // Runs one episode from env.Reset(seed). With `learn`, the agent explores and learns.
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,

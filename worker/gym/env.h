@@ -2,6 +2,7 @@
 // The environment interface the agents see (Gymnasium semantics): reset(seed) -> observation;
 // step(action) -> observation, reward, terminated, truncated, info.
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "gym/spaces.h"
@@ -28,10 +29,17 @@ struct StepResult {
 class Env {
  public:
   virtual ~Env() = default;
+  // The discrete actions; n = 0 for an env with a continuous action space.
   virtual DiscreteSpace ActionSpace() const = 0;
+  // The continuous action space; Dim() = 0 for an env with discrete actions.
+  virtual BoxSpace ContinuousActionSpace() const { return {}; }
   virtual BoxSpace ObservationSpace() const = 0;
   virtual std::vector<double> Reset(std::uint64_t seed) = 0;
   virtual StepResult Step(int action) = 0;
+  // A step with an action of ContinuousActionSpace().
+  virtual StepResult StepContinuous(const std::vector<double>& /*action*/) {
+    throw std::out_of_range("this env takes discrete actions");
+  }
   // The info of the state after the last Reset/Step.
   virtual const StepInfo& LastInfo() const = 0;
   // The actions allowed in the current state; empty (the default) allows all.

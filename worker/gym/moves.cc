@@ -9,18 +9,28 @@ namespace rlpos {
 Vec3 ApplyMove(const Scenario& s, int action, const Vec3& from) {
   const std::string& move = s.env.actions.at(static_cast<std::size_t>(action));
   const double d = s.env.step;
-  Vec3 to = from;
-  if (move == "up") to.z += d;
-  if (move == "down") to.z -= d;
-  if (move == "forward") to.y += d;
-  if (move == "backward") to.y -= d;
-  if (move == "right") to.x += d;
-  if (move == "left") to.x -= d;
+  Vec3 delta{0, 0, 0};
+  if (move == "up") delta.z = d;
+  if (move == "down") delta.z = -d;
+  if (move == "forward") delta.y = d;
+  if (move == "backward") delta.y = -d;
+  if (move == "right") delta.x = d;
+  if (move == "left") delta.x = -d;
+  return ApplyDisplacement(s, delta, from);
+}
+
+Vec3 ApplyDisplacement(const Scenario& s, const Vec3& delta, const Vec3& from) {
+  Vec3 to{from.x + delta.x, from.y + delta.y, from.z + delta.z};
   const Box& z = s.uav.zone;
   to.x = std::clamp(to.x, z.xmin, z.xmax);
   to.y = std::clamp(to.y, z.ymin, z.ymax);
   to.z = std::clamp(to.z, z.zmin, z.zmax);
   return BuildingContaining(s, to) >= 0 ? from : to;
+}
+
+BoxSpace DisplacementBounds(const Scenario& s) {
+  const double d = s.env.step;
+  return {{-d, -d, -d}, {d, d, d}};
 }
 
 BoxSpace ObservationBounds(const Scenario& s) {

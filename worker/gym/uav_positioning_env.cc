@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "config/number_text.h"
 #include "environment/uav_network.h"
 #include "gym/analytic_evaluator.h"
 #include "gym/moves.h"
@@ -22,7 +23,11 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario)
 UavPositioningEnv::~UavPositioningEnv() = default;
 
 DiscreteSpace UavPositioningEnv::ActionSpace() const {
-  return {static_cast<int>(scenario_.env.actions.size())};
+  return {Continuous() ? 0 : static_cast<int>(scenario_.env.actions.size())};
+}
+
+BoxSpace UavPositioningEnv::ContinuousActionSpace() const {
+  return Continuous() ? DisplacementBounds(scenario_) : BoxSpace{};
 }
 
 BoxSpace UavPositioningEnv::ObservationSpace() const {
@@ -30,7 +35,7 @@ BoxSpace UavPositioningEnv::ObservationSpace() const {
 }
 
 ActionMask UavPositioningEnv::ValidActions() const {
-  if (!scenario_.env.action_mask)
+  if (!scenario_.env.action_mask || Continuous())
     return {};
   const auto& actions = scenario_.env.actions;
   ActionMask mask(actions.size(), 0);
@@ -85,9 +90,29 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
 }
 
 StepResult UavPositioningEnv::Step(int action) {
-  if (!ActionSpace().Contains(action))
-    throw std::out_of_range("action out of the action space");
-  position_ = ApplyMove(scenario_, action, position_);
+  if (!ActionSpace().Contains(action)) {
+    throw std::out_of_range(Continuous() ? "this env takes a continuous action (a displacement)"
+                                         : "action " + std::to_string(action) +
+                                               " out of the action space Discrete(" +
+                                               std::to_string(ActionSpace().n) + ")");
+  }
+  return MoveTo(ApplyMove(scenario_, action, position_));
+}
+
+StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
+  if (!Continuous())
+    throw std::out_of_range("this env takes discrete actions (move indices)");
+  const BoxSpace box = ContinuousActionSpace();
+  if (!box.Contains(d)) {
+    const std::string step = FormatNumber(scenario_.env.step);
+    throw std::out_of_range("the displacement must have 3 components, each within [-" + step +
+                            ", " + step + "] m");
+  }
+  return MoveTo(ApplyDisplacement(scenario_, {d[0], d[1], d[2]}, position_));
+}
+
+StepResult UavPositioningEnv::MoveTo(const Vec3& position) {
+  position_ = position;
   if (network_) {
     network_->SetUavPosition(position_);
     const double now = network_->Now();

@@ -20,9 +20,12 @@ class UavPositioningEnv : public Env {
   ~UavPositioningEnv() override;
 
   DiscreteSpace ActionSpace() const override;
+  BoxSpace ContinuousActionSpace() const override;
   BoxSpace ObservationSpace() const override;
   std::vector<double> Reset(std::uint64_t seed) override;
+  // Both throw std::out_of_range for an action outside the env's action space.
   StepResult Step(int action) override;
+  StepResult StepContinuous(const std::vector<double>& displacement) override;
   const StepInfo& LastInfo() const override { return info_; }
   // With env.action_mask: "stay" and every move that changes the position (not into a wall of
   // the zone or a building). Without it, or if nothing moves, every action.
@@ -36,6 +39,8 @@ class UavPositioningEnv : public Env {
 
  private:
   StepInfo Observe();  // the state at the current position (after the last interval)
+  StepResult MoveTo(const Vec3& position);  // one decision interval at `position`
+  bool Continuous() const { return scenario_.env.action_space == "continuous"; }
   Scenario scenario_;
   std::unique_ptr<Reward> reward_;
   std::unique_ptr<UavNetwork> network_;          // packet fidelity

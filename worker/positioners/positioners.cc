@@ -34,7 +34,11 @@ Vec3 CentroidPosition(const Scenario& s) {
 }
 
 std::vector<ScoredPosition> OracleSearch(const Scenario& s, const OracleOptions& options) {
-  const double step = options.grid_step > 0 ? options.grid_step : s.env.step;
+  // Discrete moves reach only the grid of env.step from the initial position; displacements
+  // reach any point, which the search samples every kContinuousGridStep metres.
+  const double step = options.grid_step > 0                  ? options.grid_step
+                      : s.env.action_space == "continuous" ? std::min(s.env.step, kContinuousGridStep)
+                                                            : s.env.step;
   const auto reward = MakeReward(s.env.reward);
   std::vector<ScoredPosition> scored;
   {

@@ -3,7 +3,8 @@
 //   baseline  the scenario's initial position
 //   centroid  demand-weighted centroid of the UEs, at a height that clears the buildings
 //   oracle    exhaustive search of the zone grid scored with the analytic model; the best few
-//             re-scored at packet level
+//             re-scored at packet level. The grid is the one the agent moves on (a 1 m grid when
+//             it moves by continuous displacements).
 //   rl        the trained policy's final greedy position (agent/trainer.h)
 #include <optional>
 #include <vector>
@@ -25,8 +26,13 @@ struct ScoredPosition {
   double throughput_mbps = 0.0;
 };
 
+// The oracle's grid for an env of continuous actions (m).
+constexpr double kContinuousGridStep = 1.0;
+
 struct OracleOptions {
-  double grid_step = 0.0;        // m; 0: the env's move step (every position the agent can reach)
+  // m; 0: the env's move step (every position a discrete agent can reach), or
+  // kContinuousGridStep for continuous actions
+  double grid_step = 0.0;
   int packet_candidates = 3;     // best analytic positions re-scored at packet level (0: none)
   double packet_duration = 2.0;  // s per packet-level re-score
 };

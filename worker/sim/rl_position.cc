@@ -1,4 +1,4 @@
-#include "agent/dqn_agent.h"
+#include "agent/make_agent.h"
 #include "agent/trainer.h"
 #include "config/config_error.h"
 #include "gym/uav_positioning_env.h"
@@ -18,13 +18,20 @@ Vec3 PolicyPosition(const Scenario& scenario, const std::string& policy) {
   } catch (const ConfigError& e) {
     throw ConfigError("--policy", policy + "/result.json: " + e.problem());
   }
+  // The policy says what it is: its algorithm, and the action space and fidelity it was trained in.
   s.env.fidelity = trained.value("fidelity", s.env.fidelity);
+  s.agent.algorithm = trained.value("algorithm", std::string("dqn"));
+  s.env.action_space = trained.value("action_space", std::string("discrete"));
+  if ((s.agent.algorithm != "dqn" && s.agent.algorithm != "ppo" && s.agent.algorithm != "sac") ||
+      (s.env.action_space != "discrete" && s.env.action_space != "continuous")) {
+    throw ConfigError("--policy", policy + "/result.json: unknown algorithm or action_space");
+  }
   UavPositioningEnv env(s);
-  DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
-  agent.Load(policy);
+  const std::unique_ptr<Agent> agent = MakeAgent(s.agent, env);
+  agent->Load(policy);
   const std::uint64_t run =
       trained.value("first_episode_run", 1ULL) + static_cast<std::uint64_t>(s.agent.train_episodes);
-  return RunEpisode(env, agent, run, false).final_info.position;
+  return RunEpisode(env, *agent, run, false).final_info.position;
 }
 
 }  // namespace rlpos::sim

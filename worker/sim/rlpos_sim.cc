@@ -1,7 +1,8 @@
 // rlpos-sim: one experiment on one scenario (the paper's main.py, in C++).
 //   rlpos-sim validate FILE
 //   rlpos-sim eval --scenario FILE --position x,y,z [--duration S] [--run N] [--json]
-//   rlpos-sim train --scenario FILE [--fidelity packet|analytic] [--seed N] --out DIR [--json]
+//   rlpos-sim train --scenario FILE [--algorithm dqn|ppo|sac] [--fidelity packet|analytic]
+//                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
@@ -62,6 +63,10 @@ int main(int argc, char** argv) {
       app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
   TrainOptions train_options;
   train->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
+  train->add_option("--algorithm", train_options.algorithm,
+                    "dqn|ppo|sac (default: agent.algorithm); sac acts on the continuous action "
+                    "space")
+      ->check(CLI::IsMember({"dqn", "ppo", "sac"}));
   train->add_option("--fidelity", train_options.fidelity, "packet|analytic (default: env.fidelity)")
       ->check(CLI::IsMember({"packet", "analytic"}));
   train->add_option("--seed", train_options.seed, "Agent seed (default: agent.seed)")

@@ -2,9 +2,10 @@
 #include <fstream>
 #include <iostream>
 
-#include "agent/dqn_agent.h"
+#include "agent/make_agent.h"
 #include "agent/trainer.h"
 #include "config/config_error.h"
+#include "config/number_text.h"
 #include "gym/uav_positioning_env.h"
 #include "scenario/scenario_parser.h"
 #include "sim/rl_commands.h"
@@ -22,6 +23,8 @@ std::uint64_t FirstEpisodeRun(std::uint64_t seed) {
 nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {
   const Vec3& p = r.final_info.position;
   return {{"scenario", s.name},
+          {"algorithm", s.agent.algorithm},
+          {"action_space", s.env.action_space},
           {"fidelity", s.env.fidelity},
           {"seed", seed},
           {"train_episodes", s.agent.train_episodes},
@@ -47,6 +50,11 @@ void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
 
 int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   std::vector<std::string> extra;
+  if (!t.algorithm.empty()) {
+    // SAC acts on displacements, DQN and PPO on the moves: the flag picks the space as well.
+    for (auto& o : AlgorithmOverrides(t.algorithm))
+      extra.push_back(std::move(o));
+  }
   if (!t.fidelity.empty())
     extra.push_back("env.fidelity=" + t.fidelity);
   if (t.seed >= 0)
@@ -66,20 +74,30 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   }
   try {
     UavPositioningEnv env(s);
-    DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n);
+    const std::unique_ptr<Agent> agent_owner = MakeAgent(s.agent, env);
+    Agent& agent = *agent_owner;
     std::ofstream curve(partial / "learning_curve.csv");
     curve << "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
              "x,y,z,n_los,throughput_mbps\n";
     std::ofstream trajectory(partial / "trajectory.csv");
     trajectory << "episode,step,action,x,y,z,n_los,throughput_mbps,reward\n";
     int eval_episode = s.agent.train_episodes;
+    Vec3 last = s.uav.initial;
     const auto write_step = [&](int step, int action, const StepResult& r) {
-      if (step == 1)
+      if (step == 1) {
         ++eval_episode;
+        last = s.uav.initial;
+      }
       const Vec3& p = r.info.position;
-      trajectory << eval_episode << ',' << step << ',' << s.env.actions[action] << ',' << p.x << ','
-                 << p.y << ',' << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ','
-                 << r.reward << '\n';
+      // A continuous action is written as the displacement the UAV made, "dx dy dz".
+      const std::string moved = agent.Continuous() ? FormatNumber(p.x - last.x) + ' ' +
+                                                         FormatNumber(p.y - last.y) + ' ' +
+                                                         FormatNumber(p.z - last.z)
+                                                   : s.env.actions[action];
+      last = p;
+      trajectory << eval_episode << ',' << step << ',' << moved << ',' << p.x << ',' << p.y << ','
+                 << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ',' << r.reward
+                 << '\n';
     };
     const int total = s.agent.train_episodes + s.agent.eval_episodes;
     const TrainResult result = Train(
@@ -107,9 +125,9 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     } else {
       const auto& p = result.final_info.position;
       std::printf(
-          "trained %s (%s, seed %llu): final position (%.1f, %.1f, %.1f), nLoS %d/%zu, "
+          "trained %s (%s, %s, seed %llu): final position (%.1f, %.1f, %.1f), nLoS %d/%zu, "
           "reward %.4f\npolicy, learning curve and result in %s\n",
-          s.name.c_str(), s.env.fidelity.c_str(), static_cast<unsigned long long>(s.agent.seed),
+          s.name.c_str(), s.agent.algorithm.c_str(), s.env.fidelity.c_str(), static_cast<unsigned long long>(s.agent.seed),
           p.x, p.y, p.z, result.final_info.n_los, s.ues.size(), result.final_reward, t.out.c_str());
     }
   } catch (...) {

@@ -1,0 +1,29 @@
+#include "agent/make_agent.h"
+
+#include <stdexcept>
+
+#include "agent/dqn_agent.h"
+#include "agent/ppo_agent.h"
+#include "agent/sac_agent.h"
+
+namespace rlpos {
+
+std::unique_ptr<Agent> MakeAgent(const AgentSpec& spec, const Env& env) {
+  const int observations = static_cast<int>(env.ObservationSpace().Dim());
+  const int continuous = static_cast<int>(env.ContinuousActionSpace().Dim());
+  const int discrete = env.ActionSpace().n;
+  if (spec.algorithm == "sac") {
+    if (continuous == 0)
+      throw std::invalid_argument("sac needs a continuous action space");
+    return std::make_unique<SacAgent>(spec, observations, continuous);
+  }
+  if (discrete == 0)
+    throw std::invalid_argument(spec.algorithm + " needs a discrete action space");
+  if (spec.algorithm == "ppo")
+    return std::make_unique<PpoAgent>(spec, observations, discrete);
+  if (spec.algorithm == "dqn")
+    return std::make_unique<DqnAgent>(spec, observations, discrete);
+  throw std::invalid_argument("unknown algorithm " + spec.algorithm);
+}
+
+}  // namespace rlpos

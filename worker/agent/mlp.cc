@@ -1,0 +1,66 @@
+#include "agent/mlp.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace rlpos {
+
+torch::nn::Sequential MakeMlp(const std::vector<int>& hidden, int in, int out) {
+  torch::nn::Sequential net;
+  int width = in;
+  for (int units : hidden) {
+    net->push_back(torch::nn::Linear(width, units));
+    net->push_back(torch::nn::ReLU());
+    width = units;
+  }
+  net->push_back(torch::nn::Linear(width, out));
+  return net;
+}
+
+void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to) {
+  torch::NoGradGuard no_grad;
+  auto source = from->parameters();
+  auto target = to->parameters();
+  for (std::size_t i = 0; i < source.size(); ++i)
+    target[i].copy_(source[i]);
+}
+
+void SoftUpdate(const torch::nn::Sequential& from, torch::nn::Sequential& to, double tau) {
+  torch::NoGradGuard no_grad;
+  auto source = from->parameters();
+  auto target = to->parameters();
+  for (std::size_t i = 0; i < source.size(); ++i)
+    target[i].mul_(1.0 - tau).add_(source[i], tau);
+}
+
+torch::Tensor Row(const std::vector<float>& values) {
+  return torch::from_blob(const_cast<float*>(values.data()), {1, static_cast<long>(values.size())},
+                          torch::kFloat)
+      .clone();
+}
+
+void LoadNetwork(const std::string& file, torch::nn::Sequential& into,
+                 const std::vector<int>& hidden, int in, int out) {
+  if (!std::filesystem::exists(file))
+    throw std::runtime_error(file + ": no such policy file");
+  // Loaded into a scratch network first: torch::load takes any tensor shapes it finds.
+  torch::nn::Sequential loaded = MakeMlp(hidden, in, out);
+  try {
+    torch::load(loaded, file);
+  } catch (const c10::Error&) {
+    throw std::runtime_error(file + ": not a policy file of this network");
+  }
+  const auto expected = into->parameters();
+  const auto got = loaded->parameters();
+  bool same = got.size() == expected.size();
+  for (std::size_t i = 0; same && i < got.size(); ++i)
+    same = got[i].sizes() == expected[i].sizes();
+  if (!same) {
+    throw std::runtime_error(file +
+                             ": the policy's network shape differs from the scenario's "
+                             "(observations, actions or agent.hidden changed)");
+  }
+  CopyParameters(loaded, into);
+}
+
+}  // namespace rlpos

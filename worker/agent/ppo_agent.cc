@@ -1,0 +1,235 @@
+#include "agent/ppo_agent.h"
+
+#include <torch/torch.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+
+#include "agent/mlp.h"
+#include "agent/running_moments.h"
+
+namespace rlpos {
+namespace {
+
+// A large negative logit for the actions a mask forbids: their probability is 0, and unlike
+// -inf it keeps 0 * log(0) in the entropy finite.
+constexpr float kForbidden = -1e9f;
+
+torch::Tensor MaskLogits(const torch::Tensor& logits, const std::vector<ActionMask>& masks) {
+  torch::Tensor penalty = torch::zeros_like(logits);
+  auto p = penalty.accessor<float, 2>();
+  for (std::size_t r = 0; r < masks.size(); ++r) {
+    const ActionMask& mask = masks[r];
+    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }))
+      continue;  // empty, or forbids everything: no mask
+    for (long a = 0; a < logits.size(1); ++a) {
+      if (!Allowed(mask, static_cast<int>(a)))
+        p[static_cast<long>(r)][a] = kForbidden;
+    }
+  }
+  return logits + penalty;
+}
+
+}  // namespace
+
+struct PpoAgent::Impl {
+  AgentSpec spec;
+  PpoSpec ppo;
+  int observation_dim;
+  int action_count;
+  torch::nn::Sequential actor{nullptr};
+  torch::nn::Sequential critic{nullptr};
+  std::unique_ptr<torch::optim::Adam> optimizer;
+  std::mt19937_64 rng;
+  RunningMoments reward_moments;
+
+  // The rollout: what Act saw and chose, then what Observe was told.
+  std::vector<Transition> rollout;
+  std::vector<ActionMask> masks;  // the mask at each transition's observation
+  std::vector<float> log_probs;
+  ActionMask pending_mask;
+  float pending_log_prob = 0.0f;
+
+  Impl(const AgentSpec& s, int obs_dim, int actions)
+      : spec(s), ppo(s.ppo), observation_dim(obs_dim), action_count(actions), rng(s.seed) {
+    torch::manual_seed(s.seed);  // weight initialisation
+    actor = MakeMlp(s.hidden, obs_dim, actions);
+    critic = MakeMlp(s.hidden, obs_dim, 1);
+    std::vector<torch::Tensor> parameters = actor->parameters();
+    for (const auto& p : critic->parameters())
+      parameters.push_back(p);
+    optimizer = std::make_unique<torch::optim::Adam>(
+        parameters, torch::optim::AdamOptions(ppo.learning_rate).eps(1e-5));
+  }
+
+  torch::Tensor Observations(bool next) const {
+    torch::Tensor t = torch::empty({static_cast<long>(rollout.size()), observation_dim});
+    auto a = t.accessor<float, 2>();
+    for (std::size_t r = 0; r < rollout.size(); ++r) {
+      const auto& obs = next ? rollout[r].next_observation : rollout[r].observation;
+      for (int c = 0; c < observation_dim; ++c)
+        a[static_cast<long>(r)][c] = obs[static_cast<std::size_t>(c)];
+    }
+    return t;
+  }
+
+  // Advantages by GAE(lambda). A truncated episode bootstraps from the value of its last next
+  // observation; a terminal one from 0; no advantage is carried across an episode's end.
+  std::pair<torch::Tensor, torch::Tensor> AdvantagesAndReturns(const torch::Tensor& obs,
+                                                               const torch::Tensor& next) {
+    torch::NoGradGuard no_grad;
+    const torch::Tensor values = critic->forward(obs).squeeze(1).contiguous();
+    const torch::Tensor next_values = critic->forward(next).squeeze(1).contiguous();
+    const long n = static_cast<long>(rollout.size());
+    torch::Tensor advantages = torch::empty({n});
+    auto adv = advantages.accessor<float, 1>();
+    auto v = values.accessor<float, 1>();
+    auto nv = next_values.accessor<float, 1>();
+    float carried = 0.0f;
+    for (long t = n - 1; t >= 0; --t) {
+      const Transition& tr = rollout[static_cast<std::size_t>(t)];
+      const float reward = spec.normalise_rewards ? reward_moments.Standardise(tr.reward)
+                                                  : tr.reward;
+      const float bootstrap = tr.terminal ? 0.0f : static_cast<float>(ppo.gamma) * nv[t];
+      const float delta = reward + bootstrap - v[t];
+      if (tr.episode_end || t == n - 1)
+        carried = 0.0f;
+      carried = delta + static_cast<float>(ppo.gamma * ppo.gae_lambda) * carried;
+      adv[t] = carried;
+    }
+    return {advantages, advantages + values};
+  }
+
+  double Learn() {
+    const torch::Tensor obs = Observations(false);
+    const auto [advantages, returns] = AdvantagesAndReturns(obs, Observations(true));
+    const long n = static_cast<long>(rollout.size());
+    torch::Tensor actions = torch::empty({n}, torch::kLong);
+    for (long r = 0; r < n; ++r)
+      actions[r] = rollout[static_cast<std::size_t>(r)].action;
+    const torch::Tensor old_log_probs = torch::tensor(log_probs);
+
+    std::vector<long> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0L);
+    const long size = std::max(1L, n / ppo.minibatches);
+    double loss_sum = 0.0;
+    int updates = 0;
+    for (int epoch = 0; epoch < ppo.epochs; ++epoch) {
+      std::shuffle(order.begin(), order.end(), rng);
+      for (long start = 0; start + size <= n; start += size) {
+        const std::vector<long> chosen(order.begin() + start, order.begin() + start + size);
+        const torch::Tensor index = torch::tensor(chosen, torch::kLong);
+        std::vector<ActionMask> batch_masks;
+        for (long i : chosen)
+          batch_masks.push_back(masks[static_cast<std::size_t>(i)]);
+        const torch::Tensor logits =
+            MaskLogits(actor->forward(obs.index_select(0, index)), batch_masks);
+        const torch::Tensor log_p = torch::log_softmax(logits, 1);
+        const torch::Tensor taken =
+            log_p.gather(1, actions.index_select(0, index).unsqueeze(1)).squeeze(1);
+        const torch::Tensor entropy = -(log_p.exp() * log_p).sum(1).mean();
+        torch::Tensor adv = advantages.index_select(0, index);
+        adv = (adv - adv.mean()) / (adv.std() + 1e-8);
+        const torch::Tensor ratio = (taken - old_log_probs.index_select(0, index)).exp();
+        const torch::Tensor policy_loss =
+            torch::max(-adv * ratio, -adv * ratio.clamp(1.0 - ppo.clip, 1.0 + ppo.clip)).mean();
+        const torch::Tensor value = critic->forward(obs.index_select(0, index)).squeeze(1);
+        const torch::Tensor value_loss = 0.5 * (value - returns.index_select(0, index)).pow(2).mean();
+        const torch::Tensor loss = policy_loss - ppo.entropy_coefficient * entropy +
+                                   ppo.value_coefficient * value_loss;
+        optimizer->zero_grad();
+        loss.backward();
+        torch::nn::utils::clip_grad_norm_(optimizer->param_groups()[0].params(),
+                                          ppo.max_grad_norm);
+        optimizer->step();
+        loss_sum += loss.item<double>();
+        ++updates;
+      }
+    }
+    rollout.clear();
+    masks.clear();
+    log_probs.clear();
+    return updates > 0 ? loss_sum / updates : -1.0;
+  }
+};
+
+PpoAgent::PpoAgent(const AgentSpec& spec, int observation_dim, int action_count) {
+  if (observation_dim <= 0 || action_count <= 0)
+    throw std::invalid_argument("PPO needs a non-empty observation and action space");
+  impl_ = std::make_unique<Impl>(spec, observation_dim, action_count);
+}
+
+PpoAgent::~PpoAgent() = default;
+
+std::string PpoAgent::Algorithm() const {
+  return "ppo";
+}
+
+std::vector<float> PpoAgent::Probabilities(const std::vector<float>& observation,
+                                           const ActionMask& mask) const {
+  torch::NoGradGuard no_grad;
+  const torch::Tensor logits = MaskLogits(impl_->actor->forward(Row(observation)), {mask});
+  const torch::Tensor p = torch::softmax(logits, 1).squeeze(0).contiguous();
+  return std::vector<float>(p.data_ptr<float>(), p.data_ptr<float>() + p.numel());
+}
+
+int PpoAgent::Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) {
+  Impl& m = *impl_;
+  if (!mask.empty() && std::none_of(mask.begin(), mask.end(), [](std::uint8_t a) { return a; }))
+    throw std::invalid_argument("the action mask allows no action");
+  const std::vector<float> p = Probabilities(observation, mask);
+  int action = 0;
+  if (explore) {
+    // Inverse-CDF sampling with the agent's own generator: reproducible across libraries.
+    const double u = std::uniform_real_distribution<double>(0.0, 1.0)(m.rng);
+    double cumulative = 0.0;
+    action = -1;
+    for (int a = 0; a < m.action_count; ++a) {
+      if (!Allowed(mask, a) || p[static_cast<std::size_t>(a)] <= 0.0f)
+        continue;
+      action = a;  // the last allowed action takes what rounding leaves over
+      cumulative += p[static_cast<std::size_t>(a)];
+      if (u < cumulative)
+        break;
+    }
+  } else {
+    action = -1;
+    for (int a = 0; a < m.action_count; ++a) {
+      if (Allowed(mask, a) && (action < 0 || p[static_cast<std::size_t>(a)] >
+                                                  p[static_cast<std::size_t>(action)]))
+        action = a;
+    }
+  }
+  m.pending_mask = mask;
+  m.pending_log_prob = std::log(std::max(p[static_cast<std::size_t>(action)], 1e-30f));
+  return action;
+}
+
+double PpoAgent::Observe(Transition transition) {
+  Impl& m = *impl_;
+  m.reward_moments.Add(transition.reward);
+  m.rollout.push_back(std::move(transition));
+  m.masks.push_back(std::move(m.pending_mask));
+  m.log_probs.push_back(m.pending_log_prob);
+  if (static_cast<int>(m.rollout.size()) < m.ppo.rollout_steps)
+    return -1.0;
+  return m.Learn();
+}
+
+void PpoAgent::Save(const std::string& directory) const {
+  std::filesystem::create_directories(directory);
+  torch::save(impl_->actor, directory + "/policy.pt");
+  torch::save(impl_->critic, directory + "/value.pt");
+}
+
+void PpoAgent::Load(const std::string& directory) {
+  LoadNetwork(directory + "/policy.pt", impl_->actor, impl_->spec.hidden, impl_->observation_dim,
+              impl_->action_count);
+  LoadNetwork(directory + "/value.pt", impl_->critic, impl_->spec.hidden, impl_->observation_dim,
+              1);
+}
+
+}  // namespace rlpos

@@ -1,0 +1,32 @@
+#pragma once
+// Proximal Policy Optimization (libtorch) on the discrete moves: separate actor and critic MLPs,
+// the clipped surrogate objective, generalised advantage estimation, an entropy bonus and
+// gradient-norm clipping, updated every agent.ppo.rollout_steps transitions. Seeded: the same
+// seed, spaces and transitions give the same network.
+#include <memory>
+
+#include "agent/agent.h"
+#include "scenario/scenario.h"
+
+namespace rlpos {
+
+class PpoAgent : public Agent {
+ public:
+  PpoAgent(const AgentSpec& spec, int observation_dim, int action_count);
+  ~PpoAgent() override;
+  std::string Algorithm() const override;
+  // explore: a sample of the policy; otherwise its most probable allowed action.
+  int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) override;
+  double Observe(Transition transition) override;
+  void Save(const std::string& directory) const override;
+  void Load(const std::string& directory) override;
+  // The policy's action probabilities (for tests and inspection).
+  std::vector<float> Probabilities(const std::vector<float>& observation,
+                                   const ActionMask& mask) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rlpos
