@@ -175,8 +175,7 @@ EvalSettings ReadEval(const json& v) {
 }
 
 CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
-                                   const ScenarioSource& source, const EvalSettings& eval,
-                                   const std::vector<std::string>& algorithms) {
+                                   const ScenarioSource& source, const EvalSettings& eval) {
   CampaignScenario entry;
   std::string file_path = path;  // where a problem with the file itself is reported
   std::string set_path;
@@ -232,17 +231,6 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
     entry.scenario = ParseScenario(effective);
   } catch (const ConfigError& e) {
     throw ConfigError(path, entry.file + ": " + e.describe());
-  }
-  // Each algorithm trains on the scenario with its own agent settings: those must hold too.
-  for (std::size_t i = 0; i < algorithms.size(); ++i) {
-    json trained = effective;
-    try {
-      ApplyOverrides(trained, AlgorithmOverrides(algorithms[i]));
-      ParseScenario(trained);
-    } catch (const ConfigError& e) {
-      throw ConfigError(path, entry.file + " with /train/algorithms/" + std::to_string(i) + " (" +
-                                  algorithms[i] + "): " + e.describe());
-    }
   }
   if (!wire::IsSafeName(entry.scenario.name, wire::kMaxNameLength)) {
     // Job keys are "<kind>/<scenario>/..." and name the workers' folders.
@@ -321,8 +309,7 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
   NonEmptyArray(*scenarios, "/scenarios");
   for (std::size_t i = 0; i < scenarios->size(); ++i) {
     const std::string path = JoinPath("/scenarios", i);
-    CampaignScenario entry = ReadScenarioEntry((*scenarios)[i], path, source, spec.eval,
-                                                spec.train.algorithms);
+    CampaignScenario entry = ReadScenarioEntry((*scenarios)[i], path, source, spec.eval);
     for (std::size_t j = 0; j < spec.scenarios.size(); ++j) {
       if (spec.scenarios[j].scenario.name == entry.scenario.name) {
         throw ConfigError(path, "scenario name \"" + entry.scenario.name +

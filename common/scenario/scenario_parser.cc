@@ -294,6 +294,7 @@ SacSpec ReadSac(const json& v) {
   p.tau = r.Number("tau", p.tau, {0.0, 1.0, true});
   p.batch_size = static_cast<int>(r.Integer("batch_size", p.batch_size, 1, 65536));
   p.warmup_steps = static_cast<int>(r.Integer("warmup_steps", p.warmup_steps, 0, 1000000000));
+  p.update_interval = static_cast<int>(r.Integer("update_interval", p.update_interval, 1, 1000000));
   if (const json* alpha = r.Child("alpha"); alpha && !alpha->is_null())
     p.alpha = CheckedNumber(*alpha, r.PathOf("alpha"), NonNegative());
   r.Finish();
@@ -548,6 +549,7 @@ json ToJson(const Scenario& s) {
               {"tau", s.agent.sac.tau},
               {"batch_size", s.agent.sac.batch_size},
               {"warmup_steps", s.agent.sac.warmup_steps},
+              {"update_interval", s.agent.sac.update_interval},
               {"alpha", s.agent.sac.alpha ? json(*s.agent.sac.alpha) : json(nullptr)}}}}}};
 }
 

@@ -57,6 +57,8 @@ std::tuple<std::size_t, std::size_t, std::uint64_t, std::string> SortKey(
         !digits.empty() && digits.size() < 19 &&
         std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(c) != 0; });
     seed = numeric ? std::stoull(digits) + 1 : std::numeric_limits<std::uint64_t>::max();
+    if (!numeric)  // an unknown suffix: after every known one
+      algorithm_rank = std::numeric_limits<std::size_t>::max();
   }
   return {rank, algorithm_rank, seed, label};
 }

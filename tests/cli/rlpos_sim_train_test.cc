@@ -1,6 +1,7 @@
 // rlpos-sim train and position as a user runs them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -93,6 +94,37 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   EXPECT_TRUE(fs::exists(out_ / "policy.pt"));
 }
 
+TEST_F(TrainCommand, EachAlgorithmsPolicySaysWhatItIs) {
+  for (const std::string algorithm : {"ppo", "sac"}) {
+    SCOPED_TRACE(algorithm);
+    fs::remove_all(out_);
+    const auto r = RunCommand(Sim("train --scenario " + kScenarioB + " --algorithm " + algorithm +
+                                  " --fidelity analytic --episodes 1 --set env.episode_duration=20"
+                                  " --json --out " + out_.string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto result = nlohmann::json::parse(r.out);
+    EXPECT_EQ(result["algorithm"], algorithm);
+    EXPECT_EQ(result["action_space"], algorithm == "sac" ? "continuous" : "discrete");
+    // The scenario's agent section says dqn: the policy folder, not a flag, says otherwise.
+    const auto p = RunCommand(Sim("position --scenario " + kScenarioB +
+                                  " --positioner rl --json --set env.episode_duration=20"
+                                  " --policy " + out_.string()));
+    ASSERT_EQ(p.exit_code, 0) << p.err;
+    EXPECT_EQ(nlohmann::json::parse(p.out)["position"], result["position"]);
+  }
+  // A continuous flight's trajectory gives each displacement as "dx dy dz".
+  std::ifstream trajectory(out_ / "trajectory.csv");
+  std::string line;
+  std::getline(trajectory, line);
+  std::getline(trajectory, line);
+  std::vector<std::string> cells;
+  std::stringstream row(line);
+  for (std::string cell; std::getline(row, cell, ',');)
+    cells.push_back(cell);
+  ASSERT_EQ(cells.size(), 9u) << line;
+  EXPECT_EQ(std::count(cells[2].begin(), cells[2].end(), ' '), 2) << line;
+}
+
 TEST_F(TrainCommand, BadInputs) {
   const auto no_policy = RunCommand(Sim("position --scenario " + kScenarioB + " --positioner rl"));
   EXPECT_EQ(no_policy.exit_code, 2);
@@ -111,6 +143,17 @@ TEST_F(TrainCommand, BadInputs) {
       << bad_agent.err;
   EXPECT_FALSE(fs::exists(out_));
   EXPECT_FALSE(fs::exists(out_.string() + ".partial"));
+  const auto bad_algorithm = RunCommand(Sim("train --scenario " + kScenarioB +
+                                            " --algorithm a2c --out " + out_.string()));
+  EXPECT_EQ(bad_algorithm.exit_code, 2);
+  EXPECT_NE(bad_algorithm.err.find("--algorithm"), std::string::npos) << bad_algorithm.err;
+  const auto sac_on_moves = RunCommand(Sim("train --scenario " + kScenarioB +
+                                           " --set agent.algorithm=sac --out " + out_.string()));
+  EXPECT_EQ(sac_on_moves.exit_code, 2);
+  EXPECT_NE(sac_on_moves.err.find("/agent/algorithm: sac needs env.action_space \"continuous\""),
+            std::string::npos)
+      << sac_on_moves.err;
+  EXPECT_FALSE(fs::exists(out_));
 }
 
 TEST(PositionCommand, BaselineAndCentroid) {

@@ -1,6 +1,8 @@
 // The UAV positioning env on scenario B, both fidelities.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "gym/uav_positioning_env.h"
 #include "sim/scenario_loading.h"
 
@@ -35,6 +37,34 @@ TEST(GymEnv, AnalyticResetStepTruncate) {
   EXPECT_TRUE(r.truncated);
   EXPECT_FALSE(r.terminated);
   EXPECT_THROW(env.Step(7), std::out_of_range);
+}
+
+TEST(GymEnv, ContinuousActionsAreBoundedDisplacements) {
+  const Scenario s = LoadB({"env.fidelity=analytic", "env.episode_duration=1",
+                            "agent.algorithm=sac", "env.action_space=continuous"});
+  UavPositioningEnv env(s);
+  EXPECT_EQ(env.ActionSpace().n, 0);
+  const BoxSpace box = env.ContinuousActionSpace();
+  EXPECT_EQ(box.low, (std::vector<double>{-5, -5, -5}));
+  EXPECT_EQ(box.high, (std::vector<double>{5, 5, 5}));
+  EXPECT_TRUE(env.ValidActions().empty());  // no mask: the displacement is clamped
+  env.Reset(1);
+  StepResult r = env.StepContinuous({0, -5, 0});
+  r = env.StepContinuous({0, -5, 0});
+  r = env.StepContinuous({0.5, -5, -2.5});  // to (50.5, 35, 22.5): all LoS
+  EXPECT_EQ(r.info.position.x, 50.5);
+  EXPECT_EQ(r.info.position.y, 35.0);
+  EXPECT_EQ(r.info.position.z, 22.5);
+  EXPECT_EQ(r.info.n_los, 4);
+  EXPECT_THROW(env.StepContinuous({5.5, 0, 0}), std::out_of_range);
+  EXPECT_THROW(env.StepContinuous({0, 0}), std::out_of_range);
+  EXPECT_THROW(env.StepContinuous({std::nan(""), 0, 0}), std::out_of_range);
+  EXPECT_THROW(env.Step(0), std::out_of_range);
+  EXPECT_EQ(env.LastInfo().position.x, 50.5);  // a refused action moves nothing
+
+  UavPositioningEnv discrete(LoadB({"env.fidelity=analytic"}));
+  discrete.Reset(1);
+  EXPECT_THROW(discrete.StepContinuous({0, 0, 0}), std::out_of_range);
 }
 
 std::vector<std::string> Masked(const Scenario& s, const ActionMask& mask) {

@@ -102,6 +102,26 @@ TEST(CampaignSpec, PositionersTakeTheCanonicalOrder) {
   EXPECT_FALSE(ParseCampaign(doc, "/").NeedsTraining());
 }
 
+TEST(CampaignSpec, AlgorithmsTakeTheCanonicalOrder) {
+  json doc = MinimalCampaign();
+  doc["train"] = {{"algorithms", {"sac", "dqn", "ppo"}}};
+  EXPECT_EQ(ParseCampaign(doc, "/").train.algorithms,
+            (std::vector<std::string>{"dqn", "ppo", "sac"}));
+  doc["train"] = {{"algorithms", {"ppo"}}};
+  EXPECT_EQ(ToJson(ParseCampaign(doc, "/"))["train"]["algorithms"], json({"ppo"}));
+}
+
+TEST(CampaignSpec, AlgorithmsOverrideTheScenariosOwn) {
+  // Every agent section is validated with the scenario itself; each algorithm's training then
+  // sets agent.algorithm and the action space that goes with it.
+  json doc = MinimalCampaign();
+  doc["scenarios"] = {
+      {{"file", ScenarioB()}, {"set", {"agent.algorithm=sac", "env.action_space=continuous"}}}};
+  doc["train"] = {{"algorithms", {"dqn", "ppo"}}};
+  const CampaignSpec spec = ParseCampaign(doc, "/");
+  EXPECT_EQ(spec.train.algorithms, (std::vector<std::string>{"dqn", "ppo"}));
+}
+
 TEST(CampaignSpec, SetOverridesTheScenario) {
   json doc = MinimalCampaign();
   doc["scenarios"] = {
@@ -304,6 +324,18 @@ const BadCampaign kBadCampaigns[] = {
      "/retries: must be in [0, 100], got -1"},
     {"ZeroTimeout", [](json& d) { d["job_timeout_s"] = 0; },
      "/job_timeout_s: must be positive, got 0"},
+    {"UnknownAlgorithm", [](json& d) { d["train"] = {{"algorithms", {"dqn", "ppo2"}}}; },
+     "/train/algorithms/1: unknown algorithm \"ppo2\" (one of: dqn, ppo, sac); did you mean "
+     "\"ppo\"?"},
+    {"AlgorithmTwice", [](json& d) { d["train"] = {{"algorithms", {"sac", "sac"}}}; },
+     "/train/algorithms/1: \"sac\" is listed twice"},
+    {"NoAlgorithms", [](json& d) { d["train"] = {{"algorithms", json::array()}}; },
+     "/train/algorithms: expected a non-empty array"},
+    {"AlgorithmSettingsInvalid",
+     [](json& d) {
+       d["scenarios"] = {{{"file", ScenarioB()}, {"set", {"agent.sac.batch_size=0"}}}};
+     },
+     "/scenarios/0: " + ScenarioB() + ": /agent/sac/batch_size: must be in [1, 65536], got 0"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, CampaignSpecBadInput, ::testing::ValuesIn(kBadCampaigns),

@@ -304,5 +304,36 @@ TEST(SubmitLimits, CountJobsExactlyBeforeExpanding) {
   }
 }
 
+TEST(Expansion, EachAlgorithmTrainsItsOwnPoliciesUnderItsOwnLabels) {
+  CampaignSpec spec = MiniSpec();
+  spec.train.seeds = {7, 2};
+  spec.train.algorithms = {"dqn", "sac"};
+  const ExpandedCampaign c = ExpandCampaign(spec);
+  EXPECT_EQ(c.jobs.size(), c.JobCount());
+  const Job& sac = FindJob(c, "train/B/sac/seed7");
+  EXPECT_EQ(sac.label, "rl@sac");
+  // The algorithm reaches the worker as the scenario's own fields, after the entry's "set".
+  const std::vector<ScenarioOverride> selects_sac{{"agent.algorithm", "sac"},
+                                                  {"env.action_space", "continuous"}};
+  EXPECT_EQ(sac.params.overrides, selects_sac);
+  EXPECT_EQ(FindJob(c, "train/B/dqn/seed2").label, "rl@dqn@seed2");
+  EXPECT_EQ(FindJob(c, "eval/B/rl@sac/run1").depends_on, c.id + "/train/B/sac/seed7");
+  EXPECT_EQ(FindJob(c, "eval/B/offset3@dqn@seed2/run2").depends_on, c.id + "/train/B/dqn/seed2");
+  EXPECT_TRUE(FindJob(c, "eval/B/rl@sac/run1").params.overrides.empty());
+  // Other algorithms' training is other content: no cache hit across them.
+  EXPECT_NE(sac.content_base, FindJob(c, "train/B/dqn/seed7").content_base);
+  for (const auto& job : c.jobs)
+    EXPECT_EQ(job.key.find("/rl/"), std::string::npos) << job.key;  // no plain label left
+  EXPECT_EQ(c.jobs.size(), 2u * (3 + 4 + 2 * (3 + 4 * 6)));  // 2 runs, 2 seeds x 2 algorithms
+}
+
+TEST(Expansion, NoAlgorithmsKeyKeepsTheCampaignAsItWas) {
+  const CampaignSpec plain = MiniSpec();
+  EXPECT_EQ(ToJson(plain)["train"].count("algorithms"), 0u);  // so its id is unchanged
+  CampaignSpec with = MiniSpec();
+  with.train.algorithms = {"dqn"};
+  EXPECT_NE(ExpandCampaign(with).id, ExpandCampaign(plain).id);
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -138,6 +138,16 @@ TEST(ReportOrder, LabelsFollowThePaper) {
                                       "oracle", "rl", "rl@seed2", "rl@seed10", "alpha", "zeta"}));
 }
 
+TEST(ReportOrder, AlgorithmsFollowTheirPlainLabelEachWithItsSeeds) {
+  std::vector<std::string> labels{"rl@sac",        "rl@dqn@seed2", "offset1@ppo", "rl@dqn",
+                                  "rl@ppo@seed10", "rl@ppo",       "offset1@dqn", "rl@ppo@seed2",
+                                  "oracle",        "rl@a2c"};
+  std::sort(labels.begin(), labels.end(), ReportLabelLess);
+  EXPECT_EQ(labels, (std::vector<std::string>{"offset1@dqn", "offset1@ppo", "oracle", "rl@dqn",
+                                              "rl@dqn@seed2", "rl@ppo", "rl@ppo@seed2",
+                                              "rl@ppo@seed10", "rl@sac", "rl@a2c"}));
+}
+
 TEST(ReportOrder, ScenariosKeepTheOrderOfTheRows) {
   std::vector<MetricRow> rows;
   for (const char* scenario : {"Z", "A"}) {

@@ -70,6 +70,21 @@ TEST(ScenarioParser, OverridesSetAnyField) {
   EXPECT_DOUBLE_EQ(s.uav.initial.y, 35.0);
 }
 
+TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {
+  json doc = ScenarioB();
+  ApplyOverrides(doc, AlgorithmOverrides("sac"));
+  ApplyOverrides(doc, {"agent.sac.alpha=0.1", "agent.ppo.epochs=3"});
+  const Scenario s = ParseScenario(doc);
+  EXPECT_EQ(s.agent.algorithm, "sac");
+  EXPECT_EQ(s.env.action_space, "continuous");
+  EXPECT_EQ(s.agent.sac.alpha, 0.1);
+  EXPECT_EQ(s.agent.ppo.epochs, 3);
+  EXPECT_EQ(ToJson(ParseScenario(ToJson(s))), ToJson(s));  // the sections round-trip
+  json back = ToJson(s);
+  ApplyOverrides(back, AlgorithmOverrides("ppo"));
+  EXPECT_EQ(ParseScenario(back).env.action_space, "discrete");
+}
+
 TEST(ScenarioParser, ToJsonRoundTrips) {
   const Scenario s = ParseScenario(ScenarioB());
   const Scenario again = ParseScenario(ToJson(s));
@@ -132,7 +147,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"NoUes", {"ues=[]"}, "/ues: expected a non-empty array"},
         BadInput{"SpecWithoutType", {"propagation={\"attributes\": {}}"}, "/propagation/type: is required"},
         BadInput{"SpecBadAttributeValue", {"propagation.attributes.Frequency=[1]"}, "/propagation/attributes/Frequency: expected a number, string, boolean"},
-        BadInput{"BadOverride", {"novalue"}, "--set novalue: expected path=value"}),
+        BadInput{"BadOverride", {"novalue"}, "--set novalue: expected path=value"},
+        BadInput{"UnknownAlgorithm", {"agent.algorithm=a2c"}, "/agent/algorithm: unknown value \"a2c\" (one of: dqn, ppo, sac)"},
+        BadInput{"SacOnDiscreteMoves", {"agent.algorithm=sac"}, "/agent/algorithm: sac needs env.action_space \"continuous\", not \"discrete\""},
+        BadInput{"DqnOnDisplacements", {"env.action_space=continuous"}, "/agent/algorithm: dqn needs env.action_space \"discrete\""},
+        BadInput{"UnknownActionSpace", {"env.action_space=box"}, "/env/action_space: unknown value \"box\""},
+        BadInput{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
+        BadInput{"PpoUnknownKey", {"agent.ppo.lamda=0.9"}, "/agent/ppo/lamda: unknown key \"lamda\""},
+        BadInput{"PpoMoreMinibatchesThanSteps", {"agent.ppo.minibatches=200"}, "/agent/ppo/minibatches: must not exceed rollout_steps"},
+        BadInput{"SacNegativeAlpha", {"agent.algorithm=sac", "env.action_space=continuous", "agent.sac.alpha=-1"}, "/agent/sac/alpha: must not be negative, got -1"},
+        BadInput{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
 
 }  // namespace

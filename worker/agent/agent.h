@@ -1,6 +1,7 @@
 #pragma once
 // What an RL algorithm offers the trainer; it sees only the env's spaces and transitions, so the
 // algorithms (DQN, PPO, SAC) are interchangeable behind it.
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,9 +24,9 @@ class Agent {
                                            bool /*explore*/) {
     throw std::logic_error(Algorithm() + " acts on discrete actions");
   }
-  // Learns from one transition (stores it, maybe trains). Returns the loss, or < 0 if no update.
-  // The transition is of the last Act/ActContinuous with explore.
-  virtual double Observe(Transition transition) = 0;
+  // Learns from one transition (stores it, maybe trains): the loss of the update it made, if
+  // any. The transition is of the last Act/ActContinuous with explore.
+  virtual std::optional<double> Observe(Transition transition) = 0;
   // DQN's exploration rate; 0 for the algorithms that explore by a stochastic policy.
   virtual double Epsilon() const { return 0.0; }
   virtual void Save(const std::string& directory) const = 0;

@@ -155,12 +155,12 @@ int DqnAgent::Act(const std::vector<float>& observation, const ActionMask& mask,
   return best;
 }
 
-double DqnAgent::Observe(Transition transition) {
+std::optional<double> DqnAgent::Observe(Transition transition) {
   Impl& m = *impl_;
   m.reward_moments.Add(transition.reward);
   m.replay.Add(std::move(transition));
   ++m.steps;
-  double loss = -1.0;
+  std::optional<double> loss;
   if (m.steps >= m.spec.warmup_steps &&
       m.replay.Size() >= static_cast<std::size_t>(std::max<std::int64_t>(m.spec.batch_size, 1))) {
     loss = m.Learn();

@@ -14,7 +14,7 @@ class DqnAgent : public Agent {
   DqnAgent(const AgentSpec& spec, int observation_dim, int action_count);
   ~DqnAgent() override;
   int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) override;
-  double Observe(Transition transition) override;
+  std::optional<double> Observe(Transition transition) override;
   double Epsilon() const override;
   std::string Algorithm() const override;
   void Save(const std::string& directory) const override;

@@ -103,6 +103,7 @@ struct PpoAgent::Impl {
     return {advantages, advantages + values};
   }
 
+  // The mean loss of the minibatch updates.
   double Learn() {
     const torch::Tensor obs = Observations(false);
     const auto [advantages, returns] = AdvantagesAndReturns(obs, Observations(true));
@@ -152,7 +153,7 @@ struct PpoAgent::Impl {
     rollout.clear();
     masks.clear();
     log_probs.clear();
-    return updates > 0 ? loss_sum / updates : -1.0;
+    return loss_sum / std::max(updates, 1);
   }
 };
 
@@ -208,14 +209,14 @@ int PpoAgent::Act(const std::vector<float>& observation, const ActionMask& mask,
   return action;
 }
 
-double PpoAgent::Observe(Transition transition) {
+std::optional<double> PpoAgent::Observe(Transition transition) {
   Impl& m = *impl_;
   m.reward_moments.Add(transition.reward);
   m.rollout.push_back(std::move(transition));
   m.masks.push_back(std::move(m.pending_mask));
   m.log_probs.push_back(m.pending_log_prob);
   if (static_cast<int>(m.rollout.size()) < m.ppo.rollout_steps)
-    return -1.0;
+    return std::nullopt;
   return m.Learn();
 }
 

@@ -192,15 +192,15 @@ std::vector<float> SacAgent::ActContinuous(const std::vector<float>& observation
   return action;
 }
 
-double SacAgent::Observe(Transition transition) {
+std::optional<double> SacAgent::Observe(Transition transition) {
   Impl& m = *impl_;
   if (static_cast<int>(transition.continuous_action.size()) != m.action_dim)
     throw std::invalid_argument("a SAC transition needs its continuous action");
   m.reward_moments.Add(transition.reward);
   m.replay.Add(std::move(transition));
   ++m.steps;
-  if (m.steps < m.sac.warmup_steps || m.replay.Size() < 2)
-    return -1.0;
+  if (m.steps < m.sac.warmup_steps || m.steps % m.sac.update_interval != 0)
+    return std::nullopt;
   return m.Learn();
 }
 

@@ -20,7 +20,7 @@ class SacAgent : public Agent {
   // explore: uniform during agent.sac.warmup_steps, then a sample of the policy; otherwise
   // tanh of the policy's mean.
   std::vector<float> ActContinuous(const std::vector<float>& observation, bool explore) override;
-  double Observe(Transition transition) override;
+  std::optional<double> Observe(Transition transition) override;
   void Save(const std::string& directory) const override;
   void Load(const std::string& directory) override;
   double Alpha() const;  // the entropy temperature now

@@ -44,10 +44,9 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
       t.terminal = step.terminated;
       t.next_mask = next_mask;
       t.episode_end = step.terminated || step.truncated;
-      const double loss = agent.Observe(std::move(t));
-      if (loss >= 0) {
+      if (const std::optional<double> loss = agent.Observe(std::move(t))) {
         ++record.updates;
-        loss_sum += loss;
+        loss_sum += *loss;
       }
     }
     record.total_reward += step.reward;
