@@ -1,0 +1,53 @@
+"""rlpos: obstacle-aware UAV positioning on ns-3, for Python RL code.
+
+    import rlpos
+    env = rlpos.make("campaigns/scenarios/b.json", fidelity="analytic", seed=1,
+                     overrides={"env.step": 5})
+    observation, info = env.reset(seed=1)
+    observation, reward, terminated, truncated, info = env.step(env.action_space.sample())
+
+With gymnasium importable the env is a gymnasium.Env, registered as "rlpos/UavPositioning-v0".
+One env (or oracle search, or evaluation) at a time per process: ns-3's simulator is global.
+"""
+import json
+
+from . import _rlpos
+from .env import UavPositioningEnv, override_texts
+from .spaces import GYMNASIUM, Box, Discrete
+
+__all__ = ["make", "oracle", "evaluate", "UavPositioningEnv", "Discrete", "Box", "ENV_ID"]
+
+ENV_ID = "rlpos/UavPositioning-v0"
+
+
+def make(scenario, fidelity=None, seed=None, overrides=None):
+    """The env of a scenario file; `overrides` are --set's, as {"path": value}."""
+    return UavPositioningEnv(scenario, fidelity=fidelity, seed=seed, overrides=overrides)
+
+
+def oracle(scenario, overrides=None, grid_step=None, packet_candidates=3, packet_duration=2.0,
+           top=10):
+    """The oracle positioner: every point of the zone grid (the env's move step, 1 m for
+    continuous actions, or `grid_step`) scored with the analytic model, the best
+    `packet_candidates` re-scored at packet level over `packet_duration` s. Returns the best
+    `top` (None: all) as dicts, best first: position, analytic_reward, packet_reward (None
+    where not re-scored), n_los, throughput_mbps."""
+    if top is not None and (not isinstance(top, int) or top < 1):
+        raise ValueError("top: expected a positive integer or None, got %r" % (top,))
+    return _rlpos.oracle(str(scenario), override_texts(overrides), float(grid_step or 0.0),
+                         int(packet_candidates), float(packet_duration), top or 0)
+
+
+def evaluate(scenario, position, run=1, duration=None, overrides=None):
+    """Packet-level evaluation of a UAV position (rlpos-sim eval): a dict with the aggregate
+    and per-UE throughput, delay and loss, nLoS, ... of RngRun `run` over the scenario's
+    simulation.duration, or `duration` s."""
+    texts = override_texts(overrides, **{"simulation.run": run, "simulation.duration": duration})
+    return json.loads(_rlpos.evaluate(str(scenario), texts, [float(v) for v in position]))
+
+
+if GYMNASIUM:
+    import gymnasium
+
+    if ENV_ID not in gymnasium.envs.registry:
+        gymnasium.register(id=ENV_ID, entry_point="rlpos.env:UavPositioningEnv")

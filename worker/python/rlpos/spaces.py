@@ -1,0 +1,79 @@
+"""Discrete and Box spaces: Gymnasium's own when gymnasium is importable, else these two, which
+offer the same attributes and methods (n; low, high, shape, dtype; sample, contains, seed)."""
+import numpy as np
+
+try:
+    import gymnasium
+
+    GYMNASIUM = True
+except ImportError:  # everything works the same without it
+    gymnasium = None
+    GYMNASIUM = False
+
+
+class _Space:
+    def __init__(self, shape, dtype, seed=None):
+        self.shape = shape
+        self.dtype = np.dtype(dtype)
+        self.np_random = np.random.default_rng(seed)
+
+    def seed(self, seed=None):
+        self.np_random = np.random.default_rng(seed)
+        return [seed]
+
+
+class FallbackDiscrete(_Space):
+    """{0, ..., n - 1}."""
+
+    def __init__(self, n, seed=None):
+        super().__init__((), np.int64, seed)
+        self.n = int(n)
+        self.start = 0
+
+    def sample(self, mask=None):
+        if mask is None:
+            return np.int64(self.np_random.integers(self.n))
+        allowed = np.flatnonzero(np.asarray(mask))
+        return np.int64(self.np_random.choice(allowed)) if allowed.size else np.int64(0)
+
+    def contains(self, x):
+        if isinstance(x, (bool, np.bool_)):
+            return False
+        if isinstance(x, (int, np.integer)):
+            return 0 <= int(x) < self.n
+        if isinstance(x, np.ndarray) and x.shape == () and np.issubdtype(x.dtype, np.integer):
+            return 0 <= int(x) < self.n
+        return False
+
+    def __repr__(self):
+        return "Discrete(%d)" % self.n
+
+
+class FallbackBox(_Space):
+    """The product of the intervals [low[i], high[i]]."""
+
+    def __init__(self, low, high, dtype=np.float32, seed=None):
+        low = np.asarray(low, dtype=dtype)
+        high = np.asarray(high, dtype=dtype)
+        super().__init__(low.shape, dtype, seed)
+        self.low, self.high = low, high
+
+    def sample(self, mask=None):
+        return self.np_random.uniform(self.low, self.high).astype(self.dtype)
+
+    def contains(self, x):
+        x = np.asarray(x)
+        return (x.shape == self.shape and np.issubdtype(x.dtype, np.number)
+                and bool(np.all(np.isfinite(x))) and bool(np.all(x >= self.low))
+                and bool(np.all(x <= self.high)))
+
+    def __repr__(self):
+        return "Box(%s, %s, %s, %s)" % (self.low, self.high, self.shape, self.dtype)
+
+
+if GYMNASIUM:
+    Discrete = gymnasium.spaces.Discrete
+    Box = gymnasium.spaces.Box
+else:
+    Discrete = FallbackDiscrete
+    Box = FallbackBox

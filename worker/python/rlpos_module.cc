@@ -1,0 +1,244 @@
+// _rlpos: the C++ side of the Python package rlpos (worker/python/rlpos/). The env runs in the
+// calling process, with ns-3, and without the GIL while ns-3 or the analytic model works.
+// The Gymnasium surface (spaces, numpy arrays, registration) is the package's Python part.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+
+#include "config/config_error.h"
+#include "environment/uav_network.h"
+#include "gym/uav_positioning_env.h"
+#include "positioners/positioners.h"
+#include "sim/scenario_loading.h"
+
+namespace py = pybind11;
+
+namespace rlpos::python {
+namespace {
+
+// ns-3's simulator, node list and building list are process-wide, and each UavNetwork starts
+// from Simulator::Destroy: one user of them at a time (an env, an oracle search, an evaluation).
+class Ns3Lease {
+ public:
+  explicit Ns3Lease(const char* user) {
+    std::lock_guard<std::mutex> lock(Mutex());
+    if (Holder()) {
+      throw std::runtime_error(std::string("rlpos: cannot start ") + user + ": " + Holder() +
+                               " holds ns-3 (one per process: its simulator and building list "
+                               "are global); close() it first, or use another process");
+    }
+    Holder() = user;
+  }
+  ~Ns3Lease() {
+    std::lock_guard<std::mutex> lock(Mutex());
+    Holder() = nullptr;
+  }
+  Ns3Lease(const Ns3Lease&) = delete;
+  Ns3Lease& operator=(const Ns3Lease&) = delete;
+
+ private:
+  static std::mutex& Mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static const char*& Holder() {
+    static const char* holder = nullptr;
+    return holder;
+  }
+};
+
+// The scenario as the CLI loads it; a bad file, key or value is a ValueError with the CLI's
+// one-line message ("<file>: <JSON path>: <problem>").
+Scenario Load(const std::string& file, const std::vector<std::string>& overrides) {
+  try {
+    return LoadScenario(file, overrides);
+  } catch (const ConfigError& e) {
+    const bool cli = e.path().rfind("--", 0) == 0;
+    throw py::value_error((cli ? "" : file + ": ") + e.describe());
+  }
+}
+
+py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
+  py::dict d;
+  d["position"] = py::make_tuple(info.position.x, info.position.y, info.position.z);
+  d["n_los"] = info.n_los;
+  d["throughput_mbps"] = info.throughput_mbps;
+  d["demands_met"] = info.demands_met;
+  d["snr_db"] = info.snr_db;
+  if (!mask.empty())
+    d["action_mask"] = std::vector<int>(mask.begin(), mask.end());
+  return d;
+}
+
+class PyEnv {
+ public:
+  PyEnv(const std::string& file, const std::vector<std::string>& overrides)
+      : lease_(std::make_unique<Ns3Lease>("an env")) {
+    env_ = std::make_unique<UavPositioningEnv>(Load(file, overrides));
+  }
+
+  const Scenario& scenario() const { return Open().scenario(); }
+  int ActionCount() const { return Open().ActionSpace().n; }
+  int StepsPerEpisode() const { return Open().StepsPerEpisode(); }
+  std::pair<std::vector<double>, std::vector<double>> ActionBounds() const {
+    const BoxSpace box = Open().ContinuousActionSpace();
+    return {box.low, box.high};
+  }
+  std::pair<std::vector<double>, std::vector<double>> ObservationBounds() const {
+    const BoxSpace box = Open().ObservationSpace();
+    return {box.low, box.high};
+  }
+
+  py::tuple Reset(std::uint64_t seed) {
+    std::vector<double> obs;
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      obs = Open().Reset(seed);
+    }
+    return py::make_tuple(obs, InfoDict(Open().LastInfo(), Open().ValidActions()));
+  }
+
+  py::tuple Step(int action) {
+    return Finish(Run([&](UavPositioningEnv& env) { return env.Step(action); }));
+  }
+  py::tuple StepContinuous(const std::vector<double>& displacement) {
+    return Finish(Run([&](UavPositioningEnv& env) { return env.StepContinuous(displacement); }));
+  }
+
+  // Benchmarks: `steps` steps of a fixed action sequence in C++, from a reset with `seed`;
+  // returns the wall seconds of the steps alone.
+  double TimeSteps(const std::vector<int>& actions, int steps, std::uint64_t seed) {
+    if (actions.empty())
+      throw py::value_error("TimeSteps needs at least one action");
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(mutex_);
+    UavPositioningEnv& env = Open();
+    env.Reset(seed);
+    const auto started = std::chrono::steady_clock::now();
+    for (int i = 0; i < steps; ++i) {
+      const StepResult r = env.Step(actions[static_cast<std::size_t>(i) % actions.size()]);
+      if (r.truncated || r.terminated)
+        env.Reset(seed);
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  }
+
+  void Close() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    env_.reset();
+    lease_.reset();
+  }
+  bool closed() const { return env_ == nullptr; }
+
+ private:
+  UavPositioningEnv& Open() const {
+    if (!env_)
+      throw std::runtime_error("rlpos: the env is closed");
+    return *env_;
+  }
+
+  template <typename F>
+  StepResult Run(F step) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(mutex_);
+    try {
+      return step(Open());
+    } catch (const std::out_of_range& e) {
+      throw py::value_error(e.what());  // an action outside the action space
+    }
+  }
+
+  py::tuple Finish(const StepResult& r) {
+    return py::make_tuple(r.observation, r.reward, r.terminated, r.truncated,
+                          InfoDict(r.info, Open().ValidActions()));
+  }
+
+  std::unique_ptr<Ns3Lease> lease_;
+  std::unique_ptr<UavPositioningEnv> env_;
+  std::mutex mutex_;  // the GIL is released while stepping: one step at a time per env
+};
+
+py::list Oracle(const std::string& file, const std::vector<std::string>& overrides,
+                double grid_step, int packet_candidates, double packet_duration,
+                std::size_t top) {
+  const Scenario s = Load(file, overrides);
+  OracleOptions options;
+  options.grid_step = grid_step;
+  options.packet_candidates = packet_candidates;
+  options.packet_duration = packet_duration;
+  std::vector<ScoredPosition> ranked;
+  {
+    Ns3Lease lease("an oracle search");
+    py::gil_scoped_release release;
+    ranked = OracleSearch(s, options);
+  }
+  py::list out;
+  if (top > 0 && ranked.size() > top)
+    ranked.resize(top);
+  for (const auto& c : ranked) {
+    py::dict d;
+    d["position"] = py::make_tuple(c.position.x, c.position.y, c.position.z);
+    d["analytic_reward"] = c.analytic_reward;
+    d["packet_reward"] = c.packet_reward ? py::object(py::float_(*c.packet_reward)) : py::none();
+    d["n_los"] = c.n_los;
+    d["throughput_mbps"] = c.throughput_mbps;
+    out.append(d);
+  }
+  return out;
+}
+
+std::string Evaluate(const std::string& file, const std::vector<std::string>& overrides,
+                     const std::vector<double>& position) {
+  const Scenario s = Load(file, overrides);
+  if (position.size() != 3)
+    throw py::value_error("position: expected (x, y, z)");
+  const Vec3 p{position[0], position[1], position[2]};
+  try {
+    CheckUavPosition(s, p, "position");
+  } catch (const ConfigError& e) {
+    throw py::value_error(e.describe());
+  }
+  RunMetrics metrics;
+  {
+    Ns3Lease lease("an evaluation");
+    py::gil_scoped_release release;
+    metrics = EvaluatePosition(s, p);
+  }
+  nlohmann::json out = ToJson(metrics);
+  out["scenario"] = s.name;
+  return out.dump();  // the Python side parses it: the same JSON as rlpos-sim eval --json
+}
+
+}  // namespace
+}  // namespace rlpos::python
+
+PYBIND11_MODULE(_rlpos, m) {
+  using namespace rlpos::python;
+  m.doc() = "C++ side of rlpos: the UAV positioning env, the oracle and packet-level evaluation";
+  py::class_<PyEnv>(m, "Env")
+      .def(py::init<const std::string&, const std::vector<std::string>&>(), py::arg("scenario"),
+           py::arg("overrides"))
+      .def_property_readonly("action_count", &PyEnv::ActionCount)
+      .def_property_readonly("action_bounds", &PyEnv::ActionBounds)
+      .def_property_readonly("observation_bounds", &PyEnv::ObservationBounds)
+      .def_property_readonly("steps_per_episode", &PyEnv::StepsPerEpisode)
+      .def_property_readonly("scenario_name", [](const PyEnv& e) { return e.scenario().name; })
+      .def_property_readonly("fidelity", [](const PyEnv& e) { return e.scenario().env.fidelity; })
+      .def_property_readonly("agent_seed", [](const PyEnv& e) { return e.scenario().agent.seed; })
+      .def_property_readonly("actions", [](const PyEnv& e) { return e.scenario().env.actions; })
+      .def_property_readonly("closed", &PyEnv::closed)
+      .def("reset", &PyEnv::Reset, py::arg("seed"))
+      .def("step", &PyEnv::Step, py::arg("action"))
+      .def("step_continuous", &PyEnv::StepContinuous, py::arg("displacement"))
+      .def("time_steps", &PyEnv::TimeSteps, py::arg("actions"), py::arg("steps"),
+           py::arg("seed"))
+      .def("close", &PyEnv::Close);
+  m.def("oracle", &Oracle, py::arg("scenario"), py::arg("overrides"), py::arg("grid_step"),
+        py::arg("packet_candidates"), py::arg("packet_duration"), py::arg("top"));
+  m.def("evaluate", &Evaluate, py::arg("scenario"), py::arg("overrides"), py::arg("position"));
+}
