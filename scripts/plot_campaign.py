@@ -65,7 +65,7 @@ def plot_learning(plt, curves, title, path):
     reward.set_title(title)
     reward.grid(True, alpha=0.3)
     reward.legend(fontsize="small")
-    loss.set_ylabel("Mean TD loss")
+    loss.set_ylabel("Mean loss (DQN: TD, PPO: clipped objective, SAC: Q)")
     loss.set_yscale("log")
     loss.set_xlabel("Training episode")
     loss.grid(True, alpha=0.3)
