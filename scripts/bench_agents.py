@@ -7,7 +7,7 @@ algorithm's action space: the move step for dqn and ppo, 1 m for sac's displacem
 one row per run and a summary per algorithm and scenario. Asserts nothing.
 
   scripts/bench_agents.py [--build DIR] [--seeds 1-10] [--algorithms dqn,ppo,sac]
-                          [--scenarios a,b,c] [--target 0.95]
+                          [--scenarios a,b,c] [--target 0.95] [--set PATH=VALUE ...]
 """
 import argparse
 import json
@@ -54,6 +54,8 @@ def main():
     parser.add_argument("--algorithms", default="dqn,ppo,sac")
     parser.add_argument("--scenarios", default="a,b,c")
     parser.add_argument("--target", type=float, default=0.95)
+    parser.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
+                        help="a scenario override for every training, e.g. agent.ppo.epochs=4")
     args = parser.parse_args()
     sim = os.path.join(args.build, "bin", "rlpos-sim")
     seeds = seeds_of(args.seeds)
@@ -74,9 +76,10 @@ def main():
                 for seed in seeds:
                     out = os.path.join(work, "%s-%s-%d" % (name, algorithm, seed))
                     started = time.monotonic()
+                    overrides = [a for o in args.set for a in ("--set", o)]
                     result = run_json([sim, "train", "--scenario", scenario, "--fidelity",
                                        "analytic", "--algorithm", algorithm, "--seed", str(seed),
-                                       "--out", out, "--json"])
+                                       "--out", out, "--json"] + overrides)
                     wall = time.monotonic() - started
                     row = {"algorithm": algorithm, "scenario": name, "seed": seed,
                            "reward": result["reward"], "oracle": oracles[space],

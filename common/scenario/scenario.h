@@ -119,8 +119,8 @@ struct EnvSpec {
 };
 
 // PPO (clipped objective, GAE) on the discrete moves. Defaults: the well-known Atari/CleanRL set,
-// except the learning rate, gamma and epochs: that set is tuned for millions of steps, our
-// training is 10 episodes of 1,000 (README, RL).
+// except the learning rate, gamma, rollout and epochs: that set is tuned for millions of steps,
+// our training is 10 episodes of 1,000 (README, PPO and SAC).
 struct PpoSpec {
   double learning_rate = 1e-3;
   double gamma = 0.9;
@@ -129,7 +129,7 @@ struct PpoSpec {
   double entropy_coefficient = 0.01;
   double value_coefficient = 0.5;
   double max_grad_norm = 0.5;
-  int rollout_steps = 128;  // transitions per update
+  int rollout_steps = 256;  // transitions per update
   int epochs = 10;          // passes over a rollout
   int minibatches = 4;      // per pass
 };

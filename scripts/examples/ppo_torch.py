@@ -34,7 +34,7 @@ def main():
     rng = np.random.default_rng(args.seed)
     # Hyperparameters: rlpos's own PPO defaults (README, PPO and SAC).
     lr, gamma, lam, clip, ent_coef, vf_coef = 1e-3, 0.9, 0.95, 0.2, 0.01, 0.5
-    rollout, epochs, minibatches = 128, 10, 4
+    rollout, epochs, minibatches = 256, 10, 4
 
     # The oracle first: one user of ns-3 at a time per process.
     best = rlpos.oracle(args.scenario, overrides={"env.fidelity": "analytic"},
