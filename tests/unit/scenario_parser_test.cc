@@ -154,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"UnknownActionSpace", {"env.action_space=box"}, "/env/action_space: unknown value \"box\""},
         BadInput{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
         BadInput{"PpoUnknownKey", {"agent.ppo.lamda=0.9"}, "/agent/ppo/lamda: unknown key \"lamda\""},
-        BadInput{"PpoMoreMinibatchesThanSteps", {"agent.ppo.minibatches=200"}, "/agent/ppo/minibatches: must not exceed rollout_steps"},
+        BadInput{"PpoMoreMinibatchesThanSteps", {"agent.ppo.minibatches=300"}, "/agent/ppo/minibatches: must not exceed rollout_steps"},
         BadInput{"SacNegativeAlpha", {"agent.algorithm=sac", "env.action_space=continuous", "agent.sac.alpha=-1"}, "/agent/sac/alpha: must not be negative, got -1"},
         BadInput{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
