@@ -94,13 +94,13 @@ class PyEnv {
   }
 
   py::tuple Reset(std::uint64_t seed) {
-    std::vector<double> obs;
-    {
-      py::gil_scoped_release release;
-      std::lock_guard<std::mutex> lock(mutex_);
-      obs = Open().Reset(seed);
-    }
-    return py::make_tuple(obs, InfoDict(Open().LastInfo(), Open().ValidActions()));
+    const Outcome o = Run([&](UavPositioningEnv& env) {
+      StepResult r;
+      r.observation = env.Reset(seed);
+      r.info = env.LastInfo();
+      return r;
+    });
+    return py::make_tuple(o.result.observation, InfoDict(o.result.info, o.mask));
   }
 
   py::tuple Step(int action) {
@@ -142,20 +142,30 @@ class PyEnv {
     return *env_;
   }
 
+  struct Outcome {
+    StepResult result;
+    ActionMask mask;  // the actions allowed after it
+  };
+
+  // Runs `step` on the env without the GIL, under the env's lock, with what Python reads of the
+  // env's state afterwards taken under the same lock.
   template <typename F>
-  StepResult Run(F step) {
+  Outcome Run(F step) {
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(mutex_);
     try {
-      return step(Open());
+      Outcome o{step(Open()), {}};
+      o.mask = Open().ValidActions();
+      return o;
     } catch (const std::out_of_range& e) {
       throw py::value_error(e.what());  // an action outside the action space
     }
   }
 
-  py::tuple Finish(const StepResult& r) {
+  static py::tuple Finish(const Outcome& o) {
+    const StepResult& r = o.result;
     return py::make_tuple(r.observation, r.reward, r.terminated, r.truncated,
-                          InfoDict(r.info, Open().ValidActions()));
+                          InfoDict(r.info, o.mask));
   }
 
   std::unique_ptr<Ns3Lease> lease_;
