@@ -135,7 +135,9 @@ struct PpoSpec {
 };
 
 // SAC (twin Q, tanh-squashed Gaussian policy, automatic temperature) on the continuous action
-// space. Defaults: Haarnoja et al. 2018 / CleanRL's, unchanged.
+// space. Defaults: Haarnoja et al. 2018 / CleanRL's, except the warm-up (1,000 random steps, not
+// 5,000: half of a 10,000-step training would be random). Its replay holds
+// agent.replay_capacity transitions.
 struct SacSpec {
   double policy_learning_rate = 3e-4;
   double q_learning_rate = 3e-4;
