@@ -52,6 +52,15 @@ DemandCheck CheckDemand(const PhyProfile& phy, double demand_mbps, double snr_db
   return check;
 }
 
+double JainIndex(const std::vector<double>& values) {
+  double sum = 0.0, squares = 0.0;
+  for (double v : values) {
+    sum += v;
+    squares += v * v;
+  }
+  return sum > 0.0 ? sum * sum / (static_cast<double>(values.size()) * squares) : kNaN;
+}
+
 RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64_t run,
                      const std::vector<FlowAccumulator>& flows, std::vector<UeMetrics> ues) {
   RunMetrics m;
@@ -78,6 +87,12 @@ RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64
     m.demands_met += ue.demand.met ? 1 : 0;
     m.min_snr_db = std::min(m.min_snr_db, ue.snr_db);
   }
+  std::vector<double> throughputs;
+  for (const auto& ue : ues)
+    throughputs.push_back(ue.throughput_mbps);
+  m.worst_ue_throughput_mbps =
+      throughputs.empty() ? 0.0 : *std::min_element(throughputs.begin(), throughputs.end());
+  m.jain_fairness = JainIndex(throughputs);
   m.aggregate_throughput_mbps = bytes * 8.0 / window.Length() / 1e6;
   m.mean_delay_ms = received == 0 ? kNaN : delay_sum / received * 1e3;
   m.loss_ratio = sent == 0 ? kNaN : 1.0 - static_cast<double>(delivered) / sent;
@@ -111,6 +126,8 @@ nlohmann::json ToJson(const RunMetrics& m) {
           {"n_ues", m.ues.size()},
           {"demands_met", m.demands_met},
           {"min_snr_db", Number(m.min_snr_db)},
+          {"worst_ue_throughput_mbps", Number(m.worst_ue_throughput_mbps)},
+          {"jain_fairness", Number(m.jain_fairness)},
           {"ues", ues}};
 }
 

@@ -7,7 +7,10 @@
 // - loss: share of the packets sent inside the window that never arrived (late arrivals after
 //   the window still count as arrived);
 // - nLoS: UEs whose link to the UAV is geometrically clear of every building;
-// - demand check: the MCS a UE's demand needs -> that MCS's minimum SNR -> met if SNR >= it.
+// - demand check: the MCS a UE's demand needs -> that MCS's minimum SNR -> met if SNR >= it;
+// - worst UE: the lowest per-UE throughput; Jain's fairness index over the per-UE throughputs
+//   x_i: (sum x_i)^2 / (n sum x_i^2), from 1/n (one UE gets everything) to 1 (all equal);
+//   undefined (NaN) when no UE received anything.
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -80,8 +83,13 @@ struct RunMetrics {
   int n_los = 0;
   int demands_met = 0;
   double min_snr_db = 0.0;
+  double worst_ue_throughput_mbps = 0.0;
+  double jain_fairness = 0.0;
   std::vector<UeMetrics> ues;
 };
+
+// Jain's fairness index of `values` (NaN when they sum to 0 or there are none).
+double JainIndex(const std::vector<double>& values);
 
 // Aggregates per-flow accumulators (one per UE, same order as `ues`) into the run's metrics.
 RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64_t run,

@@ -56,6 +56,10 @@ EvalResult ParseEvalResult(const json& result) {
   r.mean_delay_ms = NullableNumber(result, "mean_delay_ms");
   r.loss_ratio = NullableNumber(result, "loss_ratio");
   r.min_snr_db = NullableNumber(result, "min_snr_db");
+  if (result.contains("worst_ue_throughput_mbps"))
+    r.worst_ue_throughput_mbps = NullableNumber(result, "worst_ue_throughput_mbps");
+  if (result.contains("jain_fairness"))
+    r.jain_fairness = NullableNumber(result, "jain_fairness");
   r.n_los = Count(result, "n_los");
   r.n_ues = Count(result, "n_ues");
   r.demands_met = Count(result, "demands_met");
@@ -68,6 +72,13 @@ EvalResult ParseEvalResult(const json& result) {
   }
   if (r.loss_ratio && (*r.loss_ratio < 0 || *r.loss_ratio > 1)) {
     throw std::invalid_argument("result \"loss_ratio\" is not in [0, 1]");
+  }
+  if (r.worst_ue_throughput_mbps &&
+      (*r.worst_ue_throughput_mbps < 0 || *r.worst_ue_throughput_mbps > r.aggregate_throughput_mbps)) {
+    throw std::invalid_argument("result \"worst_ue_throughput_mbps\" is out of range");
+  }
+  if (r.jain_fairness && (*r.jain_fairness <= 0 || *r.jain_fairness > 1)) {
+    throw std::invalid_argument("result \"jain_fairness\" is not in (0, 1]");
   }
   if (r.n_los > r.n_ues || r.demands_met > r.n_ues) {
     throw std::invalid_argument("result counts more UEs in LoS or served than \"n_ues\"");

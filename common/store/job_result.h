@@ -14,6 +14,8 @@ struct EvalResult {
   Vec3 position;
   double aggregate_throughput_mbps = 0;
   std::optional<double> mean_delay_ms, loss_ratio, min_snr_db;
+  // Absent from results of builds before schema 9; null when no UE received anything.
+  std::optional<double> worst_ue_throughput_mbps, jain_fairness;
   int n_los = 0, n_ues = 0, demands_met = 0;
   std::optional<std::uint64_t> run;
 };

@@ -416,7 +416,8 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
     db_->Prepare(
            "INSERT INTO metrics (job_id, campaign_id, scenario, label, rng_run, "
            "aggregate_throughput_mbps, mean_delay_ms, loss_ratio, n_los, n_ues, demands_met, "
-           "min_snr_db, x, y, z) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+           "min_snr_db, x, y, z, worst_ue_throughput_mbps, jain_fairness) "
+           "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
         .Bind(job_id)
         .Bind(campaign_id)
         .Bind(scenario)
@@ -432,6 +433,8 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         .Bind(eval.position.x)
         .Bind(eval.position.y)
         .Bind(eval.position.z)
+        .Bind(eval.worst_ue_throughput_mbps)
+        .Bind(eval.jain_fairness)
         .Run();
   } else {
     // Bind each dependent's position now: the row then shows exactly what it will run. A chunk
@@ -764,7 +767,8 @@ std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
 std::vector<MetricRow> ResultsStore::Metrics(const std::string& campaign_id) {
   Statement select = db_->Prepare(
       "SELECT job_id, scenario, positioner, rng_run, throughput_mbps, delay_ms, loss_ratio, "
-      "min_snr_db, n_los, n_ues, demands_met, x, y, z FROM v_eval_runs v "
+      "min_snr_db, n_los, n_ues, demands_met, x, y, z, worst_ue_mbps, jain_fairness "
+      "FROM v_eval_runs v "
       "WHERE campaign_id = ? "
       // Scenarios in campaign order (their first job), not by name.
       "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
@@ -787,6 +791,8 @@ std::vector<MetricRow> ResultsStore::Metrics(const std::string& campaign_id) {
     m.x = select.Double(11);
     m.y = select.Double(12);
     m.z = select.Double(13);
+    m.worst_ue_throughput_mbps = select.OptionalDouble(14);
+    m.jain_fairness = select.OptionalDouble(15);
     out.push_back(std::move(m));
   }
   return out;

@@ -109,6 +109,7 @@ struct MetricRow {
   std::optional<double> mean_delay_ms, loss_ratio, min_snr_db;  // null: no packet received
   int n_los = 0, n_ues = 0, demands_met = 0;
   double x = 0, y = 0, z = 0;
+  std::optional<double> worst_ue_throughput_mbps, jain_fairness;  // null: recorded before v9
 };
 
 // A worker as the coordinator last saw it (DDS liveliness decides alive/lost).

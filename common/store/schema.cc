@@ -203,6 +203,23 @@ LEFT JOIN jobs j ON j.campaign_id = c.id
 GROUP BY c.id;
 )sql";
 
+// Version 9: each eval's worst UE throughput and Jain's fairness index over its UEs'
+// throughputs (NULL for runs recorded before, and where no UE received anything).
+constexpr const char* kVersion9 = R"sql(
+ALTER TABLE metrics ADD COLUMN worst_ue_throughput_mbps REAL;
+ALTER TABLE metrics ADD COLUMN jain_fairness REAL;
+DROP VIEW v_eval_runs;
+CREATE VIEW v_eval_runs AS
+SELECT c.id AS campaign_id, c.name AS campaign, m.scenario, m.label AS positioner, m.rng_run,
+       m.aggregate_throughput_mbps AS throughput_mbps, m.mean_delay_ms AS delay_ms,
+       m.loss_ratio, m.n_los, m.n_ues, m.demands_met, m.min_snr_db, m.x, m.y, m.z,
+       m.job_id, datetime(j.finished_at, 'unixepoch') AS finished_utc,
+       m.worst_ue_throughput_mbps AS worst_ue_mbps, m.jain_fairness
+FROM metrics m
+JOIN campaigns c ON c.id = m.campaign_id
+JOIN jobs j ON j.id = m.job_id;
+)sql";
+
 void ConvertArgvColumns(Database& db) {
   struct Row {
     std::string id;
@@ -246,7 +263,8 @@ const std::vector<Migration>& Migrations() {
                                                  {5, kVersion5, nullptr, nullptr},
                                                  {6, kVersion6, nullptr, nullptr},
                                                  {7, kVersion7, nullptr, nullptr},
-                                                 {8, kVersion8, nullptr, nullptr}};
+                                                 {8, kVersion8, nullptr, nullptr},
+                                                 {9, kVersion9, nullptr, nullptr}};
   return migrations;
 }
 

@@ -13,7 +13,7 @@ PositionerSummary Summarize(const RunGroup& group) {
   s.scenario = group.scenario;
   s.positioner = group.label;
   s.runs = static_cast<int>(group.runs.size());
-  std::vector<double> throughput, delay, nlos_ratio, demands_met, ues;
+  std::vector<double> throughput, delay, nlos_ratio, demands_met, ues, worst_ue, jain;
   for (const MetricRow* run : group.runs) {
     throughput.push_back(run->aggregate_throughput_mbps);
     if (run->mean_delay_ms) {
@@ -25,6 +25,10 @@ PositionerSummary Summarize(const RunGroup& group) {
       nlos_ratio.push_back(static_cast<double>(run->n_los) / run->n_ues);
     demands_met.push_back(run->demands_met);
     ues.push_back(run->n_ues);
+    if (run->worst_ue_throughput_mbps)
+      worst_ue.push_back(*run->worst_ue_throughput_mbps);
+    if (run->jain_fairness)
+      jain.push_back(*run->jain_fairness);
   }
   const ConfidenceInterval throughput_ci = MeanConfidenceInterval(throughput);
   s.throughput_mean_mbps = throughput_ci.mean;
@@ -40,6 +44,10 @@ PositionerSummary Summarize(const RunGroup& group) {
     s.nlos_ratio_mean = Mean(nlos_ratio);
   s.demands_met_mean = Mean(demands_met);
   s.ues_mean = Mean(ues);
+  if (!worst_ue.empty())
+    s.worst_ue_mean_mbps = Mean(worst_ue);
+  if (!jain.empty())
+    s.jain_mean = Mean(jain);
   return s;
 }
 

@@ -26,6 +26,9 @@ struct PositionerSummary {
   double nlos_ratio_mean = std::numeric_limits<double>::quiet_NaN();  // mean of n_los / n_ues
   double demands_met_mean = 0;  // mean count of UEs whose demand is met
   double ues_mean = 0;          // mean n_ues (the same in every run of a scenario)
+  // Means over the runs that have them (none recorded before schema 9 have).
+  std::optional<double> worst_ue_mean_mbps;  // the worst UE's throughput
+  std::optional<double> jain_mean;           // Jain's fairness index over the UEs' throughputs
   // Change of the means against the same scenario's "baseline" in %
   // (100 * (value - baseline) / |baseline|): absent when the scenario has no baseline runs (or
   // either side has no delay); NaN when the baseline is 0.

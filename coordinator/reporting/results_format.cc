@@ -22,8 +22,8 @@ const std::vector<Column>& TableColumns() {
       {"scenario", true},        {"positioner", true},   {"runs", false},
       {"median Mbit/s", false},  {"mean Mbit/s", false}, {"ci95 Mbit/s", false},
       {"delay ms", false},       {"ci95 ms", false},     {"no delay", false},
-      {"nLoS/N", false},         {"demands met", false}, {"thr vs base %", false},
-      {"delay vs base %", false}};
+      {"nLoS/N", false},         {"demands met", false}, {"worst UE Mbit/s", false},
+      {"Jain", false},           {"thr vs base %", false}, {"delay vs base %", false}};
   return columns;
 }
 
@@ -57,6 +57,8 @@ std::vector<std::string> TableRow(const PositionerSummary& s) {
           std::to_string(s.delay_null_runs),
           Fixed(s.nlos_ratio_mean, 2),
           Fixed(s.demands_met_mean, 1) + "/" + Compact(s.ues_mean),
+          Fixed(s.worst_ue_mean_mbps, 2),
+          Fixed(s.jain_mean, 3),
           Fixed(s.throughput_change_pct, 1, true),
           Fixed(s.delay_change_pct, 1, true)};
 }
@@ -108,6 +110,8 @@ const std::vector<Field>& Fields() {
       {"nlos_ratio_mean", [](const S& s) { return Finite(s.nlos_ratio_mean); }},
       {"demands_met_mean", [](const S& s) { return Finite(s.demands_met_mean); }},
       {"ues_mean", [](const S& s) { return Finite(s.ues_mean); }},
+      {"worst_ue_mean_mbps", [](const S& s) { return Finite(s.worst_ue_mean_mbps); }},
+      {"jain_mean", [](const S& s) { return Finite(s.jain_mean); }},
       {"throughput_change_pct", [](const S& s) { return Finite(s.throughput_change_pct); }},
       {"delay_change_pct", [](const S& s) { return Finite(s.delay_change_pct); }},
   };

@@ -270,22 +270,52 @@ TEST_F(ReportingTest, CsvHasOneRowPerPositionerAndEmptyCellsForAbsentValues) {
   EXPECT_EQ(lines[0],
             "scenario,positioner,runs,throughput_median_mbps,throughput_mean_mbps,"
             "throughput_ci95_mbps,delay_runs,delay_null_runs,delay_mean_ms,delay_ci95_ms,"
-            "nlos_ratio_mean,demands_met_mean,ues_mean,throughput_change_pct,delay_change_pct");
+            "nlos_ratio_mean,demands_met_mean,ues_mean,worst_ue_mean_mbps,jain_mean,"
+            "throughput_change_pct,delay_change_pct");
   // The t quantile is computed numerically: compare the CI cells as numbers.
   std::vector<std::string> cells;
   std::istringstream row(lines[1]);
   for (std::string cell; std::getline(row, cell, ',');)
     cells.push_back(cell);
-  ASSERT_EQ(cells.size(), 15u) << lines[1];
+  ASSERT_EQ(cells.size(), 17u) << lines[1];
   EXPECT_NEAR(std::stod(cells[5]), kT1 * 10.0, 1e-9);
   EXPECT_NEAR(std::stod(cells[9]), kT1, 1e-9);
   cells[5] = cells[9] = "ci";
-  EXPECT_EQ(CsvLine(cells), "B,baseline,2,110,110,ci,2,0,5,ci,1,3,4,0,0\n");
-  EXPECT_EQ(lines[2], "B,offset1,1,90,90,,1,0,5.5,,1,3,4," +
+  // No worst UE or fairness: these results are of the form before schema 9.
+  EXPECT_EQ(CsvLine(cells), "B,baseline,2,110,110,ci,2,0,5,ci,1,3,4,,,0,0\n");
+  EXPECT_EQ(lines[2], "B,offset1,1,90,90,,1,0,5.5,,1,3,4,,," +
                           CsvNumber(100.0 * (90.0 - 110.0) / 110.0) + "," +
                           CsvNumber(100.0 * (5.5 - 5.0) / 5.0));
   EXPECT_EQ(lines[4].rfind("B,rl,2,140,140,", 0), 0u) << lines[4];
-  EXPECT_EQ(lines[5], "C,oracle,1,80,80,,1,0,1,,1,3,4,,");
+  EXPECT_EQ(lines[5], "C,oracle,1,80,80,,1,0,1,,1,3,4,,,,");
+}
+
+TEST_F(ReportingTest, WorstUeAndFairnessAreStoredAndAveraged) {
+  Produce("position/B/baseline");
+  for (int run = 1; run <= 2; ++run) {
+    const std::string key = "eval/B/baseline/run" + std::to_string(run);
+    json result = testing::EvalResult(run, 100, 4.0);
+    result["worst_ue_throughput_mbps"] = run == 1 ? 10.0 : 20.0;
+    result["jain_fairness"] = run == 1 ? json(0.5) : json(nullptr);  // run 2: nothing received
+    result = testing::AtJobPosition(store_, Id(key), result);
+    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1));
+    ASSERT_EQ(store_.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded);
+  }
+  EXPECT_EQ(testing::QueryOne(store_.file(), "SELECT group_concat(worst_ue_mbps || '/' || "
+                                             "IFNULL(jain_fairness, 'null'), ' ') FROM (SELECT * "
+                                             "FROM v_eval_runs ORDER BY rng_run)"),
+            "10.0/0.5 20.0/null");
+  const auto summary = SummarizeCampaign(store_, campaign_.id);
+  ASSERT_EQ(summary.size(), 1u);
+  EXPECT_DOUBLE_EQ(summary[0].worst_ue_mean_mbps.value_or(-1), 15.0);
+  EXPECT_DOUBLE_EQ(summary[0].jain_mean.value_or(-1), 0.5);  // over the runs that have one
+  // Implausible values from the network are refused.
+  const std::string key = "eval/C/oracle/run1";
+  Produce("position/C/oracle");
+  json result = testing::AtJobPosition(store_, Id(key), testing::EvalResult(1, 100, 4.0));
+  result["jain_fairness"] = 1.5;
+  ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1));
+  EXPECT_NE(store_.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded);
 }
 
 TEST_F(ReportingTest, JsonHasNullForAbsentValues) {

@@ -52,6 +52,18 @@ TEST(Summarize, AggregatesArePacketWeighted) {
   EXPECT_DOUBLE_EQ(m.min_snr_db, 5.0);
   EXPECT_DOUBLE_EQ(m.loss_ratio, 0.0);
   EXPECT_EQ(ToJson(m)["n_ues"], 2);
+  // UE throughputs 500 and 1500 bytes/s x 8: the worst is 0.004 Mbit/s; Jain's index
+  // (4 + 12)^2 / (2 (4^2 + 12^2)) = 256 / 320 = 0.8.
+  EXPECT_DOUBLE_EQ(m.worst_ue_throughput_mbps, 500 * 8 / 1e6);
+  EXPECT_NEAR(m.jain_fairness, 0.8, 1e-12);
+  EXPECT_NEAR(ToJson(m)["jain_fairness"].get<double>(), 0.8, 1e-12);
+}
+
+TEST(Summarize, JainIndexSpansOneOverNToOne) {
+  EXPECT_DOUBLE_EQ(JainIndex({3, 3, 3}), 1.0);
+  EXPECT_DOUBLE_EQ(JainIndex({5, 0, 0, 0}), 0.25);  // one UE of four gets everything
+  EXPECT_TRUE(std::isnan(JainIndex({0, 0})));        // nothing received: undefined
+  EXPECT_TRUE(std::isnan(JainIndex({})));
 }
 
 TEST(CheckDemand, MapsDemandToMcsToSnr) {
