@@ -11,26 +11,6 @@
 #include "agent/running_moments.h"
 
 namespace rlpos {
-namespace {
-
-// Adds -inf to the Q-values of actions a row's mask forbids, so that max and argmax skip them.
-// A mask that forbids everything is taken as no mask (a max over nothing has no value).
-torch::Tensor MaskPenalty(const std::vector<const ActionMask*>& masks, int actions) {
-  torch::Tensor penalty = torch::zeros({static_cast<long>(masks.size()), actions});
-  auto p = penalty.accessor<float, 2>();
-  for (std::size_t r = 0; r < masks.size(); ++r) {
-    const ActionMask& mask = *masks[r];
-    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }))
-      continue;
-    for (int a = 0; a < actions; ++a) {
-      if (!Allowed(mask, a))
-        p[static_cast<long>(r)][a] = -INFINITY;
-    }
-  }
-  return penalty;
-}
-
-}  // namespace
 
 struct DqnAgent::Impl {
   AgentSpec spec;
@@ -61,15 +41,10 @@ struct DqnAgent::Impl {
   }
 
   torch::Tensor Batch(const std::vector<std::size_t>& indices, bool next) const {
-    torch::Tensor t = torch::empty({static_cast<long>(indices.size()), observation_dim});
-    auto a = t.accessor<float, 2>();
-    for (std::size_t r = 0; r < indices.size(); ++r) {
-      const auto& tr = replay.At(indices[r]);
-      const auto& obs = next ? tr.next_observation : tr.observation;
-      for (int c = 0; c < observation_dim; ++c)
-        a[r][c] = obs[c];
-    }
-    return t;
+    return StackRows(indices.size(), observation_dim, [&](std::size_t r) -> const auto& {
+      const Transition& tr = replay.At(indices[r]);
+      return next ? tr.next_observation : tr.observation;
+    });
   }
 
   double Learn() {
@@ -95,7 +70,7 @@ struct DqnAgent::Impl {
       torch::NoGradGuard no_grad;
       torch::Tensor next_q = target->forward(next);
       const torch::Tensor penalty =
-          masked ? MaskPenalty(next_masks, action_count) : torch::Tensor();
+          masked ? MaskPenalty(next_masks, action_count, -INFINITY) : torch::Tensor();
       const auto allowed_only = [&](const torch::Tensor& q) { return masked ? q + penalty : q; };
       torch::Tensor best;
       if (spec.double_dqn) {

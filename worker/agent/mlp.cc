@@ -1,5 +1,6 @@
 #include "agent/mlp.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 
@@ -37,6 +38,22 @@ torch::Tensor Row(const std::vector<float>& values) {
   return torch::from_blob(const_cast<float*>(values.data()), {1, static_cast<long>(values.size())},
                           torch::kFloat)
       .clone();
+}
+
+torch::Tensor MaskPenalty(const std::vector<const ActionMask*>& masks, int actions,
+                          float forbidden) {
+  torch::Tensor penalty = torch::zeros({static_cast<long>(masks.size()), actions});
+  auto p = penalty.accessor<float, 2>();
+  for (std::size_t r = 0; r < masks.size(); ++r) {
+    const ActionMask& mask = *masks[r];
+    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }))
+      continue;
+    for (int a = 0; a < actions; ++a) {
+      if (!Allowed(mask, a))
+        p[static_cast<long>(r)][a] = forbidden;
+    }
+  }
+  return penalty;
 }
 
 void LoadNetwork(const std::string& file, torch::nn::Sequential& into,

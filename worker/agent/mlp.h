@@ -1,10 +1,12 @@
 #pragma once
-// The small multilayer perceptrons the agents are made of, and what they do with them besides
-// forward passes: copy, Polyak-average, load with a shape check.
+// The small multilayer perceptrons the agents are made of, what they do with them besides
+// forward passes (copy, Polyak-average, load with a shape check), and the batches they feed them.
 #include <torch/torch.h>
 
 #include <string>
 #include <vector>
+
+#include "gym/spaces.h"
 
 namespace rlpos {
 
@@ -17,6 +19,25 @@ void SoftUpdate(const torch::nn::Sequential& from, torch::nn::Sequential& to, do
 
 // A 1 x n tensor of an observation (copied).
 torch::Tensor Row(const std::vector<float>& values);
+
+// A rows x dim tensor whose row r is the first `dim` values of row_of(r), a std::vector<float>.
+template <typename RowOf>
+torch::Tensor StackRows(std::size_t rows, int dim, RowOf row_of) {
+  torch::Tensor t = torch::empty({static_cast<long>(rows), dim});
+  auto a = t.accessor<float, 2>();
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::vector<float>& row = row_of(r);
+    for (int c = 0; c < dim; ++c)
+      a[static_cast<long>(r)][c] = row[static_cast<std::size_t>(c)];
+  }
+  return t;
+}
+
+// `forbidden` where a row's mask forbids the action, 0 elsewhere: added to Q-values or logits,
+// it keeps max, argmax and softmax to the allowed actions. A mask that allows nothing counts as
+// no mask (a max over nothing has no value).
+torch::Tensor MaskPenalty(const std::vector<const ActionMask*>& masks, int actions,
+                          float forbidden);
 
 // Loads `file` into `into`, whose shapes it must match. Throws std::runtime_error naming the file
 // when it is missing, not a saved network or of another shape.

@@ -14,24 +14,9 @@
 namespace rlpos {
 namespace {
 
-// A large negative logit for the actions a mask forbids: their probability is 0, and unlike
-// -inf it keeps 0 * log(0) in the entropy finite.
+// The logit of the actions a mask forbids: their probability is 0, and unlike -inf it keeps
+// 0 * log(0) in the entropy finite.
 constexpr float kForbidden = -1e9f;
-
-torch::Tensor MaskLogits(const torch::Tensor& logits, const std::vector<ActionMask>& masks) {
-  torch::Tensor penalty = torch::zeros_like(logits);
-  auto p = penalty.accessor<float, 2>();
-  for (std::size_t r = 0; r < masks.size(); ++r) {
-    const ActionMask& mask = masks[r];
-    if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }))
-      continue;  // empty, or forbids everything: no mask
-    for (long a = 0; a < logits.size(1); ++a) {
-      if (!Allowed(mask, static_cast<int>(a)))
-        p[static_cast<long>(r)][a] = kForbidden;
-    }
-  }
-  return logits + penalty;
-}
 
 }  // namespace
 
@@ -66,14 +51,9 @@ struct PpoAgent::Impl {
   }
 
   torch::Tensor Observations(bool next) const {
-    torch::Tensor t = torch::empty({static_cast<long>(rollout.size()), observation_dim});
-    auto a = t.accessor<float, 2>();
-    for (std::size_t r = 0; r < rollout.size(); ++r) {
-      const auto& obs = next ? rollout[r].next_observation : rollout[r].observation;
-      for (int c = 0; c < observation_dim; ++c)
-        a[static_cast<long>(r)][c] = obs[static_cast<std::size_t>(c)];
-    }
-    return t;
+    return StackRows(rollout.size(), observation_dim, [&](std::size_t r) -> const auto& {
+      return next ? rollout[r].next_observation : rollout[r].observation;
+    });
   }
 
   // Advantages by GAE(lambda). A truncated episode bootstraps from the value of its last next
@@ -123,11 +103,11 @@ struct PpoAgent::Impl {
       for (long start = 0; start + size <= n; start += size) {
         const std::vector<long> chosen(order.begin() + start, order.begin() + start + size);
         const torch::Tensor index = torch::tensor(chosen, torch::kLong);
-        std::vector<ActionMask> batch_masks;
+        std::vector<const ActionMask*> batch_masks;
         for (long i : chosen)
-          batch_masks.push_back(masks[static_cast<std::size_t>(i)]);
-        const torch::Tensor logits =
-            MaskLogits(actor->forward(obs.index_select(0, index)), batch_masks);
+          batch_masks.push_back(&masks[static_cast<std::size_t>(i)]);
+        const torch::Tensor logits = actor->forward(obs.index_select(0, index)) +
+                                     MaskPenalty(batch_masks, action_count, kForbidden);
         const torch::Tensor log_p = torch::log_softmax(logits, 1);
         const torch::Tensor taken =
             log_p.gather(1, actions.index_select(0, index).unsqueeze(1)).squeeze(1);
@@ -172,7 +152,8 @@ std::string PpoAgent::Algorithm() const {
 std::vector<float> PpoAgent::Probabilities(const std::vector<float>& observation,
                                            const ActionMask& mask) const {
   torch::NoGradGuard no_grad;
-  const torch::Tensor logits = MaskLogits(impl_->actor->forward(Row(observation)), {mask});
+  const torch::Tensor logits = impl_->actor->forward(Row(observation)) +
+                               MaskPenalty({&mask}, impl_->action_count, kForbidden);
   const torch::Tensor p = torch::softmax(logits, 1).squeeze(0).contiguous();
   return std::vector<float>(p.data_ptr<float>(), p.data_ptr<float>() + p.numel());
 }

@@ -94,16 +94,11 @@ struct SacAgent::Impl {
     return net->forward(torch::cat({obs, action}, 1)).squeeze(1);
   }
 
+  // The `field` of the replayed transitions at `indices`, one row each.
   torch::Tensor Stack(const std::vector<std::size_t>& indices, int dim,
                       const std::vector<float> Transition::*field) const {
-    torch::Tensor t = torch::empty({static_cast<long>(indices.size()), dim});
-    auto a = t.accessor<float, 2>();
-    for (std::size_t r = 0; r < indices.size(); ++r) {
-      const std::vector<float>& row = replay.At(indices[r]).*field;
-      for (int c = 0; c < dim; ++c)
-        a[static_cast<long>(r)][c] = row[static_cast<std::size_t>(c)];
-    }
-    return t;
+    return StackRows(indices.size(), dim,
+                     [&](std::size_t r) -> const auto& { return replay.At(indices[r]).*field; });
   }
 
   double Learn() {

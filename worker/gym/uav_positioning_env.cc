@@ -1,5 +1,6 @@
 #include "gym/uav_positioning_env.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -102,11 +103,12 @@ StepResult UavPositioningEnv::Step(int action) {
 StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
   if (!Continuous())
     throw std::out_of_range("this env takes discrete actions (move indices)");
-  const BoxSpace box = ContinuousActionSpace();
-  if (!box.Contains(d)) {
-    const std::string step = FormatNumber(scenario_.env.step);
-    throw std::out_of_range("the displacement must have 3 components, each within [-" + step +
-                            ", " + step + "] m");
+  const double step = scenario_.env.step;  // the Box is [-step, step]^3; NaN is outside
+  const auto within = [step](double v) { return v >= -step && v <= step; };
+  if (d.size() != 3 || !std::all_of(d.begin(), d.end(), within)) {
+    const std::string bound = FormatNumber(step);
+    throw std::out_of_range("the displacement must have 3 components, each within [-" + bound +
+                            ", " + bound + "] m");
   }
   return MoveTo(ApplyDisplacement(scenario_, {d[0], d[1], d[2]}, position_));
 }
