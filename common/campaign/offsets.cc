@@ -44,7 +44,7 @@ double EntryDistance(const Vec3& origin, const Vec3& u, const Box& b) {
 OffsetGeometry OffsetGeometryOf(const Scenario& s) {
   OffsetGeometry g;
   const Box venue{0.0, s.venue.width, 0.0, s.venue.depth, 0.0, s.venue.height};
-  const Box& zone = s.uav.zone;
+  const Box& zone = s.uavs.front().zone;  // offsets move one UAV
   g.bounds = {std::max(zone.xmin, venue.xmin), std::min(zone.xmax, venue.xmax),
               std::max(zone.ymin, venue.ymin), std::min(zone.ymax, venue.ymax),
               std::max(zone.zmin, venue.zmin), std::min(zone.zmax, venue.zmax)};

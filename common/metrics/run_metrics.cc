@@ -61,43 +61,85 @@ double JainIndex(const std::vector<double>& values) {
   return sum > 0.0 ? sum * sum / (static_cast<double>(values.size()) * squares) : kNaN;
 }
 
-RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64_t run,
-                     const std::vector<FlowAccumulator>& flows, std::vector<UeMetrics> ues) {
-  RunMetrics m;
-  m.position = position;
-  m.window = window;
-  m.run = run;
+namespace {
+
+// The aggregates over the UEs `members` picks (all of them for the run, a UAV's for the UAV).
+struct Aggregate {
+  double throughput_mbps = 0.0, mean_delay_ms = kNaN, loss_ratio = kNaN;
+  double worst_ue_throughput_mbps = kNaN, jain_fairness = kNaN, min_snr_db = kNaN;
+  int n_los = 0, demands_met = 0, ues = 0;
+};
+
+template <typename Member>
+Aggregate AggregateOf(MeasurementWindow window, const std::vector<FlowAccumulator>& flows,
+                      const std::vector<UeMetrics>& ues, Member member) {
+  Aggregate a;
   std::uint64_t bytes = 0, received = 0, sent = 0, delivered = 0;
   double delay_sum = 0.0;
-  m.min_snr_db = std::numeric_limits<double>::infinity();
+  std::vector<double> throughputs;
   for (std::size_t i = 0; i < flows.size() && i < ues.size(); ++i) {
+    if (!member(ues[i]))
+      continue;
     const auto& f = flows[i];
-    auto& ue = ues[i];
-    ue.throughput_mbps = f.ThroughputMbps();
-    ue.mean_delay_ms = f.MeanDelayMs();
-    ue.loss_ratio = f.LossRatio();
-    ue.sent = f.SentInWindow();
-    ue.received = f.ReceivedInWindow();
     bytes += f.BytesInWindow();
     received += f.ReceivedInWindow();
     sent += f.SentInWindow();
     delivered += f.DeliveredOfSentInWindow();
     delay_sum += f.DelaySumS();
-    m.n_los += ue.los ? 1 : 0;
-    m.demands_met += ue.demand.met ? 1 : 0;
-    m.min_snr_db = std::min(m.min_snr_db, ue.snr_db);
+    a.n_los += ues[i].los ? 1 : 0;
+    a.demands_met += ues[i].demand.met ? 1 : 0;
+    a.min_snr_db = a.ues == 0 ? ues[i].snr_db : std::min(a.min_snr_db, ues[i].snr_db);
+    throughputs.push_back(ues[i].throughput_mbps);
+    ++a.ues;
   }
-  std::vector<double> throughputs;
-  for (const auto& ue : ues)
-    throughputs.push_back(ue.throughput_mbps);
-  m.worst_ue_throughput_mbps =
-      throughputs.empty() ? 0.0 : *std::min_element(throughputs.begin(), throughputs.end());
-  m.jain_fairness = JainIndex(throughputs);
-  m.aggregate_throughput_mbps = bytes * 8.0 / window.Length() / 1e6;
-  m.mean_delay_ms = received == 0 ? kNaN : delay_sum / received * 1e3;
-  m.loss_ratio = sent == 0 ? kNaN : 1.0 - static_cast<double>(delivered) / sent;
+  if (!throughputs.empty())
+    a.worst_ue_throughput_mbps = *std::min_element(throughputs.begin(), throughputs.end());
+  a.jain_fairness = JainIndex(throughputs);
+  a.throughput_mbps = bytes * 8.0 / window.Length() / 1e6;
+  a.mean_delay_ms = received == 0 ? kNaN : delay_sum / received * 1e3;
+  a.loss_ratio = sent == 0 ? kNaN : 1.0 - static_cast<double>(delivered) / sent;
+  return a;
+}
+
+}  // namespace
+
+RunMetrics Summarize(const std::vector<UavIdentity>& uavs, MeasurementWindow window,
+                     std::uint64_t run, const std::vector<FlowAccumulator>& flows,
+                     std::vector<UeMetrics> ues) {
+  RunMetrics m;
+  m.position = uavs.empty() ? Vec3{} : uavs.front().position;
+  m.window = window;
+  m.run = run;
+  for (std::size_t i = 0; i < flows.size() && i < ues.size(); ++i) {
+    ues[i].throughput_mbps = flows[i].ThroughputMbps();
+    ues[i].mean_delay_ms = flows[i].MeanDelayMs();
+    ues[i].loss_ratio = flows[i].LossRatio();
+    ues[i].sent = flows[i].SentInWindow();
+    ues[i].received = flows[i].ReceivedInWindow();
+  }
+  const Aggregate all = AggregateOf(window, flows, ues, [](const UeMetrics&) { return true; });
+  m.aggregate_throughput_mbps = all.throughput_mbps;
+  m.mean_delay_ms = all.mean_delay_ms;
+  m.loss_ratio = all.loss_ratio;
+  m.n_los = all.n_los;
+  m.demands_met = all.demands_met;
+  m.min_snr_db = all.ues == 0 ? std::numeric_limits<double>::infinity() : all.min_snr_db;
+  m.worst_ue_throughput_mbps = all.ues == 0 ? 0.0 : all.worst_ue_throughput_mbps;
+  m.jain_fairness = all.jain_fairness;
+  for (std::size_t u = 0; u < uavs.size(); ++u) {
+    const int index = static_cast<int>(u);
+    const Aggregate a =
+        AggregateOf(window, flows, ues, [index](const UeMetrics& ue) { return ue.uav == index; });
+    m.uavs.push_back({uavs[u], a.ues, a.throughput_mbps, a.mean_delay_ms, a.loss_ratio, a.n_los,
+                      a.worst_ue_throughput_mbps, a.jain_fairness});
+  }
   m.ues = std::move(ues);
   return m;
+}
+
+RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64_t run,
+                     const std::vector<FlowAccumulator>& flows, std::vector<UeMetrics> ues) {
+  return Summarize({UavIdentity{"uav", position, 0}}, window, run, flows, std::move(ues));
 }
 
 nlohmann::json ToJson(const RunMetrics& m) {
@@ -116,7 +158,7 @@ nlohmann::json ToJson(const RunMetrics& m) {
                    {"sent", u.sent},
                    {"received", u.received}});
   }
-  return {{"position", {m.position.x, m.position.y, m.position.z}},
+  nlohmann::json out = {{"position", {m.position.x, m.position.y, m.position.z}},
           {"window_s", {m.window.start, m.window.end}},
           {"run", m.run},
           {"aggregate_throughput_mbps", Number(m.aggregate_throughput_mbps)},
@@ -129,6 +171,26 @@ nlohmann::json ToJson(const RunMetrics& m) {
           {"worst_ue_throughput_mbps", Number(m.worst_ue_throughput_mbps)},
           {"jain_fairness", Number(m.jain_fairness)},
           {"ues", ues}};
+  if (m.uavs.size() > 1) {
+    nlohmann::json uavs = nlohmann::json::array();
+    for (const auto& u : m.uavs) {
+      const Vec3& p = u.uav.position;
+      uavs.push_back({{"name", u.uav.name},
+                      {"position", {p.x, p.y, p.z}},
+                      {"channel", u.uav.channel},
+                      {"ues_served", u.ues_served},
+                      {"throughput_mbps", Number(u.throughput_mbps)},
+                      {"mean_delay_ms", Number(u.mean_delay_ms)},
+                      {"loss_ratio", Number(u.loss_ratio)},
+                      {"n_los", u.n_los},
+                      {"worst_ue_throughput_mbps", Number(u.worst_ue_throughput_mbps)},
+                      {"jain_fairness", Number(u.jain_fairness)}});
+    }
+    out["uavs"] = uavs;
+    for (std::size_t i = 0; i < m.ues.size(); ++i)
+      out["ues"][i]["uav"] = m.uavs.at(static_cast<std::size_t>(m.ues[i].uav)).uav.name;
+  }
+  return out;
 }
 
 }  // namespace rlpos

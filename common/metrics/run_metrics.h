@@ -62,6 +62,7 @@ DemandCheck CheckDemand(const PhyProfile& phy, double demand_mbps, double snr_db
 
 struct UeMetrics {
   std::string name;
+  int uav = 0;  // index of the serving UAV
   bool los = false;
   double snr_db = 0.0;
   double demand_mbps = 0.0;
@@ -73,8 +74,28 @@ struct UeMetrics {
   std::uint64_t received = 0;
 };
 
-struct RunMetrics {
+// Who a UAV is in a run: its name, where it is, its Wi-Fi channel.
+struct UavIdentity {
+  std::string name;
   Vec3 position;
+  int channel = 0;
+};
+
+// One UAV's share of a run: the same definitions over the UEs it serves (n_los: those with a
+// clear line to it). worst UE and Jain's index are NaN when it serves nobody.
+struct UavMetrics {
+  UavIdentity uav;
+  int ues_served = 0;
+  double throughput_mbps = 0.0;
+  double mean_delay_ms = 0.0;
+  double loss_ratio = 0.0;
+  int n_los = 0;
+  double worst_ue_throughput_mbps = 0.0;
+  double jain_fairness = 0.0;
+};
+
+struct RunMetrics {
+  Vec3 position;  // of the first UAV (the only one in a single-UAV scenario)
   MeasurementWindow window;
   std::uint64_t run = 0;
   double aggregate_throughput_mbps = 0.0;
@@ -86,14 +107,22 @@ struct RunMetrics {
   double worst_ue_throughput_mbps = 0.0;
   double jain_fairness = 0.0;
   std::vector<UeMetrics> ues;
+  std::vector<UavMetrics> uavs;  // one per UAV, the scenario's order
 };
 
 // Jain's fairness index of `values` (NaN when they sum to 0 or there are none).
 double JainIndex(const std::vector<double>& values);
 
-// Aggregates per-flow accumulators (one per UE, same order as `ues`) into the run's metrics.
+// Aggregates per-flow accumulators (one per UE, same order as `ues`) into the run's metrics,
+// overall and per UAV (a UE counts for the UAV of its `uav` index).
+RunMetrics Summarize(const std::vector<UavIdentity>& uavs, MeasurementWindow window,
+                     std::uint64_t run, const std::vector<FlowAccumulator>& flows,
+                     std::vector<UeMetrics> ues);
+// One UAV named "uav" at `position`.
 RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64_t run,
                      const std::vector<FlowAccumulator>& flows, std::vector<UeMetrics> ues);
+
+// "uavs" (per-UAV metrics) is written only for more than one UAV: with one it repeats the run's.
 
 nlohmann::json ToJson(const RunMetrics& metrics);
 

@@ -53,18 +53,33 @@ struct MobilitySpec {
   double change_interval = 2.0;  // s between direction changes, random_walk
 };
 
+// One position per UAV, in the scenario's order of `uavs`.
+using Placement = std::vector<Vec3>;
+
 struct UeSpec {
   std::string name;
   Vec3 position;
+  std::string uav;  // fixed association: the serving UAV's name; empty: the UAV of best SNR
   double demand_mbps = 0.0;  // resolved from "mbps" or "mcs"
   int demand_mcs = -1;       // the MCS the demand was given as, or -1 when given in Mbit/s
   MobilitySpec mobility;
 };
 
+// One UAV: an access point (or ad hoc peer) with the UEs' sink, on its own Wi-Fi channel.
 struct UavSpec {
+  std::string name = "uav";
   Vec3 initial{50.0, 50.0, 10.0};
   Box zone{0, 100, 0, 100, 1, 60};
+  // 0: wifi.channel for the first UAV, then the next channels of wifi.width in ns-3's channel
+  // table (distinct). UAVs given the same channel share the air: their BSSs contend and
+  // interfere.
+  int channel = 0;
 };
+
+// UAVs closer than this (m) overlap: two airframes cannot hold the same spot.
+constexpr double kMinUavSeparation = 1.0;
+// The most UAVs a scenario holds (bounded like every list from a document).
+constexpr std::size_t kMaxUavs = 8;
 
 struct WifiSpec {
   std::string standard = "802.11ac";  // 802.11n | 802.11ac | 802.11ax
@@ -186,7 +201,8 @@ struct Scenario {
   Venue venue;
   std::vector<BuildingSpec> buildings;
   std::vector<UeSpec> ues;
-  UavSpec uav;
+  std::vector<UavSpec> uavs = {UavSpec{}};  // "uav" in the JSON is one; "uavs" one or more
+  bool uavs_listed = false;                  // given as "uavs": errors name /uavs/<i>
   WifiSpec wifi;
   TrafficSpec traffic;
   ObjectSpec propagation;
@@ -196,6 +212,11 @@ struct Scenario {
   AgentSpec agent;
 
   double TotalDemandMbps() const;
+  Placement InitialPlacement() const;
+  // Index of the UAV named `name`, or -1.
+  int UavIndex(const std::string& name) const;
+  // The JSON path of UAV `i`: "/uav" or "/uavs/<i>".
+  std::string UavPath(std::size_t i) const;
 };
 
 // The default propagation: our obstacle-aware model with the paper's ITU-R P.1411 LoS/NLoS pair.

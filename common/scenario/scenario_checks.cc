@@ -1,5 +1,6 @@
 #include "scenario/scenario_checks.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "config/config_error.h"
@@ -21,6 +22,53 @@ void CheckInVenue(const Venue& venue, const Vec3& p, const std::string& path, co
     out << what << " at " << Format(p) << " is outside the venue [0, " << venue.width << "] x [0, "
         << venue.depth << "] x [0, " << venue.height << "]";
     throw ConfigError(path, out.str());
+  }
+}
+
+std::string UavNames(const Scenario& s) {
+  std::string names = " (UAVs:";
+  for (const auto& uav : s.uavs) names += " \"" + uav.name + "\"";
+  return names + ")";
+}
+
+double Distance(const Vec3& a, const Vec3& b) {
+  return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+
+void CheckUav(const Scenario& s, std::size_t i) {
+  const UavSpec& uav = s.uavs[i];
+  const std::string base = s.UavPath(i);
+  const Box& z = uav.zone;
+  if (z.xmin < 0 || z.xmax > s.venue.width || z.ymin < 0 || z.ymax > s.venue.depth || z.zmin < 0 ||
+      z.zmax > s.venue.height) {
+    throw ConfigError(base + "/zone", "the zone reaches outside the venue");
+  }
+  CheckInVenue(s.venue, uav.initial, base + "/position", "UAV");
+  if (!z.Contains(uav.initial)) {
+    std::ostringstream out;
+    out << "the zone [" << z.xmin << ", " << z.xmax << "] x [" << z.ymin << ", " << z.ymax
+        << "] x [" << z.zmin << ", " << z.zmax << "] excludes the initial position "
+        << Format(uav.initial);
+    throw ConfigError(base + "/zone", out.str());
+  }
+  const int inside = BuildingContaining(s, uav.initial);
+  if (inside >= 0) {
+    throw ConfigError(base + "/position", "UAV at " + Format(uav.initial) +
+                                              " is inside building " + std::to_string(inside) +
+                                              " (\"" + s.buildings[inside].name + "\")");
+  }
+  for (std::size_t j = 0; j < i; ++j) {
+    if (s.uavs[j].name == uav.name) {
+      throw ConfigError(base + "/name", "UAV " + std::to_string(j) + " has the name \"" +
+                                            uav.name + "\" already");
+    }
+    if (Distance(s.uavs[j].initial, uav.initial) < kMinUavSeparation) {
+      std::ostringstream out;
+      out << "UAV \"" << uav.name << "\" at " << Format(uav.initial) << " overlaps UAV " << j
+          << " (\"" << s.uavs[j].name << "\") at " << Format(s.uavs[j].initial)
+          << ": UAVs must be at least " << kMinUavSeparation << " m apart";
+      throw ConfigError(base + "/position", out.str());
+    }
   }
 }
 
@@ -64,24 +112,13 @@ void CheckScenarioGeometry(const Scenario& s) {
                                   "\")");
     }
   }
-  const Box& z = s.uav.zone;
-  if (z.xmin < 0 || z.xmax > s.venue.width || z.ymin < 0 || z.ymax > s.venue.depth || z.zmin < 0 ||
-      z.zmax > s.venue.height) {
-    throw ConfigError("/uav/zone", "the zone reaches outside the venue");
-  }
-  CheckInVenue(s.venue, s.uav.initial, "/uav/position", "UAV");
-  if (!z.Contains(s.uav.initial)) {
-    std::ostringstream out;
-    out << "the zone [" << z.xmin << ", " << z.xmax << "] x [" << z.ymin << ", " << z.ymax
-        << "] x [" << z.zmin << ", " << z.zmax << "] excludes the initial position "
-        << Format(s.uav.initial);
-    throw ConfigError("/uav/zone", out.str());
-  }
-  const int inside = BuildingContaining(s, s.uav.initial);
-  if (inside >= 0) {
-    throw ConfigError("/uav/position", "UAV at " + Format(s.uav.initial) + " is inside building " +
-                                           std::to_string(inside) + " (\"" +
-                                           s.buildings[inside].name + "\")");
+  for (std::size_t i = 0; i < s.uavs.size(); ++i) CheckUav(s, i);
+  for (std::size_t i = 0; i < s.ues.size(); ++i) {
+    const std::string& name = s.ues[i].uav;
+    if (!name.empty() && s.UavIndex(name) < 0) {
+      throw ConfigError(JoinPath(JoinPath("/ues", i), "uav"),
+                        "no UAV is named \"" + name + "\"" + UavNames(s));
+    }
   }
 }
 

@@ -4,7 +4,8 @@
 namespace rlpos {
 
 // Cross-field checks of a parsed scenario: everything inside the venue, no overlapping buildings,
-// no UE inside a building, the UAV's zone inside the venue and holding its initial position.
+// no UE inside a building, each UAV's zone inside the venue and holding its initial position,
+// UAVs apart and uniquely named, a UE's fixed UAV one that exists.
 // Throws ConfigError naming the JSON path of the offending element.
 void CheckScenarioGeometry(const Scenario& scenario);
 

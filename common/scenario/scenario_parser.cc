@@ -113,6 +113,7 @@ UeSpec ReadUe(const json& v, const std::string& path, std::size_t index, const P
   ObjectReader r(v, path);
   UeSpec ue;
   ue.name = r.String("name", "ue" + std::to_string(index));
+  ue.uav = r.String("uav", "");
   const json* position = r.Child("position");
   if (!position) throw ConfigError(r.PathOf("position"), "is required ([x, y, z])");
   ue.position = ReadVec3(*position, r.PathOf("position"));
@@ -136,9 +137,13 @@ UeSpec ReadUe(const json& v, const std::string& path, std::size_t index, const P
   return ue;
 }
 
-UavSpec ReadUav(const json& v, const Venue& venue) {
-  ObjectReader r(v, "/uav");
+UavSpec ReadUav(const json& v, const Venue& venue, const std::string& path,
+                const std::string& default_name) {
+  ObjectReader r(v, path);
   UavSpec uav;
+  uav.name = r.String("name", default_name);
+  if (uav.name.empty()) throw ConfigError(r.PathOf("name"), "must not be empty");
+  uav.channel = static_cast<int>(r.Integer("channel", 0, 1, 233));
   uav.zone = {0, venue.width, 0, venue.depth, 1.0, venue.height};
   uav.initial = {venue.width / 2, venue.depth / 2, 10.0};
   if (const json* p = r.Child("position")) uav.initial = ReadVec3(*p, r.PathOf("position"));
@@ -424,10 +429,25 @@ Scenario ParseScenario(const json& document) {
   for (std::size_t i = 0; i < ues->size(); ++i) {
     s.ues.push_back(ReadUe((*ues)[i], JoinPath("/ues", i), i, phy));
   }
-  if (const json* v = r.Child("uav")) {
-    s.uav = ReadUav(*v, s.venue);
+  const json* uav = r.Child("uav");
+  const json* uavs = r.Child("uavs");
+  if (uav && uavs) throw ConfigError("/uavs", "give \"uav\" (one UAV) or \"uavs\", not both");
+  s.uavs.clear();
+  if (uavs) {
+    if (!uavs->is_array() || uavs->empty()) {
+      throw ConfigError("/uavs", "expected a non-empty array of UAVs");
+    }
+    if (uavs->size() > kMaxUavs) {
+      throw ConfigError("/uavs", std::to_string(uavs->size()) + " UAVs; at most " +
+                                     std::to_string(kMaxUavs) + " are supported");
+    }
+    s.uavs_listed = true;
+    for (std::size_t i = 0; i < uavs->size(); ++i) {
+      s.uavs.push_back(
+          ReadUav((*uavs)[i], s.venue, JoinPath("/uavs", i), "uav" + std::to_string(i + 1)));
+    }
   } else {
-    s.uav = ReadUav(json::object(), s.venue);
+    s.uavs.push_back(ReadUav(uav ? *uav : json::object(), s.venue, "/uav", "uav"));
   }
   if (const json* v = r.Child("traffic")) s.traffic = ReadTraffic(*v);
   s.propagation = DefaultPropagation();
@@ -463,23 +483,31 @@ json ToJson(const Scenario& s) {
   json ues = json::array();
   for (const auto& u : s.ues) {
     json demand = u.demand_mcs >= 0 ? json{{"mcs", u.demand_mcs}} : json{{"mbps", u.demand_mbps}};
-    ues.push_back({{"name", u.name},
-                   {"position", Vec3Json(u.position)},
-                   {"demand", demand},
-                   {"mobility",
-                    {{"model", u.mobility.model},
-                     {"speed", u.mobility.speed},
-                     {"change_interval", u.mobility.change_interval}}}});
+    json ue = {{"name", u.name},
+               {"position", Vec3Json(u.position)},
+               {"demand", demand},
+               {"mobility",
+                {{"model", u.mobility.model},
+                 {"speed", u.mobility.speed},
+                 {"change_interval", u.mobility.change_interval}}}};
+    if (!u.uav.empty()) ue["uav"] = u.uav;
+    ues.push_back(ue);
   }
-  const Box& z = s.uav.zone;
-  return {{"name", s.name},
+  json uavs = json::array();
+  for (const auto& u : s.uavs) {
+    const Box& z = u.zone;
+    json uav = {{"position", Vec3Json(u.initial)},
+                {"zone", {{"x", {z.xmin, z.xmax}}, {"y", {z.ymin, z.ymax}}, {"z", {z.zmin, z.zmax}}}}};
+    // A single UAV's document stays as it was before names and channels existed.
+    if (s.uavs_listed || u.name != "uav") uav["name"] = u.name;
+    if (u.channel > 0) uav["channel"] = u.channel;
+    uavs.push_back(uav);
+  }
+  json document = {{"name", s.name},
           {"description", s.description},
           {"venue", {{"width", s.venue.width}, {"depth", s.venue.depth}, {"height", s.venue.height}}},
           {"buildings", buildings},
           {"ues", ues},
-          {"uav",
-           {{"position", Vec3Json(s.uav.initial)},
-            {"zone", {{"x", {z.xmin, z.xmax}}, {"y", {z.ymin, z.ymax}}, {"z", {z.zmin, z.zmax}}}}}},
           {"wifi",
            {{"standard", s.wifi.standard},
             {"channel", s.wifi.channel},
@@ -551,6 +579,12 @@ json ToJson(const Scenario& s) {
               {"warmup_steps", s.agent.sac.warmup_steps},
               {"update_interval", s.agent.sac.update_interval},
               {"alpha", s.agent.sac.alpha ? json(*s.agent.sac.alpha) : json(nullptr)}}}}}};
+  if (s.uavs_listed) {
+    document["uavs"] = uavs;
+  } else {
+    document["uav"] = uavs[0];
+  }
+  return document;
 }
 
 const std::vector<std::string>& AllAlgorithms() {

@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
     return 1;
   const rlpos::Scenario& s = *scenario;
   try {
-    rlpos::UavNetwork network(s, position);
+    rlpos::UavNetwork network(s, {position});
     if (ns3::NodeList::GetNNodes() != s.ues.size() + 1) {
       std::fprintf(stderr, "error: expected %zu nodes (the UEs and the UAV), found %u\n",
                    s.ues.size() + 1, ns3::NodeList::GetNNodes());

@@ -49,7 +49,7 @@ double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 std::vector<rlpos::Vec3> ZoneGrid(const rlpos::Scenario& s) {
-  const rlpos::Box& zone = s.uav.zone;
+  const rlpos::Box& zone = s.uavs[0].zone;
   std::vector<rlpos::Vec3> grid;
   for (double z : {10.0, 30.0}) {
     for (double fx : {0.1, 0.3, 0.5, 0.7, 0.9}) {
@@ -71,7 +71,7 @@ std::vector<rlpos::Vec3> UeGrid(const rlpos::Scenario& s) {
     box.ymin = std::min(box.ymin, ue.position.y);
     box.ymax = std::max(box.ymax, ue.position.y);
   }
-  const rlpos::Box& zone = s.uav.zone;
+  const rlpos::Box& zone = s.uavs[0].zone;
   std::vector<rlpos::Vec3> grid;
   for (double z : {10.0, 20.0, 30.0}) {
     for (double fx : {0.0, 0.5, 1.0}) {
@@ -95,10 +95,10 @@ void Compare(const rlpos::Scenario& s, const char* label, std::vector<rlpos::Vec
   {
     rlpos::AnalyticEvaluator evaluator(s);
     for (const auto& p : grid)
-      analytic.push_back(evaluator.Evaluate(p).throughput_mbps);
+      analytic.push_back(evaluator.Evaluate({p}).throughput_mbps);
   }
   for (const auto& p : grid)
-    packet.push_back(rlpos::EvaluatePosition(s, p).aggregate_throughput_mbps);
+    packet.push_back(rlpos::EvaluatePosition(s, {p}).aggregate_throughput_mbps);
   std::vector<double> errors;
   for (std::size_t i = 0; i < grid.size(); ++i) {
     if (per_position) {

@@ -65,7 +65,7 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   // The evaluation episode's flight, one row per step; it ends at the result's position.
   std::ifstream trajectory(out_ / "trajectory.csv");
   std::getline(trajectory, line);
-  EXPECT_EQ(line, "episode,step,action,x,y,z,n_los,throughput_mbps,reward");
+  EXPECT_EQ(line, "episode,step,uav,action,x,y,z,n_los,throughput_mbps,reward");
   std::string last;
   rows = 0;
   while (std::getline(trajectory, line))
@@ -121,8 +121,9 @@ TEST_F(TrainCommand, EachAlgorithmsPolicySaysWhatItIs) {
   std::stringstream row(line);
   for (std::string cell; std::getline(row, cell, ',');)
     cells.push_back(cell);
-  ASSERT_EQ(cells.size(), 9u) << line;
-  EXPECT_EQ(std::count(cells[2].begin(), cells[2].end(), ' '), 2) << line;
+  ASSERT_EQ(cells.size(), 10u) << line;
+  EXPECT_EQ(cells[2], "0") << line;  // the one UAV
+  EXPECT_EQ(std::count(cells[3].begin(), cells[3].end(), ' '), 2) << line;
 }
 
 TEST_F(TrainCommand, BadInputs) {

@@ -52,15 +52,15 @@ TEST(GymEnv, ContinuousActionsAreBoundedDisplacements) {
   StepResult r = env.StepContinuous({0, -5, 0});
   r = env.StepContinuous({0, -5, 0});
   r = env.StepContinuous({0.5, -5, -2.5});  // to (50.5, 35, 22.5): all LoS
-  EXPECT_EQ(r.info.position.x, 50.5);
-  EXPECT_EQ(r.info.position.y, 35.0);
-  EXPECT_EQ(r.info.position.z, 22.5);
+  EXPECT_EQ(r.info.positions[0].x, 50.5);
+  EXPECT_EQ(r.info.positions[0].y, 35.0);
+  EXPECT_EQ(r.info.positions[0].z, 22.5);
   EXPECT_EQ(r.info.n_los, 4);
   EXPECT_THROW(env.StepContinuous({5.5, 0, 0}), std::out_of_range);
   EXPECT_THROW(env.StepContinuous({0, 0}), std::out_of_range);
   EXPECT_THROW(env.StepContinuous({std::nan(""), 0, 0}), std::out_of_range);
   EXPECT_THROW(env.Step(0), std::out_of_range);
-  EXPECT_EQ(env.LastInfo().position.x, 50.5);  // a refused action moves nothing
+  EXPECT_EQ(env.LastInfo().positions[0].x, 50.5);  // a refused action moves nothing
 
   UavPositioningEnv discrete(LoadB({"env.fidelity=analytic"}));
   discrete.Reset(1);

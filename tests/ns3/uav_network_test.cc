@@ -18,8 +18,8 @@ const Vec3 kAllLosB{50, 35, 10};
 
 TEST(UavNetwork, ScenarioBAllLosBeatsTheBaseline) {
   const Scenario s = Load("b", {"simulation.duration=3"});
-  const RunMetrics baseline = EvaluatePosition(s, s.uav.initial);
-  const RunMetrics all_los = EvaluatePosition(s, kAllLosB);
+  const RunMetrics baseline = EvaluatePosition(s, s.InitialPlacement());
+  const RunMetrics all_los = EvaluatePosition(s, {kAllLosB});
   EXPECT_LT(baseline.n_los, 4);
   EXPECT_EQ(all_los.n_los, 4);
   EXPECT_GT(all_los.aggregate_throughput_mbps, 1.1 * baseline.aggregate_throughput_mbps);
@@ -35,8 +35,8 @@ TEST(UavNetwork, RebuildingInOneProcessGivesTheSameRun) {
   // The gym rebuilds the network every episode: the same seed and RngRun must give the same
   // events however many networks the process built before.
   const Scenario s = Load("b", {"simulation.duration=1.5", "simulation.warmup=0.5"});
-  const RunMetrics first = EvaluatePosition(s, s.uav.initial);
-  const RunMetrics second = EvaluatePosition(s, s.uav.initial);
+  const RunMetrics first = EvaluatePosition(s, s.InitialPlacement());
+  const RunMetrics second = EvaluatePosition(s, s.InitialPlacement());
   EXPECT_EQ(ToJson(first), ToJson(second));
 }
 
@@ -50,7 +50,7 @@ TEST(UavNetwork, ObstacleAwareSnrDropsBehindABuildingHybridDoesNot) {
       Load("b", {"propagation={\"type\": \"ns3::HybridBuildingsPropagationLossModel\", "
                   "\"attributes\": {\"ShadowSigmaOutdoor\": 0}}"});
   auto snr = [](const Scenario& s, const Vec3& p) {
-    UavNetwork network(s, p);
+    UavNetwork network(s, {p});
     const auto links = network.Links();
     return std::make_pair(links[1].los, links[1].snr_db);
   };

@@ -44,7 +44,7 @@ TEST(Offsets, ClampedToTheZone) {
 
 TEST(Offsets, GeometryIsTheZoneWithinTheVenue) {
   Scenario s = ParseScenario(ReadJsonFile(testing::SourcePath("campaigns/scenarios/b.json")));
-  s.uav.zone = {20, 80, 10, 90, 5, 40};
+  s.uavs[0].zone = {20, 80, 10, 90, 5, 40};
   const OffsetGeometry g = OffsetGeometryOf(s);
   EXPECT_DOUBLE_EQ(g.bounds.xmin, 20);
   EXPECT_DOUBLE_EQ(g.bounds.xmax, 80);

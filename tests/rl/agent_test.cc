@@ -205,7 +205,7 @@ TEST(DqnAgent, LearnsTheChain) {
   const EpisodeRecord& eval = result.curve.back();
   EXPECT_TRUE(eval.evaluation);
   EXPECT_EQ(eval.steps, 4);
-  EXPECT_DOUBLE_EQ(result.final_info.position.x, 4.0);
+  EXPECT_DOUBLE_EQ(result.final_info.positions[0].x, 4.0);
   const BoxSpace space = env.ObservationSpace();
   for (int s = 0; s < 4; ++s) {
     const auto q = agent.QValues(space.Normalise({static_cast<double>(s)}));

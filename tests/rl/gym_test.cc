@@ -35,16 +35,21 @@ TEST(Spaces, DiscreteAndBox) {
   EXPECT_FLOAT_EQ(n[1], 1.0f);
 }
 
+// One UAV's move.
+Vec3 Move(const Scenario& s, int action, const Vec3& from) {
+  return ApplyMove(s, 0, action, {from})[0];
+}
+
 TEST(Moves, EachActionMovesOneStepInItsDirection) {
   const Scenario s = ScenarioB();  // step 5 m, baseline (50, 50, 25)
   const Vec3 p{50, 35, 30};
-  EXPECT_DOUBLE_EQ(ApplyMove(s, ActionIndex(s, "up"), p).z, 35);
-  EXPECT_DOUBLE_EQ(ApplyMove(s, ActionIndex(s, "down"), p).z, 25);
-  EXPECT_DOUBLE_EQ(ApplyMove(s, ActionIndex(s, "forward"), p).y, 40);
-  EXPECT_DOUBLE_EQ(ApplyMove(s, ActionIndex(s, "backward"), p).y, 30);
-  EXPECT_DOUBLE_EQ(ApplyMove(s, ActionIndex(s, "right"), p).x, 55);
-  EXPECT_DOUBLE_EQ(ApplyMove(s, ActionIndex(s, "left"), p).x, 45);
-  const Vec3 stay = ApplyMove(s, ActionIndex(s, "stay"), p);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "up"), p).z, 35);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "down"), p).z, 25);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "forward"), p).y, 40);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "backward"), p).y, 30);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "right"), p).x, 55);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "left"), p).x, 45);
+  const Vec3 stay = Move(s, ActionIndex(s, "stay"), p);
   EXPECT_DOUBLE_EQ(stay.x, p.x);
   EXPECT_DOUBLE_EQ(stay.y, p.y);
   EXPECT_DOUBLE_EQ(stay.z, p.z);
@@ -53,14 +58,14 @@ TEST(Moves, EachActionMovesOneStepInItsDirection) {
 TEST(Moves, ZoneClampsAndAWallIsNotALoop) {
   const Scenario s = ScenarioB();  // zone z in [5, 60]
   Vec3 p{50, 35, 58};
-  p = ApplyMove(s, ActionIndex(s, "up"), p);
+  p = Move(s, ActionIndex(s, "up"), p);
   EXPECT_DOUBLE_EQ(p.z, 60);  // clamped, not 63
-  p = ApplyMove(s, ActionIndex(s, "up"), p);
+  p = Move(s, ActionIndex(s, "up"), p);
   EXPECT_DOUBLE_EQ(p.z, 60);  // stays at the wall
   Vec3 corner{0, 0, 5};
-  corner = ApplyMove(s, ActionIndex(s, "left"), corner);
-  corner = ApplyMove(s, ActionIndex(s, "backward"), corner);
-  corner = ApplyMove(s, ActionIndex(s, "down"), corner);
+  corner = Move(s, ActionIndex(s, "left"), corner);
+  corner = Move(s, ActionIndex(s, "backward"), corner);
+  corner = Move(s, ActionIndex(s, "down"), corner);
   EXPECT_DOUBLE_EQ(corner.x, 0);
   EXPECT_DOUBLE_EQ(corner.y, 0);
   EXPECT_DOUBLE_EQ(corner.z, 5);
@@ -69,7 +74,7 @@ TEST(Moves, ZoneClampsAndAWallIsNotALoop) {
 TEST(Moves, NeverIntoABuilding) {
   const Scenario s = ScenarioB();  // tower [45, 55]^2, 20 m
   const Vec3 above{50, 50, 25};
-  const Vec3 p = ApplyMove(s, ActionIndex(s, "down"), above);  // to z = 20: the roof
+  const Vec3 p = Move(s, ActionIndex(s, "down"), above);  // to z = 20: the roof
   EXPECT_DOUBLE_EQ(p.z, 25);
 }
 
@@ -79,7 +84,7 @@ TEST(Observations, LayoutAndBounds) {
   const BoxSpace box = ObservationBounds(s);
   ASSERT_EQ(box.Dim(), 5u + s.ues.size());
   StepInfo info;
-  info.position = {10, 20, 30};
+  info.positions = {{10, 20, 30}};
   info.n_los = 3;
   info.throughput_mbps = 100;
   info.snr_db = {10, 80, -40, 0};  // out-of-range SNRs are clipped into the space

@@ -42,7 +42,7 @@ TEST(SacAgent, FliesToTheTarget) {
   SacAgent agent(spec, 1, 1);
   const TrainResult result = Train(env, agent, spec, 1);
   EXPECT_TRUE(result.curve.back().evaluation);
-  EXPECT_NEAR(result.final_info.position.x, PointEnv::kTarget, 0.5);
+  EXPECT_NEAR(result.final_info.positions[0].x, PointEnv::kTarget, 0.5);
 }
 
 TEST(SacAgent, ActionsStayInTheUnitBoxAndTheWarmupIsUniform) {

@@ -15,13 +15,13 @@ class ChainEnv : public Env {
   std::vector<double> Reset(std::uint64_t) override {
     state_ = 0;
     steps_ = 0;
-    info_.position = {0, 0, 0};
+    info_.positions = {{0, 0, 0}};
     return {0.0};
   }
   StepResult Step(int action) override {
     state_ = std::clamp(state_ + (action == 1 ? 1 : -1), 0, 4);
     ++steps_;
-    info_.position = {static_cast<double>(state_), 0, 0};
+    info_.positions = {{static_cast<double>(state_), 0, 0}};
     StepResult r;
     r.observation = {static_cast<double>(state_)};
     r.terminated = state_ == 4;
@@ -49,7 +49,7 @@ class PointEnv : public Env {
   std::vector<double> Reset(std::uint64_t) override {
     x_ = 2.0;
     steps_ = 0;
-    info_.position = {x_, 0, 0};
+    info_.positions = {{x_, 0, 0}};
     return {x_};
   }
   StepResult Step(int) override { throw std::out_of_range("continuous actions only"); }
@@ -58,7 +58,7 @@ class PointEnv : public Env {
       throw std::out_of_range("action outside [-1, 1]");
     x_ = std::clamp(x_ + action[0], 0.0, 10.0);
     ++steps_;
-    info_.position = {x_, 0, 0};
+    info_.positions = {{x_, 0, 0}};
     StepResult r;
     r.observation = {x_};
     r.reward = -std::abs(x_ - kTarget) / 10.0;

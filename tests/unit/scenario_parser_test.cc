@@ -67,7 +67,7 @@ TEST(ScenarioParser, OverridesSetAnyField) {
   EXPECT_EQ(s.wifi.mode, "adhoc");
   EXPECT_EQ(s.simulation.run, 7u);
   EXPECT_DOUBLE_EQ(s.ues[1].demand_mbps, 10.0);
-  EXPECT_DOUBLE_EQ(s.uav.initial.y, 35.0);
+  EXPECT_DOUBLE_EQ(s.uavs[0].initial.y, 35.0);
 }
 
 TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {

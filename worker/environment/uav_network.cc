@@ -33,9 +33,12 @@
 #include <ns3/yans-wifi-helper.h>
 
 #include <cmath>
+#include <map>
 #include <set>
+#include <stdexcept>
 
 #include "config/config_error.h"
+#include "environment/association.h"
 #include "environment/ns3_object_spec.h"
 #include "environment/traffic_monitor.h"
 #include "environment/wifi_channel_plan.h"
@@ -110,23 +113,28 @@ void InstallUeMobility(const Scenario& s, ns3::NodeContainer& ues) {
 
 struct UavNetwork::Impl {
   Scenario scenario;
-  WifiChannelPlan plan;
+  std::vector<WifiChannelPlan> plans;  // per UAV
+  std::vector<int> channels;           // per UAV: its channel number
   ns3::Ptr<ns3::PropagationLossModel> loss;
   ns3::Ptr<ns3::BuildingsChannelConditionModel> geometry;
   ns3::NodeContainer ues;
-  ns3::Ptr<ns3::Node> uav;
-  ns3::Ptr<ns3::WifiNetDevice> uav_device;
+  ns3::NodeContainer uavs;
+  std::vector<ns3::Ptr<ns3::WifiNetDevice>> uav_devices;
+  std::vector<int> serving;  // per UE: the index of its UAV
   ns3::Ptr<ns3::ErrorRateModel> error_model;  // a twin of the PHYs' own (kErrorRateModel)
   ns3::ApplicationContainer senders;
   ns3::Ptr<ns3::UniformRandomVariable> start_times;
   ns3::ApplicationContainer sinks;
   std::unique_ptr<TrafficMonitor> traffic;
 
-  ns3::Ptr<ns3::MobilityModel> UavMobility() const { return uav->GetObject<ns3::MobilityModel>(); }
+  ns3::Ptr<ns3::MobilityModel> UavMobility(std::size_t u) const {
+    return uavs.Get(static_cast<uint32_t>(u))->GetObject<ns3::MobilityModel>();
+  }
   void BuildChannelModels();
+  std::vector<LinkState> LinksTo(std::size_t u) const;
   ns3::NetDeviceContainer InstallWifi(ns3::WifiHelper& wifi);
   void AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices);
-  void InstallApplications(ns3::Ipv4Address uav_address);
+  void InstallApplications(const std::vector<ns3::Ipv4Address>& uav_addresses);
   ns3::WifiTxVector TxVector(int mcs) const;  // single-user, the configured PHY
 };
 
@@ -134,10 +142,10 @@ ns3::WifiTxVector UavNetwork::Impl::TxVector(int mcs) const {
   const WifiSpec& w = scenario.wifi;
   ns3::WifiMode mode;
   ns3::WifiPreamble preamble;
-  if (plan.standard == ns3::WIFI_STANDARD_80211n) {
+  if (plans[0].standard == ns3::WIFI_STANDARD_80211n) {
     mode = ns3::HtPhy::GetHtMcs(static_cast<uint8_t>(mcs + 8 * (w.spatial_streams - 1)));
     preamble = ns3::WIFI_PREAMBLE_HT_MF;
-  } else if (plan.standard == ns3::WIFI_STANDARD_80211ac) {
+  } else if (plans[0].standard == ns3::WIFI_STANDARD_80211ac) {
     mode = ns3::VhtPhy::GetVhtMcs(static_cast<uint8_t>(mcs));
     preamble = ns3::WIFI_PREAMBLE_VHT_SU;
   } else {
@@ -155,8 +163,10 @@ void UavNetwork::Impl::BuildChannelModels() {
                         ns3::PropagationLossModel::GetTypeId(), "Frequency", &user_frequency)
              ->GetObject<ns3::PropagationLossModel>();
   // Loss models default to their own frequency (ITU-R P.1411: 2.4 GHz): align them with the
-  // channel unless the scenario chose one.
-  SetAttributeInTree(loss, "Frequency", ns3::DoubleValue(plan.center_frequency_hz), user_frequency);
+  // channel unless the scenario chose one. One model serves every UAV's channel: the first UAV's
+  // frequency (two 5 GHz channels differ by well under 1 dB of path loss).
+  SetAttributeInTree(loss, "Frequency", ns3::DoubleValue(plans[0].center_frequency_hz),
+                     user_frequency);
   geometry = ns3::CreateObject<ns3::BuildingsChannelConditionModel>();
 }
 
@@ -165,44 +175,65 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
   // Validates the rate manager spec (type, attributes) before ns-3 would abort on it.
   CreateFromSpec(w.rate_manager, "/wifi/rate_manager", ns3::WifiRemoteStationManager::GetTypeId());
 
-  auto channel = ns3::CreateObject<ns3::YansWifiChannel>();
-  channel->SetPropagationLossModel(loss);
-  channel->SetPropagationDelayModel(ns3::CreateObject<ns3::ConstantSpeedPropagationDelayModel>());
+  // One Yans channel per channel number: the BSSs of UAVs on the same channel hear (and
+  // interfere with) each other, those on distinct channels do not (no adjacent-channel leakage).
+  std::map<int, ns3::Ptr<ns3::YansWifiChannel>> air;
+  for (int number : channels) {
+    if (air.count(number))
+      continue;
+    auto channel = ns3::CreateObject<ns3::YansWifiChannel>();
+    channel->SetPropagationLossModel(loss);
+    channel->SetPropagationDelayModel(
+        ns3::CreateObject<ns3::ConstantSpeedPropagationDelayModel>());
+    air[number] = channel;
+  }
 
   ns3::YansWifiPhyHelper phy;
-  phy.SetChannel(channel);
-  phy.Set("ChannelSettings", ns3::StringValue(plan.channel_settings));
   phy.Set("TxPowerStart", ns3::DoubleValue(w.tx_power_dbm));
   phy.Set("TxPowerEnd", ns3::DoubleValue(w.tx_power_dbm));
   phy.Set("TxGain", ns3::DoubleValue(w.antenna_gain_dbi));
   phy.Set("RxGain", ns3::DoubleValue(w.antenna_gain_dbi));
-  phy.Set("RxNoiseFigure", ns3::DoubleValue(plan.rx_noise_figure_db));
+  phy.Set("RxNoiseFigure", ns3::DoubleValue(plans[0].rx_noise_figure_db));
   phy.Set("Antennas", ns3::UintegerValue(w.spatial_streams));
   phy.Set("MaxSupportedTxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
   phy.Set("MaxSupportedRxSpatialStreams", ns3::UintegerValue(w.spatial_streams));
-
   phy.SetErrorRateModel(kErrorRateModel);
-  wifi.SetStandard(plan.standard);
+  // The PHY of a node served by (or being) UAV u: on u's channel.
+  auto phy_of = [&](std::size_t u) {
+    phy.SetChannel(air[channels[u]]);
+    phy.Set("ChannelSettings", ns3::StringValue(plans[u].channel_settings));
+    return phy;
+  };
+
+  wifi.SetStandard(plans[0].standard);
   wifi.SetRemoteStationManager(w.rate_manager.type);
-  if (plan.standard == ns3::WIFI_STANDARD_80211ax) {
+  if (plans[0].standard == ns3::WIFI_STANDARD_80211ax) {
     wifi.ConfigHeOptions("GuardInterval", ns3::TimeValue(ns3::NanoSeconds(w.guard_interval_ns)));
   } else {
     wifi.ConfigHtOptions("ShortGuardIntervalSupported",
                          ns3::BooleanValue(w.guard_interval_ns == 400));
   }
 
+  // UAVs first, then the UEs, each in the scenario's order (the addresses follow it).
   ns3::WifiMacHelper mac;
   ns3::NetDeviceContainer devices;
-  if (w.mode == "adhoc") {
-    mac.SetType("ns3::AdhocWifiMac");
-    devices.Add(wifi.Install(phy, mac, uav));
-    devices.Add(wifi.Install(phy, mac, ues));
-  } else {
-    const ns3::Ssid ssid("rlpos-uav");
-    mac.SetType("ns3::ApWifiMac", "Ssid", ns3::SsidValue(ssid));
-    devices.Add(wifi.Install(phy, mac, uav));
-    mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(ssid));
-    devices.Add(wifi.Install(phy, mac, ues));
+  auto ssid_of = [&](std::size_t u) { return ns3::Ssid("rlpos-" + scenario.uavs[u].name); };
+  for (std::size_t u = 0; u < scenario.uavs.size(); ++u) {
+    if (w.mode == "adhoc") {
+      mac.SetType("ns3::AdhocWifiMac");
+    } else {
+      mac.SetType("ns3::ApWifiMac", "Ssid", ns3::SsidValue(ssid_of(u)));
+    }
+    devices.Add(wifi.Install(phy_of(u), mac, uavs.Get(static_cast<uint32_t>(u))));
+  }
+  for (uint32_t i = 0; i < ues.GetN(); ++i) {
+    const auto u = static_cast<std::size_t>(serving[i]);
+    if (w.mode == "adhoc") {
+      mac.SetType("ns3::AdhocWifiMac");
+    } else {
+      mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(ssid_of(u)));
+    }
+    devices.Add(wifi.Install(phy_of(u), mac, ues.Get(i)));
   }
   // Rate manager attributes and RTS/CTS are set per instance: Config::SetDefault would leak
   // into every later network built in the same process.
@@ -224,7 +255,7 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
 // tests) would draw different numbers for the same seed and RngRun.
 void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi,
                                      const ns3::NetDeviceContainer& devices) {
-  ns3::NodeContainer all(uav);
+  ns3::NodeContainer all(uavs);
   all.Add(ues);
   int64_t stream = 0;
   stream += loss->AssignStreams(stream);
@@ -240,7 +271,7 @@ void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi,
   }
 }
 
-void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
+void UavNetwork::Impl::InstallApplications(const std::vector<ns3::Ipv4Address>& uav_addresses) {
   const bool tcp = scenario.traffic.protocol == "tcp_bulk";
   const std::string socket = tcp ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
   const double duration = scenario.simulation.duration;
@@ -253,11 +284,12 @@ void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
     const uint16_t port = static_cast<uint16_t>(kFirstPort + i);
     ns3::PacketSinkHelper sink(socket, ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
     sink.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
-    ns3::ApplicationContainer sink_app = sink.Install(uav);
+    // The UE's flow ends at its serving UAV: one sink per UE, in the UEs' order.
+    ns3::ApplicationContainer sink_app = sink.Install(uavs.Get(static_cast<uint32_t>(serving[i])));
     sink_app.Start(ns3::Seconds(0.0));
     sinks.Add(sink_app);
 
-    const ns3::InetSocketAddress to(uav_address, port);
+    const ns3::InetSocketAddress to(uav_addresses[static_cast<std::size_t>(serving[i])], port);
     ns3::ApplicationContainer app;
     if (tcp) {
       ns3::BulkSendHelper bulk(socket, to);
@@ -278,44 +310,64 @@ void UavNetwork::Impl::InstallApplications(ns3::Ipv4Address uav_address) {
   }
 }
 
-UavNetwork::UavNetwork(const Scenario& scenario, const Vec3& uav_position)
+UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement)
     : impl_(std::make_unique<Impl>()) {
+  if (placement.size() != scenario.uavs.size()) {
+    throw std::invalid_argument(std::to_string(placement.size()) + " positions for " +
+                                std::to_string(scenario.uavs.size()) + " UAVs");
+  }
   Impl& m = *impl_;
   m.scenario = scenario;
   ns3::Simulator::Destroy();  // a clean slate: node and building lists are global
   ns3::RngSeedManager::SetSeed(scenario.simulation.seed);
   ns3::RngSeedManager::SetRun(scenario.simulation.run);
 
-  m.plan = PlanWifiChannel(scenario.wifi);
+  m.plans = PlanUavChannels(scenario);
+  for (const auto& plan : m.plans)
+    m.channels.push_back(plan.channel);
   m.BuildChannelModels();
   m.error_model = ns3::ObjectFactory(kErrorRateModel).Create<ns3::ErrorRateModel>();
   BuildBuildings(scenario);
 
   m.ues.Create(scenario.ues.size());
-  m.uav = ns3::CreateObject<ns3::Node>();
+  m.uavs.Create(static_cast<uint32_t>(scenario.uavs.size()));
   InstallUeMobility(scenario, m.ues);
   ns3::MobilityHelper uav_mobility;
   uav_mobility.SetMobilityModel("ns3::ConstantPositionMobilityModel");
-  uav_mobility.Install(m.uav);
-  m.UavMobility()->SetPosition(ToNs3(uav_position));
+  uav_mobility.Install(m.uavs);
+  for (std::size_t u = 0; u < placement.size(); ++u) {
+    m.UavMobility(u)->SetPosition(ToNs3(placement[u]));
+  }
   ns3::BuildingsHelper::Install(m.ues);
-  ns3::BuildingsHelper::Install(ns3::NodeContainer(m.uav));
+  ns3::BuildingsHelper::Install(m.uavs);
+
+  std::vector<std::vector<double>> snr(scenario.uavs.size());
+  for (std::size_t u = 0; u < snr.size(); ++u) {
+    for (const auto& link : m.LinksTo(u))
+      snr[u].push_back(link.snr_db);
+  }
+  m.serving = AssociateUes(scenario, snr);
 
   ns3::WifiHelper wifi;
   ns3::NetDeviceContainer devices = m.InstallWifi(wifi);
   ns3::InternetStackHelper internet;
-  internet.Install(m.uav);
+  internet.Install(m.uavs);
   internet.Install(m.ues);
   ns3::Ipv4AddressHelper addresses;
   addresses.SetBase("10.1.0.0", "255.255.0.0");
-  ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);  // UAV first: 10.1.0.1
+  // UAVs first: 10.1.0.1, 10.1.0.2, ...
+  ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);
   if (scenario.wifi.mode == "adhoc") {
     // No ARP on the air: in ad hoc mode unacknowledged broadcast ARP requests collide under
     // saturated load and starve UEs for seconds. (AP/STA association sorts itself out.)
     ns3::NeighborCacheHelper().PopulateNeighborCache();
   }
-  m.uav_device = ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(0));
-  m.InstallApplications(interfaces.GetAddress(0));
+  std::vector<ns3::Ipv4Address> uav_addresses;
+  for (uint32_t u = 0; u < m.uavs.GetN(); ++u) {
+    m.uav_devices.push_back(ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(u)));
+    uav_addresses.push_back(interfaces.GetAddress(u));
+  }
+  m.InstallApplications(uav_addresses);
   m.AssignStreams(wifi, devices);
   m.traffic = std::make_unique<TrafficMonitor>(m.senders, m.sinks);
 }
@@ -329,30 +381,68 @@ const Scenario& UavNetwork::scenario() const {
   return impl_->scenario;
 }
 
-void UavNetwork::SetUavPosition(const Vec3& position) {
-  impl_->UavMobility()->SetPosition(ToNs3(position));
+void UavNetwork::SetUavPositions(const Placement& placement) {
+  if (placement.size() != impl_->uavs.GetN())
+    throw std::invalid_argument("a placement of another size than the UAVs");
+  for (std::size_t u = 0; u < placement.size(); ++u)
+    impl_->UavMobility(u)->SetPosition(ToNs3(placement[u]));
 }
 
-Vec3 UavNetwork::UavPosition() const {
-  return FromNs3(impl_->UavMobility()->GetPosition());
+void UavNetwork::SetUavPosition(std::size_t uav, const Vec3& position) {
+  if (uav >= impl_->uavs.GetN())
+    throw std::out_of_range("no UAV " + std::to_string(uav));
+  impl_->UavMobility(uav)->SetPosition(ToNs3(position));
+}
+
+Placement UavNetwork::UavPositions() const {
+  Placement placement;
+  for (uint32_t u = 0; u < impl_->uavs.GetN(); ++u)
+    placement.push_back(FromNs3(impl_->UavMobility(u)->GetPosition()));
+  return placement;
+}
+
+const std::vector<int>& UavNetwork::Association() const {
+  return impl_->serving;
+}
+
+std::vector<int> UavNetwork::UavChannels() const {
+  return impl_->channels;
+}
+
+std::vector<LinkState> UavNetwork::Impl::LinksTo(std::size_t u) const {
+  const WifiSpec& w = scenario.wifi;
+  std::vector<LinkState> links;
+  links.reserve(ues.GetN());
+  auto uav = UavMobility(u);
+  for (uint32_t i = 0; i < ues.GetN(); ++i) {
+    auto ue = ues.Get(i)->GetObject<ns3::MobilityModel>();
+    LinkState link;
+    link.los = geometry->GetChannelCondition(ue, uav)->IsLos();
+    // Uplink, as the channel computes it: sender first.
+    const double rx_dbm =
+        loss->CalcRxPower(w.tx_power_dbm + w.antenna_gain_dbi, ue, uav) + w.antenna_gain_dbi;
+    link.snr_db = rx_dbm - w.noise_floor_dbm;
+    links.push_back(link);
+  }
+  return links;
+}
+
+std::vector<LinkState> UavNetwork::LinksTo(std::size_t uav) const {
+  if (uav >= impl_->uavs.GetN())
+    throw std::out_of_range("no UAV " + std::to_string(uav));
+  return impl_->LinksTo(uav);
 }
 
 std::vector<LinkState> UavNetwork::Links() const {
   const Impl& m = *impl_;
-  const WifiSpec& w = m.scenario.wifi;
+  if (m.uavs.GetN() == 1)
+    return m.LinksTo(0);
+  std::vector<std::vector<LinkState>> to(m.uavs.GetN());
+  for (std::size_t u = 0; u < to.size(); ++u)
+    to[u] = m.LinksTo(u);
   std::vector<LinkState> links;
-  links.reserve(m.ues.GetN());
-  auto uav = m.UavMobility();
-  for (uint32_t i = 0; i < m.ues.GetN(); ++i) {
-    auto ue = m.ues.Get(i)->GetObject<ns3::MobilityModel>();
-    LinkState link;
-    link.los = m.geometry->GetChannelCondition(ue, uav)->IsLos();
-    // Uplink, as the channel computes it: sender first.
-    const double rx_dbm =
-        m.loss->CalcRxPower(w.tx_power_dbm + w.antenna_gain_dbi, ue, uav) + w.antenna_gain_dbi;
-    link.snr_db = rx_dbm - w.noise_floor_dbm;
-    links.push_back(link);
-  }
+  for (std::size_t i = 0; i < m.serving.size(); ++i)
+    links.push_back(to[static_cast<std::size_t>(m.serving[i])][i]);
   return links;
 }
 
@@ -360,14 +450,14 @@ std::vector<double> UavNetwork::McsSnrThresholdsDb() const {
   const Impl& m = *impl_;
   const WifiSpec& w = m.scenario.wifi;
   double ber = 1e-6;  // IdealWifiManager's default BerThreshold
-  auto manager = m.uav_device->GetRemoteStationManager();
+  auto manager = m.uav_devices[0]->GetRemoteStationManager();
   ns3::TypeId::AttributeInformation info;
   if (manager->GetInstanceTypeId().LookupAttributeByName("BerThreshold", &info)) {
     ns3::DoubleValue value;
     manager->GetAttribute("BerThreshold", value);
     ber = value.Get();
   }
-  auto phy = m.uav_device->GetPhy();
+  auto phy = m.uav_devices[0]->GetPhy();
   std::vector<double> thresholds;
   for (int mcs = 0; mcs <= MaxMcs(w.standard); ++mcs) {
     thresholds.push_back(10.0 * std::log10(phy->CalculateSnr(m.TxVector(mcs), ber)));
@@ -406,18 +496,23 @@ RunMetrics UavNetwork::Measure() const {
   std::vector<UeMetrics> ues(links.size());
   for (std::size_t i = 0; i < links.size(); ++i) {
     ues[i].name = m.scenario.ues[i].name;
+    ues[i].uav = m.serving[i];
     ues[i].los = links[i].los;
     ues[i].snr_db = links[i].snr_db;
     ues[i].demand_mbps = m.scenario.ues[i].demand_mbps;
     ues[i].demand = CheckDemand(phy, ues[i].demand_mbps, links[i].snr_db);
   }
-  return Summarize(UavPosition(), m.traffic->window(), m.scenario.simulation.run,
-                   m.traffic->flows(), std::move(ues));
+  const Placement placement = UavPositions();
+  std::vector<UavIdentity> uavs;
+  for (std::size_t u = 0; u < placement.size(); ++u)
+    uavs.push_back({m.scenario.uavs[u].name, placement[u], m.channels[u]});
+  return Summarize(uavs, m.traffic->window(), m.scenario.simulation.run, m.traffic->flows(),
+                   std::move(ues));
 }
 
-RunMetrics EvaluatePosition(const Scenario& scenario, const Vec3& position,
+RunMetrics EvaluatePosition(const Scenario& scenario, const Placement& placement,
                             void (*on_progress)(double now, double end)) {
-  UavNetwork network(scenario, position);
+  UavNetwork network(scenario, placement);
   const double end = scenario.simulation.duration;
   network.BeginMeasurement({scenario.simulation.warmup, end});
   // Packets still queued when traffic stops are delivered within the MAC queue's lifetime.

@@ -17,19 +17,28 @@ struct LinkState {
 
 class UavNetwork {
  public:
-  // Validates the ns-3 side of the scenario (TypeIds, attributes, channel), then builds it with
-  // the UAV at `uav_position`. Throws ConfigError on a bad scenario.
-  UavNetwork(const Scenario& scenario, const Vec3& uav_position);
+  // Validates the ns-3 side of the scenario (TypeIds, attributes, channels), then builds it with
+  // UAV u at `placement[u]`. Each UE associates with its serving UAV (environment/association.h)
+  // at the positions given here and stays with it while the network lives. Throws ConfigError on
+  // a bad scenario, std::invalid_argument on a placement of another size.
+  UavNetwork(const Scenario& scenario, const Placement& placement);
   ~UavNetwork();
   UavNetwork(const UavNetwork&) = delete;
   UavNetwork& operator=(const UavNetwork&) = delete;
 
   const Scenario& scenario() const;
-  void SetUavPosition(const Vec3& position);
-  Vec3 UavPosition() const;
+  void SetUavPositions(const Placement& placement);
+  void SetUavPosition(std::size_t uav, const Vec3& position);
+  Placement UavPositions() const;
+  // The serving UAV's index, per UE.
+  const std::vector<int>& Association() const;
+  // The Wi-Fi channel number of each UAV.
+  std::vector<int> UavChannels() const;
 
-  // Geometric LoS (building geometry, whatever the loss model) and the SNR at the UAV of each
+  // Geometric LoS (building geometry, whatever the loss model) and the SNR at UAV `uav` of each
   // UE's uplink as the channel's loss model gives it, now.
+  std::vector<LinkState> LinksTo(std::size_t uav) const;
+  // Each UE's link to its serving UAV, now.
   std::vector<LinkState> Links() const;
 
   // Minimum SNR (dB) of each MCS of the configured PHY (index = MCS), as ns-3's
@@ -53,10 +62,10 @@ class UavNetwork {
   std::unique_ptr<Impl> impl_;
 };
 
-// Builds the scenario with the UAV fixed at `position`, runs it for the scenario's duration
+// Builds the scenario with the UAVs fixed at `placement`, runs it for the scenario's duration
 // (plus a short drain so that packets in flight at the end are not counted lost), and returns
 // the metrics over [warmup, duration]. `on_progress(simulated_s)` is called every ~5 % if set.
-RunMetrics EvaluatePosition(const Scenario& scenario, const Vec3& position,
+RunMetrics EvaluatePosition(const Scenario& scenario, const Placement& placement,
                             void (*on_progress)(double now, double end) = nullptr);
 
 }  // namespace rlpos

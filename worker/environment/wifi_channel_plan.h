@@ -4,6 +4,7 @@
 #include <ns3/wifi-phy-band.h>
 #include <ns3/wifi-standards.h>
 #include <string>
+#include <vector>
 
 #include "scenario/scenario.h"
 
@@ -12,11 +13,17 @@ namespace rlpos {
 struct WifiChannelPlan {
   ns3::WifiStandard standard;
   ns3::WifiPhyBand band;
+  int channel;  // its number
   double center_frequency_hz;
   std::string channel_settings;  // the WifiPhy "ChannelSettings" attribute value
   double rx_noise_figure_db;     // so that thermal noise + figure = the configured noise floor
 };
 
 WifiChannelPlan PlanWifiChannel(const WifiSpec& wifi);
+
+// The channel of each UAV: its own "channel", or (unset) the first channel of wifi.width in
+// wifi.channel's band that no UAV uses yet, starting with wifi.channel. Throws ConfigError
+// naming the UAV when a channel is invalid or the band has no channel left for it.
+std::vector<WifiChannelPlan> PlanUavChannels(const Scenario& scenario);
 
 }  // namespace rlpos

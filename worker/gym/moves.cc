@@ -1,12 +1,13 @@
 #include "gym/moves.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scenario/scenario_checks.h"
 
 namespace rlpos {
 
-Vec3 ApplyMove(const Scenario& s, int action, const Vec3& from) {
+Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
   const std::string& move = s.env.actions.at(static_cast<std::size_t>(action));
   const double d = s.env.step;
   Vec3 delta{0, 0, 0};
@@ -16,16 +17,27 @@ Vec3 ApplyMove(const Scenario& s, int action, const Vec3& from) {
   if (move == "backward") delta.y = -d;
   if (move == "right") delta.x = d;
   if (move == "left") delta.x = -d;
-  return ApplyDisplacement(s, delta, from);
+  return ApplyDisplacement(s, uav, delta, from);
 }
 
-Vec3 ApplyDisplacement(const Scenario& s, const Vec3& delta, const Vec3& from) {
-  Vec3 to{from.x + delta.x, from.y + delta.y, from.z + delta.z};
-  const Box& z = s.uav.zone;
+Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delta,
+                            const Placement& from) {
+  const Vec3& at = from.at(uav);
+  Vec3 to{at.x + delta.x, at.y + delta.y, at.z + delta.z};
+  const Box& z = s.uavs.at(uav).zone;
   to.x = std::clamp(to.x, z.xmin, z.xmax);
   to.y = std::clamp(to.y, z.ymin, z.ymax);
   to.z = std::clamp(to.z, z.zmin, z.zmax);
-  return BuildingContaining(s, to) >= 0 ? from : to;
+  if (BuildingContaining(s, to) >= 0)
+    return from;
+  for (std::size_t v = 0; v < from.size(); ++v) {
+    const Vec3& o = from[v];
+    if (v != uav && std::hypot(o.x - to.x, o.y - to.y, o.z - to.z) < kMinUavSeparation)
+      return from;
+  }
+  Placement placement = from;
+  placement[uav] = to;
+  return placement;
 }
 
 BoxSpace DisplacementBounds(const Scenario& s) {
@@ -36,15 +48,21 @@ BoxSpace DisplacementBounds(const Scenario& s) {
 BoxSpace ObservationBounds(const Scenario& s) {
   BoxSpace box;
   const double n = static_cast<double>(s.ues.size());
+  auto per_uav = [&](double Box::*lo, double Box::*hi) {
+    for (const auto& uav : s.uavs) box.low.push_back(uav.zone.*lo), box.high.push_back(uav.zone.*hi);
+  };
   for (const auto& field : s.env.observations) {
-    if (field == "x") box.low.push_back(s.uav.zone.xmin), box.high.push_back(s.uav.zone.xmax);
-    if (field == "y") box.low.push_back(s.uav.zone.ymin), box.high.push_back(s.uav.zone.ymax);
-    if (field == "z") box.low.push_back(s.uav.zone.zmin), box.high.push_back(s.uav.zone.zmax);
+    if (field == "x") per_uav(&Box::xmin, &Box::xmax);
+    if (field == "y") per_uav(&Box::ymin, &Box::ymax);
+    if (field == "z") per_uav(&Box::zmin, &Box::zmax);
     if (field == "n_los" || field == "demands_met") box.low.push_back(0), box.high.push_back(n);
     if (field == "throughput") box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
     if (field == "snr") {
       for (std::size_t i = 0; i < s.ues.size(); ++i) box.low.push_back(-20), box.high.push_back(60);
     }
+  }
+  if (s.uavs.size() > 1) {
+    for (std::size_t u = 0; u < s.uavs.size(); ++u) box.low.push_back(0), box.high.push_back(1);
   }
   return box;
 }
@@ -52,9 +70,9 @@ BoxSpace ObservationBounds(const Scenario& s) {
 std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
   std::vector<double> obs;
   for (const auto& field : s.env.observations) {
-    if (field == "x") obs.push_back(info.position.x);
-    if (field == "y") obs.push_back(info.position.y);
-    if (field == "z") obs.push_back(info.position.z);
+    if (field == "x") for (const auto& p : info.positions) obs.push_back(p.x);
+    if (field == "y") for (const auto& p : info.positions) obs.push_back(p.y);
+    if (field == "z") for (const auto& p : info.positions) obs.push_back(p.z);
     if (field == "n_los") obs.push_back(info.n_los);
     if (field == "demands_met") obs.push_back(info.demands_met);
     if (field == "throughput") obs.push_back(info.throughput_mbps);
@@ -62,6 +80,10 @@ std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
       // Clipped to the bounds so that the observation always lies in its space.
       for (double snr : info.snr_db) obs.push_back(std::clamp(snr, -20.0, 60.0));
     }
+  }
+  if (s.uavs.size() > 1) {
+    for (std::size_t u = 0; u < s.uavs.size(); ++u)
+      obs.push_back(static_cast<int>(u) == info.active_uav ? 1.0 : 0.0);
   }
   return obs;
 }

@@ -42,8 +42,9 @@ ActionMask UavPositioningEnv::ValidActions() const {
   ActionMask mask(actions.size(), 0);
   bool moves = false;
   for (std::size_t a = 0; a < actions.size(); ++a) {
-    const Vec3 to = ApplyMove(scenario_, static_cast<int>(a), position_);
-    const bool changes = to.x != position_.x || to.y != position_.y || to.z != position_.z;
+    const Vec3& at = placement_[active_];
+    const Vec3 to = ApplyMove(scenario_, active_, static_cast<int>(a), placement_)[active_];
+    const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
   }
@@ -57,21 +58,26 @@ double UavPositioningEnv::RewardOf(const StepInfo& info) const {
 }
 
 StepInfo UavPositioningEnv::Observe() {
-  if (analytic_)
-    return analytic_->Evaluate(position_);
-  const RunMetrics m = network_->Measure();
   StepInfo info;
-  info.position = position_;
-  info.n_los = m.n_los;
-  info.throughput_mbps = m.aggregate_throughput_mbps;
-  info.demands_met = m.demands_met;
-  for (const auto& ue : m.ues)
-    info.snr_db.push_back(ue.snr_db);
+  if (analytic_) {
+    info = analytic_->Evaluate(placement_);
+  } else {
+    const RunMetrics m = network_->Measure();
+    info.positions = placement_;
+    info.serving = network_->Association();
+    info.n_los = m.n_los;
+    info.throughput_mbps = m.aggregate_throughput_mbps;
+    info.demands_met = m.demands_met;
+    for (const auto& ue : m.ues)
+      info.snr_db.push_back(ue.snr_db);
+  }
+  info.active_uav = static_cast<int>(active_);
   return info;
 }
 
 std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
-  position_ = scenario_.uav.initial;
+  placement_ = scenario_.InitialPlacement();
+  active_ = 0;
   steps_ = 0;
   if (!analytic_) {
     // A fresh network per episode: RngRun = seed; traffic lasts the whole episode.
@@ -82,7 +88,8 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
     episode.simulation.warmup = warmup;
     episode.simulation.duration = warmup + scenario_.env.episode_duration + dt;
     network_.reset();  // one ns-3 simulation at a time
-    network_ = std::make_unique<UavNetwork>(episode, position_);
+    // UEs associate at the initial placement and keep their UAV for the episode.
+    network_ = std::make_unique<UavNetwork>(episode, placement_);
     network_->BeginMeasurement({warmup - dt, warmup});
     network_->RunUntil(warmup);
   }
@@ -97,7 +104,7 @@ StepResult UavPositioningEnv::Step(int action) {
                                                " out of the action space Discrete(" +
                                                std::to_string(ActionSpace().n) + ")");
   }
-  return MoveTo(ApplyMove(scenario_, action, position_));
+  return MoveTo(ApplyMove(scenario_, active_, action, placement_));
 }
 
 StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
@@ -110,13 +117,14 @@ StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
     throw std::out_of_range("the displacement must have 3 components, each within [-" + bound +
                             ", " + bound + "] m");
   }
-  return MoveTo(ApplyDisplacement(scenario_, {d[0], d[1], d[2]}, position_));
+  return MoveTo(ApplyDisplacement(scenario_, active_, {d[0], d[1], d[2]}, placement_));
 }
 
-StepResult UavPositioningEnv::MoveTo(const Vec3& position) {
-  position_ = position;
+StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
+  placement_ = placement;
+  active_ = (active_ + 1) % placement_.size();
   if (network_) {
-    network_->SetUavPosition(position_);
+    network_->SetUavPositions(placement_);
     const double now = network_->Now();
     const double next = now + scenario_.env.decision_interval;
     network_->BeginMeasurement({now, next});

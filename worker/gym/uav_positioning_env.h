@@ -3,6 +3,8 @@
 // packet fidelity: the full ns-3 simulation advances one decision interval per step
 // (Simulator::Stop + Run); each episode rebuilds the network with RngRun = the reset seed.
 // analytic fidelity: no packets (AnalyticEvaluator). Episode length and interval from env.
+// Several UAVs take turns: each step moves the UAV whose turn it is (StepInfo::active_uav, also
+// in the observation), so one shared policy flies them all.
 #include <memory>
 
 #include "gym/env.h"
@@ -27,8 +29,9 @@ class UavPositioningEnv : public Env {
   StepResult Step(int action) override;
   StepResult StepContinuous(const std::vector<double>& displacement) override;
   const StepInfo& LastInfo() const override { return info_; }
-  // With env.action_mask: "stay" and every move that changes the position (not into a wall of
-  // the zone or a building). Without it, or if nothing moves, every action.
+  // With env.action_mask: "stay" and every move that changes the active UAV's position (not into
+  // a wall of its zone, a building or another UAV). Without it, or if nothing moves, every
+  // action.
   ActionMask ValidActions() const override;
 
   const Scenario& scenario() const { return scenario_; }
@@ -39,13 +42,14 @@ class UavPositioningEnv : public Env {
 
  private:
   StepInfo Observe();  // the state at the current position (after the last interval)
-  StepResult MoveTo(const Vec3& position);  // one decision interval at `position`
+  StepResult MoveTo(const Placement& placement);  // one decision interval at `placement`
   bool Continuous() const { return scenario_.env.action_space == "continuous"; }
   Scenario scenario_;
   std::unique_ptr<Reward> reward_;
   std::unique_ptr<UavNetwork> network_;          // packet fidelity
   std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
-  Vec3 position_;
+  Placement placement_;
+  std::size_t active_ = 0;  // the UAV the next action moves
   StepInfo info_;
   int steps_ = 0;
   int steps_per_episode_ = 0;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "config/config_error.h"
+#include "config/number_text.h"
 #include "environment/uav_network.h"
 #include "gym/uav_positioning_env.h"
 #include "positioners/positioners.h"
@@ -64,7 +65,16 @@ Scenario Load(const std::string& file, const std::vector<std::string>& overrides
 
 py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
   py::dict d;
-  d["position"] = py::make_tuple(info.position.x, info.position.y, info.position.z);
+  const Vec3& p = info.positions.front();
+  d["position"] = py::make_tuple(p.x, p.y, p.z);  // the first UAV's
+  if (info.positions.size() > 1) {
+    py::list positions;
+    for (const auto& q : info.positions)
+      positions.append(py::make_tuple(q.x, q.y, q.z));
+    d["positions"] = positions;
+    d["serving_uav"] = info.serving;
+    d["active_uav"] = info.active_uav;
+  }
   d["n_los"] = info.n_los;
   d["throughput_mbps"] = info.throughput_mbps;
   d["demands_met"] = info.demands_met;
@@ -181,7 +191,7 @@ py::list Oracle(const std::string& file, const std::vector<std::string>& overrid
   options.grid_step = grid_step;
   options.packet_candidates = packet_candidates;
   options.packet_duration = packet_duration;
-  std::vector<ScoredPosition> ranked;
+  std::vector<ScoredPlacement> ranked;
   {
     Ns3Lease lease("an oracle search");
     py::gil_scoped_release release;
@@ -192,7 +202,14 @@ py::list Oracle(const std::string& file, const std::vector<std::string>& overrid
     ranked.resize(top);
   for (const auto& c : ranked) {
     py::dict d;
-    d["position"] = py::make_tuple(c.position.x, c.position.y, c.position.z);
+    const Vec3& p = c.placement.front();
+    d["position"] = py::make_tuple(p.x, p.y, p.z);
+    if (c.placement.size() > 1) {
+      py::list positions;
+      for (const auto& q : c.placement)
+        positions.append(py::make_tuple(q.x, q.y, q.z));
+      d["positions"] = positions;
+    }
     d["analytic_reward"] = c.analytic_reward;
     d["packet_reward"] = c.packet_reward ? py::object(py::float_(*c.packet_reward)) : py::none();
     d["n_los"] = c.n_los;
@@ -203,13 +220,17 @@ py::list Oracle(const std::string& file, const std::vector<std::string>& overrid
 }
 
 std::string Evaluate(const std::string& file, const std::vector<std::string>& overrides,
-                     const std::vector<double>& position) {
+                     const std::vector<std::vector<double>>& positions) {
   const Scenario s = Load(file, overrides);
-  if (position.size() != 3)
-    throw py::value_error("position: expected (x, y, z)");
-  const Vec3 p{position[0], position[1], position[2]};
+  Placement placement;
   try {
-    CheckUavPosition(s, p, "position");
+    std::vector<std::string> texts;
+    for (const auto& p : positions) {
+      if (p.size() != 3)
+        throw py::value_error("position: expected (x, y, z) per UAV");
+      texts.push_back(FormatPosition({p[0], p[1], p[2]}));
+    }
+    placement = ParsePlacement(s, texts, "position");
   } catch (const ConfigError& e) {
     throw py::value_error(e.describe());
   }
@@ -217,7 +238,7 @@ std::string Evaluate(const std::string& file, const std::vector<std::string>& ov
   {
     Ns3Lease lease("an evaluation");
     py::gil_scoped_release release;
-    metrics = EvaluatePosition(s, p);
+    metrics = EvaluatePosition(s, placement);
   }
   nlohmann::json out = ToJson(metrics);
   out["scenario"] = s.name;

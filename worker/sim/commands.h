@@ -23,7 +23,7 @@ struct CommonOptions {
 Scenario LoadScenarioFor(const CommonOptions& options, std::vector<std::string> extra);
 
 struct EvalOptions {
-  std::string position;
+  std::vector<std::string> positions;  // x,y,z per UAV
   double duration = -1;
   long long run = -1;
   bool json = false;
@@ -51,7 +51,7 @@ int RunValidate(const CommonOptions& options, bool json);
 int RunEval(const CommonOptions& options, const EvalOptions& eval);
 int RunTrain(const CommonOptions& options, const TrainOptions& train);
 int RunPosition(const CommonOptions& options, const PositionOptions& position);
-// The rl positioner: the trained policy's greedy final position (from the RL module).
-Vec3 RlPosition(const Scenario& scenario, const std::string& policy);
+// The rl positioner: the trained policy's greedy final placement (from the RL module).
+Placement RlPlacement(const Scenario& scenario, const std::string& policy);
 
 }  // namespace rlpos::sim

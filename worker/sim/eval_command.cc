@@ -28,12 +28,11 @@ int RunEval(const CommonOptions& options, const EvalOptions& eval) {
   if (eval.duration > 0) extra.push_back("simulation.duration=" + std::to_string(eval.duration));
   if (eval.run >= 0) extra.push_back("simulation.run=" + std::to_string(eval.run));
   const Scenario scenario = LoadScenarioFor(options, extra);
-  const Vec3 position = ParsePosition(eval.position, "--position");
-  CheckUavPosition(scenario, position, "--position");
+  const Placement placement = ParsePlacement(scenario, eval.positions, "--position");
   Log(LogLevel::kInfo, "evaluating scenario " + scenario.name);
   g_started = std::chrono::steady_clock::now();
   const RunMetrics metrics =
-      EvaluatePosition(scenario, position, eval.progress ? ShowProgress : nullptr);
+      EvaluatePosition(scenario, placement, eval.progress ? ShowProgress : nullptr);
   if (eval.json) {
     nlohmann::json out = ToJson(metrics);
     out["scenario"] = scenario.name;

@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 
@@ -12,61 +13,95 @@
 
 namespace rlpos::sim {
 
+namespace {
+
+nlohmann::json PositionsJson(const Placement& placement) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : placement)
+    out.push_back({p.x, p.y, p.z});
+  return out;
+}
+
+std::string PositionsText(const Placement& placement) {
+  std::string text;
+  char buffer[96];
+  for (const auto& p : placement) {
+    std::snprintf(buffer, sizeof buffer, "%s(%.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x,
+                  p.y, p.z);
+    text += buffer;
+  }
+  return text;
+}
+
+}  // namespace
+
 int RunPosition(const CommonOptions& options, const PositionOptions& p) {
   const Scenario s = LoadScenarioFor(options, {});
-  Vec3 position;
+  Placement placement;
   nlohmann::json candidates = nlohmann::json::array();
   if (p.positioner == "baseline") {
-    position = BaselinePosition(s);
+    placement = BaselinePlacement(s);
   } else if (p.positioner == "centroid") {
-    position = CentroidPosition(s);
+    placement = CentroidPlacement(s);
   } else if (p.positioner == "oracle") {
     const auto ranked = OracleSearch(s, OracleOptions{});
-    position = ranked.front().position;
+    placement = ranked.front().placement;
     for (std::size_t i = 0; i < ranked.size() && i < 5; ++i) {
       const auto& c = ranked[i];
-      candidates.push_back({{"position", {c.position.x, c.position.y, c.position.z}},
-                            {"analytic_reward", c.analytic_reward},
-                            // null: not re-scored at packet level
-                            {"packet_reward", c.packet_reward ? nlohmann::json(*c.packet_reward)
-                                                              : nlohmann::json(nullptr)},
-                            {"n_los", c.n_los}});
+      nlohmann::json candidate = {{"position", PositionsJson({c.placement.front()})[0]},
+                                  {"analytic_reward", c.analytic_reward},
+                                  // null: not re-scored at packet level
+                                  {"packet_reward", c.packet_reward
+                                                        ? nlohmann::json(*c.packet_reward)
+                                                        : nlohmann::json(nullptr)},
+                                  {"n_los", c.n_los}};
+      if (s.uavs.size() > 1)
+        candidate["positions"] = PositionsJson(c.placement);
+      candidates.push_back(candidate);
     }
   } else if (p.positioner == "offsets") {
+    if (s.uavs.size() > 1) {
+      throw ConfigError("--positioner", "offsets move one UAV; scenario " + s.name + " has " +
+                                            std::to_string(s.uavs.size()));
+    }
     if (p.offset < 1 || p.offset > kOffsetCount) {
       throw ConfigError("--offset", "is required for the offsets positioner: 1 to 5");
     }
     if (p.from.empty() == p.policy.empty()) {
       throw ConfigError("--from", "give exactly one of --from x,y,z or --policy DIR (the centre)");
     }
-    const Vec3 center = p.from.empty() ? RlPosition(s, p.policy) : ParsePosition(p.from, "--from");
-    position = OffsetPosition(center, p.offset, OffsetGeometryOf(s));
+    const Vec3 center =
+        p.from.empty() ? RlPlacement(s, p.policy).front() : ParsePosition(p.from, "--from");
+    placement = {OffsetPosition(center, p.offset, OffsetGeometryOf(s))};
   } else {
-    position = RlPosition(s, p.policy);
+    placement = RlPlacement(s, p.policy);
   }
-  // Every positioner is scored the same way: the analytic model at its position.
+  // Every positioner is scored the same way: the analytic model at its placement.
   AnalyticEvaluator analytic(s);
-  const StepInfo info = analytic.Evaluate(position);
+  const StepInfo info = analytic.Evaluate(placement);
   const double reward = (*MakeReward(s.env.reward))(
       RewardInputOf(s, info.n_los, info.throughput_mbps, info.demands_met));
+  const Vec3& first = placement.front();
   nlohmann::json out = {{"scenario", s.name},
                         {"positioner", p.positioner},
-                        {"position", {position.x, position.y, position.z}},
+                        {"position", {first.x, first.y, first.z}},  // the first UAV's
                         {"n_los", info.n_los},
                         {"n_ues", s.ues.size()},
                         {"analytic_throughput_mbps", info.throughput_mbps},
                         {"demands_met", info.demands_met},
                         {"reward", reward}};
+  if (s.uavs.size() > 1) {
+    out["positions"] = PositionsJson(placement);
+    out["serving_uav"] = info.serving;
+  }
   if (!candidates.empty())
     out["candidates"] = candidates;
   if (p.json) {
     std::cout << out.dump(2) << std::endl;
   } else {
-    std::printf(
-        "%s in %s: (%.1f, %.1f, %.1f), nLoS %d/%zu, analytic throughput %.1f Mbit/s, "
-        "reward %.4f\n",
-        p.positioner.c_str(), s.name.c_str(), position.x, position.y, position.z, info.n_los,
-        s.ues.size(), info.throughput_mbps, reward);
+    std::printf("%s in %s: %s, nLoS %d/%zu, analytic throughput %.1f Mbit/s, reward %.4f\n",
+                p.positioner.c_str(), s.name.c_str(), PositionsText(placement).c_str(), info.n_los,
+                s.ues.size(), info.throughput_mbps, reward);
   }
   return kExitOk;
 }

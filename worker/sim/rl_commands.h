@@ -8,6 +8,6 @@ namespace rlpos::sim {
 
 int TrainCommand(const CommonOptions& options, const TrainOptions& train);
 // The trained policy's greedy final position, replayed from the policy folder.
-Vec3 PolicyPosition(const Scenario& scenario, const std::string& policy);
+Placement PolicyPlacement(const Scenario& scenario, const std::string& policy);
 
 }  // namespace rlpos::sim

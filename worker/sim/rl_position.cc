@@ -8,7 +8,7 @@
 
 namespace rlpos::sim {
 
-Vec3 PolicyPosition(const Scenario& scenario, const std::string& policy) {
+Placement PolicyPlacement(const Scenario& scenario, const std::string& policy) {
   Scenario s = scenario;
   if (policy.empty())
     throw ConfigError("--policy", "is required for the rl positioner");
@@ -31,13 +31,13 @@ Vec3 PolicyPosition(const Scenario& scenario, const std::string& policy) {
   agent->Load(policy);
   const std::uint64_t run =
       trained.value("first_episode_run", 1ULL) + static_cast<std::uint64_t>(s.agent.train_episodes);
-  return RunEpisode(env, *agent, run, false).final_info.position;
+  return RunEpisode(env, *agent, run, false).final_info.positions;
 }
 
 }  // namespace rlpos::sim
 
-extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v1() {
+extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v2() {
   static const rlpos::sim::RlCommands commands{rlpos::sim::TrainCommand,
-                                               rlpos::sim::PolicyPosition};
+                                               rlpos::sim::PolicyPlacement};
   return &commands;
 }

@@ -1,6 +1,7 @@
 // rlpos-sim: one experiment on one scenario (the paper's main.py, in C++).
 //   rlpos-sim validate FILE
-//   rlpos-sim eval --scenario FILE --position x,y,z [--duration S] [--run N] [--json]
+//   rlpos-sim eval --scenario FILE --position x,y,z [--position ...] [--duration S] [--run N]
+//                  [--json]
 //   rlpos-sim train --scenario FILE [--algorithm dqn|ppo|sac] [--fidelity packet|analytic]
 //                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
@@ -48,7 +49,9 @@ int main(int argc, char** argv) {
   EvalOptions eval_options;
   eval_options.progress = isatty(STDERR_FILENO) != 0;
   eval->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
-  eval->add_option("--position", eval_options.position, "UAV position x,y,z (m)")->required();
+  eval->add_option("--position", eval_options.positions,
+                   "UAV position x,y,z (m); once per UAV, in the scenario's order")
+      ->required();
   eval->add_option("--duration", eval_options.duration,
                    "Simulated seconds (overrides simulation.duration)")
       ->check(CLI::PositiveNumber);

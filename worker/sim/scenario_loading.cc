@@ -2,6 +2,7 @@
 
 #include <ns3/propagation-loss-model.h>
 #include <ns3/wifi-remote-station-manager.h>
+#include <cmath>
 #include <sstream>
 
 #include "config/config_error.h"
@@ -13,7 +14,7 @@
 namespace rlpos {
 
 void CheckScenarioAgainstNs3(const Scenario& scenario) {
-  PlanWifiChannel(scenario.wifi);
+  PlanUavChannels(scenario);
   CreateFromSpec(scenario.propagation, "/propagation", ns3::PropagationLossModel::GetTypeId());
   CreateFromSpec(scenario.wifi.rate_manager, "/wifi/rate_manager",
                  ns3::WifiRemoteStationManager::GetTypeId());
@@ -50,6 +51,30 @@ void CheckUavPosition(const Scenario& s, const Vec3& p, const std::string& what)
     throw ConfigError(what, where.str() + " is inside building " + std::to_string(inside) +
                                 " (\"" + s.buildings[inside].name + "\")");
   }
+}
+
+Placement ParsePlacement(const Scenario& s, const std::vector<std::string>& texts,
+                         const std::string& what) {
+  if (texts.size() != s.uavs.size()) {
+    throw ConfigError(what, "scenario " + s.name + " has " + std::to_string(s.uavs.size()) +
+                                " UAV(s): give one x,y,z each (" + std::to_string(texts.size()) +
+                                " given)");
+  }
+  Placement placement;
+  for (std::size_t u = 0; u < texts.size(); ++u) {
+    const std::string where = texts.size() == 1 ? what : what + " #" + std::to_string(u + 1);
+    placement.push_back(ParsePosition(texts[u], where));
+    CheckUavPosition(s, placement.back(), where);
+    for (std::size_t v = 0; v < u; ++v) {
+      const Vec3& a = placement[u];
+      const Vec3& b = placement[v];
+      if (std::hypot(a.x - b.x, a.y - b.y, a.z - b.z) < kMinUavSeparation) {
+        throw ConfigError(where, "UAVs " + s.uavs[v].name + " and " + s.uavs[u].name +
+                                     " overlap: they must be at least 1 m apart");
+      }
+    }
+  }
+  return placement;
 }
 
 }  // namespace rlpos

@@ -19,4 +19,9 @@ Vec3 ParsePosition(const std::string& text, const std::string& what);
 // A position the UAV may take in this scenario: inside the venue and outside every building.
 void CheckUavPosition(const Scenario& scenario, const Vec3& p, const std::string& what);
 
+// One "x,y,z" per UAV of the scenario, in its order, each a position a UAV may take, the UAVs
+// kMinUavSeparation apart. Throws ConfigError naming `what`.
+Placement ParsePlacement(const Scenario& scenario, const std::vector<std::string>& texts,
+                         const std::string& what);
+
 }  // namespace rlpos

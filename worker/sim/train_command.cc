@@ -21,7 +21,10 @@ std::uint64_t FirstEpisodeRun(std::uint64_t seed) {
 }
 
 nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {
-  const Vec3& p = r.final_info.position;
+  const Vec3& p = r.final_info.positions.front();
+  nlohmann::json positions = nlohmann::json::array();
+  for (const auto& q : r.final_info.positions)
+    positions.push_back({q.x, q.y, q.z});
   return {{"scenario", s.name},
           {"algorithm", s.agent.algorithm},
           {"action_space", s.env.action_space},
@@ -30,7 +33,8 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"train_episodes", s.agent.train_episodes},
           {"eval_episodes", s.agent.eval_episodes},
           {"first_episode_run", FirstEpisodeRun(seed)},
-          {"position", {p.x, p.y, p.z}},
+          {"position", {p.x, p.y, p.z}},  // the first UAV's
+          {"positions", positions},        // every UAV's, the scenario's order
           {"n_los", r.final_info.n_los},
           {"n_ues", s.ues.size()},
           {"throughput_mbps", r.final_info.throughput_mbps},
@@ -38,8 +42,9 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"reward", r.final_reward}};
 }
 
+// x, y, z: the first UAV's final position.
 void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
-  const Vec3& p = r.final_info.position;
+  const Vec3& p = r.final_info.positions.front();
   out << r.episode << ',' << (r.evaluation ? "eval" : "train") << ',' << r.steps << ','
       << r.total_reward << ',' << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ','
       << r.updates << ',' << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ','
@@ -80,22 +85,27 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     curve << "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
              "x,y,z,n_los,throughput_mbps\n";
     std::ofstream trajectory(partial / "trajectory.csv");
-    trajectory << "episode,step,action,x,y,z,n_los,throughput_mbps,reward\n";
+    // One row per step: the UAV that moved (its index), its action and where it went.
+    trajectory << "episode,step,uav,action,x,y,z,n_los,throughput_mbps,reward\n";
     int eval_episode = s.agent.train_episodes;
-    Vec3 last = s.uav.initial;
+    Placement last = s.InitialPlacement();
+    const std::size_t n_uavs = last.size();
     const auto write_step = [&](int step, int action, const StepResult& r) {
       if (step == 1) {
         ++eval_episode;
-        last = s.uav.initial;
+        last = s.InitialPlacement();
       }
-      const Vec3& p = r.info.position;
+      // Several UAVs move in turn: step k moved UAV (k - 1) mod n.
+      const std::size_t uav = static_cast<std::size_t>(step - 1) % n_uavs;
+      const Vec3& p = r.info.positions[uav];
+      const Vec3 from = last[uav];
       // A continuous action is written as the displacement the UAV made, "dx dy dz".
-      const std::string moved = agent.Continuous() ? FormatNumber(p.x - last.x) + ' ' +
-                                                         FormatNumber(p.y - last.y) + ' ' +
-                                                         FormatNumber(p.z - last.z)
+      const std::string moved = agent.Continuous() ? FormatNumber(p.x - from.x) + ' ' +
+                                                         FormatNumber(p.y - from.y) + ' ' +
+                                                         FormatNumber(p.z - from.z)
                                                    : s.env.actions[action];
-      last = p;
-      trajectory << eval_episode << ',' << step << ',' << moved << ',' << p.x << ',' << p.y << ','
+      last = r.info.positions;
+      trajectory << eval_episode << ',' << step << ',' << uav << ',' << moved << ',' << p.x << ',' << p.y << ','
                  << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ',' << r.reward
                  << '\n';
     };
@@ -104,7 +114,7 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
         env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
         [&](const EpisodeRecord& r) {
           WriteCurveRow(curve, r);
-          const Vec3& p = r.final_info.position;
+          const Vec3& p = r.final_info.positions.front();
           std::fprintf(stderr,
                        "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
                        "final (%.1f, %.1f, %.1f) nLoS %d\n",
@@ -123,7 +133,7 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     if (t.json) {
       std::cout << summary.dump(2) << std::endl;
     } else {
-      const auto& p = result.final_info.position;
+      const auto& p = result.final_info.positions.front();
       std::printf(
           "trained %s (%s, %s, seed %llu): final position (%.1f, %.1f, %.1f), nLoS %d/%zu, "
           "reward %.4f\npolicy, learning curve and result in %s\n",

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -10,9 +11,12 @@ namespace rlpos::sim {
 
 int RunValidate(const CommonOptions& options, bool json) {
   const Scenario scenario = LoadScenarioFor(options, {});
-  // Built, not run: gives the geometric LoS and SNR of every UE at the baseline position.
-  UavNetwork network(scenario, scenario.uav.initial);
+  // Built, not run: gives the geometric LoS and SNR of every UE at the baseline placement (to
+  // the UAV it associates with).
+  UavNetwork network(scenario, scenario.InitialPlacement());
   const auto links = network.Links();
+  const auto& serving = network.Association();
+  const auto channels = network.UavChannels();
   const PhyProfile phy{scenario.wifi.standard, scenario.wifi.width_mhz,
                               scenario.wifi.guard_interval_ns, scenario.wifi.spatial_streams};
   int n_los = 0;
@@ -25,9 +29,18 @@ int RunValidate(const CommonOptions& options, bool json) {
                    {"snr_db", links[i].snr_db},
                    {"demand_mbps", scenario.ues[i].demand_mbps},
                    {"required_mcs", demand.required_mcs},
-                   {"demand_met", demand.met}});
+                   {"demand_met", demand.met},
+                   {"uav", scenario.uavs[static_cast<std::size_t>(serving[i])].name}});
   }
-  const auto& p = scenario.uav.initial;
+  nlohmann::json uavs = nlohmann::json::array();
+  for (std::size_t u = 0; u < scenario.uavs.size(); ++u) {
+    const auto& q = scenario.uavs[u].initial;
+    uavs.push_back({{"name", scenario.uavs[u].name},
+                    {"position", {q.x, q.y, q.z}},
+                    {"channel", channels[u]},
+                    {"ues_served", std::count(serving.begin(), serving.end(), static_cast<int>(u))}});
+  }
+  const auto& p = scenario.uavs.front().initial;
   if (json) {
     std::cout << nlohmann::json{{"scenario", scenario.name},
                                 {"valid", true},
@@ -37,6 +50,7 @@ int RunValidate(const CommonOptions& options, bool json) {
                                 {"baseline", {p.x, p.y, p.z}},
                                 {"n_los_at_baseline", n_los},
                                 {"links_at_baseline", ues},
+                                {"uavs", uavs},
                                 {"effective", ToJson(scenario)}}
                      .dump(2)
               << std::endl;
@@ -54,12 +68,23 @@ int RunValidate(const CommonOptions& options, bool json) {
               scenario.wifi.guard_interval_ns, scenario.wifi.mode.c_str(),
               scenario.wifi.rate_manager.type.c_str());
   std::printf("  propagation %s\n", scenario.propagation.type.c_str());
-  std::printf("  baseline    (%g, %g, %g): nLoS %d/%zu\n", p.x, p.y, p.z, n_los, links.size());
+  if (uavs.size() == 1) {
+    std::printf("  baseline    (%g, %g, %g): nLoS %d/%zu\n", p.x, p.y, p.z, n_los, links.size());
+  } else {
+    for (const auto& uav : uavs) {
+      std::printf("  UAV %-7s (%g, %g, %g), channel %d, serves %d UE(s)\n",
+                  uav["name"].get<std::string>().c_str(), uav["position"][0].get<double>(),
+                  uav["position"][1].get<double>(), uav["position"][2].get<double>(),
+                  uav["channel"].get<int>(), uav["ues_served"].get<int>());
+    }
+    std::printf("  baseline    nLoS %d/%zu\n", n_los, links.size());
+  }
   for (const auto& ue : ues) {
-    std::printf("    %-10s %-5s SNR %6.1f dB, demand %6.1f Mbit/s (MCS %d) %s\n",
+    std::printf("    %-10s %-5s SNR %6.1f dB, demand %6.1f Mbit/s (MCS %d) %s%s\n",
                 ue["name"].get<std::string>().c_str(), ue["los"].get<bool>() ? "LoS" : "NLoS",
                 ue["snr_db"].get<double>(), ue["demand_mbps"].get<double>(),
-                ue["required_mcs"].get<int>(), ue["demand_met"].get<bool>() ? "met" : "not met");
+                ue["required_mcs"].get<int>(), ue["demand_met"].get<bool>() ? "met" : "not met",
+                uavs.size() == 1 ? "" : (", UAV " + ue["uav"].get<std::string>()).c_str());
   }
   return 0;
 }

@@ -41,9 +41,14 @@ def oracle(scenario, overrides=None, grid_step=None, packet_candidates=3, packet
 def evaluate(scenario, position, run=1, duration=None, overrides=None):
     """Packet-level evaluation of a UAV position (rlpos-sim eval): a dict with the aggregate
     and per-UE throughput, delay and loss, nLoS, ... of RngRun `run` over the scenario's
-    simulation.duration, or `duration` s."""
+    simulation.duration, or `duration` s. `position` is (x, y, z), or one (x, y, z) per UAV
+    for a scenario of several UAVs (then the dict has "uavs", the metrics per UAV)."""
     texts = override_texts(overrides, **{"simulation.run": run, "simulation.duration": duration})
-    return json.loads(_rlpos.evaluate(str(scenario), texts, [float(v) for v in position]))
+    placement = list(position)
+    if placement and not hasattr(placement[0], "__len__"):
+        placement = [placement]
+    placement = [[float(v) for v in p] for p in placement]
+    return json.loads(_rlpos.evaluate(str(scenario), texts, placement))
 
 
 if GYMNASIUM:
