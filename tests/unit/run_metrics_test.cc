@@ -59,6 +59,57 @@ TEST(Summarize, AggregatesArePacketWeighted) {
   EXPECT_NEAR(ToJson(m)["jain_fairness"].get<double>(), 0.8, 1e-12);
 }
 
+TEST(Summarize, PerUavSharesAddUpAndFollowTheServingUav) {
+  const MeasurementWindow window{0.0, 1.0};
+  // UEs 0 and 2 at UAV "a", UE 1 at UAV "b"; UAV "c" serves nobody.
+  std::vector<FlowAccumulator> flows(3, FlowAccumulator(window));
+  flows[0].OnSent(0.1);
+  flows[0].OnReceived(0.1, 0.12, 1000);  // 20 ms
+  flows[1].OnSent(0.2);
+  flows[1].OnReceived(0.2, 0.21, 3000);  // 10 ms
+  flows[2].OnSent(0.3);
+  flows[2].OnSent(0.4);
+  flows[2].OnReceived(0.3, 0.34, 3000);  // 40 ms; one of two lost
+  std::vector<UeMetrics> ues(3);
+  ues[0].uav = 0;
+  ues[0].los = true;
+  ues[1].uav = 1;
+  ues[1].los = true;
+  ues[2].uav = 0;
+  const RunMetrics m = Summarize({{"a", {1, 1, 10}, 50}, {"b", {9, 9, 10}, 114}, {"c", {5, 5, 20}, 42}},
+                                 window, 1, flows, ues);
+  ASSERT_EQ(m.uavs.size(), 3u);
+  const UavMetrics& a = m.uavs[0];
+  EXPECT_EQ(a.uav.name, "a");
+  EXPECT_EQ(a.uav.channel, 50);
+  EXPECT_EQ(a.ues_served, 2);
+  EXPECT_DOUBLE_EQ(a.throughput_mbps, 4000 * 8 / 1e6);
+  EXPECT_NEAR(a.mean_delay_ms, 30.0, 1e-9);
+  EXPECT_DOUBLE_EQ(a.loss_ratio, 1.0 / 3);
+  EXPECT_EQ(a.n_los, 1);
+  EXPECT_DOUBLE_EQ(a.worst_ue_throughput_mbps, 1000 * 8 / 1e6);
+  // (1 + 3)^2 / (2 (1 + 9)) = 0.8
+  EXPECT_NEAR(a.jain_fairness, 0.8, 1e-12);
+  EXPECT_EQ(m.uavs[1].ues_served, 1);
+  EXPECT_DOUBLE_EQ(m.uavs[1].throughput_mbps, 3000 * 8 / 1e6);
+  EXPECT_NEAR(m.uavs[1].jain_fairness, 1.0, 1e-12);
+  EXPECT_EQ(m.uavs[2].ues_served, 0);
+  EXPECT_DOUBLE_EQ(m.uavs[2].throughput_mbps, 0.0);
+  EXPECT_TRUE(std::isnan(m.uavs[2].jain_fairness));
+  EXPECT_TRUE(std::isnan(m.uavs[2].worst_ue_throughput_mbps));
+  EXPECT_DOUBLE_EQ(m.aggregate_throughput_mbps, a.throughput_mbps + m.uavs[1].throughput_mbps);
+  EXPECT_EQ(m.n_los, 2);
+  EXPECT_DOUBLE_EQ(m.position.x, 1.0);  // the first UAV's
+  const auto j = ToJson(m);
+  ASSERT_EQ(j["uavs"].size(), 3u);
+  EXPECT_EQ(j["uavs"][1]["ues_served"], 1);
+  EXPECT_TRUE(j["uavs"][2]["jain_fairness"].is_null());
+  EXPECT_EQ(j["ues"][2]["uav"], "a");
+  // One UAV: no "uavs" (they would repeat the run's metrics).
+  EXPECT_FALSE(ToJson(Summarize({1, 2, 3}, window, 1, flows, ues))["ues"][0].contains("uav"));
+  EXPECT_FALSE(ToJson(Summarize({1, 2, 3}, window, 1, flows, ues)).contains("uavs"));
+}
+
 TEST(Summarize, JainIndexSpansOneOverNToOne) {
   EXPECT_DOUBLE_EQ(JainIndex({3, 3, 3}), 1.0);
   EXPECT_DOUBLE_EQ(JainIndex({5, 0, 0, 0}), 0.25);  // one UE of four gets everything
