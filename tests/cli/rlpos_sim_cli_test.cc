@@ -158,5 +158,42 @@ TEST(RlposSimCli, OracleCandidatesNotRescoredCarryNull) {
   }
 }
 
+const std::string kUrban3 = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/urban3.json";
+
+// The three-UAV scenario at packet level, briefly: one --position per UAV, per-UAV metrics.
+TEST(RlposSimCli, EvalOfThreeUavs) {
+  const auto r = RunCommand(Sim("eval --scenario " + kUrban3 +
+                                " --position 135,85,60 --position 20,135,60 --position 70,15,60"
+                                " --duration 1.5 --run 2 --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(r.out);
+  ASSERT_EQ(m["uavs"].size(), 3u);
+  int served = 0;
+  double throughput = 0;
+  for (const auto& uav : m["uavs"]) {
+    served += uav["ues_served"].get<int>();
+    throughput += uav["throughput_mbps"].get<double>();
+    EXPECT_GT(uav["throughput_mbps"].get<double>(), 0.0) << uav;
+  }
+  EXPECT_EQ(served, 20);
+  EXPECT_NEAR(throughput, m["aggregate_throughput_mbps"].get<double>(), 1e-6);
+  EXPECT_EQ(m["uavs"][1]["name"], "uav2");
+  EXPECT_EQ(m["uavs"][2]["channel"], 106);
+  EXPECT_EQ(m["ues"][0]["uav"].get<std::string>().rfind("uav", 0), 0u);
+}
+
+TEST(RlposSimCli, EvalNeedsAPositionPerUav) {
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kUrban3 + " --position 135,85,60")), 2,
+                     "--position: scenario urban3 has 3 UAV(s): give one x,y,z each (1 given)");
+  ExpectOneLineError(
+      RunCommand(Sim("eval --scenario " + kUrban3 +
+                     " --position 135,85,60 --position 135,85.5,60 --position 70,15,60")),
+      2, "--position #2: UAVs uav1 and uav2 overlap");
+  ExpectOneLineError(
+      RunCommand(Sim("eval --scenario " + kUrban3 +
+                     " --position 135,85,60 --position 25,25,10 --position 70,15,60")),
+      2, "--position #2: (25, 25, 10) is inside building 0");
+}
+
 }  // namespace
 }  // namespace rlpos::testing

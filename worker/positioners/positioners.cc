@@ -77,30 +77,34 @@ class PlacementSearch {
     return true;
   }
 
-  // Descends from `at` until a round moves no UAV; returns the end and its score.
+  // Descends from `at` until no UAV can improve on its own; returns the end and its score.
   std::pair<std::vector<std::size_t>, StepInfo> Descend(std::vector<std::size_t> at) {
     StepInfo info = Score(at);
     double reward = RewardOf(s_, reward_, info);
-    for (bool moved = true; moved;) {
-      moved = false;
-      for (std::size_t u = 0; u < at.size(); ++u) {
-        std::vector<std::size_t> trial = at;
-        const Placement placement = PlacementOf(at);
-        for (std::size_t g = 0; g < grids_[u].size(); ++g) {
-          if (g == at[u] || Overlaps(placement, u, grids_[u][g]))
-            continue;
-          trial[u] = g;
-          const StepInfo candidate = Score(trial);
-          const double r = RewardOf(s_, reward_, candidate);
-          // Strictly better only: the search cannot cycle, and ties keep the earlier point.
-          if (r > reward + 1e-12) {
-            reward = r;
-            info = candidate;
-            at[u] = g;
-            moved = true;
-          }
+    // A UAV's scan is repeated only when another UAV moved since: otherwise it would find the
+    // same best point, where it already is.
+    const std::size_t k = at.size();
+    std::size_t unchanged_scans = 0;
+    for (std::size_t u = 0; unchanged_scans < k; u = (u + 1) % k) {
+      bool moved = false;
+      std::vector<std::size_t> trial = at;
+      const Placement placement = PlacementOf(at);
+      for (std::size_t g = 0; g < grids_[u].size(); ++g) {
+        if (g == at[u] || Overlaps(placement, u, grids_[u][g]))
+          continue;
+        trial[u] = g;
+        const StepInfo candidate = Score(trial);
+        const double r = RewardOf(s_, reward_, candidate);
+        // Strictly better only: the search cannot cycle, and ties keep the earlier point.
+        if (r > reward + 1e-12) {
+          reward = r;
+          info = candidate;
+          at[u] = g;
+          moved = true;
         }
       }
+      // A scan that moved its UAV leaves it at its best point: it counts as settled.
+      unchanged_scans = moved ? 1 : unchanged_scans + 1;
     }
     return {at, info};
   }
