@@ -1,6 +1,7 @@
 #include "config/number_text.h"
 
 #include <charconv>
+#include <cstdio>
 #include <system_error>
 
 namespace rlpos {
@@ -14,6 +15,17 @@ std::string FormatNumber(double x) {
 
 std::string FormatPosition(const Vec3& p) {
   return FormatNumber(p.x) + "," + FormatNumber(p.y) + "," + FormatNumber(p.z);
+}
+
+std::string DescribePlacement(const Placement& placement) {
+  std::string text;
+  char buffer[96];
+  for (const auto& p : placement) {
+    std::snprintf(buffer, sizeof buffer, "%s(%.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x,
+                  p.y, p.z);
+    text += buffer;
+  }
+  return text;
 }
 
 }  // namespace rlpos

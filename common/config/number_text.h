@@ -10,5 +10,7 @@ namespace rlpos {
 std::string FormatNumber(double x);
 // "x,y,z" as rlpos-sim --position takes it.
 std::string FormatPosition(const Vec3& p);
+// For people: "(80.0, 90.0, 12.0) (80.0, 10.0, 12.0)", one decimal, a triple per UAV.
+std::string DescribePlacement(const Placement& placement);
 
 }  // namespace rlpos

@@ -130,6 +130,8 @@ struct EnvSpec {
   // "discrete": the moves above. "continuous": a displacement (dx, dy, dz) in metres, each
   // component within [-step, step] (Gymnasium's Box), clamped to the zone like a move.
   std::string action_space = "discrete";
+  // Several UAVs take turns: each moves this many consecutive steps before the next one's turn.
+  int turn_steps = 1;
   RewardSpec reward;
 };
 

@@ -253,6 +253,7 @@ EnvSpec ReadEnv(const json& v) {
   e.episode_duration = r.Number("episode_duration", e.episode_duration, Positive());
   e.action_mask = r.Bool("action_mask", e.action_mask);
   e.action_space = r.String("action_space", e.action_space, {"discrete", "continuous"});
+  e.turn_steps = static_cast<int>(r.Integer("turn_steps", e.turn_steps, 1, 1000000));
   if (e.decision_interval > e.episode_duration) {
     throw ConfigError(r.PathOf("decision_interval"), "must not exceed the episode duration");
   }
@@ -579,6 +580,8 @@ json ToJson(const Scenario& s) {
               {"warmup_steps", s.agent.sac.warmup_steps},
               {"update_interval", s.agent.sac.update_interval},
               {"alpha", s.agent.sac.alpha ? json(*s.agent.sac.alpha) : json(nullptr)}}}}}};
+  if (s.env.turn_steps != 1)  // absent before several UAVs existed: documents stay as they were
+    document["env"]["turn_steps"] = s.env.turn_steps;
   if (s.uavs_listed) {
     document["uavs"] = uavs;
   } else {

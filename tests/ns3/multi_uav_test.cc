@@ -195,7 +195,8 @@ TEST(Positioners, OracleEndsWhereNoSingleUavCanImprove) {
 TEST(TurnTakingEnv, UavsMoveInTurnAndNeverOntoEachOther) {
   // The two UAVs 5 m apart on x: north's "right" would land on south.
   const Scenario s = Load("campus2", {"env.fidelity=analytic", "uavs.0.position=[100, 50, 40]",
-                                      "uavs.1.position=[105, 50, 40]"});
+                                      "uavs.1.position=[105, 50, 40]",
+                                      "env.observations=[\"x\", \"y\", \"z\", \"n_los\"]"});
   UavPositioningEnv env(s);
   const auto action = [&](const std::string& name) {
     return static_cast<int>(std::find(s.env.actions.begin(), s.env.actions.end(), name) -
@@ -221,6 +222,21 @@ TEST(TurnTakingEnv, UavsMoveInTurnAndNeverOntoEachOther) {
   EXPECT_EQ(r.info.positions[0].z, 45);
   EXPECT_EQ(r.info.positions[1].z, 40);
   EXPECT_TRUE(env.ObservationSpace().Contains(r.observation));
+}
+
+TEST(TurnTakingEnv, TurnsOfSeveralSteps) {
+  const Scenario s = Load("campus2", {"env.fidelity=analytic", "env.turn_steps=2"});
+  UavPositioningEnv env(s);
+  const int up = static_cast<int>(
+      std::find(s.env.actions.begin(), s.env.actions.end(), "up") - s.env.actions.begin());
+  env.Reset(1);
+  std::vector<int> moved;
+  for (int step = 0; step < 6; ++step) {
+    const Placement before = env.LastInfo().positions;
+    const StepResult r = env.Step(up);
+    moved.push_back(r.info.positions[0].z != before[0].z ? 0 : 1);
+  }
+  EXPECT_EQ(moved, (std::vector<int>{0, 0, 1, 1, 0, 0}));
 }
 
 }  // namespace

@@ -122,7 +122,7 @@ StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
 
 StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   placement_ = placement;
-  active_ = (active_ + 1) % placement_.size();
+  active_ = static_cast<std::size_t>((steps_ + 1) / scenario_.env.turn_steps) % placement_.size();
   if (network_) {
     network_->SetUavPositions(placement_);
     const double now = network_->Now();

@@ -4,7 +4,7 @@
 // (Simulator::Stop + Run); each episode rebuilds the network with RngRun = the reset seed.
 // analytic fidelity: no packets (AnalyticEvaluator). Episode length and interval from env.
 // Several UAVs take turns: each step moves the UAV whose turn it is (StepInfo::active_uav, also
-// in the observation), so one shared policy flies them all.
+// in the observation), env.turn_steps steps in a row, so one shared policy flies them all.
 #include <memory>
 
 #include "gym/env.h"

@@ -4,6 +4,7 @@
 
 #include "campaign/offsets.h"
 #include "config/config_error.h"
+#include "config/number_text.h"
 #include "gym/analytic_evaluator.h"
 #include "gym/reward.h"
 #include "positioners/positioners.h"
@@ -20,17 +21,6 @@ nlohmann::json PositionsJson(const Placement& placement) {
   for (const auto& p : placement)
     out.push_back({p.x, p.y, p.z});
   return out;
-}
-
-std::string PositionsText(const Placement& placement) {
-  std::string text;
-  char buffer[96];
-  for (const auto& p : placement) {
-    std::snprintf(buffer, sizeof buffer, "%s(%.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x,
-                  p.y, p.z);
-    text += buffer;
-  }
-  return text;
 }
 
 }  // namespace
@@ -100,7 +90,7 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
     std::cout << out.dump(2) << std::endl;
   } else {
     std::printf("%s in %s: %s, nLoS %d/%zu, analytic throughput %.1f Mbit/s, reward %.4f\n",
-                p.positioner.c_str(), s.name.c_str(), PositionsText(placement).c_str(), info.n_los,
+                p.positioner.c_str(), s.name.c_str(), DescribePlacement(placement).c_str(), info.n_los,
                 s.ues.size(), info.throughput_mbps, reward);
   }
   return kExitOk;

@@ -95,8 +95,9 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
         ++eval_episode;
         last = s.InitialPlacement();
       }
-      // Several UAVs move in turn: step k moved UAV (k - 1) mod n.
-      const std::size_t uav = static_cast<std::size_t>(step - 1) % n_uavs;
+      // Several UAVs move in turns of env.turn_steps steps.
+      const std::size_t uav =
+          static_cast<std::size_t>((step - 1) / s.env.turn_steps) % n_uavs;
       const Vec3& p = r.info.positions[uav];
       const Vec3 from = last[uav];
       // A continuous action is written as the displacement the UAV made, "dx dy dz".
@@ -133,12 +134,13 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     if (t.json) {
       std::cout << summary.dump(2) << std::endl;
     } else {
-      const auto& p = result.final_info.positions.front();
       std::printf(
-          "trained %s (%s, %s, seed %llu): final position (%.1f, %.1f, %.1f), nLoS %d/%zu, "
-          "reward %.4f\npolicy, learning curve and result in %s\n",
-          s.name.c_str(), s.agent.algorithm.c_str(), s.env.fidelity.c_str(), static_cast<unsigned long long>(s.agent.seed),
-          p.x, p.y, p.z, result.final_info.n_los, s.ues.size(), result.final_reward, t.out.c_str());
+          "trained %s (%s, %s, seed %llu): final position %s, nLoS %d/%zu, reward %.4f\n"
+          "policy, learning curve and result in %s\n",
+          s.name.c_str(), s.agent.algorithm.c_str(), s.env.fidelity.c_str(),
+          static_cast<unsigned long long>(s.agent.seed),
+          DescribePlacement(result.final_info.positions).c_str(), result.final_info.n_los,
+          s.ues.size(), result.final_reward, t.out.c_str());
     }
   } catch (...) {
     fs::remove_all(partial, ec);
