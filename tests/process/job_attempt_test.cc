@@ -142,7 +142,7 @@ class JobAttemptTest : public ::testing::Test {
   static JobOutcome AwaitOutcome(JobAttempt& attempt, double timeout_s = 5.0) {
     std::optional<JobOutcome> outcome;
     EXPECT_TRUE(WaitFor([&] { return (outcome = attempt.Poll()).has_value(); }, timeout_s));
-    return outcome.value_or(JobOutcome{false, "", "<no outcome>"});
+    return outcome.value_or(JobOutcome{false, "", "<no outcome>", {}});
   }
   // An eval order; the child is a stand-in "rlpos-sim" (Sim) that gets the real command line:
   // $1 eval, $2 --scenario, $3 the scenario file, $4 --position, $5 x,y,z.

@@ -192,3 +192,26 @@ def test_works_the_same_without_gymnasium():
 def test_scenario_paths_are_validated_like_the_cli():
     with pytest.raises(ValueError, match="^overrides: keys are scenario paths"):
         rlpos.make(scenario_path("b"), overrides={5: 1})
+
+
+def test_several_uavs_take_turns_and_evaluate_per_uav():
+    env = rlpos.make(scenario_path("campus2"), fidelity="analytic", seed=1, overrides=SHORT)
+    try:
+        # x, y, z of both UAVs, nLoS, 12 SNRs, whose turn (one-hot)
+        assert env.observation_space.shape == (2 * 3 + 1 + 12 + 2,)
+        observation, info = env.reset(seed=1)
+        assert info["positions"] == [(80, 90, 12), (80, 10, 12)]
+        assert info["active_uav"] == 0 and list(observation[-2:]) == [1, 0]
+        assert sorted(set(info["serving_uav"])) == [0, 1]
+        up = 0  # "up"
+        _, _, _, _, info = env.step(up)
+        assert info["positions"] == [(80, 90, 17), (80, 10, 12)]
+        assert info["active_uav"] == 1
+    finally:
+        env.close()
+    metrics = rlpos.evaluate(scenario_path("campus2"), [(45, 100, 12), (115, 0, 12)], run=1,
+                             duration=1.5)
+    assert [u["name"] for u in metrics["uavs"]] == ["north", "south"]
+    assert sum(u["ues_served"] for u in metrics["uavs"]) == 12
+    with pytest.raises(ValueError, match="has 2 UAV"):
+        rlpos.evaluate(scenario_path("campus2"), (45, 100, 12), duration=1.5)
