@@ -21,8 +21,8 @@ std::string DescribePlacement(const Placement& placement) {
   std::string text;
   char buffer[96];
   for (const auto& p : placement) {
-    std::snprintf(buffer, sizeof buffer, "%s(%.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x,
-                  p.y, p.z);
+    std::snprintf(buffer, sizeof buffer, "%s(%.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x, p.y,
+                  p.z);
     text += buffer;
   }
   return text;

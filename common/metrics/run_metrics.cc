@@ -159,18 +159,18 @@ nlohmann::json ToJson(const RunMetrics& m) {
                    {"received", u.received}});
   }
   nlohmann::json out = {{"position", {m.position.x, m.position.y, m.position.z}},
-          {"window_s", {m.window.start, m.window.end}},
-          {"run", m.run},
-          {"aggregate_throughput_mbps", Number(m.aggregate_throughput_mbps)},
-          {"mean_delay_ms", Number(m.mean_delay_ms)},
-          {"loss_ratio", Number(m.loss_ratio)},
-          {"n_los", m.n_los},
-          {"n_ues", m.ues.size()},
-          {"demands_met", m.demands_met},
-          {"min_snr_db", Number(m.min_snr_db)},
-          {"worst_ue_throughput_mbps", Number(m.worst_ue_throughput_mbps)},
-          {"jain_fairness", Number(m.jain_fairness)},
-          {"ues", ues}};
+                        {"window_s", {m.window.start, m.window.end}},
+                        {"run", m.run},
+                        {"aggregate_throughput_mbps", Number(m.aggregate_throughput_mbps)},
+                        {"mean_delay_ms", Number(m.mean_delay_ms)},
+                        {"loss_ratio", Number(m.loss_ratio)},
+                        {"n_los", m.n_los},
+                        {"n_ues", m.ues.size()},
+                        {"demands_met", m.demands_met},
+                        {"min_snr_db", Number(m.min_snr_db)},
+                        {"worst_ue_throughput_mbps", Number(m.worst_ue_throughput_mbps)},
+                        {"jain_fairness", Number(m.jain_fairness)},
+                        {"ues", ues}};
   if (m.uavs.size() > 1) {
     nlohmann::json uavs = nlohmann::json::array();
     for (const auto& u : m.uavs) {

@@ -96,8 +96,8 @@ TEST(AnalyticMultiUav, UavsOnOneChannelShareItsAirtime) {
     apart = analytic.Evaluate(kBesideClusters);
   }
   {
-    AnalyticEvaluator analytic(
-        Load("campus2", Saturated({"env.fidelity=analytic", "uavs.0.channel=50", "uavs.1.channel=50"})));
+    AnalyticEvaluator analytic(Load(
+        "campus2", Saturated({"env.fidelity=analytic", "uavs.0.channel=50", "uavs.1.channel=50"})));
     shared = analytic.Evaluate(kBesideClusters);
   }
   EXPECT_EQ(shared.serving, apart.serving);
@@ -133,7 +133,8 @@ TEST(PacketMultiUav, PerUavMetricsAddUpAndACommonChannelInterferes) {
 
 TEST(PacketMultiUav, AFixedAssignmentHoldsAgainstTheSnr) {
   std::vector<std::string> overrides{"simulation.duration=1", "simulation.warmup=0.5"};
-  for (int i = 0; i < 12; ++i) overrides.push_back("ues." + std::to_string(i) + ".uav=\"south\"");
+  for (int i = 0; i < 12; ++i)
+    overrides.push_back("ues." + std::to_string(i) + ".uav=\"south\"");
   const RunMetrics m = EvaluatePosition(Load("campus2", overrides), kBesideClusters);
   EXPECT_EQ(m.uavs[0].ues_served, 0);
   EXPECT_EQ(m.uavs[1].ues_served, 12);
@@ -186,8 +187,8 @@ TEST(Positioners, OracleEndsWhereNoSingleUavCanImprove) {
       if (std::hypot(moved[0].x - moved[1].x, moved[0].y - moved[1].y, moved[0].z - moved[1].z) <
           kMinUavSeparation)
         continue;
-      EXPECT_LE(score(moved), best.analytic_reward + 1e-12) << "UAV " << u << " to " << g.x
-                                                            << "," << g.y << "," << g.z;
+      EXPECT_LE(score(moved), best.analytic_reward + 1e-12)
+          << "UAV " << u << " to " << g.x << "," << g.y << "," << g.z;
     }
   }
 }
@@ -227,8 +228,8 @@ TEST(TurnTakingEnv, UavsMoveInTurnAndNeverOntoEachOther) {
 TEST(TurnTakingEnv, TurnsOfSeveralSteps) {
   const Scenario s = Load("campus2", {"env.fidelity=analytic", "env.turn_steps=2"});
   UavPositioningEnv env(s);
-  const int up = static_cast<int>(
-      std::find(s.env.actions.begin(), s.env.actions.end(), "up") - s.env.actions.begin());
+  const int up = static_cast<int>(std::find(s.env.actions.begin(), s.env.actions.end(), "up") -
+                                  s.env.actions.begin());
   env.Reset(1);
   std::vector<int> moved;
   for (int step = 0; step < 6; ++step) {

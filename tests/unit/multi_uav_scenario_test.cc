@@ -36,8 +36,8 @@ TEST(MultiUavScenario, ShippedScenariosParse) {
 }
 
 TEST(MultiUavScenario, OneUavFormIsOneUavNamedUav) {
-  const Scenario s = ParseScenario(
-      ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json"));
+  const Scenario s =
+      ParseScenario(ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json"));
   ASSERT_EQ(s.uavs.size(), 1u);
   EXPECT_EQ(s.uavs[0].name, "uav");
   EXPECT_EQ(s.UavPath(0), "/uav");

@@ -120,7 +120,7 @@ struct UavNetwork::Impl {
   ns3::NodeContainer ues;
   ns3::NodeContainer uavs;
   std::vector<ns3::Ptr<ns3::WifiNetDevice>> uav_devices;
-  std::vector<int> serving;  // per UE: the index of its UAV
+  std::vector<int> serving;                   // per UE: the index of its UAV
   ns3::Ptr<ns3::ErrorRateModel> error_model;  // a twin of the PHYs' own (kErrorRateModel)
   ns3::ApplicationContainer senders;
   ns3::Ptr<ns3::UniformRandomVariable> start_times;
@@ -183,8 +183,7 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
       continue;
     auto channel = ns3::CreateObject<ns3::YansWifiChannel>();
     channel->SetPropagationLossModel(loss);
-    channel->SetPropagationDelayModel(
-        ns3::CreateObject<ns3::ConstantSpeedPropagationDelayModel>());
+    channel->SetPropagationDelayModel(ns3::CreateObject<ns3::ConstantSpeedPropagationDelayModel>());
     air[number] = channel;
   }
 

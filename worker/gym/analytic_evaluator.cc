@@ -87,8 +87,7 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
     info.n_los += link.los ? 1 : 0;
     info.snr_db.push_back(link.snr_db);
     info.demands_met += link.demand_met ? 1 : 0;
-    airtime[i] = {scenario_.ues[i].demand_mbps, link.phy_rate_mbps, link.mpdu_success,
-                  link.snr_db};
+    airtime[i] = {scenario_.ues[i].demand_mbps, link.phy_rate_mbps, link.mpdu_success, link.snr_db};
   }
   const WifiSpec& w = scenario_.wifi;
   const PhyProfile phy{w.standard, w.width_mhz, w.guard_interval_ns, w.spatial_streams};

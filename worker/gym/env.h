@@ -11,9 +11,9 @@
 namespace rlpos {
 
 struct StepInfo {
-  Placement positions;      // one per UAV
+  Placement positions;       // one per UAV
   std::vector<int> serving;  // per UE: the index of its UAV
-  int active_uav = 0;       // the UAV the next action moves (several UAVs take turns)
+  int active_uav = 0;        // the UAV the next action moves (several UAVs take turns)
   int n_los = 0;
   double throughput_mbps = 0.0;
   int demands_met = 0;

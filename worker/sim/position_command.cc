@@ -38,13 +38,13 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
     placement = ranked.front().placement;
     for (std::size_t i = 0; i < ranked.size() && i < 5; ++i) {
       const auto& c = ranked[i];
-      nlohmann::json candidate = {{"position", PositionsJson({c.placement.front()})[0]},
-                                  {"analytic_reward", c.analytic_reward},
-                                  // null: not re-scored at packet level
-                                  {"packet_reward", c.packet_reward
-                                                        ? nlohmann::json(*c.packet_reward)
-                                                        : nlohmann::json(nullptr)},
-                                  {"n_los", c.n_los}};
+      nlohmann::json candidate = {
+          {"position", PositionsJson({c.placement.front()})[0]},
+          {"analytic_reward", c.analytic_reward},
+          // null: not re-scored at packet level
+          {"packet_reward",
+           c.packet_reward ? nlohmann::json(*c.packet_reward) : nlohmann::json(nullptr)},
+          {"n_los", c.n_los}};
       if (s.uavs.size() > 1)
         candidate["positions"] = PositionsJson(c.placement);
       candidates.push_back(candidate);
@@ -90,8 +90,8 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
     std::cout << out.dump(2) << std::endl;
   } else {
     std::printf("%s in %s: %s, nLoS %d/%zu, analytic throughput %.1f Mbit/s, reward %.4f\n",
-                p.positioner.c_str(), s.name.c_str(), DescribePlacement(placement).c_str(), info.n_los,
-                s.ues.size(), info.throughput_mbps, reward);
+                p.positioner.c_str(), s.name.c_str(), DescribePlacement(placement).c_str(),
+                info.n_los, s.ues.size(), info.throughput_mbps, reward);
   }
   return kExitOk;
 }
