@@ -81,6 +81,7 @@ std::vector<WifiChannelPlan> PlanUavChannels(const Scenario& s) {
     if (c != s.wifi.channel)
       free.push_back(c);
   }
+  const std::size_t available = free.size();
   free.erase(std::remove_if(free.begin(), free.end(),
                             [&](int c) {
                               return std::find(taken.begin(), taken.end(), c) != taken.end();
@@ -97,9 +98,9 @@ std::vector<WifiChannelPlan> PlanUavChannels(const Scenario& s) {
     } else {
       throw ConfigError(s.UavPath(i),
                         std::to_string(s.uavs.size()) + " UAVs need distinct channels but " +
-                            s.wifi.standard + " has " + std::to_string(free.size() + taken.size()) +
+                            s.wifi.standard + " has " + std::to_string(available) +
                             " channels of " + std::to_string(s.wifi.width_mhz) +
-                            " MHz left for them here; narrow wifi.width or give UAVs the same "
+                            " MHz in this band; narrow wifi.width or give UAVs the same "
                             "\"channel\" to share the air");
     }
     plans.push_back(PlanChannel(wifi, s.UavPath(i) + "/channel"));
