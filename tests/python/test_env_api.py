@@ -140,7 +140,8 @@ def test_steps_run_without_the_gil(env):
 
     def many_steps():
         started.set()
-        env._env.time_steps([0, 1, 2, 3, 4, 5], 40000, 1)
+        # ~2 s: long enough that a loaded machine still gives the main thread its turns
+        env._env.time_steps([0, 1, 2, 3, 4, 5], 150000, 1)
 
     worker = threading.Thread(target=many_steps)
     worker.start()
