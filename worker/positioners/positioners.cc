@@ -241,10 +241,12 @@ std::vector<Vec3> ZoneGrid(const Scenario& s, std::size_t uav, double step) {
 
 std::vector<ScoredPlacement> OracleSearch(const Scenario& s, const OracleOptions& options) {
   // Discrete moves reach only the grid of env.step from the initial position; displacements
-  // reach any point, which the search samples every kContinuousGridStep metres.
-  const double step = options.grid_step > 0                  ? options.grid_step
-                      : s.env.action_space == "continuous" ? std::min(s.env.step, kContinuousGridStep)
-                                                            : s.env.step;
+  // reach any point, which the search samples every kContinuousGridStep metres (one UAV: a
+  // 1 m grid of several UAVs' zones is too large to tabulate their links, so they keep env.step).
+  const bool fine = s.env.action_space == "continuous" && s.uavs.size() == 1;
+  const double step = options.grid_step > 0 ? options.grid_step
+                      : fine                ? std::min(s.env.step, kContinuousGridStep)
+                                            : s.env.step;
   const auto reward = MakeReward(s.env.reward);
   std::vector<ScoredPlacement> scored;
   {

@@ -4,9 +4,9 @@
 //   centroid  one UAV: the demand-weighted centroid of the UEs; k UAVs: the centroids of a
 //             deterministic k-means of the UEs (kmeans.h). Heights clear the buildings.
 //   oracle    a search of the zone grid scored with the analytic model; the best few re-scored at
-//             packet level. The grid is the one the agent moves on (a 1 m grid when it moves by
-//             continuous displacements). One UAV: every grid point (the grid's optimum). k UAVs:
-//             coordinate descent from several starts (below).
+//             packet level. The grid is the one the agent moves on (one UAV moving by continuous
+//             displacements: a 1 m grid). One UAV: every grid point (the grid's optimum).
+//             k UAVs: coordinate descent from several starts on the env.step grid (below).
 //   rl        the trained policy's final greedy placement (agent/trainer.h)
 #include <cstdint>
 #include <optional>
