@@ -1,6 +1,7 @@
 #include "environment/wifi_channel_plan.h"
 
 #include <ns3/wifi-phy-operating-channel.h>
+
 #include <algorithm>
 #include <tuple>
 
@@ -25,13 +26,13 @@ WifiChannelPlan PlanChannel(const WifiSpec& wifi, const std::string& path) {
   if (plan.standard == ns3::WIFI_STANDARD_80211ac && plan.band != ns3::WIFI_PHY_BAND_5GHZ) {
     throw ConfigError(path, "802.11ac operates in the 5 GHz band only (channel >= 36)");
   }
-  const auto it = ns3::WifiPhyOperatingChannel::FindFirst(
-      static_cast<uint8_t>(wifi.channel), 0, static_cast<uint16_t>(wifi.width_mhz), plan.standard,
-      plan.band);
+  const auto it = ns3::WifiPhyOperatingChannel::FindFirst(static_cast<uint8_t>(wifi.channel), 0,
+                                                          static_cast<uint16_t>(wifi.width_mhz),
+                                                          plan.standard, plan.band);
   if (it == ns3::WifiPhyOperatingChannel::m_frequencyChannels.end()) {
     throw ConfigError(path, "channel " + std::to_string(wifi.channel) + " is not a " +
-                                           std::to_string(wifi.width_mhz) + " MHz " +
-                                           wifi.standard + " channel (e.g. 160 MHz: 50 or 114)");
+                                std::to_string(wifi.width_mhz) + " MHz " + wifi.standard +
+                                " channel (e.g. 160 MHz: 50 or 114)");
   }
   plan.channel = wifi.channel;
   plan.center_frequency_hz = std::get<1>(*it) * 1e6;
@@ -49,7 +50,7 @@ std::vector<int> ChannelsOfWidth(const WifiSpec& wifi, ns3::WifiStandard standar
   auto it = ns3::WifiPhyOperatingChannel::m_frequencyChannels.begin();
   const auto end = ns3::WifiPhyOperatingChannel::m_frequencyChannels.end();
   while ((it = ns3::WifiPhyOperatingChannel::FindFirst(0, 0, static_cast<uint16_t>(wifi.width_mhz),
-                                                      standard, band, it)) != end) {
+                                                       standard, band, it)) != end) {
     const int number = std::get<0>(*it);
     if (std::find(channels.begin(), channels.end(), number) == channels.end())
       channels.push_back(number);
@@ -82,10 +83,9 @@ std::vector<WifiChannelPlan> PlanUavChannels(const Scenario& s) {
       free.push_back(c);
   }
   const std::size_t available = free.size();
-  free.erase(std::remove_if(free.begin(), free.end(),
-                            [&](int c) {
-                              return std::find(taken.begin(), taken.end(), c) != taken.end();
-                            }),
+  free.erase(std::remove_if(
+                 free.begin(), free.end(),
+                 [&](int c) { return std::find(taken.begin(), taken.end(), c) != taken.end(); }),
              free.end());
   std::vector<WifiChannelPlan> plans;
   std::size_t next = 0;

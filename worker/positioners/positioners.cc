@@ -184,15 +184,18 @@ Placement CentroidPlacement(const Scenario& s) {
   const std::size_t k = s.uavs.size();
   const std::vector<Cluster> clusters = KMeansUes(s, k);
   // Cluster c goes to UAV order[c]: the matching of least total distance (k <= 8: 8! tries).
+  std::vector<std::vector<double>> cost(k, std::vector<double>(k));
+  for (std::size_t c = 0; c < k; ++c) {
+    for (std::size_t u = 0; u < k; ++u)
+      cost[c][u] = Distance(HoverAbove(s, u, clusters[c].x, clusters[c].y), s.uavs[u].initial);
+  }
   std::vector<std::size_t> order(k), best;
   std::iota(order.begin(), order.end(), 0);
   double least = std::numeric_limits<double>::infinity();
   do {
     double total = 0.0;
-    for (std::size_t c = 0; c < k; ++c) {
-      total += Distance(HoverAbove(s, order[c], clusters[c].x, clusters[c].y),
-                        s.uavs[order[c]].initial);
-    }
+    for (std::size_t c = 0; c < k; ++c)
+      total += cost[c][order[c]];
     if (total < least) {
       least = total;
       best = order;

@@ -10,7 +10,8 @@
 namespace rlpos {
 namespace {
 std::string Fixed(double x, int decimals) {
-  if (!std::isfinite(x)) return "-";
+  if (!std::isfinite(x))
+    return "-";
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, x);
   return buffer;
@@ -44,18 +45,18 @@ void PrintMetricsTable(std::ostream& out, const Scenario& scenario, const RunMet
   out << "  demands met (SNR)     " << m.demands_met << "/" << m.ues.size() << "\n";
   out << "  min SNR               " << Fixed(m.min_snr_db, 1) << " dB\n";
   if (several) {
-    out << Row("  %-10s %7s %4s %10s %10s %7s %5s %10s %6s\n", "UAV", "channel", "UEs",
-               "thr(Mbps)", "delay(ms)", "loss%", "nLoS", "worst UE", "Jain");
+    out << Row("  %-10s %7s %4s %10s %10s %7s %5s %10s %6s\n", "UAV", "channel", "UEs", "thr(Mbps)",
+               "delay(ms)", "loss%", "nLoS", "worst UE", "Jain");
     for (const auto& u : m.uavs) {
       out << Row("  %-10s %7d %4d %10s %10s %7s %5d %10s %6s\n", u.uav.name.c_str(), u.uav.channel,
-                 u.ues_served, Fixed(u.throughput_mbps, 2).c_str(), Fixed(u.mean_delay_ms, 3).c_str(),
-                 Fixed(u.loss_ratio * 100.0, 2).c_str(), u.n_los,
+                 u.ues_served, Fixed(u.throughput_mbps, 2).c_str(),
+                 Fixed(u.mean_delay_ms, 3).c_str(), Fixed(u.loss_ratio * 100.0, 2).c_str(), u.n_los,
                  Fixed(u.worst_ue_throughput_mbps, 2).c_str(), Fixed(u.jain_fairness, 3).c_str());
     }
   }
-  std::string header = Row("  %-10s %-4s %8s %9s %4s %7s %-4s %10s %10s %7s\n", "UE", "LoS",
-                           "SNR(dB)", "demand", "MCS", "minSNR", "met", "thr(Mbps)", "delay(ms)",
-                           "loss%");
+  std::string header =
+      Row("  %-10s %-4s %8s %9s %4s %7s %-4s %10s %10s %7s\n", "UE", "LoS", "SNR(dB)", "demand",
+          "MCS", "minSNR", "met", "thr(Mbps)", "delay(ms)", "loss%");
   if (several) {
     header.pop_back();
     header += "  UAV\n";
