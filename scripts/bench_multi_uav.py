@@ -23,13 +23,10 @@ import sys
 import tempfile
 import time
 
+from bench_agents import seeds_of
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
-
-
-def seeds_of(text):
-    first, _, last = text.partition("-")
-    return list(range(int(first), int(last or first) + 1))
 
 
 def run_json(argv):

@@ -31,10 +31,6 @@ std::string UavNames(const Scenario& s) {
   return names + ")";
 }
 
-double Distance(const Vec3& a, const Vec3& b) {
-  return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
-}
-
 void CheckUav(const Scenario& s, std::size_t i) {
   const UavSpec& uav = s.uavs[i];
   const std::string base = s.UavPath(i);
@@ -62,7 +58,7 @@ void CheckUav(const Scenario& s, std::size_t i) {
       throw ConfigError(base + "/name", "UAV " + std::to_string(j) + " has the name \"" +
                                             uav.name + "\" already");
     }
-    if (Distance(s.uavs[j].initial, uav.initial) < kMinUavSeparation) {
+    if (UavsOverlap(s.uavs[j].initial, uav.initial)) {
       std::ostringstream out;
       out << "UAV \"" << uav.name << "\" at " << Format(uav.initial) << " overlaps UAV " << j
           << " (\"" << s.uavs[j].name << "\") at " << Format(s.uavs[j].initial)
@@ -73,6 +69,18 @@ void CheckUav(const Scenario& s, std::size_t i) {
 }
 
 }  // namespace
+
+bool UavsOverlap(const Vec3& a, const Vec3& b) {
+  return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z) < kMinUavSeparation;
+}
+
+bool OverlapsAnother(const Placement& placement, std::size_t uav, const Vec3& p) {
+  for (std::size_t v = 0; v < placement.size(); ++v) {
+    if (v != uav && UavsOverlap(placement[v], p))
+      return true;
+  }
+  return false;
+}
 
 int BuildingContaining(const Scenario& scenario, const Vec3& p) {
   for (std::size_t i = 0; i < scenario.buildings.size(); ++i) {

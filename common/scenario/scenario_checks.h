@@ -9,6 +9,11 @@ namespace rlpos {
 // Throws ConfigError naming the JSON path of the offending element.
 void CheckScenarioGeometry(const Scenario& scenario);
 
+// Two UAVs at `a` and `b` closer than kMinUavSeparation.
+bool UavsOverlap(const Vec3& a, const Vec3& b);
+// UAV `uav` at `p` overlaps another UAV of `placement`.
+bool OverlapsAnother(const Placement& placement, std::size_t uav, const Vec3& p);
+
 // Index of the building whose volume holds `p` (boundary included), or -1.
 int BuildingContaining(const Scenario& scenario, const Vec3& p);
 

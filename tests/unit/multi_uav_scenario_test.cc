@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config_error.h"
+#include "scenario_error.h"
 #include "scenario/scenario_parser.h"
 
 namespace rlpos {
@@ -11,16 +12,6 @@ using nlohmann::json;
 
 json Campus() {
   return ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json");
-}
-
-std::string ErrorOf(json doc, const std::vector<std::string>& overrides) {
-  try {
-    ApplyOverrides(doc, overrides);
-    ParseScenario(doc);
-  } catch (const ConfigError& e) {
-    return e.describe();
-  }
-  return "";
 }
 
 TEST(MultiUavScenario, ShippedScenariosParse) {

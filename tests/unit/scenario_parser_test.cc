@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config_error.h"
+#include "scenario_error.h"
 
 namespace rlpos {
 namespace {
@@ -10,17 +11,6 @@ namespace {
 using nlohmann::json;
 
 json ScenarioB() { return ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json"); }
-
-// Parses `doc` after applying `overrides`; returns the error ("<path>: <problem>") or "".
-std::string ErrorOf(json doc, const std::vector<std::string>& overrides) {
-  try {
-    ApplyOverrides(doc, overrides);
-    ParseScenario(doc);
-  } catch (const ConfigError& e) {
-    return e.describe();
-  }
-  return "";
-}
 
 TEST(ScenarioParser, ShippedScenariosParse) {
   for (const char* name : {"a", "b", "c"}) {

@@ -131,6 +131,7 @@ struct UavNetwork::Impl {
     return uavs.Get(static_cast<uint32_t>(u))->GetObject<ns3::MobilityModel>();
   }
   void BuildChannelModels();
+  LinkState Link(uint32_t ue, std::size_t u) const;  // UE `ue`'s uplink to UAV `u`, now
   std::vector<LinkState> LinksTo(std::size_t u) const;
   ns3::NetDeviceContainer InstallWifi(ns3::WifiHelper& wifi);
   void AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices);
@@ -408,21 +409,24 @@ std::vector<int> UavNetwork::UavChannels() const {
   return impl_->channels;
 }
 
-std::vector<LinkState> UavNetwork::Impl::LinksTo(std::size_t u) const {
+LinkState UavNetwork::Impl::Link(uint32_t i, std::size_t u) const {
   const WifiSpec& w = scenario.wifi;
+  auto uav = UavMobility(u);
+  auto ue = ues.Get(i)->GetObject<ns3::MobilityModel>();
+  LinkState link;
+  link.los = geometry->GetChannelCondition(ue, uav)->IsLos();
+  // Uplink, as the channel computes it: sender first.
+  const double rx_dbm =
+      loss->CalcRxPower(w.tx_power_dbm + w.antenna_gain_dbi, ue, uav) + w.antenna_gain_dbi;
+  link.snr_db = rx_dbm - w.noise_floor_dbm;
+  return link;
+}
+
+std::vector<LinkState> UavNetwork::Impl::LinksTo(std::size_t u) const {
   std::vector<LinkState> links;
   links.reserve(ues.GetN());
-  auto uav = UavMobility(u);
-  for (uint32_t i = 0; i < ues.GetN(); ++i) {
-    auto ue = ues.Get(i)->GetObject<ns3::MobilityModel>();
-    LinkState link;
-    link.los = geometry->GetChannelCondition(ue, uav)->IsLos();
-    // Uplink, as the channel computes it: sender first.
-    const double rx_dbm =
-        loss->CalcRxPower(w.tx_power_dbm + w.antenna_gain_dbi, ue, uav) + w.antenna_gain_dbi;
-    link.snr_db = rx_dbm - w.noise_floor_dbm;
-    links.push_back(link);
-  }
+  for (uint32_t i = 0; i < ues.GetN(); ++i)
+    links.push_back(Link(i, u));
   return links;
 }
 
@@ -434,14 +438,10 @@ std::vector<LinkState> UavNetwork::LinksTo(std::size_t uav) const {
 
 std::vector<LinkState> UavNetwork::Links() const {
   const Impl& m = *impl_;
-  if (m.uavs.GetN() == 1)
-    return m.LinksTo(0);
-  std::vector<std::vector<LinkState>> to(m.uavs.GetN());
-  for (std::size_t u = 0; u < to.size(); ++u)
-    to[u] = m.LinksTo(u);
   std::vector<LinkState> links;
-  for (std::size_t i = 0; i < m.serving.size(); ++i)
-    links.push_back(to[static_cast<std::size_t>(m.serving[i])][i]);
+  links.reserve(m.ues.GetN());
+  for (uint32_t i = 0; i < m.ues.GetN(); ++i)
+    links.push_back(m.Link(i, static_cast<std::size_t>(m.serving[i])));
   return links;
 }
 

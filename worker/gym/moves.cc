@@ -1,7 +1,6 @@
 #include "gym/moves.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "scenario/scenario_checks.h"
 
@@ -28,13 +27,8 @@ Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delt
   to.x = std::clamp(to.x, z.xmin, z.xmax);
   to.y = std::clamp(to.y, z.ymin, z.ymax);
   to.z = std::clamp(to.z, z.zmin, z.zmax);
-  if (BuildingContaining(s, to) >= 0)
+  if (BuildingContaining(s, to) >= 0 || OverlapsAnother(from, uav, to))
     return from;
-  for (std::size_t v = 0; v < from.size(); ++v) {
-    const Vec3& o = from[v];
-    if (v != uav && std::hypot(o.x - to.x, o.y - to.y, o.z - to.z) < kMinUavSeparation)
-      return from;
-  }
   Placement placement = from;
   placement[uav] = to;
   return placement;

@@ -20,14 +20,6 @@ double Distance(const Vec3& a, const Vec3& b) {
   return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
 }
 
-bool Overlaps(const Placement& placement, std::size_t uav, const Vec3& p) {
-  for (std::size_t v = 0; v < placement.size(); ++v) {
-    if (v != uav && Distance(placement[v], p) < kMinUavSeparation)
-      return true;
-  }
-  return false;
-}
-
 // Above (x, y) at max(10 m, tallest building + 5 m), within UAV `uav`'s zone; climbs out of a
 // building lower than the zone's ceiling.
 Vec3 HoverAbove(const Scenario& s, std::size_t uav, double x, double y) {
@@ -71,7 +63,7 @@ class PlacementSearch {
   bool Valid(const std::vector<std::size_t>& at) const {
     const Placement placement = PlacementOf(at);
     for (std::size_t u = 0; u < at.size(); ++u) {
-      if (Overlaps(placement, u, placement[u]))
+      if (OverlapsAnother(placement, u, placement[u]))
         return false;
     }
     return true;
@@ -90,7 +82,7 @@ class PlacementSearch {
       std::vector<std::size_t> trial = at;
       const Placement placement = PlacementOf(at);
       for (std::size_t g = 0; g < grids_[u].size(); ++g) {
-        if (g == at[u] || Overlaps(placement, u, grids_[u][g]))
+        if (g == at[u] || OverlapsAnother(placement, u, grids_[u][g]))
           continue;
         trial[u] = g;
         const StepInfo candidate = Score(trial);
@@ -206,7 +198,7 @@ Placement CentroidPlacement(const Scenario& s) {
     placement[best[c]] = HoverAbove(s, best[c], clusters[c].x, clusters[c].y);
   // Two clusters on one spot (fewer UE positions than UAVs): stack the later UAV higher.
   for (std::size_t u = 1; u < k; ++u) {
-    while (Overlaps(placement, u, placement[u]) && placement[u].z < s.uavs[u].zone.zmax)
+    while (OverlapsAnother(placement, u, placement[u]) && placement[u].z < s.uavs[u].zone.zmax)
       placement[u].z = std::min(placement[u].z + kMinUavSeparation, s.uavs[u].zone.zmax);
   }
   return placement;

@@ -63,15 +63,19 @@ Scenario Load(const std::string& file, const std::vector<std::string>& overrides
   }
 }
 
+py::list PositionsList(const Placement& placement) {
+  py::list positions;
+  for (const auto& q : placement)
+    positions.append(py::make_tuple(q.x, q.y, q.z));
+  return positions;
+}
+
 py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
   py::dict d;
   const Vec3& p = info.positions.front();
   d["position"] = py::make_tuple(p.x, p.y, p.z);  // the first UAV's
   if (info.positions.size() > 1) {
-    py::list positions;
-    for (const auto& q : info.positions)
-      positions.append(py::make_tuple(q.x, q.y, q.z));
-    d["positions"] = positions;
+    d["positions"] = PositionsList(info.positions);
     d["serving_uav"] = info.serving;
     d["active_uav"] = info.active_uav;
   }
@@ -204,12 +208,8 @@ py::list Oracle(const std::string& file, const std::vector<std::string>& overrid
     py::dict d;
     const Vec3& p = c.placement.front();
     d["position"] = py::make_tuple(p.x, p.y, p.z);
-    if (c.placement.size() > 1) {
-      py::list positions;
-      for (const auto& q : c.placement)
-        positions.append(py::make_tuple(q.x, q.y, q.z));
-      d["positions"] = positions;
-    }
+    if (c.placement.size() > 1)
+      d["positions"] = PositionsList(c.placement);
     d["analytic_reward"] = c.analytic_reward;
     d["packet_reward"] = c.packet_reward ? py::object(py::float_(*c.packet_reward)) : py::none();
     d["n_los"] = c.n_los;

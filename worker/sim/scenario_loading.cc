@@ -2,7 +2,6 @@
 
 #include <ns3/propagation-loss-model.h>
 #include <ns3/wifi-remote-station-manager.h>
-#include <cmath>
 #include <sstream>
 
 #include "config/config_error.h"
@@ -66,9 +65,7 @@ Placement ParsePlacement(const Scenario& s, const std::vector<std::string>& text
     placement.push_back(ParsePosition(texts[u], where));
     CheckUavPosition(s, placement.back(), where);
     for (std::size_t v = 0; v < u; ++v) {
-      const Vec3& a = placement[u];
-      const Vec3& b = placement[v];
-      if (std::hypot(a.x - b.x, a.y - b.y, a.z - b.z) < kMinUavSeparation) {
+      if (UavsOverlap(placement[u], placement[v])) {
         throw ConfigError(where, "UAVs " + s.uavs[v].name + " and " + s.uavs[u].name +
                                      " overlap: they must be at least 1 m apart");
       }
