@@ -232,13 +232,6 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
   } catch (const ConfigError& e) {
     throw ConfigError(path, entry.file + ": " + e.describe());
   }
-  if (entry.scenario.uavs.size() > 1) {
-    // Jobs, messages and the results store carry one position per job so far.
-    throw ConfigError(path, entry.file + ": scenario " + entry.scenario.name + " has " +
-                                std::to_string(entry.scenario.uavs.size()) +
-                                " UAVs; campaigns take single-UAV scenarios only (run several "
-                                "UAVs with rlpos-sim or scripts/bench_multi_uav.py)");
-  }
   if (!wire::IsSafeName(entry.scenario.name, wire::kMaxNameLength)) {
     // Job keys are "<kind>/<scenario>/..." and name the workers' folders.
     throw ConfigError(path, entry.file + ": scenario name \"" + entry.scenario.name +

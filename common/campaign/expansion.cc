@@ -37,6 +37,16 @@ struct EvalSource {
   PositionRule rule;
 };
 
+// Offsets (the paper's positions 1-5 around the RL position) are defined around one UAV: a
+// scenario of several gets none.
+bool UsesOffsets(const CampaignSpec& spec, const CampaignScenario& s) {
+  return spec.Uses("offsets") && s.scenario.uavs.size() == 1;
+}
+
+bool NeedsTraining(const CampaignSpec& spec, const CampaignScenario& s) {
+  return spec.Uses("rl") || UsesOffsets(spec, s);
+}
+
 }  // namespace
 
 std::string EvalLabel(int k, const std::string& algorithm, std::size_t seed_index,
@@ -66,13 +76,17 @@ std::size_t CampaignPlan::JobCount() const {
   std::size_t producers = 0;  // position jobs of a scenario
   for (const char* positioner : {"baseline", "centroid", "oracle"})
     producers += spec.Uses(positioner) ? 1 : 0;
-  const std::size_t trains =
-      spec.NeedsTraining()
-          ? spec.train.seeds.size() * std::max<std::size_t>(1, spec.train.algorithms.size())
-          : 0;
-  const std::size_t labels =
-      producers + trains * ((spec.Uses("rl") ? 1 : 0) + (spec.Uses("offsets") ? kOffsetCount : 0));
-  return spec.scenarios.size() * (producers + trains + labels * spec.rng_runs.size());
+  const std::size_t seeds =
+      spec.train.seeds.size() * std::max<std::size_t>(1, spec.train.algorithms.size());
+  std::size_t count = 0;
+  for (const auto& s : spec.scenarios) {
+    const std::size_t trains = NeedsTraining(spec, s) ? seeds : 0;
+    const std::size_t labels =
+        producers +
+        trains * ((spec.Uses("rl") ? 1 : 0) + (UsesOffsets(spec, s) ? kOffsetCount : 0));
+    count += producers + trains + labels * spec.rng_runs.size();
+  }
+  return count;
 }
 
 void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
@@ -102,7 +116,7 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
       add(std::move(job));
     }
 
-    if (spec.NeedsTraining()) {
+    if (NeedsTraining(spec, s)) {
       const OffsetGeometry geometry = OffsetGeometryOf(s.scenario);
       // "" trains with the scenario's own agent.algorithm, under the plain labels.
       std::vector<std::string> algorithms = spec.train.algorithms;
@@ -125,7 +139,7 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
           }
           if (spec.Uses("rl"))
             sources.push_back({EvalLabel(0, algorithm, i, seed), job.key, seed, {}});
-          if (spec.Uses("offsets")) {
+          if (UsesOffsets(spec, s)) {
             for (int k = 1; k <= kOffsetCount; ++k) {
               PositionRule rule;
               rule.offset = k;

@@ -3,6 +3,8 @@
 //
 // Per scenario (in campaign order):
 //   train/<scenario>/seed<N>            one per train seed, if "rl" or "offsets" is selected
+//                                       (offsets only for a single-UAV scenario: they are
+//                                       defined around one UAV, so one of several has none)
 //   position/<scenario>/<positioner>    baseline, centroid, oracle (those selected)
 //   eval/<scenario>/<label>/run<R>      per RngRun, per label, depending on the job giving the
 //                                       position: baseline|centroid|oracle on their position job;

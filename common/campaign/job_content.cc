@@ -40,17 +40,24 @@ std::string JobContentBase(const JobParams& p, const std::string& scenario_sha25
 }
 
 std::optional<std::string> JobContentKey(const std::string& base, JobKind kind,
-                                         const std::optional<Vec3>& position) {
+                                         const std::optional<Placement>& placement) {
   if (base.empty())
     return std::nullopt;
   if (kind != JobKind::kEval)
     return base;
-  if (!position)
+  if (!placement || placement->empty())
     return std::nullopt;
   // Whole micrometres: positions reached by different arithmetic (an rl position, an offset
   // around another) that agree to far below a simulation's resolution count as one.
   const auto um = [](double v) { return std::to_string(std::llround(v * 1e6)); };
-  return Sha256Hex(base + "|" + um(position->x) + "," + um(position->y) + "," + um(position->z));
+  // One UAV: "|x,y,z", as before several UAVs existed, so cached single-UAV results still serve.
+  std::string text = base;
+  char separator = '|';
+  for (const Vec3& p : *placement) {
+    text += separator + um(p.x) + "," + um(p.y) + "," + um(p.z);
+    separator = ';';
+  }
+  return Sha256Hex(text);
 }
 
 }  // namespace rlpos

@@ -24,10 +24,15 @@ Box BoxFromJson(const json& v) {
 
 }  // namespace
 
-Vec3 ApplyPositionRule(const PositionRule& rule, const Vec3& produced) {
+Placement ApplyPositionRule(const PositionRule& rule, const Placement& produced) {
   if (rule.offset == 0)
     return produced;
-  return OffsetPosition(produced, rule.offset, rule.geometry, rule.distance);
+  if (produced.size() != 1) {
+    throw std::invalid_argument("offset position " + std::to_string(rule.offset) +
+                                " is defined around one UAV, the placement has " +
+                                std::to_string(produced.size()));
+  }
+  return {OffsetPosition(produced.front(), rule.offset, rule.geometry, rule.distance)};
 }
 
 json ToJson(const PositionRule& rule) {

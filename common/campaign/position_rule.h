@@ -13,7 +13,9 @@ struct PositionRule {
   OffsetGeometry geometry;  // used when offset > 0
 };
 
-Vec3 ApplyPositionRule(const PositionRule& rule, const Vec3& produced);
+// The placement of the dependent eval. Offsets are defined around a single UAV: throws
+// std::invalid_argument for an offset rule and a placement of several.
+Placement ApplyPositionRule(const PositionRule& rule, const Placement& produced);
 
 nlohmann::json ToJson(const PositionRule& rule);
 // Throws std::invalid_argument on a malformed rule.

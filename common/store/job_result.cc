@@ -1,5 +1,6 @@
 #include "store/job_result.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -38,19 +39,105 @@ int Count(const json& result, const char* key) {
   return v.get<int>();
 }
 
+Vec3 Triple(const json& p, const std::string& what) {
+  if (!p.is_array() || p.size() != 3)
+    throw std::invalid_argument("result \"" + what + "\" is not [x, y, z]");
+  return {Finite(p[0], what.c_str()), Finite(p[1], what.c_str()), Finite(p[2], what.c_str())};
+}
+
+bool Same(const Vec3& a, const Vec3& b) {
+  const auto off = [](double u, double v) {
+    return std::fabs(u - v) > 1e-6 * std::max(1.0, std::fabs(u));
+  };
+  return !(off(a.x, b.x) || off(a.y, b.y) || off(a.z, b.z));
+}
+
+// A list of 1..kMaxUavs entries under `key`.
+const json& UavList(const json& result, const char* key) {
+  const json& list = Field(result, key);
+  if (!list.is_array() || list.empty() || list.size() > kMaxUavs) {
+    throw std::invalid_argument(std::string("result \"") + key + "\" is not a list of 1.." +
+                                std::to_string(kMaxUavs) + " UAVs");
+  }
+  return list;
+}
+
+UavEvalResult ParseUav(const json& entry, std::size_t index) {
+  const std::string where = "uavs/" + std::to_string(index);
+  if (!entry.is_object())
+    throw std::invalid_argument("result \"" + where + "\" is not an object");
+  UavEvalResult u;
+  const json& name = Field(entry, "name");
+  if (!name.is_string() || name.get<std::string>().empty() ||
+      name.get<std::string>().size() > 64) {
+    throw std::invalid_argument("result \"" + where + "/name\" is not a UAV name");
+  }
+  u.name = name.get<std::string>();
+  u.position = Triple(Field(entry, "position"), where + "/position");
+  u.ues_served = Count(entry, "ues_served");
+  u.throughput_mbps = Finite(Field(entry, "throughput_mbps"), "throughput_mbps");
+  u.mean_delay_ms = NullableNumber(entry, "mean_delay_ms");
+  u.loss_ratio = NullableNumber(entry, "loss_ratio");
+  u.n_los = Count(entry, "n_los");
+  u.worst_ue_throughput_mbps = NullableNumber(entry, "worst_ue_throughput_mbps");
+  u.jain_fairness = NullableNumber(entry, "jain_fairness");
+  if (u.throughput_mbps < 0 || (u.mean_delay_ms && *u.mean_delay_ms < 0) ||
+      (u.loss_ratio && (*u.loss_ratio < 0 || *u.loss_ratio > 1)) ||
+      (u.worst_ue_throughput_mbps && *u.worst_ue_throughput_mbps < 0) ||
+      (u.jain_fairness && (*u.jain_fairness <= 0 || *u.jain_fairness > 1)) ||
+      u.n_los > u.ues_served) {
+    throw std::invalid_argument("result \"" + where + "\" holds an implausible metric");
+  }
+  return u;
+}
+
+// A single-UAV result's one UAV: its totals.
+UavEvalResult OnlyUav(const EvalResult& r) {
+  return {"uav",
+          r.placement.front(),
+          r.n_ues,
+          r.aggregate_throughput_mbps,
+          r.mean_delay_ms,
+          r.loss_ratio,
+          r.worst_ue_throughput_mbps,
+          r.jain_fairness,
+          r.n_los};
+}
+
+// The per-UAV entries must add up to the totals they split.
+void CheckUavsAddUp(const EvalResult& r) {
+  int ues = 0, n_los = 0;
+  double throughput = 0;
+  for (const auto& u : r.uavs) {
+    ues += u.ues_served;
+    n_los += u.n_los;
+    throughput += u.throughput_mbps;
+  }
+  if (ues != r.n_ues || n_los != r.n_los ||
+      std::fabs(throughput - r.aggregate_throughput_mbps) >
+          1e-6 * std::max(1.0, r.aggregate_throughput_mbps)) {
+    throw std::invalid_argument("result \"uavs\" do not add up to the run's totals");
+  }
+}
+
 }  // namespace
 
-Vec3 ProducedPosition(const json& result) {
-  const json& p = Field(result, "position");
-  if (!p.is_array() || p.size() != 3) {
-    throw std::invalid_argument("result \"position\" is not [x, y, z]");
-  }
-  return {Finite(p[0], "position"), Finite(p[1], "position"), Finite(p[2], "position")};
+Placement ProducedPlacement(const json& result) {
+  const Vec3 first = Triple(Field(result, "position"), "position");
+  if (!result.contains("positions"))
+    return {first};
+  const json& list = UavList(result, "positions");
+  Placement placement;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    placement.push_back(Triple(list[i], "positions/" + std::to_string(i)));
+  if (!Same(placement.front(), first))
+    throw std::invalid_argument("result \"positions/0\" is not its \"position\"");
+  return placement;
 }
 
 EvalResult ParseEvalResult(const json& result) {
   EvalResult r;
-  r.position = ProducedPosition(result);
+  const Vec3 first = Triple(Field(result, "position"), "position");
   r.aggregate_throughput_mbps =
       Finite(Field(result, "aggregate_throughput_mbps"), "aggregate_throughput_mbps");
   r.mean_delay_ms = NullableNumber(result, "mean_delay_ms");
@@ -89,6 +176,19 @@ EvalResult ParseEvalResult(const json& result) {
       throw std::invalid_argument("result \"run\" is not an RngRun");
     }
     r.run = run.get<std::uint64_t>();
+  }
+  if (result.contains("uavs")) {
+    const json& list = UavList(result, "uavs");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      r.uavs.push_back(ParseUav(list[i], i));
+      r.placement.push_back(r.uavs.back().position);
+    }
+    if (!Same(r.placement.front(), first))
+      throw std::invalid_argument("result \"uavs/0/position\" is not its \"position\"");
+    CheckUavsAddUp(r);
+  } else {
+    r.placement = {first};
+    r.uavs = {OnlyUav(r)};
   }
   return r;
 }

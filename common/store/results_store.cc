@@ -24,7 +24,7 @@ double SystemNow() {
 // The typed job columns, in the order ReadParams reads them.
 constexpr const char* kParamColumns =
     "kind, scenario, train_seed, fidelity, train_episodes, positioner, rng_run, duration_s, "
-    "warmup_s, overrides_json, x, y, z";
+    "warmup_s, overrides_json, x, y, z, positions_json";
 
 std::string OverridesJson(const std::vector<ScenarioOverride>& overrides) {
   json out = json::array();
@@ -47,8 +47,18 @@ RunningJob ReadRunningJob(const Statement& row) {
           row.Double(6)};
 }
 
-// Reads kParamColumns starting at `first`; sets `position` from x, y, z.
-JobParams ReadParams(const Statement& row, int first, std::optional<Vec3>& position,
+// jobs.positions_json: every UAV's position of a placement of several, NULL for one (x, y, z).
+std::optional<std::string> PositionsJson(const Placement& placement) {
+  if (placement.size() < 2)
+    return std::nullopt;
+  json out = json::array();
+  for (const Vec3& p : placement)
+    out.push_back({p.x, p.y, p.z});
+  return out.dump();
+}
+
+// Reads kParamColumns starting at `first`; sets `placement` from positions_json or x, y, z.
+JobParams ReadParams(const Statement& row, int first, std::optional<Placement>& placement,
                      const std::string& file) {
   JobParams p;
   try {
@@ -69,16 +79,36 @@ JobParams ReadParams(const Statement& row, int first, std::optional<Vec3>& posit
     for (const auto& pair : json::parse(row.Text(first + 9))) {
       p.overrides.push_back({pair.at(0).get<std::string>(), pair.at(1).get<std::string>()});
     }
+    placement.reset();
+    if (const auto positions = row.OptionalText(first + 13)) {
+      placement.emplace();
+      for (const auto& q : json::parse(*positions))
+        placement->push_back({q.at(0).get<double>(), q.at(1).get<double>(), q.at(2).get<double>()});
+    } else {
+      const auto x = row.OptionalDouble(first + 10);
+      const auto y = row.OptionalDouble(first + 11);
+      const auto z = row.OptionalDouble(first + 12);
+      if (x && y && z)
+        placement = Placement{{*x, *y, *z}};
+    }
   } catch (const std::exception& e) {
     throw StoreError(file, std::string("malformed job row: ") + e.what());
   }
-  const auto x = row.OptionalDouble(first + 10);
-  const auto y = row.OptionalDouble(first + 11);
-  const auto z = row.OptionalDouble(first + 12);
-  position.reset();
-  if (x && y && z)
-    position = Vec3{*x, *y, *z};
   return p;
+}
+
+// The same positions, to a micrometre (relative, for large coordinates).
+bool SamePlacement(const Placement& a, const Placement& b) {
+  if (a.size() != b.size())
+    return false;
+  const auto off = [](double want, double got) {
+    return std::fabs(want - got) > 1e-6 * std::max(1.0, std::fabs(want));
+  };
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (off(a[i].x, b[i].x) || off(a[i].y, b[i].y) || off(a[i].z, b[i].z))
+      return false;
+  }
+  return true;
 }
 
 CampaignProgress ReadProgress(const Statement& row) {
@@ -300,7 +330,7 @@ std::vector<ReadyJob> ResultsStore::ListReady(std::size_t per_campaign) {
         job.key = select.Text(2);
         job.attempt = static_cast<int>(select.Int(3));
         job.timeout_s = select.Double(4);
-        job.params = ReadParams(select, 5, job.position, file());
+        job.params = ReadParams(select, 5, job.placement, file());
         out.push_back(std::move(job));
         ++taken;
       }
@@ -329,43 +359,43 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
                                       const std::vector<ArtifactFile>& artifacts) {
   Transaction transaction(*db_);
   Statement select = db_->Prepare(
-      "SELECT kind, state, attempt, max_attempts, campaign_id, scenario, label, rng_run, x, y, z, "
-      "worker_id FROM jobs WHERE id = ?");
+      std::string("SELECT state, attempt, max_attempts, campaign_id, label, worker_id, ") +
+      kParamColumns + " FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step())
     return JobUpdate::kUnknown;
-  if (select.Text(1) != "running" || select.Int(2) != attempt)
+  if (select.Text(0) != "running" || select.Int(1) != attempt)
     return JobUpdate::kStale;
-  if (!worker_id.empty() && select.OptionalText(11) != worker_id)
+  if (!worker_id.empty() && select.OptionalText(5) != worker_id)
     return JobUpdate::kStale;
-  const JobKind kind = ParseJobKind(select.Text(0));
-  const int max_attempts = static_cast<int>(select.Int(3));
-  const std::string campaign_id = select.Text(4);
-  const std::string scenario = select.Text(5);
-  const std::string label = select.Text(6);
-  const std::optional<std::int64_t> rng_run = select.OptionalInt(7);
-  const std::optional<double> x = select.OptionalDouble(8), y = select.OptionalDouble(9),
-                              z = select.OptionalDouble(10);
+  const int max_attempts = static_cast<int>(select.Int(2));
+  const std::string campaign_id = select.Text(3);
+  const std::string label = select.Text(4);
+  std::optional<Placement> job_placement;
+  const JobParams params = ReadParams(select, 6, job_placement, file());
+  const JobKind kind = params.kind;
+  const std::string& scenario = params.scenario;
+  const std::optional<std::uint64_t> rng_run = params.rng_run;
   select.Reset();  // done reading: the row is about to change
 
   // Check the result before anything is written: a malformed one is a failed attempt.
   EvalResult eval;
-  Vec3 produced;
+  Placement produced;
   try {
     if (kind == JobKind::kEval) {
       eval = ParseEvalResult(result);
-      if (eval.run && rng_run && static_cast<std::int64_t>(*eval.run) != *rng_run) {
+      if (eval.run && rng_run && *eval.run != *rng_run) {
         throw std::invalid_argument("result is of RngRun " + std::to_string(*eval.run) +
                                     ", the job's is " + std::to_string(*rng_run));
       }
-      const auto off = [](const std::optional<double>& want, double got) {
-        return want && std::fabs(*want - got) > 1e-6 * std::max(1.0, std::fabs(*want));
-      };
-      if (off(x, eval.position.x) || off(y, eval.position.y) || off(z, eval.position.z)) {
-        throw std::invalid_argument("result is of another position than the job's");
-      }
+      if (job_placement && !SamePlacement(*job_placement, eval.placement))
+        throw std::invalid_argument("result is of another placement than the job's");
     } else {
-      produced = ProducedPosition(result);
+      produced = ProducedPlacement(result);
+      if (produced.size() > 1 && HasOffsetDependants(job_id)) {
+        throw std::invalid_argument("a placement of " + std::to_string(produced.size()) +
+                                    " UAVs, but offset evals (defined for one) depend on it");
+      }
     }
   } catch (const std::invalid_argument& e) {
     const JobUpdate update =
@@ -422,7 +452,7 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         .Bind(campaign_id)
         .Bind(scenario)
         .Bind(label)
-        .Bind(rng_run.value_or(0))
+        .Bind(static_cast<std::int64_t>(rng_run.value_or(0)))
         .Bind(eval.aggregate_throughput_mbps)
         .Bind(eval.mean_delay_ms)
         .Bind(eval.loss_ratio)
@@ -430,12 +460,39 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         .Bind(eval.n_ues)
         .Bind(eval.demands_met)
         .Bind(eval.min_snr_db)
-        .Bind(eval.position.x)
-        .Bind(eval.position.y)
-        .Bind(eval.position.z)
+        .Bind(eval.placement.front().x)
+        .Bind(eval.placement.front().y)
+        .Bind(eval.placement.front().z)
         .Bind(eval.worst_ue_throughput_mbps)
         .Bind(eval.jain_fairness)
         .Run();
+    Statement uav = db_->Prepare(
+        "INSERT INTO uav_metrics (job_id, uav, name, campaign_id, scenario, label, rng_run, "
+        "ues_served, throughput_mbps, mean_delay_ms, loss_ratio, n_los, "
+        "worst_ue_throughput_mbps, jain_fairness, x, y, z) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    for (std::size_t i = 0; i < eval.uavs.size(); ++i) {
+      const UavEvalResult& u = eval.uavs[i];
+      uav.Reset();
+      uav.Bind(job_id)
+          .Bind(static_cast<std::int64_t>(i))
+          .Bind(u.name)
+          .Bind(campaign_id)
+          .Bind(scenario)
+          .Bind(label)
+          .Bind(static_cast<std::int64_t>(rng_run.value_or(0)))
+          .Bind(u.ues_served)
+          .Bind(u.throughput_mbps)
+          .Bind(u.mean_delay_ms)
+          .Bind(u.loss_ratio)
+          .Bind(u.n_los)
+          .Bind(u.worst_ue_throughput_mbps)
+          .Bind(u.jain_fairness)
+          .Bind(u.position.x)
+          .Bind(u.position.y)
+          .Bind(u.position.z)
+          .Run();
+    }
   } else {
     // Bind each dependent's position now: the row then shows exactly what it will run. A chunk
     // at a time: one baseline with RngRun 1..100000 has 100k dependants, never all in memory.
@@ -443,11 +500,12 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         "SELECT rowid, id, position_rule_json, kind, content_base, state FROM jobs "
         "WHERE depends_on = ? AND rowid > ? ORDER BY rowid LIMIT 1024");
     Statement update = db_->Prepare(
-        "UPDATE jobs SET x = ?, y = ?, z = ?, cache_key = ?, content_base = NULL, "
+        "UPDATE jobs SET x = ?, y = ?, z = ?, positions_json = ?, cache_key = ?, "
+        "content_base = NULL, "
         "state = CASE state WHEN 'pending' THEN 'ready' ELSE state END WHERE id = ?");
     struct Bound {
       std::string id;
-      Vec3 position;
+      Placement placement;
       std::optional<std::string> cache_key;
       bool released = false;  // pending -> ready now
     };
@@ -466,20 +524,20 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         } catch (const std::exception& e) {
           throw StoreError(file(), "job " + id + ": bad position rule: " + e.what());
         }
-        const Vec3 position = ApplyPositionRule(rule, produced);
+        Placement placement = ApplyPositionRule(rule, produced);  // checked above: cannot throw
+        auto key = JobContentKey(dependents.OptionalText(4).value_or(""), dependent_kind, placement);
         bound.push_back(
-            {id, position,
-             JobContentKey(dependents.OptionalText(4).value_or(""), dependent_kind, position),
-             dependents.Text(5) == "pending"});
+            {id, std::move(placement), std::move(key), dependents.Text(5) == "pending"});
       }
       dependents.Reset();
       if (bound.empty())
         break;
       for (const auto& b : bound) {
         update.Reset();
-        update.Bind(b.position.x)
-            .Bind(b.position.y)
-            .Bind(b.position.z)
+        update.Bind(b.placement.front().x)
+            .Bind(b.placement.front().y)
+            .Bind(b.placement.front().z)
+            .Bind(PositionsJson(b.placement))
             .Bind(b.cache_key)
             .Bind(b.id)
             .Run();
@@ -495,6 +553,14 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
   UpdateCampaignState(campaign_id);
   transaction.Commit();
   return JobUpdate::kSucceeded;
+}
+
+bool ResultsStore::HasOffsetDependants(const std::string& job_id) {
+  Statement select = db_->Prepare(
+      "SELECT 1 FROM jobs WHERE depends_on = ? AND json_extract(position_rule_json, '$.offset') != 0 "
+      "LIMIT 1");
+  select.Bind(job_id);
+  return select.Step();
 }
 
 void ResultsStore::StoreArtifacts(const std::string& job_id,
@@ -760,7 +826,7 @@ std::optional<JobRecord> ResultsStore::GetJob(const std::string& job_id) {
   if (const auto result = select.OptionalText(11))
     r.result = json::parse(*result);
   r.slot = static_cast<int>(select.Int(12));
-  r.params = ReadParams(select, 13, r.position, file());
+  r.params = ReadParams(select, 13, r.placement, file());
   return r;
 }
 
@@ -793,6 +859,39 @@ std::vector<MetricRow> ResultsStore::Metrics(const std::string& campaign_id) {
     m.z = select.Double(13);
     m.worst_ue_throughput_mbps = select.OptionalDouble(14);
     m.jain_fairness = select.OptionalDouble(15);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+std::vector<UavMetricRow> ResultsStore::UavMetrics(const std::string& campaign_id) {
+  Statement select = db_->Prepare(
+      "SELECT job_id, scenario, positioner, rng_run, uav, uav_name, ues_served, throughput_mbps, "
+      "delay_ms, loss_ratio, n_los, worst_ue_mbps, jain_fairness, x, y, z "
+      "FROM v_eval_uavs v "
+      "WHERE campaign_id = ? "
+      "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
+      "AND j.scenario = v.scenario), positioner, rng_run, uav");
+  select.Bind(campaign_id);
+  std::vector<UavMetricRow> out;
+  while (select.Step()) {
+    UavMetricRow m;
+    m.job_id = select.Text(0);
+    m.scenario = select.Text(1);
+    m.label = select.Text(2);
+    m.rng_run = select.Int(3);
+    m.uav = static_cast<int>(select.Int(4));
+    m.name = select.Text(5);
+    m.ues_served = static_cast<int>(select.Int(6));
+    m.throughput_mbps = select.Double(7);
+    m.mean_delay_ms = select.OptionalDouble(8);
+    m.loss_ratio = select.OptionalDouble(9);
+    m.n_los = static_cast<int>(select.Int(10));
+    m.worst_ue_throughput_mbps = select.OptionalDouble(11);
+    m.jain_fairness = select.OptionalDouble(12);
+    m.x = select.Double(13);
+    m.y = select.Double(14);
+    m.z = select.Double(15);
     out.push_back(std::move(m));
   }
   return out;

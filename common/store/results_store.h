@@ -62,7 +62,7 @@ struct ReadyJob {
   int attempt = 1;
   double timeout_s = 0;
   JobParams params;
-  std::optional<Vec3> position;  // eval jobs: bound when their dependency succeeded
+  std::optional<Placement> placement;  // eval jobs: bound when their dependency succeeded
 };
 
 struct RunningJob {
@@ -82,7 +82,7 @@ struct JobRecord {
   std::optional<std::string> worker_id, error;
   int slot = 0;  // while running: which of the worker's slots
   JobParams params;
-  std::optional<Vec3> position;
+  std::optional<Placement> placement;  // eval jobs, once bound: one position per UAV
   std::optional<nlohmann::json> result;
 };
 
@@ -108,8 +108,22 @@ struct MetricRow {
   double aggregate_throughput_mbps = 0;
   std::optional<double> mean_delay_ms, loss_ratio, min_snr_db;  // null: no packet received
   int n_los = 0, n_ues = 0, demands_met = 0;
-  double x = 0, y = 0, z = 0;
+  double x = 0, y = 0, z = 0;  // the first UAV's position
   std::optional<double> worst_ue_throughput_mbps, jain_fairness;  // null: recorded before v9
+};
+
+// One UAV's share of one succeeded eval (table uav_metrics, view v_eval_uavs).
+struct UavMetricRow {
+  std::string job_id, scenario, label;
+  std::int64_t rng_run = 0;
+  int uav = 0;       // index in the scenario's order
+  std::string name;  // "uav" for a single-UAV scenario
+  int ues_served = 0;
+  double throughput_mbps = 0;
+  std::optional<double> mean_delay_ms, loss_ratio;  // null: its UEs received nothing
+  int n_los = 0;
+  std::optional<double> worst_ue_throughput_mbps, jain_fairness;  // null: it serves no UE
+  double x = 0, y = 0, z = 0;
 };
 
 // A worker as the coordinator last saw it (DDS liveliness decides alive/lost).
@@ -173,8 +187,8 @@ class ResultsStore {
   std::vector<ReadyJob> ListReady(std::size_t per_campaign = 0);
   // ready -> running for this attempt; false if the job is not ready at that attempt.
   bool MarkRunning(const std::string& job_id, const std::string& worker_id, int slot, int attempt);
-  // A result of train/position jobs must hold "position": [x, y, z]; of eval jobs, the metrics
-  // of rlpos::ToJson(RunMetrics). A malformed result counts as a failed attempt.
+  // A result of train/position jobs must hold a placement (store/job_result.h); of eval jobs,
+  // the metrics of rlpos::ToJson(RunMetrics), at the job's placement. A malformed result counts as a failed attempt.
   // `worker_id` non-empty: only the worker that holds the attempt may settle it (else kStale).
   // `provenance` (when given) is kept on the row: host, build versions, scenario sha256.
   // `artifacts` (checked by the caller: wire/artifacts.h) are written under ArtifactsDirOf(file())
@@ -209,6 +223,8 @@ class ResultsStore {
   std::optional<JobRecord> GetJob(const std::string& job_id);
   // One row per succeeded eval job, by scenario (campaign order), label, rng_run.
   std::vector<MetricRow> Metrics(const std::string& campaign_id);
+  // One row per UAV of each succeeded eval, in the order of Metrics, then by UAV.
+  std::vector<UavMetricRow> UavMetrics(const std::string& campaign_id);
   // Workers: UpsertWorker sets alive and last_seen = now; SetWorkerState marks it lost or
   // stopped (no-op for an unknown id); MarkAllWorkersLost is the coordinator's start (it knows
   // nothing alive until DDS tells it).
@@ -238,6 +254,8 @@ class ResultsStore {
   JobUpdate FailAttempt(const std::string& job_id, int attempt, int max_attempts,
                         const std::string& error);
   void UpdateCampaignState(const std::string& campaign_id);
+  // Whether an eval at an offset around `job_id`'s position depends on it.
+  bool HasOffsetDependants(const std::string& job_id);
   // Writes the files beside the database and lists them. Throws (files or rows).
   void StoreArtifacts(const std::string& job_id, const std::vector<ArtifactFile>& artifacts);
   void RequireCampaign(const std::string& campaign_id);

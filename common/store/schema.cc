@@ -220,6 +220,52 @@ JOIN campaigns c ON c.id = m.campaign_id
 JOIN jobs j ON j.id = m.job_id;
 )sql";
 
+// Version 10: several UAVs.
+//  - jobs.positions_json: an eval's placement when it has several UAVs, [[x, y, z], ...] in the
+//    scenario's order (x, y, z keep the first UAV's; NULL for one UAV);
+//  - uav_metrics: each UAV's share of each eval (one row for a single-UAV eval, named 'uav',
+//    also for the evals recorded before, from their totals); metrics.x, y, z are the first UAV's.
+constexpr const char* kVersion10 = R"sql(
+ALTER TABLE jobs ADD COLUMN positions_json TEXT;
+
+CREATE TABLE uav_metrics (
+  job_id                   TEXT NOT NULL REFERENCES jobs(id),
+  uav                      INTEGER NOT NULL CHECK (uav >= 0),
+  name                     TEXT NOT NULL,
+  campaign_id              TEXT NOT NULL REFERENCES campaigns(id),
+  scenario                 TEXT NOT NULL,
+  label                    TEXT NOT NULL,
+  rng_run                  INTEGER NOT NULL,
+  ues_served               INTEGER NOT NULL,
+  throughput_mbps          REAL NOT NULL,
+  mean_delay_ms            REAL,
+  loss_ratio               REAL,
+  n_los                    INTEGER NOT NULL,
+  worst_ue_throughput_mbps REAL,
+  jain_fairness            REAL,
+  x                        REAL NOT NULL,
+  y                        REAL NOT NULL,
+  z                        REAL NOT NULL,
+  PRIMARY KEY (job_id, uav)
+);
+CREATE INDEX uav_metrics_by_campaign ON uav_metrics(campaign_id, scenario, label, rng_run);
+
+INSERT INTO uav_metrics (job_id, uav, name, campaign_id, scenario, label, rng_run, ues_served,
+                         throughput_mbps, mean_delay_ms, loss_ratio, n_los,
+                         worst_ue_throughput_mbps, jain_fairness, x, y, z)
+SELECT job_id, 0, 'uav', campaign_id, scenario, label, rng_run, n_ues, aggregate_throughput_mbps,
+       mean_delay_ms, loss_ratio, n_los, worst_ue_throughput_mbps, jain_fairness, x, y, z
+FROM metrics;
+
+CREATE VIEW v_eval_uavs AS
+SELECT c.id AS campaign_id, c.name AS campaign, u.scenario, u.label AS positioner, u.rng_run,
+       u.uav, u.name AS uav_name, u.ues_served, u.throughput_mbps, u.mean_delay_ms AS delay_ms,
+       u.loss_ratio, u.n_los, u.worst_ue_throughput_mbps AS worst_ue_mbps, u.jain_fairness,
+       u.x, u.y, u.z, u.job_id
+FROM uav_metrics u
+JOIN campaigns c ON c.id = u.campaign_id;
+)sql";
+
 void ConvertArgvColumns(Database& db) {
   struct Row {
     std::string id;
@@ -264,7 +310,8 @@ const std::vector<Migration>& Migrations() {
                                                  {6, kVersion6, nullptr, nullptr},
                                                  {7, kVersion7, nullptr, nullptr},
                                                  {8, kVersion8, nullptr, nullptr},
-                                                 {9, kVersion9, nullptr, nullptr}};
+                                                 {9, kVersion9, nullptr, nullptr},
+                                                 {10, kVersion10, nullptr, nullptr}};
   return migrations;
 }
 

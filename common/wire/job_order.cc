@@ -12,6 +12,9 @@
 #include "wire/limits.h"
 
 namespace rlpos {
+
+static_assert(kMaxUavs == wire::kMaxUavPositions, "an order carries a position per UAV");
+
 namespace {
 
 using nlohmann::json;
@@ -136,17 +139,26 @@ CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s) {
                         "\", the job's \"" + order.params.scenario + "\"");
   }
   if (order.params.kind == JobKind::kEval) {
-    if (!order.position)
-      Bad("position", "an eval job needs one");
-    const Vec3& p = *order.position;
+    if (!order.placement)
+      Bad("positions", "an eval job needs one per UAV");
+    const std::size_t uavs = checked.parsed.uavs.size();
+    if (order.placement->size() != uavs) {
+      Bad("positions", std::to_string(order.placement->size()) + " given, the scenario has " +
+                           std::to_string(uavs) + " UAV" + (uavs == 1 ? "" : "s"));
+    }
     const Venue& v = checked.parsed.venue;
-    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x >= 0 &&
-          p.x <= v.width && p.y >= 0 && p.y <= v.depth && p.z >= 0 && p.z <= v.height)) {
-      Bad("position", FormatPosition(p) + " is outside the venue");
+    for (std::size_t i = 0; i < uavs; ++i) {
+      const Vec3& p = (*order.placement)[i];
+      const std::string field = "positions[" + std::to_string(i) + "]";
+      if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && p.x >= 0 &&
+            p.x <= v.width && p.y >= 0 && p.y <= v.depth && p.z >= 0 && p.z <= v.height)) {
+        Bad(field, FormatPosition(p) + " is outside the venue");
+      }
+      if (BuildingContaining(checked.parsed, p) >= 0)
+        Bad(field, FormatPosition(p) + " is inside a building");
     }
-    if (BuildingContaining(checked.parsed, p) >= 0) {
-      Bad("position", FormatPosition(p) + " is inside a building");
-    }
+  } else if (order.placement) {
+    Bad("positions", "only an eval job has them");
   }
   return checked;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // One attempt of one job as the coordinator orders it from a worker: the typed job, where the
-// UAV goes, the campaign's scenario document and the attempt's limits. The IDL type
+// UAVs go, the campaign's scenario document and the attempt's limits. The IDL type
 // JobAssignment carries exactly these fields (and the worker it is for).
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -16,7 +16,8 @@ struct JobOrder {
   int attempt = 1;
   double timeout_s = 0;
   JobParams params;
-  std::optional<Vec3> position;   // eval: bound by the coordinator when the dependency succeeds
+  // eval: one position per UAV (the scenario's order), bound when the dependency succeeds
+  std::optional<Placement> placement;
   std::string scenario_document;  // the campaign scenario's JSON, before any override
 };
 
@@ -36,8 +37,8 @@ void CheckOverride(const ScenarioOverride& o);
 nlohmann::json EffectiveScenarioDocument(const nlohmann::json& document, const JobParams& params);
 
 // Checks every field of an order that came over the network, and the scenario it describes
-// (parsed and validated as rlpos-sim would; the position inside the venue and outside every
-// building). `max_timeout_s` is the worker's cap. Throws std::invalid_argument naming the field.
+// (parsed and validated as rlpos-sim would; an eval's placement has a position per UAV, each
+// inside the venue and outside every building). `max_timeout_s` is the worker's cap. Throws std::invalid_argument naming the field.
 CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s);
 
 }  // namespace rlpos

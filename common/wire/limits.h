@@ -11,6 +11,7 @@ constexpr std::size_t kMaxNameLength = 128;  // worker ids, hosts, scenario name
 constexpr std::size_t kMaxCampaignIdLength = 64;
 constexpr std::size_t kMaxScenarioDocument = 262144;  // bytes of one scenario JSON
 constexpr std::size_t kMaxOverrides = 64;
+constexpr std::size_t kMaxUavPositions = 8;  // an eval's placement: one per UAV (kMaxUavs)
 constexpr std::size_t kMaxOverridePath = 128;
 constexpr std::size_t kMaxOverrideValue = 4096;
 constexpr std::size_t kMaxResultJson = 262144;

@@ -354,7 +354,7 @@ void CoordinatorDaemon::Publish(const ReadyJob& job, const std::string& worker_i
   a.order.attempt = job.attempt;
   a.order.timeout_s = job.timeout_s;
   a.order.params = job.params;
-  a.order.position = job.position;
+  a.order.placement = job.placement;
   a.order.scenario_document = ScenarioDocument(job.campaign_id, job.params.scenario);
   dds_->assignments.Write(a);
   published_[job.id] = {job.attempt, worker_id, slot};
@@ -374,7 +374,7 @@ void CoordinatorDaemon::Republish(const std::string& worker_id) {
       ready.attempt = record->attempt;
       ready.timeout_s = record->timeout_s;
       ready.params = record->params;
-      ready.position = record->position;
+      ready.placement = record->placement;
       Publish(ready, worker_id, record->slot);
     }
   }

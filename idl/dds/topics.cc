@@ -162,6 +162,7 @@ struct Traits<msg::JobAssignment> {
   struct Holder {
     C c{};
     std::vector<rlpos_msg_ScenarioOverride> overrides;
+    std::vector<rlpos_msg_UavPosition> positions;
   };
   static void ToC(const msg::JobAssignment& m, Holder& h) {
     const JobOrder& o = m.order;
@@ -194,12 +195,16 @@ struct Traits<msg::JobAssignment> {
                      : p.positioner == "centroid" ? rlpos_msg_POSITIONER_CENTROID
                      : p.positioner == "oracle"   ? rlpos_msg_POSITIONER_ORACLE
                                                   : rlpos_msg_POSITIONER_NONE;
-    h.c.has_position = o.position.has_value();
-    if (o.position) {
-      h.c.x = o.position->x;
-      h.c.y = o.position->y;
-      h.c.z = o.position->z;
-    }
+    const Placement none;
+    const Placement& placement = o.placement ? *o.placement : none;
+    if (placement.size() > wire::kMaxUavPositions)
+      throw DdsError("positions: too many");
+    h.positions.clear();
+    for (const Vec3& q : placement)
+      h.positions.push_back({q.x, q.y, q.z});
+    h.c.positions._maximum = h.c.positions._length = static_cast<uint32_t>(h.positions.size());
+    h.c.positions._buffer = h.positions.empty() ? nullptr : h.positions.data();
+    h.c.positions._release = false;
     h.c.rng_run = p.rng_run.value_or(0);
     h.c.has_duration = p.duration_s.has_value();
     h.c.duration_s = p.duration_s.value_or(0);
@@ -255,8 +260,18 @@ struct Traits<msg::JobAssignment> {
       default:
         error = "positioner " + std::to_string(RawEnum(c.positioner)) + " is unknown";
     }
-    if (c.has_position)
-      o.position = Vec3{c.x, c.y, c.z};
+    if (c.positions._length > wire::kMaxUavPositions ||
+        (c.positions._length > 0 && !c.positions._buffer)) {
+      error = "positions exceed their bound";
+      return m;
+    }
+    if (c.positions._length > 0) {
+      o.placement.emplace();
+      for (uint32_t i = 0; i < c.positions._length; ++i) {
+        const rlpos_msg_UavPosition& q = c.positions._buffer[i];
+        o.placement->push_back({q.x, q.y, q.z});
+      }
+    }
     if (p.kind == JobKind::kEval)
       p.rng_run = c.rng_run;
     if (c.has_duration)

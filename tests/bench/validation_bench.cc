@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   order.params.rng_run = 7;
   order.params.duration_s = 5;
   order.params.warmup_s = 0.5;
-  order.position = Vec3{50, 35, 30};
+  order.placement = Placement{{50, 35, 30}};
   order.scenario_document = ReadText(src + "/campaigns/scenarios/b.json");
   if (order.scenario_document.empty()) {
     std::fprintf(stderr, "rlpos-bench-validation: error: %s/campaigns/scenarios/b.json: missing\n",

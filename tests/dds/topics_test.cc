@@ -58,7 +58,7 @@ msg::JobAssignment Assignment(const std::string& job_id, int attempt, int slot =
   o.params.duration_s = 5;
   o.params.warmup_s = 0;
   o.params.overrides = {{"wifi.mode", "\"adhoc\""}, {"ues.0.demand", "12.5"}};
-  o.position = Vec3{50, 35.5, 10};
+  o.placement = Placement{{50, 35.5, 10}};
   o.scenario_document = "{\"name\": \"B\", \"pad\": \"" + std::string(100000, 'x') + "\"}";
   return a;
 }
@@ -72,7 +72,7 @@ msg::JobAssignment PositionAssignment() {
   a.order.params.positioner = "centroid";
   a.order.params.duration_s = 0.25;
   a.order.params.overrides = {{"/ues/0/demand", "1e-3"}};
-  a.order.position.reset();
+  a.order.placement.reset();
   a.order.scenario_document = "{}";
   return a;
 }
@@ -85,7 +85,7 @@ msg::JobAssignment TrainAssignment() {
   a.order.params.train_seed = 9;
   a.order.params.fidelity = "packet";
   a.order.params.train_episodes = 25;
-  a.order.position.reset();
+  a.order.placement.reset();
   return a;
 }
 
@@ -117,11 +117,14 @@ void ExpectSame(const msg::JobAssignment& a, const msg::JobAssignment& b) {
   EXPECT_EQ(x.params.duration_s, y.params.duration_s);
   EXPECT_EQ(x.params.warmup_s, y.params.warmup_s);
   EXPECT_EQ(x.params.overrides, y.params.overrides);
-  ASSERT_EQ(x.position.has_value(), y.position.has_value());
-  if (x.position) {
-    EXPECT_EQ(x.position->x, y.position->x);
-    EXPECT_EQ(x.position->y, y.position->y);
-    EXPECT_EQ(x.position->z, y.position->z);
+  ASSERT_EQ(x.placement.has_value(), y.placement.has_value());
+  if (x.placement) {
+    ASSERT_EQ(x.placement->size(), y.placement->size());
+    for (std::size_t i = 0; i < x.placement->size(); ++i) {
+      EXPECT_EQ((*x.placement)[i].x, (*y.placement)[i].x);
+      EXPECT_EQ((*x.placement)[i].y, (*y.placement)[i].y);
+      EXPECT_EQ((*x.placement)[i].z, (*y.placement)[i].z);
+    }
   }
 }
 
@@ -147,6 +150,19 @@ TEST_F(TopicsTest, JobAssignmentRoundTrip) {
   const auto got = AwaitData(reader, 1);
   ASSERT_EQ(got.size(), 1u);
   ExpectSame(got[0], sent);
+}
+
+TEST_F(TopicsTest, AnEvalOfThreeUavsCarriesEachPositionInOrder) {
+  Reader<msg::JobAssignment> reader(participant_);
+  Writer<msg::JobAssignment> writer(participant_);
+  msg::JobAssignment a = Assignment("c0ffee/eval/urban3/rl/run2", 1);
+  a.order.placement = Placement{{10, 20, 30}, {40.25, 50, 60}, {70, 80, 90.5}};
+  writer.Write(a);
+  const auto got = AwaitData(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  ExpectSame(got[0], a);
+  ASSERT_EQ(got[0].order.placement->size(), 3u);
+  EXPECT_EQ((*got[0].order.placement)[1].x, 40.25);
 }
 
 TEST_F(TopicsTest, JobEventRoundTripEveryState) {
@@ -347,7 +363,7 @@ TEST_F(TopicsTest, EveryKindOfAssignmentRoundTrips) {
     ExpectSame(got[i].data, sent[i]);
   }
   // Only the fields of its kind travel: a train job has no position, a position job no seed.
-  EXPECT_FALSE(got[0].data.order.position.has_value());
+  EXPECT_FALSE(got[0].data.order.placement.has_value());
   EXPECT_FALSE(got[1].data.order.params.train_seed.has_value());
   EXPECT_EQ(got[1].data.order.params.fidelity, "");
   EXPECT_FALSE(got[1].data.order.params.rng_run.has_value());
@@ -413,6 +429,8 @@ TEST_F(TopicsTest, WriteRefusesEveryFieldOverItsIdlBound) {
   ExpectBound(participant_, a, "override value", 4096, [&](auto& m, auto n) {
     m.order.params.overrides = {{"x", text(n)}};
   });
+  ExpectBound(participant_, a, "positions", 8,
+              [&](auto& m, auto n) { m.order.placement = Placement(n, Vec3{1, 2, 3}); });
 
   const msg::WorkerStatus s = Status("w1", 1);
   ExpectBound(participant_, s, "status worker_id", 128,

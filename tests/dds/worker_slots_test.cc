@@ -61,7 +61,7 @@ class WorkerSlotsTest : public ::testing::Test {
     o.params.kind = JobKind::kEval;
     o.params.scenario = "B";
     o.params.rng_run = 1;
-    o.position = Vec3{50, 35, 30};
+    o.placement = Placement{{50, 35, 30}};
     o.scenario_document =
         testing::ReadFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json");
     return a;

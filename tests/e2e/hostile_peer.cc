@@ -202,10 +202,9 @@ int main(int argc, char** argv) {
       a.overrides._maximum = a.overrides._length = 1;
       a.overrides._buffer = &o;
       a.positioner = static_cast<rlpos_msg_Positioner>(b.positioner);
-      a.has_position = true;
-      a.x = 50;
-      a.y = 50;
-      a.z = 25;
+      rlpos_msg_UavPosition position{50, 50, 25};
+      a.positions._maximum = a.positions._length = 1;
+      a.positions._buffer = &position;
       a.rng_run = 1;
       write(assignments, &a);
     }

@@ -158,10 +158,16 @@ TEST(WireFuzz, JobAssignmentDecoderAndOrderCheck) {
     c.overrides._buffer = overrides.data();
     c.overrides._length = c.overrides._maximum = static_cast<uint32_t>(
         in.Chance(0.02) ? wire::kMaxOverrides + 1 + in.Below(100) : overrides.size());
-    c.has_position = in.Chance(0.95);
-    c.x = in.Chance(0.97) ? 50 : in.WeirdDouble();
-    c.y = in.Chance(0.97) ? 50 : in.WeirdDouble();
-    c.z = in.Chance(0.97) ? 25 : in.WeirdDouble();
+    // Mostly the scenario's one UAV; sometimes none, several, or more than the bound.
+    std::vector<rlpos_msg_UavPosition> positions(in.Chance(0.9) ? 1 : in.Below(4));
+    for (auto& q : positions) {
+      q.x = in.Chance(0.97) ? 50 : in.WeirdDouble();
+      q.y = in.Chance(0.97) ? 50 : in.WeirdDouble();
+      q.z = in.Chance(0.97) ? 25 : in.WeirdDouble();
+    }
+    c.positions._buffer = positions.empty() ? nullptr : positions.data();
+    c.positions._length = c.positions._maximum = static_cast<uint32_t>(
+        in.Chance(0.02) ? wire::kMaxUavPositions + 1 + in.Below(100) : positions.size());
     c.rng_run = in.Chance(0.97) ? 1 : static_cast<std::uint64_t>(in.WeirdInteger());
     c.has_duration = in.Chance(0.9);
     c.duration_s = in.Chance(0.97) ? 1 : in.WeirdDouble();
@@ -179,8 +185,9 @@ TEST(WireFuzz, JobAssignmentDecoderAndOrderCheck) {
                           const JobOrder& o = r.data.order;
                           EXPECT_TRUE(wire::IsSafePath(o.job_id, wire::kMaxIdLength)) << i;
                           EXPECT_TRUE(o.timeout_s > 0 && o.timeout_s <= 604800) << i;
-                          if (o.position) {
-                            EXPECT_TRUE(Finite(*o.position)) << i;
+                          if (o.placement) {
+                            for (const Vec3& p : *o.placement)
+                              EXPECT_TRUE(Finite(p)) << i;
                           }
                           EXPECT_TRUE(checked.scenario.is_object()) << i;
                           return true;
@@ -346,12 +353,25 @@ TEST(WireFuzz, ResultParser) {
       R"({"position": [50.0, 50.0, 25.0], "aggregate_throughput_mbps": 168.7,)"
       R"( "mean_delay_ms": 69.9, "loss_ratio": 0.01, "min_snr_db": 12.5, "n_los": 1,)"
       R"( "n_ues": 4, "demands_met": 3, "run": 1})";
+  const std::string eval_of_two =
+      R"({"position": [50.0, 50.0, 25.0], "aggregate_throughput_mbps": 168.7,)"
+      R"( "mean_delay_ms": 69.9, "loss_ratio": 0.01, "min_snr_db": 12.5, "n_los": 1,)"
+      R"( "n_ues": 4, "demands_met": 3, "run": 1, "uavs": [)"
+      R"({"name": "a", "position": [50.0, 50.0, 25.0], "ues_served": 3, "throughput_mbps": 100.0,)"
+      R"( "mean_delay_ms": 50.0, "loss_ratio": 0.0, "n_los": 1, "worst_ue_throughput_mbps": 20.0,)"
+      R"( "jain_fairness": 0.9}, {"name": "b", "position": [10.0, 10.0, 25.0], "ues_served": 1,)"
+      R"( "throughput_mbps": 68.7, "mean_delay_ms": null, "loss_ratio": null, "n_los": 0,)"
+      R"( "worst_ue_throughput_mbps": 68.7, "jain_fairness": 1.0}]})";
   const std::string position = R"({"position": [47.5, 37.5, 35.0], "reward": 3.2})";
+  const std::string positions =
+      R"({"position": [47.5, 37.5, 35.0], "positions": [[47.5, 37.5, 35.0], [5, 5, 20]]})";
   FuzzInput in(kSeed + 5);
   Outcomes outcomes;
   for (int i = 0; i < kInputs; ++i) {
     const bool is_eval = in.Chance(0.7);
-    const std::string& base = is_eval ? eval : position;
+    const bool several = in.Chance(0.3);
+    const std::string& base = is_eval ? (several ? eval_of_two : eval)
+                                      : (several ? positions : position);
     const double mode = in.Below(100);
     const std::string text = mode < 5    ? in.RandomBytes(200)
                              : mode < 55 ? in.MutateJsonValue(base)
@@ -360,10 +380,17 @@ TEST(WireFuzz, ResultParser) {
         [&] {
           const nlohmann::json json =
               wire::ParseBoundedJson(text, wire::kMaxResultJson, "the result");
-          if (!is_eval)
-            return Finite(ProducedPosition(json));
+          if (!is_eval) {
+            const Placement placement = ProducedPlacement(json);
+            EXPECT_TRUE(!placement.empty() && placement.size() <= kMaxUavs) << i << ": " << text;
+            for (const Vec3& p : placement)
+              EXPECT_TRUE(Finite(p)) << i << ": " << text;
+            return true;
+          }
           const EvalResult r = ParseEvalResult(json);
-          EXPECT_TRUE(Finite(r.position)) << i << ": " << text;
+          EXPECT_EQ(r.placement.size(), r.uavs.size()) << i << ": " << text;
+          for (const Vec3& p : r.placement)
+            EXPECT_TRUE(Finite(p)) << i << ": " << text;
           EXPECT_TRUE(std::isfinite(r.aggregate_throughput_mbps) &&
                       r.aggregate_throughput_mbps >= 0)
               << i << ": " << text;

@@ -70,7 +70,8 @@ JobOrder OrderOf(JobKind kind) {
   order.params.fidelity = "packet";
   order.params.positioner = "oracle";
   order.params.rng_run = 3;
-  order.position = Vec3{50, 35.5, 10};
+  if (kind == JobKind::kEval)
+    order.placement = Placement{{50, 35.5, 10}};
   return order;
 }
 
@@ -86,6 +87,12 @@ TEST(SimCommandLine, OneCommandPerKindFromTypedFieldsOnly) {
   EXPECT_EQ(SimCommandLine(OrderOf(JobKind::kEval), sim, folder),
             (std::vector<std::string>{sim, "eval", "--scenario", folder + "/scenario.json",
                                       "--position", "50,35.5,10", "--json", "--no-progress"}));
+  JobOrder three = OrderOf(JobKind::kEval);
+  three.placement = Placement{{1, 2, 3}, {4, 5, 6}, {7, 8, 9.5}};
+  EXPECT_EQ(SimCommandLine(three, sim, folder),
+            (std::vector<std::string>{sim, "eval", "--scenario", folder + "/scenario.json",
+                                      "--position", "1,2,3", "--position", "4,5,6", "--position",
+                                      "7,8,9.5", "--json", "--no-progress"}));
 }
 
 TEST(SimCommandLine, NoTextOfTheOrderReachesTheCommandLine) {

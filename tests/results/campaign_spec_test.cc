@@ -185,10 +185,6 @@ const BadCampaign kBadCampaigns[] = {
      "/scenarios/0: expected a file name or {\"file\", \"set\"}, got a number"},
     {"MissingScenarioFile", [](json& d) { d["scenarios"] = {"scenarios/nope.json"}; },
      "/scenarios/0: scenario file \"/campaigns/scenarios/nope.json\" does not exist"},
-    {"SeveralUavs",
-     [](json& d) { d["scenarios"] = {SourcePath("campaigns/scenarios/campus2.json")}; },
-     "/scenarios/0: " + SourcePath("campaigns/scenarios/campus2.json") +
-         ": scenario campus2 has 2 UAVs; campaigns take single-UAV scenarios only"},
     {"MissingScenarioFileInObject",
      [](json& d) {
        d["scenarios"] = {{{"file", "/no/such.json"}}};

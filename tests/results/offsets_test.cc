@@ -85,8 +85,11 @@ TEST(PositionRule, JsonRoundTripAndApply) {
   const PositionRule back = PositionRuleFromJson(nlohmann::json::parse(ToJson(rule).dump()));
   EXPECT_EQ(back.offset, 3);
   EXPECT_EQ(back.geometry.obstacles.size(), 5u);
-  ExpectAt(ApplyPositionRule(back, {50, 35, 10}), 50, 44.5, 10);
-  ExpectAt(ApplyPositionRule(PositionRule{}, {1, 2, 3}), 1, 2, 3);  // rl: as produced
+  ExpectAt(ApplyPositionRule(back, {{50, 35, 10}}).at(0), 50, 44.5, 10);
+  ExpectAt(ApplyPositionRule(PositionRule{}, {{1, 2, 3}}).at(0), 1, 2, 3);  // rl: as produced
+  // rl of several UAVs: as produced; offsets are defined around one UAV.
+  EXPECT_EQ(ApplyPositionRule(PositionRule{}, {{1, 2, 3}, {4, 5, 6}}).size(), 2u);
+  EXPECT_THROW(ApplyPositionRule(back, {{1, 2, 3}, {4, 5, 6}}), std::invalid_argument);
   EXPECT_THROW(PositionRuleFromJson({{"offset", 9}}), std::invalid_argument);
   EXPECT_THROW(PositionRuleFromJson({{"offset", 1}}), std::invalid_argument);
   EXPECT_THROW(PositionRuleFromJson("x"), std::invalid_argument);

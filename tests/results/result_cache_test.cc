@@ -235,11 +235,27 @@ TEST(JobContent, AnEvalsKeyNeedsItsPositionButNotItsTrainSeed) {
   other_run.rng_run = 4;
   EXPECT_NE(JobContentBase(other_run, "aa", "v1"), base);
   EXPECT_FALSE(JobContentKey(base, JobKind::kEval, std::nullopt));
-  const auto key = JobContentKey(base, JobKind::kEval, Vec3{10, 20, 30});
+  const auto key = JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}});
   ASSERT_TRUE(key);
-  EXPECT_EQ(JobContentKey(base, JobKind::kEval, Vec3{10 + 1e-9, 20, 30}), key);
-  EXPECT_NE(JobContentKey(base, JobKind::kEval, Vec3{10.001, 20, 30}), key);
+  // One UAV's key is what it was before placements: single-UAV results cached then still serve.
+  EXPECT_EQ(*key, Sha256Hex(base + "|10000000,20000000,30000000"));
+  EXPECT_EQ(JobContentKey(base, JobKind::kEval, Placement{{10 + 1e-9, 20, 30}}), key);
+  EXPECT_NE(JobContentKey(base, JobKind::kEval, Placement{{10.001, 20, 30}}), key);
   EXPECT_EQ(JobContentKey(base, JobKind::kTrain, std::nullopt), base);
+}
+
+TEST(JobContent, APlacementsKeyHasEveryUavInOrder) {
+  JobParams eval;
+  eval.kind = JobKind::kEval;
+  eval.rng_run = 3;
+  const std::string base = JobContentBase(eval, "aa", "v1");
+  const auto two = JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}, {40, 50, 30}});
+  ASSERT_TRUE(two);
+  EXPECT_NE(two, JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}}));
+  EXPECT_NE(two, JobContentKey(base, JobKind::kEval, Placement{{40, 50, 30}, {10, 20, 30}}));
+  EXPECT_NE(two, JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}, {40, 50, 31}}));
+  EXPECT_EQ(two, JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}, {40, 50, 30 + 1e-9}}));
+  EXPECT_FALSE(JobContentKey(base, JobKind::kEval, Placement{}));
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ TEST_F(StoreTest, ProducersStartReadyEvalsPending) {
   EXPECT_EQ(position.params.duration_s, expected.params.duration_s);
   EXPECT_EQ(position.params.warmup_s, expected.params.warmup_s);
   EXPECT_EQ(position.params.overrides, expected.params.overrides);
-  EXPECT_FALSE(position.position.has_value());
+  EXPECT_FALSE(position.placement.has_value());
   EXPECT_EQ(store_.ListReady(3).size(), 3u);
 }
 
@@ -104,8 +104,7 @@ TEST_F(StoreTest, ProducerSuccessBindsPositionsOfItsEvals) {
   EXPECT_EQ(store_.RecordSuccess(Id("train/B/seed1"), attempt, PositionResult(50, 35, 10)),
             JobUpdate::kSucceeded);
   const auto position_of = [this](const std::string& key) {
-    const auto position = Job(key).position;
-    return position ? FormatPosition(*position) : std::string("unbound");
+    return testing::FormatPlacement(Job(key).placement);
   };
   EXPECT_EQ(Job("eval/B/rl/run1").state, "ready");
   EXPECT_EQ(position_of("eval/B/rl/run1"), "50,35,10");
@@ -123,8 +122,8 @@ TEST_F(StoreTest, ProducerSuccessBindsPositionsOfItsEvals) {
     if (job.params.kind != JobKind::kEval)
       continue;
     ++evals;
-    ASSERT_TRUE(job.position.has_value()) << job.key;
-    EXPECT_EQ(FormatPosition(*job.position), position_of(job.key)) << job.key;
+    ASSERT_TRUE(job.placement.has_value()) << job.key;
+    EXPECT_EQ(testing::FormatPlacement(job.placement), position_of(job.key)) << job.key;
     EXPECT_TRUE(testing::SameParams(job.params, FindJob(campaign_, job.key).params)) << job.key;
   }
   EXPECT_EQ(evals, 2 * 6);
@@ -169,7 +168,7 @@ TEST_F(StoreTest, EveryTypedFieldSurvivesTheStore) {
     EXPECT_EQ(record->depends_on, job.depends_on);
     EXPECT_DOUBLE_EQ(record->timeout_s, 300.0);
     EXPECT_TRUE(testing::SameParams(record->params, job.params));
-    EXPECT_FALSE(record->position.has_value());  // nothing bound yet
+    EXPECT_FALSE(record->placement.has_value());  // nothing bound yet
   }
   const auto ready = store_.ListReady();
   ASSERT_FALSE(ready.empty());
@@ -207,7 +206,7 @@ TEST_F(StoreTest, AResultOfAnotherPositionIsAFailedAttempt) {
   result["position"] = {50.0, 50.0, 26.0};  // not where the job put the UAV
   EXPECT_EQ(store_.RecordSuccess(eval, 1, result), JobUpdate::kRetrying);
   EXPECT_EQ(Job("eval/B/baseline/run1").error,
-            "malformed result: result is of another position than the job's");
+            "malformed result: result is of another placement than the job's");
   EXPECT_EQ(Query("SELECT COUNT(*) FROM metrics"), "0");
   Start("eval/B/baseline/run1");
   result["position"] = {50.0, 50.0, 25.0};
@@ -427,7 +426,7 @@ TEST_F(StoreTest, CancelThenRetry) {
   const JobRecord train = Job("train/B/seed1");
   EXPECT_EQ(train.attempt, 2);
   EXPECT_EQ(train.max_attempts, 3);  // a fresh budget: attempt 2 plus one retry
-  EXPECT_EQ(FormatPosition(*Job("eval/B/baseline/run1").position), "50,50,25");
+  EXPECT_EQ(testing::FormatPlacement(Job("eval/B/baseline/run1").placement), "50,50,25");
   EXPECT_THROW(store_.CancelCampaign("000000000000"), StoreError);
   EXPECT_THROW(store_.RetryFailed("000000000000"), StoreError);
 }

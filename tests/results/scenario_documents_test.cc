@@ -69,7 +69,7 @@ TEST(ScenarioDocuments, EveryShippedJobPassesTheWorkersCheck) {
       order.params = job.params;
       order.scenario_document = documents.at(job.params.scenario);
       if (job.params.kind == JobKind::kEval)
-        order.position = Vec3{1, 1, 5};  // a corner of the venue, outside every building
+        order.placement = Placement{{1, 1, 5}};  // a corner of the venue, outside every building
       CheckedOrder c;
       ASSERT_NO_THROW(c = CheckJobOrder(order, campaign.job_timeout_s));
       EXPECT_EQ(c.parsed.name, job.params.scenario);

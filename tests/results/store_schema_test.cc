@@ -368,7 +368,7 @@ TEST_F(LegacyStoreTest, MigratedJobsReadAndRunAsTheyWould) {
   EXPECT_EQ(ready[0].id, "c0ffee/position/B/oracle");
   EXPECT_EQ(ready[0].params.kind, JobKind::kPosition);
   EXPECT_EQ(ready[0].params.positioner, "oracle");
-  EXPECT_FALSE(ready[0].position.has_value());
+  EXPECT_FALSE(ready[0].placement.has_value());
   EXPECT_EQ(ready[1].id, "c0ffee/eval/B/rl/run2");
   const JobParams& p = ready[1].params;
   EXPECT_EQ(p.kind, JobKind::kEval);
@@ -378,8 +378,7 @@ TEST_F(LegacyStoreTest, MigratedJobsReadAndRunAsTheyWould) {
   EXPECT_EQ(p.duration_s, 5.0);
   EXPECT_FALSE(p.warmup_s.has_value());  // the old --set, now an override
   EXPECT_EQ(p.overrides, eval_set);
-  ASSERT_TRUE(ready[1].position.has_value());
-  EXPECT_EQ(FormatPosition(*ready[1].position), "50,35.5,10");
+  EXPECT_EQ(testing::FormatPlacement(ready[1].placement), "50,35.5,10");
   EXPECT_DOUBLE_EQ(ready[1].timeout_s, 300.0);
 
   const auto train = store.GetJob("c0ffee/train/B/seed1");
@@ -405,14 +404,13 @@ TEST_F(LegacyStoreTest, MigratedJobsReadAndRunAsTheyWould) {
   const auto waiting = store.GetJob("c0ffee/eval/B/oracle/run1");
   ASSERT_TRUE(waiting.has_value());
   EXPECT_EQ(waiting->state, "pending");
-  EXPECT_FALSE(waiting->position.has_value());
+  EXPECT_FALSE(waiting->placement.has_value());
   ASSERT_TRUE(store.MarkRunning("c0ffee/position/B/oracle", "w1", 0, 1));
   ASSERT_EQ(store.RecordSuccess("c0ffee/position/B/oracle", 1, testing::PositionResult(20, 30, 15)),
             JobUpdate::kSucceeded);
   const auto bound = store.GetJob("c0ffee/eval/B/oracle/run1");
   EXPECT_EQ(bound->state, "ready");
-  ASSERT_TRUE(bound->position.has_value());
-  EXPECT_EQ(FormatPosition(*bound->position), "20,30,15");
+  EXPECT_EQ(testing::FormatPlacement(bound->placement), "20,30,15");
 }
 
 TEST_F(LegacyStoreTest, UnreadableArgvLeavesTheFileAtVersionTwo) {

@@ -100,10 +100,24 @@ std::string Text(const std::vector<ScenarioOverride>& overrides) {
 nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id,
                              nlohmann::json result) {
   const auto job = store.GetJob(job_id);
-  if (job && job->position) {
-    result["position"] = {job->position->x, job->position->y, job->position->z};
+  if (job && job->placement) {
+    const Placement& placement = *job->placement;
+    result["position"] = {placement[0].x, placement[0].y, placement[0].z};
+    for (std::size_t i = 0; result.contains("uavs") && i < result["uavs"].size(); ++i) {
+      const Vec3& p = placement.at(i);
+      result["uavs"][i]["position"] = {p.x, p.y, p.z};
+    }
   }
   return result;
+}
+
+std::string FormatPlacement(const std::optional<Placement>& placement) {
+  if (!placement)
+    return "unbound";
+  std::string text;
+  for (const Vec3& p : *placement)
+    text += (text.empty() ? "" : " ") + FormatPosition(p);
+  return text;
 }
 
 std::string QueryOne(const std::string& db_file, const std::string& sql) {

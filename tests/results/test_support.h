@@ -33,4 +33,7 @@ std::string QueryOne(const std::string& db_file, const std::string& sql);
 // refused as implausible).
 nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id, nlohmann::json result);
 
+// "x,y,z" per UAV, space-separated; "unbound" for none.
+std::string FormatPlacement(const std::optional<Placement>& placement);
+
 }  // namespace rlpos::testing

@@ -29,10 +29,14 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
     case JobKind::kEval:
       break;
   }
-  // Duration, run and warm-up are in the scenario file already.
-  return {sim_binary, "eval",         "--scenario",
-          scenario,   "--position",   FormatPosition(order.position.value_or(Vec3{})),
-          "--json",   "--no-progress"};
+  // Duration, run and warm-up are in the scenario file already. One --position per UAV.
+  std::vector<std::string> command{sim_binary, "eval", "--scenario", scenario};
+  for (const Vec3& p : order.placement.value_or(Placement{})) {
+    command.push_back("--position");
+    command.push_back(FormatPosition(p));
+  }
+  command.insert(command.end(), {"--json", "--no-progress"});
+  return command;
 }
 
 }  // namespace rlpos
