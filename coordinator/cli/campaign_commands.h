@@ -5,6 +5,7 @@
 
 #include "campaign/expansion.h"
 #include "dds/dds_config.h"
+#include "store/results_store.h"
 
 namespace rlpos {
 
@@ -38,7 +39,12 @@ int SubmitCampaign(const std::string& campaign_file, bool use_cache, const DdsOp
 int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch, double period_s);
-int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format);
+// The summary per scenario and positioner; with `per_uav`, per UAV of the scenarios with several
+// instead. The table format shows both (the second when there is any).
+int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
+                bool per_uav);
+// The summary table, then the per-UAV one when the campaign has scenarios of several UAVs.
+std::string ResultsTables(ResultsStore& store, const std::string& campaign_id);
 // security init DIR; security add-worker|add-client DIR NAME.
 int InitSecurity(const std::string& dir, int days);
 int AddSecurityIdentity(const std::string& dir, const std::string& name, DdsRole role, int days);

@@ -293,7 +293,7 @@ int RunCampaign(const RunOptions& options) {
     stop_all();
 
     const CampaignProgress progress = store.Progress(reply.campaign_id);
-    std::cout << FormatSummaryText(SummarizeCampaign(store, reply.campaign_id));
+    std::cout << ResultsTables(store, reply.campaign_id);
     const std::string report_dir = options.report_dir.empty()
                                        ? (db_dir / "reports" / reply.campaign_id).string()
                                        : options.report_dir;

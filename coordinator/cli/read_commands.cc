@@ -10,6 +10,7 @@
 #include "reporting/campaign_summary.h"
 #include "reporting/report_writer.h"
 #include "reporting/results_format.h"
+#include "reporting/uav_summary.h"
 #include "store/results_store.h"
 #include "store/store_error.h"
 
@@ -69,17 +70,37 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
   }
 }
 
-int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format) {
+int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
+                bool per_uav) {
   ResultsStore store(db, ReadOnly());
-  const auto summary = SummarizeCampaign(store, campaign_id);
+  store.Progress(campaign_id);  // StoreError for an unknown campaign
+  if (per_uav) {
+    const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
+    if (format == "csv") {
+      std::cout << FormatUavSummaryCsv(uavs);
+    } else if (format == "json") {
+      std::cout << UavSummaryToJson(uavs).dump(2) << "\n";
+    } else {
+      std::cout << FormatUavSummaryText(uavs);
+    }
+    return kExitOk;
+  }
   if (format == "csv") {
-    std::cout << FormatSummaryCsv(summary);
+    std::cout << FormatSummaryCsv(SummarizeCampaign(store, campaign_id));
   } else if (format == "json") {
-    std::cout << SummaryToJson(summary).dump(2) << "\n";
+    std::cout << SummaryToJson(SummarizeCampaign(store, campaign_id)).dump(2) << "\n";
   } else {
-    std::cout << FormatSummaryText(summary);
+    std::cout << ResultsTables(store, campaign_id);
   }
   return kExitOk;
+}
+
+std::string ResultsTables(ResultsStore& store, const std::string& campaign_id) {
+  std::string out = FormatSummaryText(SummarizeCampaign(store, campaign_id));
+  const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
+  if (!uavs.empty())
+    out += "\nper UAV:\n" + FormatUavSummaryText(uavs);
+  return out;
 }
 
 int WriteCampaignReport(const std::string& db, const std::string& campaign_id,

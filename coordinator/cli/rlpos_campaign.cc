@@ -2,7 +2,7 @@
 //   run CAMPAIGN.json [--workers N] [--db FILE]   embedded coordinator + N workers (loopback)
 //   submit CAMPAIGN.json                          to a running rlpos-coordinator (DDS)
 //   status [ID] [--watch] [--db FILE]             jobs by state, workers, progress, ETA
-//   results ID [--format table|csv|json] [--db FILE]
+//   results ID [--format table|csv|json] [--per-uav] [--db FILE]
 //   report ID --out DIR [--db FILE]
 //   cancel ID | retry ID                          via the coordinator (DDS)
 //   security init DIR | add-worker DIR NAME | add-client DIR NAME   DDS Security identities
@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
   AddRequestOptions(submit, dds, timeout_s);
 
   bool watch = false;
+  bool per_uav = false;
   double period_s = 2;
   auto* status = app.add_subcommand("status", "Jobs by state, workers alive, progress and ETA");
   status->add_option("id", campaign_id, "Campaign id (default: every campaign)");
@@ -82,6 +83,8 @@ int main(int argc, char** argv) {
   results->add_option("id", campaign_id, "Campaign id")->required();
   results->add_option("--format", format, "table|csv|json (default table)")
       ->check(CLI::IsMember({"table", "csv", "json"}));
+  results->add_flag("--per-uav", per_uav,
+                    "Per UAV of the scenarios with several (the table shows both by default)");
   add_db(results);
 
   auto* report = app.add_subcommand("report", "Write CSV, Markdown and PNG plots of a campaign");
@@ -149,7 +152,7 @@ int main(int argc, char** argv) {
     if (status->parsed())
       return ShowStatus(db, campaign_id, watch, period_s);
     if (results->parsed())
-      return ShowResults(db, campaign_id, format);
+      return ShowResults(db, campaign_id, format, per_uav);
     if (report->parsed())
       return WriteCampaignReport(db, campaign_id, out_dir);
     if (artifacts->parsed())

@@ -12,7 +12,8 @@ std::string Jobs(int n) {
 }  // namespace
 
 std::string FormatReportMarkdown(const CampaignProgress& progress,
-                                 const std::vector<PositionerSummary>& summary) {
+                                 const std::vector<PositionerSummary>& summary,
+                                 const std::vector<UavSummary>& uavs) {
   const CampaignProgress& p = progress;
   std::string out = "# Campaign report: " + p.name + "\n\n";
   out += "- Campaign id: `" + p.campaign_id + "`\n";
@@ -41,6 +42,17 @@ std::string FormatReportMarkdown(const CampaignProgress& progress,
       "against the scenario's baseline in % (\"-\" without a baseline).\n\n"
       "Files: `summary.csv` (these numbers unrounded), `throughput_ccdf.csv` and `delay_cdf.csv` "
       "(the curves), `throughput_ccdf_<scenario>.png` and `delay_cdf_<scenario>.png` (plots).\n";
+  if (uavs.empty())
+    return out;
+  out += "\n## Per UAV, in the scenarios with several\n\n";
+  out += FormatUavSummaryMarkdown(uavs);
+  out +=
+      "\nEach UAV's share of the same runs: the UEs associated with it (best SNR, or the "
+      "scenario's fixed assignment), their aggregate throughput (mean, 95 % CI), mean delay over "
+      "the runs in which they received packets, how many of them see it in line of sight, its "
+      "worst UE's throughput and Jain's fairness index over its UEs (over the runs in which it "
+      "served any). In the table above, throughput, nLoS, worst UE and Jain are over all UEs "
+      "whichever UAV serves them. File: `uav_summary.csv`; per run: the view `v_eval_uavs`.\n";
   return out;
 }
 

@@ -1,15 +1,18 @@
 #pragma once
 // summary.md: the one file of a report meant to be read as is (or pasted into an issue): which
-// campaign, how far it got, the summary table, and a warning when failed jobs leave runs out.
+// campaign, how far it got, the summary table (and the one per UAV of scenarios with several),
+// and a warning when failed jobs leave runs out.
 #include <string>
 #include <vector>
 
 #include "reporting/campaign_summary.h"
+#include "reporting/uav_summary.h"
 #include "store/results_store.h"
 
 namespace rlpos {
 
 std::string FormatReportMarkdown(const CampaignProgress& progress,
-                                 const std::vector<PositionerSummary>& summary);
+                                 const std::vector<PositionerSummary>& summary,
+                                 const std::vector<UavSummary>& uavs = {});
 
 }  // namespace rlpos

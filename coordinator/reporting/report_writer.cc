@@ -9,6 +9,7 @@
 #include "reporting/plot_script.h"
 #include "reporting/report_markdown.h"
 #include "reporting/results_format.h"
+#include "reporting/uav_summary.h"
 
 namespace rlpos {
 
@@ -17,6 +18,7 @@ ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
   const CampaignProgress progress = store.Progress(campaign_id);  // StoreError when unknown
   const std::vector<MetricRow> rows = store.Metrics(campaign_id);
   const std::vector<PositionerSummary> summary = SummarizeRuns(rows);
+  const std::vector<UavSummary> uavs = SummarizeUavs(store.UavMetrics(campaign_id));
   const std::vector<CurvePoint> throughput = ThroughputCcdf(rows);
   const std::vector<CurvePoint> delay = DelayCdf(rows);
 
@@ -29,7 +31,9 @@ ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
     return path;
   };
   write("summary.csv", FormatSummaryCsv(summary));
-  std::string markdown = FormatReportMarkdown(progress, summary);
+  if (!uavs.empty())
+    write("uav_summary.csv", FormatUavSummaryCsv(uavs));
+  std::string markdown = FormatReportMarkdown(progress, summary, uavs);
   const auto builds = store.CampaignBuilds(campaign_id);
   if (builds.size() > 1) {
     std::string list;

@@ -6,37 +6,21 @@
 #include <optional>
 
 #include "reporting/csv_cells.h"
+#include "reporting/text_table.h"
 
 namespace rlpos {
 namespace {
 
 // --- Tables (text, Markdown): rounded, "-" for absent ---
 
-struct Column {
-  const char* title;
-  bool left_aligned;
-};
-
-const std::vector<Column>& TableColumns() {
-  static const std::vector<Column> columns{
+const std::vector<TableColumn>& TableColumns() {
+  static const std::vector<TableColumn> columns{
       {"scenario", true},        {"positioner", true},   {"runs", false},
       {"median Mbit/s", false},  {"mean Mbit/s", false}, {"ci95 Mbit/s", false},
       {"delay ms", false},       {"ci95 ms", false},     {"no delay", false},
       {"nLoS/N", false},         {"demands met", false}, {"worst UE Mbit/s", false},
       {"Jain", false},           {"thr vs base %", false}, {"delay vs base %", false}};
   return columns;
-}
-
-std::string Fixed(double value, int decimals, bool sign = false) {
-  if (!std::isfinite(value))
-    return "-";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, sign ? "%+.*f" : "%.*f", decimals, value);
-  return buffer;
-}
-
-std::string Fixed(const std::optional<double>& value, int decimals, bool sign = false) {
-  return value ? Fixed(*value, decimals, sign) : "-";
 }
 
 std::string Compact(double value) {
@@ -49,33 +33,18 @@ std::vector<std::string> TableRow(const PositionerSummary& s) {
   return {s.scenario,
           s.positioner,
           std::to_string(s.runs),
-          Fixed(s.throughput_median_mbps, 2),
-          Fixed(s.throughput_mean_mbps, 2),
-          Fixed(s.throughput_ci95_mbps, 2),
-          Fixed(s.delay_mean_ms, 3),
-          Fixed(s.delay_ci95_ms, 3),
+          TableNumber(s.throughput_median_mbps, 2),
+          TableNumber(s.throughput_mean_mbps, 2),
+          TableNumber(s.throughput_ci95_mbps, 2),
+          TableNumber(s.delay_mean_ms, 3),
+          TableNumber(s.delay_ci95_ms, 3),
           std::to_string(s.delay_null_runs),
-          Fixed(s.nlos_ratio_mean, 2),
-          Fixed(s.demands_met_mean, 1) + "/" + Compact(s.ues_mean),
-          Fixed(s.worst_ue_mean_mbps, 2),
-          Fixed(s.jain_mean, 3),
-          Fixed(s.throughput_change_pct, 1, true),
-          Fixed(s.delay_change_pct, 1, true)};
-}
-
-std::string Pad(const std::string& text, std::size_t width, bool left) {
-  const std::string fill(width > text.size() ? width - text.size() : 0, ' ');
-  return left ? text + fill : fill + text;
-}
-
-std::string MarkdownCell(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '|')
-      out += '\\';
-    out += c;
-  }
-  return out;
+          TableNumber(s.nlos_ratio_mean, 2),
+          TableNumber(s.demands_met_mean, 1) + "/" + Compact(s.ues_mean),
+          TableNumber(s.worst_ue_mean_mbps, 2),
+          TableNumber(s.jain_mean, 3),
+          TableNumber(s.throughput_change_pct, 1, true),
+          TableNumber(s.delay_change_pct, 1, true)};
 }
 
 // --- CSV and JSON: unrounded ---
@@ -118,57 +87,21 @@ const std::vector<Field>& Fields() {
   return fields;
 }
 
-}  // namespace
-
-std::string FormatSummaryText(const std::vector<PositionerSummary>& summary) {
-  const auto& columns = TableColumns();
+std::vector<std::vector<std::string>> TableRows(const std::vector<PositionerSummary>& summary) {
   std::vector<std::vector<std::string>> rows;
   for (const auto& s : summary)
     rows.push_back(TableRow(s));
-  std::vector<std::size_t> widths;
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    std::size_t width = std::string(columns[c].title).size();
-    for (const auto& row : rows)
-      width = std::max(width, row[c].size());
-    widths.push_back(width);
-  }
-  const auto line = [&](const std::vector<std::string>& cells) {
-    std::string out;
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (c > 0)
-        out += "  ";
-      out += Pad(cells[c], widths[c], columns[c].left_aligned);
-    }
-    while (!out.empty() && out.back() == ' ')
-      out.pop_back();
-    return out + "\n";
-  };
-  std::vector<std::string> titles, rules;
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    titles.push_back(columns[c].title);
-    rules.push_back(std::string(widths[c], '-'));
-  }
-  std::string out = line(titles) + line(rules);
-  for (const auto& row : rows)
-    out += line(row);
-  return out;
+  return rows;
+}
+
+}  // namespace
+
+std::string FormatSummaryText(const std::vector<PositionerSummary>& summary) {
+  return FormatTextTable(TableColumns(), TableRows(summary));
 }
 
 std::string FormatSummaryMarkdown(const std::vector<PositionerSummary>& summary) {
-  const auto& columns = TableColumns();
-  std::string header = "|", rule = "|";
-  for (const auto& column : columns) {
-    header += std::string(" ") + column.title + " |";
-    rule += column.left_aligned ? "---|" : "---:|";
-  }
-  std::string out = header + "\n" + rule + "\n";
-  for (const auto& s : summary) {
-    out += "|";
-    for (const auto& cell : TableRow(s))
-      out += " " + MarkdownCell(cell) + " |";
-    out += "\n";
-  }
-  return out;
+  return FormatMarkdownTable(TableColumns(), TableRows(summary));
 }
 
 const std::vector<std::string>& SummaryCsvColumns() {
