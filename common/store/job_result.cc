@@ -45,13 +45,6 @@ Vec3 Triple(const json& p, const std::string& what) {
   return {Finite(p[0], what.c_str()), Finite(p[1], what.c_str()), Finite(p[2], what.c_str())};
 }
 
-bool Same(const Vec3& a, const Vec3& b) {
-  const auto off = [](double u, double v) {
-    return std::fabs(u - v) > 1e-6 * std::max(1.0, std::fabs(u));
-  };
-  return !(off(a.x, b.x) || off(a.y, b.y) || off(a.z, b.z));
-}
-
 // A list of 1..kMaxUavs entries under `key`.
 const json& UavList(const json& result, const char* key) {
   const json& list = Field(result, key);
@@ -122,6 +115,13 @@ void CheckUavsAddUp(const EvalResult& r) {
 
 }  // namespace
 
+bool SamePosition(const Vec3& a, const Vec3& b) {
+  const auto off = [](double u, double v) {
+    return std::fabs(u - v) > 1e-6 * std::max(1.0, std::fabs(u));
+  };
+  return !(off(a.x, b.x) || off(a.y, b.y) || off(a.z, b.z));
+}
+
 Placement ProducedPlacement(const json& result) {
   const Vec3 first = Triple(Field(result, "position"), "position");
   if (!result.contains("positions"))
@@ -130,7 +130,7 @@ Placement ProducedPlacement(const json& result) {
   Placement placement;
   for (std::size_t i = 0; i < list.size(); ++i)
     placement.push_back(Triple(list[i], "positions/" + std::to_string(i)));
-  if (!Same(placement.front(), first))
+  if (!SamePosition(placement.front(), first))
     throw std::invalid_argument("result \"positions/0\" is not its \"position\"");
   return placement;
 }
@@ -183,7 +183,7 @@ EvalResult ParseEvalResult(const json& result) {
       r.uavs.push_back(ParseUav(list[i], i));
       r.placement.push_back(r.uavs.back().position);
     }
-    if (!Same(r.placement.front(), first))
+    if (!SamePosition(r.placement.front(), first))
       throw std::invalid_argument("result \"uavs/0/position\" is not its \"position\"");
     CheckUavsAddUp(r);
   } else {

@@ -36,6 +36,10 @@ struct EvalResult {
   std::vector<UavEvalResult> uavs;
 };
 
+// Equal to a micrometre (relative to the first, for large coordinates): the same position
+// printed and read back.
+bool SamePosition(const Vec3& a, const Vec3& b);
+
 // Both throw std::invalid_argument naming the missing or malformed key.
 Placement ProducedPlacement(const nlohmann::json& result);
 EvalResult ParseEvalResult(const nlohmann::json& result);

@@ -57,6 +57,23 @@ std::optional<std::string> PositionsJson(const Placement& placement) {
   return out.dump();
 }
 
+// The placement of x, y, z, positions_json starting at `first`: positions_json when set (several
+// UAVs), else x, y, z when bound. Throws on a malformed positions_json.
+std::optional<Placement> ReadPlacement(const Statement& row, int first) {
+  if (const auto positions = row.OptionalText(first + 3)) {
+    Placement placement;
+    for (const auto& q : json::parse(*positions))
+      placement.push_back({q.at(0).get<double>(), q.at(1).get<double>(), q.at(2).get<double>()});
+    return placement;
+  }
+  const auto x = row.OptionalDouble(first);
+  const auto y = row.OptionalDouble(first + 1);
+  const auto z = row.OptionalDouble(first + 2);
+  if (x && y && z)
+    return Placement{{*x, *y, *z}};
+  return std::nullopt;
+}
+
 // Reads kParamColumns starting at `first`; sets `placement` from positions_json or x, y, z.
 JobParams ReadParams(const Statement& row, int first, std::optional<Placement>& placement,
                      const std::string& file) {
@@ -79,36 +96,15 @@ JobParams ReadParams(const Statement& row, int first, std::optional<Placement>& 
     for (const auto& pair : json::parse(row.Text(first + 9))) {
       p.overrides.push_back({pair.at(0).get<std::string>(), pair.at(1).get<std::string>()});
     }
-    placement.reset();
-    if (const auto positions = row.OptionalText(first + 13)) {
-      placement.emplace();
-      for (const auto& q : json::parse(*positions))
-        placement->push_back({q.at(0).get<double>(), q.at(1).get<double>(), q.at(2).get<double>()});
-    } else {
-      const auto x = row.OptionalDouble(first + 10);
-      const auto y = row.OptionalDouble(first + 11);
-      const auto z = row.OptionalDouble(first + 12);
-      if (x && y && z)
-        placement = Placement{{*x, *y, *z}};
-    }
+    placement = ReadPlacement(row, first + 10);
   } catch (const std::exception& e) {
     throw StoreError(file, std::string("malformed job row: ") + e.what());
   }
   return p;
 }
 
-// The same positions, to a micrometre (relative, for large coordinates).
 bool SamePlacement(const Placement& a, const Placement& b) {
-  if (a.size() != b.size())
-    return false;
-  const auto off = [](double want, double got) {
-    return std::fabs(want - got) > 1e-6 * std::max(1.0, std::fabs(want));
-  };
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (off(a[i].x, b[i].x) || off(a[i].y, b[i].y) || off(a[i].z, b[i].z))
-      return false;
-  }
-  return true;
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), SamePosition);
 }
 
 CampaignProgress ReadProgress(const Statement& row) {
@@ -359,8 +355,8 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
                                       const std::vector<ArtifactFile>& artifacts) {
   Transaction transaction(*db_);
   Statement select = db_->Prepare(
-      std::string("SELECT state, attempt, max_attempts, campaign_id, label, worker_id, ") +
-      kParamColumns + " FROM jobs WHERE id = ?");
+      "SELECT state, attempt, max_attempts, campaign_id, label, worker_id, kind, scenario, "
+      "rng_run, x, y, z, positions_json FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step())
     return JobUpdate::kUnknown;
@@ -371,11 +367,15 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
   const int max_attempts = static_cast<int>(select.Int(2));
   const std::string campaign_id = select.Text(3);
   const std::string label = select.Text(4);
+  const JobKind kind = ParseJobKind(select.Text(6));
+  const std::string scenario = select.Text(7);
+  const std::optional<std::int64_t> rng_run = select.OptionalInt(8);
   std::optional<Placement> job_placement;
-  const JobParams params = ReadParams(select, 6, job_placement, file());
-  const JobKind kind = params.kind;
-  const std::string& scenario = params.scenario;
-  const std::optional<std::uint64_t> rng_run = params.rng_run;
+  try {
+    job_placement = ReadPlacement(select, 9);
+  } catch (const std::exception& e) {
+    throw StoreError(file(), "job " + job_id + ": malformed positions_json: " + e.what());
+  }
   select.Reset();  // done reading: the row is about to change
 
   // Check the result before anything is written: a malformed one is a failed attempt.
@@ -384,7 +384,7 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
   try {
     if (kind == JobKind::kEval) {
       eval = ParseEvalResult(result);
-      if (eval.run && rng_run && *eval.run != *rng_run) {
+      if (eval.run && rng_run && static_cast<std::int64_t>(*eval.run) != *rng_run) {
         throw std::invalid_argument("result is of RngRun " + std::to_string(*eval.run) +
                                     ", the job's is " + std::to_string(*rng_run));
       }
@@ -452,7 +452,7 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
         .Bind(campaign_id)
         .Bind(scenario)
         .Bind(label)
-        .Bind(static_cast<std::int64_t>(rng_run.value_or(0)))
+        .Bind(rng_run.value_or(0))
         .Bind(eval.aggregate_throughput_mbps)
         .Bind(eval.mean_delay_ms)
         .Bind(eval.loss_ratio)
@@ -480,7 +480,7 @@ JobUpdate ResultsStore::RecordSuccess(const std::string& job_id, int attempt, co
           .Bind(campaign_id)
           .Bind(scenario)
           .Bind(label)
-          .Bind(static_cast<std::int64_t>(rng_run.value_or(0)))
+          .Bind(rng_run.value_or(0))
           .Bind(u.ues_served)
           .Bind(u.throughput_mbps)
           .Bind(u.mean_delay_ms)
