@@ -48,11 +48,12 @@ UavSummary Summarize(const std::vector<const UavMetricRow*>& runs) {
 }
 
 const std::vector<TableColumn>& TableColumns() {
-  static const std::vector<TableColumn> columns{
-      {"scenario", true},        {"positioner", true},      {"uav", true},
-      {"runs", false},           {"UEs served", false},     {"mean Mbit/s", false},
-      {"ci95 Mbit/s", false},    {"delay ms", false},       {"nLoS", false},
-      {"worst UE Mbit/s", false}, {"Jain", false}};
+  static const std::vector<TableColumn> columns{{"scenario", true},     {"positioner", true},
+                                                {"uav", true},          {"runs", false},
+                                                {"UEs served", false},  {"mean Mbit/s", false},
+                                                {"ci95 Mbit/s", false}, {"delay ms", false},
+                                                {"nLoS", false},        {"worst UE Mbit/s", false},
+                                                {"Jain", false}};
   return columns;
 }
 

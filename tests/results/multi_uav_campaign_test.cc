@@ -115,9 +115,10 @@ TEST_F(MultiUavStoreTest, ATrainedPlacementIsBoundToEveryRlEval) {
   EXPECT_EQ(eval.state, "ready");
   EXPECT_EQ(testing::FormatPlacement(eval.placement), "20,80,25 60.5,15,30");
   // x, y, z hold the first UAV's position; positions_json all of them.
-  EXPECT_EQ(Query("SELECT x || ',' || y || ',' || z || ' ' || positions_json FROM jobs WHERE id = '" +
-                  Id("eval/campus2/rl/run3") + "'"),
-            "20.0,80.0,25.0 [[20.0,80.0,25.0],[60.5,15.0,30.0]]");
+  EXPECT_EQ(
+      Query("SELECT x || ',' || y || ',' || z || ' ' || positions_json FROM jobs WHERE id = '" +
+            Id("eval/campus2/rl/run3") + "'"),
+      "20.0,80.0,25.0 [[20.0,80.0,25.0],[60.5,15.0,30.0]]");
   // What a worker is ordered.
   int rl_evals = 0;
   for (const ReadyJob& job : store_.ListReady()) {
@@ -142,8 +143,9 @@ TEST_F(MultiUavStoreTest, EachUavsMetricsLandInTheirTableAndView) {
                   "COALESCE(jain_fairness, 'null') || ':' || x, ' ') "
                   "FROM (SELECT * FROM v_eval_uavs ORDER BY uav)"),
             "0:north:3:150.0:20.0:1.0:20.0 1:south:1:0.0:null:null:60.5");
-  EXPECT_EQ(Query("SELECT DISTINCT positioner || ' ' || rng_run || ' ' || campaign FROM v_eval_uavs"),
-            "centroid 2 several-uavs");
+  EXPECT_EQ(
+      Query("SELECT DISTINCT positioner || ' ' || rng_run || ' ' || campaign FROM v_eval_uavs"),
+      "centroid 2 several-uavs");
 
   const std::vector<UavMetricRow> rows = store_.UavMetrics(campaign_.id);
   ASSERT_EQ(rows.size(), 2u);
@@ -196,8 +198,8 @@ TEST(MultiUavStore, ASingleUavEvalHasOneRowNamedUav) {
   EXPECT_EQ(rows[0].uav, 0);
   EXPECT_DOUBLE_EQ(rows[0].throughput_mbps, 120);
   EXPECT_EQ(rows[0].ues_served, 4);
-  EXPECT_EQ(testing::QueryOne(dir.File("rlpos.db"), "SELECT positions_json FROM jobs WHERE id = '" +
-                                                        eval + "'"),
+  EXPECT_EQ(testing::QueryOne(dir.File("rlpos.db"),
+                              "SELECT positions_json FROM jobs WHERE id = '" + eval + "'"),
             "<null>");
 }
 
