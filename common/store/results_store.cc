@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "campaign/job_content.h"
+#include "scenario/placement_json.h"
 #include "store/artifact_files.h"
 #include "store/job_result.h"
 #include "store/schema.h"
@@ -51,10 +52,7 @@ RunningJob ReadRunningJob(const Statement& row) {
 std::optional<std::string> PositionsJson(const Placement& placement) {
   if (placement.size() < 2)
     return std::nullopt;
-  json out = json::array();
-  for (const Vec3& p : placement)
-    out.push_back({p.x, p.y, p.z});
-  return out.dump();
+  return PlacementJson(placement).dump();
 }
 
 // The placement of x, y, z, positions_json starting at `first`: positions_json when set (several

@@ -8,6 +8,7 @@
 #include "gym/analytic_evaluator.h"
 #include "gym/reward.h"
 #include "positioners/positioners.h"
+#include "scenario/placement_json.h"
 #include "scenario/scenario_parser.h"
 #include "sim/commands.h"
 #include "sim/scenario_loading.h"
@@ -15,13 +16,6 @@
 namespace rlpos::sim {
 
 namespace {
-
-nlohmann::json PositionsJson(const Placement& placement) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& p : placement)
-    out.push_back({p.x, p.y, p.z});
-  return out;
-}
 
 }  // namespace
 
@@ -39,14 +33,14 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
     for (std::size_t i = 0; i < ranked.size() && i < 5; ++i) {
       const auto& c = ranked[i];
       nlohmann::json candidate = {
-          {"position", PositionsJson({c.placement.front()})[0]},
+          {"position", PlacementJson({c.placement.front()})[0]},
           {"analytic_reward", c.analytic_reward},
           // null: not re-scored at packet level
           {"packet_reward",
            c.packet_reward ? nlohmann::json(*c.packet_reward) : nlohmann::json(nullptr)},
           {"n_los", c.n_los}};
       if (s.uavs.size() > 1)
-        candidate["positions"] = PositionsJson(c.placement);
+        candidate["positions"] = PlacementJson(c.placement);
       candidates.push_back(candidate);
     }
   } else if (p.positioner == "offsets") {
@@ -81,7 +75,7 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
                         {"demands_met", info.demands_met},
                         {"reward", reward}};
   if (s.uavs.size() > 1) {
-    out["positions"] = PositionsJson(placement);
+    out["positions"] = PlacementJson(placement);
     out["serving_uav"] = info.serving;
   }
   if (!candidates.empty())

@@ -6,6 +6,7 @@
 #include "agent/trainer.h"
 #include "config/config_error.h"
 #include "config/number_text.h"
+#include "scenario/placement_json.h"
 #include "gym/uav_positioning_env.h"
 #include "scenario/scenario_parser.h"
 #include "sim/rl_commands.h"
@@ -22,9 +23,6 @@ std::uint64_t FirstEpisodeRun(std::uint64_t seed) {
 
 nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {
   const Vec3& p = r.final_info.positions.front();
-  nlohmann::json positions = nlohmann::json::array();
-  for (const auto& q : r.final_info.positions)
-    positions.push_back({q.x, q.y, q.z});
   return {{"scenario", s.name},
           {"algorithm", s.agent.algorithm},
           {"action_space", s.env.action_space},
@@ -34,7 +32,7 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"eval_episodes", s.agent.eval_episodes},
           {"first_episode_run", FirstEpisodeRun(seed)},
           {"position", {p.x, p.y, p.z}},  // the first UAV's
-          {"positions", positions},        // every UAV's, the scenario's order
+          {"positions", PlacementJson(r.final_info.positions)},  // every UAV's
           {"n_los", r.final_info.n_los},
           {"n_ues", s.ues.size()},
           {"throughput_mbps", r.final_info.throughput_mbps},
