@@ -192,6 +192,10 @@ struct AgentSpec {
   bool normalise_rewards = true;
   int train_episodes = 10;
   int eval_episodes = 1;
+  // Every this many training episodes (and after the last) a greedy episode scores the policy,
+  // from the evaluation's seed; the best-scoring policy is the one kept, evaluated and saved
+  // (Stable-Baselines3's EvalCallback best_model). 0: the last policy (README, RL).
+  int eval_interval = 0;
   std::uint64_t seed = 1;
   PpoSpec ppo;
   SacSpec sac;

@@ -332,6 +332,7 @@ AgentSpec ReadAgent(const json& v) {
   a.normalise_rewards = r.Bool("normalise_rewards", a.normalise_rewards);
   a.train_episodes = static_cast<int>(r.Integer("train_episodes", a.train_episodes, 1, 1000000));
   a.eval_episodes = static_cast<int>(r.Integer("eval_episodes", a.eval_episodes, 1, 1000000));
+  a.eval_interval = static_cast<int>(r.Integer("eval_interval", a.eval_interval, 0, 1000000));
   a.seed = static_cast<std::uint64_t>(r.Integer("seed", static_cast<long long>(a.seed), 0, 9007199254740991LL));
   if (const json* p = r.Child("ppo")) a.ppo = ReadPpo(*p);
   if (const json* p = r.Child("sac")) a.sac = ReadSac(*p);
@@ -559,6 +560,7 @@ json ToJson(const Scenario& s) {
             {"normalise_rewards", s.agent.normalise_rewards},
             {"train_episodes", s.agent.train_episodes},
             {"eval_episodes", s.agent.eval_episodes},
+            {"eval_interval", s.agent.eval_interval},
             {"seed", s.agent.seed},
             {"ppo",
              {{"learning_rate", s.agent.ppo.learning_rate},

@@ -94,6 +94,43 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   EXPECT_TRUE(fs::exists(out_ / "policy.pt"));
 }
 
+TEST_F(TrainCommand, CheckpointsKeepTheBestPolicyWhichIsTheOneSavedAndReplayed) {
+  const auto r = RunCommand(Sim("train --scenario " + kScenarioB +
+                                " --fidelity analytic --algorithm ppo --seed 2 --episodes 3"
+                                " --set agent.eval_interval=1 --json --out " + out_.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto result = nlohmann::json::parse(r.out);
+  std::ifstream curve(out_ / "learning_curve.csv");
+  std::string line;
+  std::getline(curve, line);
+  std::vector<std::string> phases;
+  std::vector<double> checkpoint_rewards;
+  while (std::getline(curve, line)) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');)
+      cells.push_back(cell);
+    phases.push_back(cells[0] + cells[1]);
+    if (cells[1] == "checkpoint")
+      checkpoint_rewards.push_back(std::stod(cells[8]));
+  }
+  EXPECT_EQ(phases, (std::vector<std::string>{"1train", "1checkpoint", "2train", "2checkpoint",
+                                              "3train", "3checkpoint", "4eval"}));
+  ASSERT_EQ(checkpoint_rewards.size(), 3u);
+  // The evaluation flies the best checkpoint's policy (the latest of equals) to its reward.
+  const int best = static_cast<int>(
+      std::max_element(checkpoint_rewards.rbegin(), checkpoint_rewards.rend()).base() -
+      checkpoint_rewards.begin());
+  EXPECT_EQ(result["policy_episode"], best);
+  EXPECT_EQ(result["eval_interval"], 1);
+  EXPECT_NEAR(result["reward"].get<double>(), checkpoint_rewards[best - 1], 1e-4);
+  // The saved policy is the kept one: the rl positioner lands where the evaluation did.
+  const auto p = RunCommand(Sim("position --scenario " + kScenarioB +
+                                " --positioner rl --json --policy " + out_.string()));
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_EQ(nlohmann::json::parse(p.out)["position"], result["position"]);
+}
+
 TEST_F(TrainCommand, EachAlgorithmsPolicySaysWhatItIs) {
   for (const std::string algorithm : {"ppo", "sac"}) {
     SCOPED_TRACE(algorithm);

@@ -245,5 +245,20 @@ TEST(DqnAgent, SaveLoadRoundTrip) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(DqnAgent, RestoresTheKeptPolicyAfterLearningOn) {
+  ChainEnv env;
+  AgentSpec spec = SmallSpec(5);
+  spec.train_episodes = 5;
+  DqnAgent agent(spec, 1, 2);
+  EXPECT_THROW(agent.RestoreKeptPolicy(), std::logic_error);
+  Train(env, agent, spec, 1);
+  agent.KeepPolicy();
+  const auto kept = agent.QValues({0.5f});
+  Train(env, agent, spec, 100);
+  EXPECT_NE(agent.QValues({0.5f}), kept);
+  agent.RestoreKeptPolicy();
+  EXPECT_EQ(agent.QValues({0.5f}), kept);
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -108,5 +108,19 @@ TEST(PpoAgent, SaveLoadRoundTrip) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(PpoAgent, RestoresTheKeptPolicyAfterLearningOn) {
+  ChainEnv env;
+  const AgentSpec spec = PpoSpecFor(5, 5);
+  PpoAgent agent(spec, 1, 2);
+  EXPECT_THROW(agent.RestoreKeptPolicy(), std::logic_error);
+  Train(env, agent, spec, 1);
+  agent.KeepPolicy();
+  const auto kept = agent.Probabilities({0.5f}, {});
+  Train(env, agent, PpoSpecFor(5, 30), 100);  // enough steps for several rollouts
+  EXPECT_NE(agent.Probabilities({0.5f}, {}), kept);
+  agent.RestoreKeptPolicy();
+  EXPECT_EQ(agent.Probabilities({0.5f}, {}), kept);
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -114,5 +114,19 @@ TEST(SacAgent, SaveLoadRoundTrip) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(SacAgent, RestoresTheKeptPolicyAfterLearningOn) {
+  PointEnv env;
+  const AgentSpec spec = SacSpecFor(5, 8);
+  SacAgent agent(spec, 1, 1);
+  EXPECT_THROW(agent.RestoreKeptPolicy(), std::logic_error);
+  Train(env, agent, spec, 1);
+  agent.KeepPolicy();
+  const auto kept = agent.ActContinuous({0.5f}, false);
+  Train(env, agent, spec, 100);
+  EXPECT_NE(agent.ActContinuous({0.5f}, false), kept);
+  agent.RestoreKeptPolicy();
+  EXPECT_EQ(agent.ActContinuous({0.5f}, false), kept);
+}
+
 }  // namespace
 }  // namespace rlpos

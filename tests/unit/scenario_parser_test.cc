@@ -63,12 +63,13 @@ TEST(ScenarioParser, OverridesSetAnyField) {
 TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {
   json doc = ScenarioB();
   ApplyOverrides(doc, AlgorithmOverrides("sac"));
-  ApplyOverrides(doc, {"agent.sac.alpha=0.1", "agent.ppo.epochs=3"});
+  ApplyOverrides(doc, {"agent.sac.alpha=0.1", "agent.ppo.epochs=3", "agent.eval_interval=10"});
   const Scenario s = ParseScenario(doc);
   EXPECT_EQ(s.agent.algorithm, "sac");
   EXPECT_EQ(s.env.action_space, "continuous");
   EXPECT_EQ(s.agent.sac.alpha, 0.1);
   EXPECT_EQ(s.agent.ppo.epochs, 3);
+  EXPECT_EQ(s.agent.eval_interval, 10);
   EXPECT_EQ(ToJson(ParseScenario(ToJson(s))), ToJson(s));  // the sections round-trip
   json back = ToJson(s);
   ApplyOverrides(back, AlgorithmOverrides("ppo"));
@@ -142,6 +143,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"SacOnDiscreteMoves", {"agent.algorithm=sac"}, "/agent/algorithm: sac needs env.action_space \"continuous\", not \"discrete\""},
         BadInput{"DqnOnDisplacements", {"env.action_space=continuous"}, "/agent/algorithm: dqn needs env.action_space \"discrete\""},
         BadInput{"UnknownActionSpace", {"env.action_space=box"}, "/env/action_space: unknown value \"box\""},
+        BadInput{"NegativeEvalInterval", {"agent.eval_interval=-1"}, "/agent/eval_interval: must be in [0, 1000000]"},
         BadInput{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
         BadInput{"PpoUnknownKey", {"agent.ppo.lamda=0.9"}, "/agent/ppo/lamda: unknown key \"lamda\""},
         BadInput{"PpoMoreMinibatchesThanSteps", {"agent.ppo.minibatches=300"}, "/agent/ppo/minibatches: must not exceed rollout_steps"},

@@ -29,6 +29,12 @@ class Agent {
   virtual std::optional<double> Observe(Transition transition) = 0;
   // DQN's exploration rate; 0 for the algorithms that explore by a stochastic policy.
   virtual double Epsilon() const { return 0.0; }
+  // Remembers the networks the policy acts with (those Save writes), in memory, replacing what
+  // it remembered before; RestoreKeptPolicy acts and saves with them again. For a trainer that
+  // keeps the best policy it has scored; learning on after a restore is not what they are for.
+  virtual void KeepPolicy() = 0;
+  // Throws std::logic_error if no policy was kept.
+  virtual void RestoreKeptPolicy() = 0;
   virtual void Save(const std::string& directory) const = 0;
   virtual void Load(const std::string& directory) = 0;
 };

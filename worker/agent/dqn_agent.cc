@@ -24,6 +24,7 @@ struct DqnAgent::Impl {
   std::mt19937_64 rng;
   std::int64_t steps = 0;
   RunningMoments reward_moments;
+  KeptNetworks kept;
 
   Impl(const AgentSpec& s, int obs_dim, int actions)
       : spec(s),
@@ -151,6 +152,15 @@ std::string DqnAgent::Algorithm() const {
 
 double DqnAgent::Epsilon() const {
   return impl_->epsilon.At(impl_->steps);
+}
+
+void DqnAgent::KeepPolicy() {
+  impl_->kept.Keep({impl_->online});
+}
+
+void DqnAgent::RestoreKeptPolicy() {
+  impl_->kept.Restore({impl_->online});
+  CopyParameters(impl_->online, impl_->target);
 }
 
 void DqnAgent::Save(const std::string& directory) const {

@@ -17,6 +17,8 @@ class DqnAgent : public Agent {
   std::optional<double> Observe(Transition transition) override;
   double Epsilon() const override;
   std::string Algorithm() const override;
+  void KeepPolicy() override;
+  void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;
   void Load(const std::string& directory) override;
   // Q-values of an observation (for tests and inspection).

@@ -26,6 +26,28 @@ void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to
     target[i].copy_(source[i]);
 }
 
+void KeptNetworks::Keep(const std::vector<torch::nn::Sequential>& networks) {
+  torch::NoGradGuard no_grad;
+  parameters_.clear();
+  for (const auto& net : networks) {
+    std::vector<torch::Tensor> copies;
+    for (const auto& p : net->parameters())
+      copies.push_back(p.detach().clone());
+    parameters_.push_back(std::move(copies));
+  }
+}
+
+void KeptNetworks::Restore(const std::vector<torch::nn::Sequential>& networks) const {
+  if (parameters_.size() != networks.size())
+    throw std::logic_error("no policy kept to restore");
+  torch::NoGradGuard no_grad;
+  for (std::size_t n = 0; n < networks.size(); ++n) {
+    auto target = networks[n]->parameters();
+    for (std::size_t i = 0; i < target.size(); ++i)
+      target[i].copy_(parameters_[n][i]);
+  }
+}
+
 void SoftUpdate(const torch::nn::Sequential& from, torch::nn::Sequential& to, double tau) {
   torch::NoGradGuard no_grad;
   auto source = from->parameters();

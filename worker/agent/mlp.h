@@ -17,6 +17,19 @@ void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to
 // to <- tau * from + (1 - tau) * to.
 void SoftUpdate(const torch::nn::Sequential& from, torch::nn::Sequential& to, double tau);
 
+// Copies of some networks' parameters, put back later: the policy a trainer keeps while the
+// agent goes on learning (Agent::KeepPolicy).
+class KeptNetworks {
+ public:
+  void Keep(const std::vector<torch::nn::Sequential>& networks);
+  // Into networks of the shapes kept, in the same order. Throws std::logic_error if nothing is
+  // kept.
+  void Restore(const std::vector<torch::nn::Sequential>& networks) const;
+
+ private:
+  std::vector<std::vector<torch::Tensor>> parameters_;  // per network
+};
+
 // A 1 x n tensor of an observation (copied).
 torch::Tensor Row(const std::vector<float>& values);
 

@@ -30,6 +30,7 @@ struct PpoAgent::Impl {
   std::unique_ptr<torch::optim::Adam> optimizer;
   std::mt19937_64 rng;
   RunningMoments reward_moments;
+  KeptNetworks kept;
 
   // The rollout: what Act saw and chose, then what Observe was told.
   std::vector<Transition> rollout;
@@ -199,6 +200,14 @@ std::optional<double> PpoAgent::Observe(Transition transition) {
   if (static_cast<int>(m.rollout.size()) < m.ppo.rollout_steps)
     return std::nullopt;
   return m.Learn();
+}
+
+void PpoAgent::KeepPolicy() {
+  impl_->kept.Keep({impl_->actor, impl_->critic});
+}
+
+void PpoAgent::RestoreKeptPolicy() {
+  impl_->kept.Restore({impl_->actor, impl_->critic});
 }
 
 void PpoAgent::Save(const std::string& directory) const {

@@ -18,6 +18,8 @@ class PpoAgent : public Agent {
   // explore: a sample of the policy; otherwise its most probable allowed action.
   int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) override;
   std::optional<double> Observe(Transition transition) override;
+  void KeepPolicy() override;
+  void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;
   void Load(const std::string& directory) override;
   // The policy's action probabilities (for tests and inspection).

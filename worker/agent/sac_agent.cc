@@ -37,6 +37,7 @@ struct SacAgent::Impl {
   std::mt19937_64 rng;
   std::int64_t steps = 0;
   RunningMoments reward_moments;
+  KeptNetworks kept;
 
   Impl(const AgentSpec& s, int obs_dim, int act_dim)
       : spec(s),
@@ -197,6 +198,14 @@ std::optional<double> SacAgent::Observe(Transition transition) {
   if (m.steps < m.sac.warmup_steps || m.steps % m.sac.update_interval != 0)
     return std::nullopt;
   return m.Learn();
+}
+
+void SacAgent::KeepPolicy() {
+  impl_->kept.Keep({impl_->actor});
+}
+
+void SacAgent::RestoreKeptPolicy() {
+  impl_->kept.Restore({impl_->actor});
 }
 
 void SacAgent::Save(const std::string& directory) const {

@@ -21,6 +21,8 @@ class SacAgent : public Agent {
   // tanh of the policy's mean.
   std::vector<float> ActContinuous(const std::vector<float>& observation, bool explore) override;
   std::optional<double> Observe(Transition transition) override;
+  void KeepPolicy() override;
+  void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;
   void Load(const std::string& directory) override;
   double Alpha() const;  // the entropy temperature now

@@ -1,6 +1,7 @@
 #include "agent/trainer.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace rlpos {
 
@@ -69,16 +70,43 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
 TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
                   const EpisodeCallback& on_episode, const StepCallback& on_eval_step) {
   TrainResult result;
-  for (int e = 0; e < spec.train_episodes + spec.eval_episodes; ++e) {
-    const bool learn = e < spec.train_episodes;
-    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), learn,
-                                      learn ? StepCallback() : on_eval_step);
-    record.episode = e + 1;
+  const auto add = [&](EpisodeRecord record) {
     if (on_episode)
       on_episode(record);
+    result.curve.push_back(std::move(record));
+  };
+  // The evaluation's first seed: checkpoints are scored on the episode the answer comes from.
+  const std::uint64_t eval_seed = seed + static_cast<std::uint64_t>(spec.train_episodes);
+  std::optional<double> kept;  // the kept policy's checkpoint reward
+  for (int e = 0; e < spec.train_episodes; ++e) {
+    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true);
+    record.episode = e + 1;
+    add(std::move(record));
+    const bool last = e + 1 == spec.train_episodes;
+    if (spec.eval_interval <= 0 || ((e + 1) % spec.eval_interval != 0 && !last))
+      continue;
+    EpisodeRecord check = RunEpisode(env, agent, eval_seed, false);
+    check.episode = e + 1;
+    check.checkpoint = true;
+    if (!kept || check.final_reward >= *kept) {
+      agent.KeepPolicy();
+      kept = check.final_reward;
+      result.policy_episode = e + 1;
+    }
+    add(std::move(check));
+  }
+  if (kept) {
+    agent.RestoreKeptPolicy();
+  } else {
+    result.policy_episode = spec.train_episodes;
+  }
+  for (int e = spec.train_episodes; e < spec.train_episodes + spec.eval_episodes; ++e) {
+    EpisodeRecord record =
+        RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), false, on_eval_step);
+    record.episode = e + 1;
     result.final_info = record.final_info;
     result.final_reward = record.final_reward;
-    result.curve.push_back(std::move(record));
+    add(std::move(record));
   }
   return result;
 }

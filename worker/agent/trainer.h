@@ -1,6 +1,9 @@
 #pragma once
 // Episodes of agent-env interaction: training (behaviour policy, learning) and evaluation
 // (greedy). The final greedy position of the evaluation episode is the RL positioner's answer.
+// With agent.eval_interval, greedy checkpoint episodes score the policy during training and the
+// best one is kept for the evaluation: a policy that peaks and then drifts (PPO's late collapse,
+// a greedy policy worse than its stochastic one) still answers with its best.
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -13,7 +16,8 @@ namespace rlpos {
 
 struct EpisodeRecord {
   int episode = 0;
-  bool evaluation = false;
+  bool evaluation = false;  // greedy (a checkpoint or the final evaluation)
+  bool checkpoint = false;  // a greedy episode scoring the policy after training episode `episode`
   int steps = 0;
   double total_reward = 0.0;
   double epsilon = 0.0;
@@ -24,7 +28,9 @@ struct EpisodeRecord {
 };
 
 struct TrainResult {
-  std::vector<EpisodeRecord> curve;  // one record per episode, training then evaluation
+  // One record per episode: training (each followed by its checkpoint, if any), then evaluation.
+  std::vector<EpisodeRecord> curve;
+  int policy_episode = 0;            // the training episode after which the kept policy stood
   StepInfo final_info;               // state at the end of the last evaluation episode
   double final_reward = 0.0;
 };
@@ -42,7 +48,9 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
                          const StepCallback& on_step = nullptr);
 
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
-// greedy ones. `on_episode` is called after each episode (progress, learning curve),
+// greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's
+// seed after every n-th training episode and after the last; the policy of the highest final
+// reward (the latest of equals) is restored for the evaluation. `on_episode` is called after each episode (progress, learning curve),
 // `on_eval_step` after each step of the evaluation episodes (the flown trajectory).
 TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
                   const EpisodeCallback& on_episode = nullptr,

@@ -31,9 +31,9 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
   }
   // Duration, run and warm-up are in the scenario file already. One --position per UAV.
   std::vector<std::string> command{sim_binary, "eval", "--scenario", scenario};
-  for (const Vec3& p : order.placement.value_or(Placement{})) {
+  for (const Vec3& position : order.placement.value_or(Placement{})) {
     command.push_back("--position");
-    command.push_back(FormatPosition(p));
+    command.push_back(FormatPosition(position));
   }
   command.insert(command.end(), {"--json", "--no-progress"});
   return command;

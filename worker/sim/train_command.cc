@@ -31,6 +31,8 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"train_episodes", s.agent.train_episodes},
           {"eval_episodes", s.agent.eval_episodes},
           {"first_episode_run", FirstEpisodeRun(seed)},
+          {"eval_interval", s.agent.eval_interval},
+          {"policy_episode", r.policy_episode},  // the kept policy's
           {"position", {p.x, p.y, p.z}},  // the first UAV's
           {"positions", PlacementJson(r.final_info.positions)},  // every UAV's
           {"n_los", r.final_info.n_los},
@@ -40,10 +42,14 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"reward", r.final_reward}};
 }
 
+const char* Phase(const EpisodeRecord& r) {
+  return r.checkpoint ? "checkpoint" : r.evaluation ? "eval" : "train";
+}
+
 // x, y, z: the first UAV's final position.
 void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
   const Vec3& p = r.final_info.positions.front();
-  out << r.episode << ',' << (r.evaluation ? "eval" : "train") << ',' << r.steps << ','
+  out << r.episode << ',' << Phase(r) << ',' << r.steps << ','
       << r.total_reward << ',' << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ','
       << r.updates << ',' << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ','
       << p.z << ',' << r.final_info.n_los << ',' << r.final_info.throughput_mbps << '\n';
@@ -117,7 +123,7 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
           std::fprintf(stderr,
                        "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
                        "final (%.1f, %.1f, %.1f) nLoS %d\n",
-                       r.episode, total, r.evaluation ? "eval" : "train", r.steps, r.epsilon,
+                       r.episode, total, Phase(r), r.steps, r.epsilon,
                        r.total_reward, r.total_reward / std::max(1, r.steps), p.x, p.y, p.z,
                        r.final_info.n_los);
         },
