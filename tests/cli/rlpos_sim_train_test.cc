@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -97,7 +98,8 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
 TEST_F(TrainCommand, CheckpointsKeepTheBestPolicyWhichIsTheOneSavedAndReplayed) {
   const auto r = RunCommand(Sim("train --scenario " + kScenarioB +
                                 " --fidelity analytic --algorithm ppo --seed 2 --episodes 3"
-                                " --set agent.eval_interval=1 --json --out " + out_.string()));
+                                " --set agent.eval_interval=1 --json --out " +
+                                out_.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto result = nlohmann::json::parse(r.out);
   std::ifstream curve(out_ / "learning_curve.csv");
@@ -131,13 +133,36 @@ TEST_F(TrainCommand, CheckpointsKeepTheBestPolicyWhichIsTheOneSavedAndReplayed) 
   EXPECT_EQ(nlohmann::json::parse(p.out)["position"], result["position"]);
 }
 
+TEST_F(TrainCommand, TheProgressLineOfSeveralUavsShowsEachOne) {
+  const std::string campus2 = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json";
+  const auto r = RunCommand(Sim("train --scenario " + campus2 +
+                                " --fidelity analytic --episodes 1 --set env.episode_duration=2"
+                                " --set agent.eval_interval=0 --json --out " +
+                                out_.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto positions = nlohmann::json::parse(r.out)["positions"];
+  ASSERT_EQ(positions.size(), 2u);
+  std::ostringstream both;
+  both << "final";
+  for (const auto& p : positions) {
+    char text[96];
+    std::snprintf(text, sizeof text, " (%.1f, %.1f, %.1f)", p[0].get<double>(), p[1].get<double>(),
+                  p[2].get<double>());
+    both << text;
+  }
+  const std::size_t eval = r.err.find("episode 2/2 (eval)");
+  ASSERT_NE(eval, std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(both.str() + " nLoS", eval), std::string::npos) << r.err;
+}
+
 TEST_F(TrainCommand, EachAlgorithmsPolicySaysWhatItIs) {
   for (const std::string algorithm : {"ppo", "sac"}) {
     SCOPED_TRACE(algorithm);
     fs::remove_all(out_);
     const auto r = RunCommand(Sim("train --scenario " + kScenarioB + " --algorithm " + algorithm +
                                   " --fidelity analytic --episodes 1 --set env.episode_duration=20"
-                                  " --json --out " + out_.string()));
+                                  " --json --out " +
+                                  out_.string()));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto result = nlohmann::json::parse(r.out);
     EXPECT_EQ(result["algorithm"], algorithm);
@@ -145,7 +170,8 @@ TEST_F(TrainCommand, EachAlgorithmsPolicySaysWhatItIs) {
     // The scenario's agent section says dqn: the policy folder, not a flag, says otherwise.
     const auto p = RunCommand(Sim("position --scenario " + kScenarioB +
                                   " --positioner rl --json --set env.episode_duration=20"
-                                  " --policy " + out_.string()));
+                                  " --policy " +
+                                  out_.string()));
     ASSERT_EQ(p.exit_code, 0) << p.err;
     EXPECT_EQ(nlohmann::json::parse(p.out)["position"], result["position"]);
   }
@@ -181,12 +207,12 @@ TEST_F(TrainCommand, BadInputs) {
       << bad_agent.err;
   EXPECT_FALSE(fs::exists(out_));
   EXPECT_FALSE(fs::exists(out_.string() + ".partial"));
-  const auto bad_algorithm = RunCommand(Sim("train --scenario " + kScenarioB +
-                                            " --algorithm a2c --out " + out_.string()));
+  const auto bad_algorithm =
+      RunCommand(Sim("train --scenario " + kScenarioB + " --algorithm a2c --out " + out_.string()));
   EXPECT_EQ(bad_algorithm.exit_code, 2);
   EXPECT_NE(bad_algorithm.err.find("--algorithm"), std::string::npos) << bad_algorithm.err;
-  const auto sac_on_moves = RunCommand(Sim("train --scenario " + kScenarioB +
-                                           " --set agent.algorithm=sac --out " + out_.string()));
+  const auto sac_on_moves = RunCommand(
+      Sim("train --scenario " + kScenarioB + " --set agent.algorithm=sac --out " + out_.string()));
   EXPECT_EQ(sac_on_moves.exit_code, 2);
   EXPECT_NE(sac_on_moves.err.find("/agent/algorithm: sac needs env.action_space \"continuous\""),
             std::string::npos)

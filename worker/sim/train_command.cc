@@ -6,8 +6,8 @@
 #include "agent/trainer.h"
 #include "config/config_error.h"
 #include "config/number_text.h"
-#include "scenario/placement_json.h"
 #include "gym/uav_positioning_env.h"
+#include "scenario/placement_json.h"
 #include "scenario/scenario_parser.h"
 #include "sim/rl_commands.h"
 
@@ -32,8 +32,8 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"eval_episodes", s.agent.eval_episodes},
           {"first_episode_run", FirstEpisodeRun(seed)},
           {"eval_interval", s.agent.eval_interval},
-          {"policy_episode", r.policy_episode},  // the kept policy's
-          {"position", {p.x, p.y, p.z}},  // the first UAV's
+          {"policy_episode", r.policy_episode},                  // the kept policy's
+          {"position", {p.x, p.y, p.z}},                         // the first UAV's
           {"positions", PlacementJson(r.final_info.positions)},  // every UAV's
           {"n_los", r.final_info.n_los},
           {"n_ues", s.ues.size()},
@@ -49,10 +49,10 @@ const char* Phase(const EpisodeRecord& r) {
 // x, y, z: the first UAV's final position.
 void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
   const Vec3& p = r.final_info.positions.front();
-  out << r.episode << ',' << Phase(r) << ',' << r.steps << ','
-      << r.total_reward << ',' << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ','
-      << r.updates << ',' << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ','
-      << p.z << ',' << r.final_info.n_los << ',' << r.final_info.throughput_mbps << '\n';
+  out << r.episode << ',' << Phase(r) << ',' << r.steps << ',' << r.total_reward << ','
+      << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ',' << r.updates << ','
+      << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ',' << p.z << ','
+      << r.final_info.n_los << ',' << r.final_info.throughput_mbps << '\n';
 }
 
 }  // namespace
@@ -100,8 +100,7 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
         last = s.InitialPlacement();
       }
       // Several UAVs move in turns of env.turn_steps steps.
-      const std::size_t uav =
-          static_cast<std::size_t>((step - 1) / s.env.turn_steps) % n_uavs;
+      const std::size_t uav = static_cast<std::size_t>((step - 1) / s.env.turn_steps) % n_uavs;
       const Vec3& p = r.info.positions[uav];
       const Vec3 from = last[uav];
       // A continuous action is written as the displacement the UAV made, "dx dy dz".
@@ -110,22 +109,22 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
                                                          FormatNumber(p.z - from.z)
                                                    : s.env.actions[action];
       last = r.info.positions;
-      trajectory << eval_episode << ',' << step << ',' << uav << ',' << moved << ',' << p.x << ',' << p.y << ','
-                 << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ',' << r.reward
-                 << '\n';
+      trajectory << eval_episode << ',' << step << ',' << uav << ',' << moved << ',' << p.x << ','
+                 << p.y << ',' << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ','
+                 << r.reward << '\n';
     };
     const int total = s.agent.train_episodes + s.agent.eval_episodes;
     const TrainResult result = Train(
         env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
         [&](const EpisodeRecord& r) {
           WriteCurveRow(curve, r);
-          const Vec3& p = r.final_info.positions.front();
+          // Every UAV's final position: the line is what `status` shows of a running train job.
           std::fprintf(stderr,
                        "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
-                       "final (%.1f, %.1f, %.1f) nLoS %d\n",
-                       r.episode, total, Phase(r), r.steps, r.epsilon,
-                       r.total_reward, r.total_reward / std::max(1, r.steps), p.x, p.y, p.z,
-                       r.final_info.n_los);
+                       "final %s nLoS %d\n",
+                       r.episode, total, Phase(r), r.steps, r.epsilon, r.total_reward,
+                       r.total_reward / std::max(1, r.steps),
+                       DescribePlacement(r.final_info.positions).c_str(), r.final_info.n_los);
         },
         write_step);
     curve.close();
