@@ -149,6 +149,9 @@ struct PpoSpec {
   int rollout_steps = 256;  // transitions per update
   int epochs = 10;          // passes over a rollout
   int minibatches = 4;      // per pass
+  // The learning rate falls linearly to 0 over the training's updates (CleanRL's anneal_lr):
+  // late updates then refine the policy instead of knocking it off its best (README, PPO).
+  bool anneal_learning_rate = false;
 };
 
 // SAC (twin Q, tanh-squashed Gaussian policy, automatic temperature) on the continuous action

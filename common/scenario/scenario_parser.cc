@@ -286,6 +286,7 @@ PpoSpec ReadPpo(const json& v) {
   p.minibatches = static_cast<int>(r.Integer("minibatches", p.minibatches, 1, 1000000));
   if (p.minibatches > p.rollout_steps)
     throw ConfigError(r.PathOf("minibatches"), "must not exceed rollout_steps");
+  p.anneal_learning_rate = r.Bool("anneal_learning_rate", p.anneal_learning_rate);
   r.Finish();
   return p;
 }
@@ -572,7 +573,8 @@ json ToJson(const Scenario& s) {
               {"max_grad_norm", s.agent.ppo.max_grad_norm},
               {"rollout_steps", s.agent.ppo.rollout_steps},
               {"epochs", s.agent.ppo.epochs},
-              {"minibatches", s.agent.ppo.minibatches}}},
+              {"minibatches", s.agent.ppo.minibatches},
+              {"anneal_learning_rate", s.agent.ppo.anneal_learning_rate}}},
             {"sac",
              {{"policy_learning_rate", s.agent.sac.policy_learning_rate},
               {"q_learning_rate", s.agent.sac.q_learning_rate},

@@ -91,6 +91,32 @@ TEST(PpoAgent, LearnsOncePerRollout) {
   }
 }
 
+// Four rollouts planned: they learn at 1, 3/4, 1/2 and 1/4 of the rate; without annealing, or
+// without a known training length, at the full rate.
+TEST(PpoAgent, AnnealsTheLearningRateOverThePlannedRollouts) {
+  const auto rates = [](bool anneal, std::int64_t training_steps) {
+    AgentSpec spec = PpoSpecFor(1, 1);
+    spec.ppo.rollout_steps = 16;
+    spec.ppo.anneal_learning_rate = anneal;
+    PpoAgent agent(spec, 1, 2, training_steps);
+    std::vector<double> seen;
+    for (int i = 1; i <= 64; ++i) {
+      const int a = agent.Act({0.0f}, {}, true);
+      if (agent.Observe({{0.0f}, a, 1.0f, {0.0f}, false, {}, {}, i % 8 == 0}))
+        seen.push_back(agent.LearningRate() / spec.ppo.learning_rate);
+    }
+    return seen;
+  };
+  const std::vector<double> annealed = rates(true, 64);
+  ASSERT_EQ(annealed.size(), 4u);
+  EXPECT_DOUBLE_EQ(annealed[0], 1.0);
+  EXPECT_DOUBLE_EQ(annealed[1], 0.75);
+  EXPECT_DOUBLE_EQ(annealed[2], 0.5);
+  EXPECT_DOUBLE_EQ(annealed[3], 0.25);
+  EXPECT_EQ(rates(false, 64), std::vector<double>(4, 1.0));
+  EXPECT_EQ(rates(true, 0), std::vector<double>(4, 1.0));
+}
+
 TEST(PpoAgent, SaveLoadRoundTrip) {
   ChainEnv env;
   const AgentSpec spec = PpoSpecFor(5, 5);

@@ -63,13 +63,15 @@ TEST(ScenarioParser, OverridesSetAnyField) {
 TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {
   json doc = ScenarioB();
   ApplyOverrides(doc, AlgorithmOverrides("sac"));
-  ApplyOverrides(doc, {"agent.sac.alpha=0.1", "agent.ppo.epochs=3", "agent.eval_interval=10"});
+  ApplyOverrides(doc, {"agent.sac.alpha=0.1", "agent.ppo.epochs=3", "agent.eval_interval=10",
+                       "agent.ppo.anneal_learning_rate=true"});
   const Scenario s = ParseScenario(doc);
   EXPECT_EQ(s.agent.algorithm, "sac");
   EXPECT_EQ(s.env.action_space, "continuous");
   EXPECT_EQ(s.agent.sac.alpha, 0.1);
   EXPECT_EQ(s.agent.ppo.epochs, 3);
   EXPECT_EQ(s.agent.eval_interval, 10);
+  EXPECT_TRUE(s.agent.ppo.anneal_learning_rate);
   EXPECT_EQ(ToJson(ParseScenario(ToJson(s))), ToJson(s));  // the sections round-trip
   json back = ToJson(s);
   ApplyOverrides(back, AlgorithmOverrides("ppo"));
@@ -146,6 +148,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"NegativeEvalInterval", {"agent.eval_interval=-1"}, "/agent/eval_interval: must be in [0, 1000000]"},
         BadInput{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
         BadInput{"PpoUnknownKey", {"agent.ppo.lamda=0.9"}, "/agent/ppo/lamda: unknown key \"lamda\""},
+        BadInput{"PpoAnnealNotABoolean", {"agent.ppo.anneal_learning_rate=1"}, "/agent/ppo/anneal_learning_rate: expected a boolean, got a number"},
         BadInput{"PpoMoreMinibatchesThanSteps", {"agent.ppo.minibatches=300"}, "/agent/ppo/minibatches: must not exceed rollout_steps"},
         BadInput{"SacNegativeAlpha", {"agent.algorithm=sac", "env.action_space=continuous", "agent.sac.alpha=-1"}, "/agent/sac/alpha: must not be negative, got -1"},
         BadInput{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"}),

@@ -8,7 +8,8 @@
 
 namespace rlpos {
 
-std::unique_ptr<Agent> MakeAgent(const AgentSpec& spec, const Env& env) {
+std::unique_ptr<Agent> MakeAgent(const AgentSpec& spec, const Env& env,
+                                 std::int64_t training_steps) {
   const int observations = static_cast<int>(env.ObservationSpace().Dim());
   const int continuous = static_cast<int>(env.ContinuousActionSpace().Dim());
   const int discrete = env.ActionSpace().n;
@@ -20,7 +21,7 @@ std::unique_ptr<Agent> MakeAgent(const AgentSpec& spec, const Env& env) {
   if (discrete == 0)
     throw std::invalid_argument(spec.algorithm + " needs a discrete action space");
   if (spec.algorithm == "ppo")
-    return std::make_unique<PpoAgent>(spec, observations, discrete);
+    return std::make_unique<PpoAgent>(spec, observations, discrete, training_steps);
   if (spec.algorithm == "dqn")
     return std::make_unique<DqnAgent>(spec, observations, discrete);
   throw std::invalid_argument("unknown algorithm " + spec.algorithm);

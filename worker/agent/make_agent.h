@@ -1,5 +1,6 @@
 #pragma once
 // The agent of spec.algorithm, sized for an env's spaces.
+#include <cstdint>
 #include <memory>
 
 #include "agent/agent.h"
@@ -9,6 +10,9 @@
 namespace rlpos {
 
 // Throws std::invalid_argument when the algorithm does not fit the env's action space.
-std::unique_ptr<Agent> MakeAgent(const AgentSpec& spec, const Env& env);
+// training_steps: the env steps it will learn from (PPO's learning-rate annealing spans them;
+// 0 for an agent that will only act, or when unknown: no annealing).
+std::unique_ptr<Agent> MakeAgent(const AgentSpec& spec, const Env& env,
+                                 std::int64_t training_steps = 0);
 
 }  // namespace rlpos

@@ -38,9 +38,13 @@ struct PpoAgent::Impl {
   std::vector<float> log_probs;
   ActionMask pending_mask;
   float pending_log_prob = 0.0f;
+  std::int64_t planned_updates = 0;  // rollouts in the training; 0: no annealing
+  std::int64_t done_updates = 0;     // rollouts learned from so far
 
-  Impl(const AgentSpec& s, int obs_dim, int actions)
+  Impl(const AgentSpec& s, int obs_dim, int actions, std::int64_t training_steps)
       : spec(s), ppo(s.ppo), observation_dim(obs_dim), action_count(actions), rng(s.seed) {
+    if (ppo.anneal_learning_rate && training_steps > 0)
+      planned_updates = std::max<std::int64_t>(1, training_steps / ppo.rollout_steps);
     torch::manual_seed(s.seed);  // weight initialisation
     actor = MakeMlp(s.hidden, obs_dim, actions);
     critic = MakeMlp(s.hidden, obs_dim, 1);
@@ -84,8 +88,21 @@ struct PpoAgent::Impl {
     return {advantages, advantages + values};
   }
 
+  // Linear decay to 0 over the planned rollouts, as CleanRL's anneal_lr: the first rollout
+  // learns at the full rate, the last at 1 / planned_updates of it.
+  void AnnealLearningRate() {
+    if (planned_updates == 0)
+      return;
+    const double left = std::max(0.0, 1.0 - static_cast<double>(done_updates) /
+                                                static_cast<double>(planned_updates));
+    for (auto& group : optimizer->param_groups())
+      static_cast<torch::optim::AdamOptions&>(group.options()).lr(ppo.learning_rate * left);
+  }
+
   // The mean loss of the minibatch updates.
   double Learn() {
+    AnnealLearningRate();
+    ++done_updates;
     const torch::Tensor obs = Observations(false);
     const auto [advantages, returns] = AdvantagesAndReturns(obs, Observations(true));
     const long n = static_cast<long>(rollout.size());
@@ -138,10 +155,11 @@ struct PpoAgent::Impl {
   }
 };
 
-PpoAgent::PpoAgent(const AgentSpec& spec, int observation_dim, int action_count) {
+PpoAgent::PpoAgent(const AgentSpec& spec, int observation_dim, int action_count,
+                   std::int64_t training_steps) {
   if (observation_dim <= 0 || action_count <= 0)
     throw std::invalid_argument("PPO needs a non-empty observation and action space");
-  impl_ = std::make_unique<Impl>(spec, observation_dim, action_count);
+  impl_ = std::make_unique<Impl>(spec, observation_dim, action_count, training_steps);
 }
 
 PpoAgent::~PpoAgent() = default;
@@ -157,6 +175,11 @@ std::vector<float> PpoAgent::Probabilities(const std::vector<float>& observation
                                MaskPenalty({&mask}, impl_->action_count, kForbidden);
   const torch::Tensor p = torch::softmax(logits, 1).squeeze(0).contiguous();
   return std::vector<float>(p.data_ptr<float>(), p.data_ptr<float>() + p.numel());
+}
+
+double PpoAgent::LearningRate() const {
+  return static_cast<torch::optim::AdamOptions&>(impl_->optimizer->param_groups()[0].options())
+      .lr();
 }
 
 int PpoAgent::Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) {

@@ -3,6 +3,7 @@
 // the clipped surrogate objective, generalised advantage estimation, an entropy bonus and
 // gradient-norm clipping, updated every agent.ppo.rollout_steps transitions. Seeded: the same
 // seed, spaces and transitions give the same network.
+#include <cstdint>
 #include <memory>
 
 #include "agent/agent.h"
@@ -12,7 +13,10 @@ namespace rlpos {
 
 class PpoAgent : public Agent {
  public:
-  PpoAgent(const AgentSpec& spec, int observation_dim, int action_count);
+  // training_steps: the transitions it will learn from, over which agent.ppo.anneal_learning_rate
+  // lowers the rate to 0 (0: unknown, the rate stays).
+  PpoAgent(const AgentSpec& spec, int observation_dim, int action_count,
+           std::int64_t training_steps = 0);
   ~PpoAgent() override;
   std::string Algorithm() const override;
   // explore: a sample of the policy; otherwise its most probable allowed action.
@@ -25,6 +29,8 @@ class PpoAgent : public Agent {
   // The policy's action probabilities (for tests and inspection).
   std::vector<float> Probabilities(const std::vector<float>& observation,
                                    const ActionMask& mask) const;
+  // The learning rate of the last update (agent.ppo.learning_rate before the first).
+  double LearningRate() const;
 
  private:
   struct Impl;

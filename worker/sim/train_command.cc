@@ -83,7 +83,8 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   }
   try {
     UavPositioningEnv env(s);
-    const std::unique_ptr<Agent> agent_owner = MakeAgent(s.agent, env);
+    const std::unique_ptr<Agent> agent_owner =
+        MakeAgent(s.agent, env, std::int64_t{s.agent.train_episodes} * env.StepsPerEpisode());
     Agent& agent = *agent_owner;
     std::ofstream curve(partial / "learning_curve.csv");
     curve << "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
