@@ -142,6 +142,77 @@ TEST(PacketMultiUav, AFixedAssignmentHoldsAgainstTheSnr) {
   EXPECT_GT(m.uavs[1].throughput_mbps, 0.0);
 }
 
+// Swapping the two UAVs makes every UE's best UAV the other one: each is handed over, and its
+// flow resumes from its radio in the other UAV's BSS to a sink on that UAV. Returns the
+// aggregate throughput before (0.5-1 s) and after (2-3 s) the handover at 1 s.
+std::pair<RunMetrics, RunMetrics> SwapTheUavs(const std::vector<std::string>& overrides) {
+  const Scenario s = Load("campus2", Saturated(overrides));
+  UavNetwork network(s, kBesideClusters, Handover::kOn);
+  network.BeginMeasurement({0.5, 1.0});
+  network.RunUntil(1.0);
+  const RunMetrics settled = network.Measure();
+  const std::vector<int> before = network.Association();
+
+  network.SetUavPositions({kBesideClusters[1], kBesideClusters[0]});
+  EXPECT_EQ(network.Reassociate(), 12);
+  EXPECT_EQ(network.Handovers(), 12u);
+  std::vector<int> swapped;
+  for (int u : before)
+    swapped.push_back(1 - u);
+  EXPECT_EQ(network.Association(), swapped);
+
+  network.BeginMeasurement({1.0, 2.0});
+  network.RunUntil(2.0);
+  const RunMetrics moving = network.Measure();
+  network.BeginMeasurement({2.0, 3.0});
+  network.RunUntil(3.0);
+  const RunMetrics resumed = network.Measure();
+  EXPECT_EQ(network.Reassociate(), 0);  // nothing moved since
+  EXPECT_EQ(resumed.uavs[0].ues_served, settled.uavs[1].ues_served);
+  std::printf(
+      "campus2, all 12 UEs handed over at 1 s: %.1f Mbit/s before, %.1f over the next "
+      "second, %.1f over the one after\n",
+      settled.aggregate_throughput_mbps, moving.aggregate_throughput_mbps,
+      resumed.aggregate_throughput_mbps);
+  return {settled, resumed};
+}
+
+TEST(PacketMultiUav, SwappedUavsHandEveryUeOverAcrossChannels) {
+  const auto [settled, resumed] = SwapTheUavs({});
+  // w0 and e4 sit behind buildings from both UAVs here: out of reach (-24 dB), never associated.
+  for (std::size_t i = 0; i < resumed.ues.size(); ++i) {
+    const bool reachable = i != 0 && i != 10;
+    EXPECT_EQ(settled.ues[i].throughput_mbps > 0.0, reachable) << settled.ues[i].name;
+    EXPECT_EQ(resumed.ues[i].throughput_mbps > 0.0, reachable) << resumed.ues[i].name;
+  }
+  // Mirror images: the same links, each cluster on the other UAV's channel.
+  EXPECT_GT(resumed.aggregate_throughput_mbps, 0.9 * settled.aggregate_throughput_mbps)
+      << resumed.aggregate_throughput_mbps << " vs " << settled.aggregate_throughput_mbps;
+}
+
+TEST(PacketMultiUav, SwappedUavsHandEveryUeOverOnACommonChannel) {
+  // One saturated channel for both BSSs: a few UEs starve, before and after alike.
+  const auto [settled, resumed] = SwapTheUavs({"uavs.0.channel=50", "uavs.1.channel=50"});
+  EXPECT_GT(resumed.aggregate_throughput_mbps, 0.75 * settled.aggregate_throughput_mbps)
+      << resumed.aggregate_throughput_mbps << " vs " << settled.aggregate_throughput_mbps;
+}
+
+TEST(PacketMultiUav, AFixedAssignmentIsNeverHandedOver) {
+  std::vector<std::string> overrides;
+  for (int i = 0; i < 12; ++i)
+    overrides.push_back("ues." + std::to_string(i) + ".uav=\"south\"");
+  UavNetwork network(Load("campus2", overrides), kBesideClusters, Handover::kOn);
+  network.RunUntil(0.5);
+  network.SetUavPositions({kBesideClusters[1], kBesideClusters[0]});
+  EXPECT_EQ(network.Reassociate(), 0);
+  EXPECT_EQ(network.Association(), std::vector<int>(12, 1));
+}
+
+TEST(PacketMultiUav, OnlyANetworkBuiltForHandoverReassociates) {
+  UavNetwork network(Load("campus2"), kBesideClusters);
+  EXPECT_THROW(network.Reassociate(), std::logic_error);
+}
+
 TEST(Positioners, CentroidsOfTwoClustersAboveTheirTowers) {
   const Scenario s = Load("campus2");
   const Placement p = CentroidPlacement(s);

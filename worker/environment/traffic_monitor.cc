@@ -5,15 +5,16 @@
 
 namespace rlpos {
 
-TrafficMonitor::TrafficMonitor(const ns3::ApplicationContainer& senders,
-                               const ns3::ApplicationContainer& sinks) {
-  for (std::size_t i = 0; i < senders.GetN(); ++i) {
-    senders.Get(i)->TraceConnectWithoutContext(
-        "TxWithSeqTsSize", ns3::MakeCallback(&TrafficMonitor::OnSent, this).Bind(i));
-    sinks.Get(i)->TraceConnectWithoutContext(
-        "RxWithSeqTsSize", ns3::MakeCallback(&TrafficMonitor::OnReceived, this).Bind(i));
-  }
-  flows_.assign(senders.GetN(), FlowAccumulator({0.0, 0.0}));
+TrafficMonitor::TrafficMonitor(std::size_t flows) : flows_(flows, FlowAccumulator({0.0, 0.0})) {}
+
+void TrafficMonitor::AttachSender(std::size_t flow, const ns3::Ptr<ns3::Application>& sender) {
+  sender->TraceConnectWithoutContext("TxWithSeqTsSize",
+                                     ns3::MakeCallback(&TrafficMonitor::OnSent, this).Bind(flow));
+}
+
+void TrafficMonitor::AttachSink(std::size_t flow, const ns3::Ptr<ns3::Application>& sink) {
+  sink->TraceConnectWithoutContext("RxWithSeqTsSize",
+                                   ns3::MakeCallback(&TrafficMonitor::OnReceived, this).Bind(flow));
 }
 
 void TrafficMonitor::Restart(MeasurementWindow window) {

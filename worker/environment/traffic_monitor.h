@@ -1,10 +1,12 @@
 #pragma once
-// Counts application packets per UE flow (sent by the UE's app, received by the UAV's sink)
-// against the current measurement window, using SeqTsSizeHeader timestamps.
-#include <ns3/application-container.h>
+// Counts application packets per UE flow (sent by the UE's app, received by a UAV's sink)
+// against the current measurement window, using SeqTsSizeHeader timestamps. A flow may gain
+// senders and sinks while it runs: a UE handed over to another UAV sends to that UAV's sink.
 #include <ns3/address.h>
+#include <ns3/application.h>
 #include <ns3/packet.h>
 #include <ns3/seq-ts-size-header.h>
+
 #include <vector>
 
 #include "metrics/run_metrics.h"
@@ -13,8 +15,11 @@ namespace rlpos {
 
 class TrafficMonitor {
  public:
-  // senders[i] and sinks[i] are UE i's application and its sink on the UAV.
-  TrafficMonitor(const ns3::ApplicationContainer& senders, const ns3::ApplicationContainer& sinks);
+  explicit TrafficMonitor(std::size_t flows);
+  // Counts what `sender` sends (its "TxWithSeqTsSize") and `sink` receives ("RxWithSeqTsSize")
+  // as UE `flow`'s traffic.
+  void AttachSender(std::size_t flow, const ns3::Ptr<ns3::Application>& sender);
+  void AttachSink(std::size_t flow, const ns3::Ptr<ns3::Application>& sink);
   void Restart(MeasurementWindow window);
   const std::vector<FlowAccumulator>& flows() const { return flows_; }
   MeasurementWindow window() const { return window_; }

@@ -4,6 +4,7 @@
 #include <ns3/building.h>
 #include <ns3/buildings-channel-condition-model.h>
 #include <ns3/buildings-helper.h>
+#include <ns3/bulk-send-application.h>
 #include <ns3/bulk-send-helper.h>
 #include <ns3/constant-position-mobility-model.h>
 #include <ns3/core-module.h>
@@ -24,6 +25,7 @@
 #include <ns3/propagation-loss-model.h>
 #include <ns3/rectangle.h>
 #include <ns3/ssid.h>
+#include <ns3/sta-wifi-mac.h>
 #include <ns3/vht-phy.h>
 #include <ns3/wifi-helper.h>
 #include <ns3/wifi-mac-helper.h>
@@ -33,6 +35,7 @@
 #include <ns3/yans-wifi-helper.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -49,6 +52,8 @@ namespace {
 constexpr uint16_t kFirstPort = 9000;
 // Far above what AssignStreams hands out to the network's models.
 constexpr int64_t kStartTimesStream = 1000000;
+// The senders that flows restarted after a handover get, two streams each, in handover order.
+constexpr int64_t kHandoverStreams = 2000000;
 // ns-3.37's default for HT/VHT/HE, named so that the analytic fidelity can build the same one.
 constexpr char kErrorRateModel[] = "ns3::TableBasedErrorRateModel";
 
@@ -120,11 +125,17 @@ struct UavNetwork::Impl {
   ns3::NodeContainer ues;
   ns3::NodeContainer uavs;
   std::vector<ns3::Ptr<ns3::WifiNetDevice>> uav_devices;
-  std::vector<int> serving;                   // per UE: the index of its UAV
-  ns3::Ptr<ns3::ErrorRateModel> error_model;  // a twin of the PHYs' own (kErrorRateModel)
-  ns3::ApplicationContainer senders;
+  bool handover = false;  // built with a radio per UAV on every UE (Reassociate allowed)
+  // Per UE, per UAV: its radio linked to that UAV. Without handover only the serving UAV's.
+  std::vector<std::vector<ns3::Ptr<ns3::WifiNetDevice>>> ue_devices;
+  std::vector<ns3::Ipv4Address> uav_addresses;
+  std::vector<int> serving;  // per UE: the index of its UAV
+  std::size_t handovers = 0;
+  int64_t handover_streams = kHandoverStreams;      // the next restarted sender's first stream
+  ns3::Ptr<ns3::ErrorRateModel> error_model;        // a twin of the PHYs' own (kErrorRateModel)
+  std::vector<ns3::Ptr<ns3::Application>> senders;  // per UE: the sender of its current flow
   ns3::Ptr<ns3::UniformRandomVariable> start_times;
-  ns3::ApplicationContainer sinks;
+  std::map<std::pair<int, std::size_t>, ns3::Ptr<ns3::Application>> sinks;  // (UAV, UE)
   std::unique_ptr<TrafficMonitor> traffic;
 
   ns3::Ptr<ns3::MobilityModel> UavMobility(std::size_t u) const {
@@ -135,7 +146,18 @@ struct UavNetwork::Impl {
   std::vector<LinkState> LinksTo(std::size_t u) const;
   ns3::NetDeviceContainer InstallWifi(ns3::WifiHelper& wifi);
   void AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices);
-  void InstallApplications(const std::vector<ns3::Ipv4Address>& uav_addresses);
+  void InstallApplications();
+  // UE `ue`'s sink on UAV `u`, installed (and counted as the UE's) on first use.
+  void EnsureSink(int u, std::size_t ue);
+  // A sender from UE `ue` to its sink on UAV `u`, counted as the UE's; not yet started.
+  ns3::Ptr<ns3::Application> InstallSender(std::size_t ue, int u);
+  std::vector<std::vector<double>> SnrTable() const;  // [UAV][UE], now
+  ns3::Ssid SsidOf(std::size_t u) const { return ns3::Ssid("rlpos-" + scenario.uavs[u].name); }
+  void HandOver(std::size_t ue, int to);
+  ns3::Ptr<ns3::WifiNetDevice> RadioOf(std::size_t ue, std::size_t u) const {
+    return handover ? ue_devices[ue][u] : ue_devices[ue][0];
+  }
+  void RestartFlow(std::size_t ue);
   ns3::WifiTxVector TxVector(int mcs) const;  // single-user, the configured PHY
 };
 
@@ -217,23 +239,35 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
   // UAVs first, then the UEs, each in the scenario's order (the addresses follow it).
   ns3::WifiMacHelper mac;
   ns3::NetDeviceContainer devices;
-  auto ssid_of = [&](std::size_t u) { return ns3::Ssid("rlpos-" + scenario.uavs[u].name); };
   for (std::size_t u = 0; u < scenario.uavs.size(); ++u) {
     if (w.mode == "adhoc") {
       mac.SetType("ns3::AdhocWifiMac");
     } else {
-      mac.SetType("ns3::ApWifiMac", "Ssid", ns3::SsidValue(ssid_of(u)));
+      mac.SetType("ns3::ApWifiMac", "Ssid", ns3::SsidValue(SsidOf(u)));
     }
     devices.Add(wifi.Install(phy_of(u), mac, uavs.Get(static_cast<uint32_t>(u))));
   }
+  // Each UE: a radio linked to its serving UAV, or with handover one per UAV (in UAV order).
+  ue_devices.assign(ues.GetN(), {});
   for (uint32_t i = 0; i < ues.GetN(); ++i) {
-    const auto u = static_cast<std::size_t>(serving[i]);
-    if (w.mode == "adhoc") {
-      mac.SetType("ns3::AdhocWifiMac");
-    } else {
-      mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(ssid_of(u)));
+    for (std::size_t u = 0; u < scenario.uavs.size(); ++u) {
+      if (!handover && u != static_cast<std::size_t>(serving[i]))
+        continue;
+      if (w.mode == "adhoc") {
+        mac.SetType("ns3::AdhocWifiMac");
+      } else {
+        mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(SsidOf(u)));
+        if (handover) {
+          // The radios stay in their BSS: beacons lost in a saturated shared channel must not
+          // drop one (ns-3.37 then flushes a MAC queue with frames in flight, and crashes).
+          mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(SsidOf(u)), "MaxMissedBeacons",
+                      ns3::UintegerValue(std::numeric_limits<uint32_t>::max()));
+        }
+      }
+      ns3::NetDeviceContainer radio = wifi.Install(phy_of(u), mac, ues.Get(i));
+      ue_devices[i].push_back(ns3::DynamicCast<ns3::WifiNetDevice>(radio.Get(0)));
+      devices.Add(radio);
     }
-    devices.Add(wifi.Install(phy_of(u), mac, ues.Get(i)));
   }
   // Rate manager attributes and RTS/CTS are set per instance: Config::SetDefault would leak
   // into every later network built in the same process.
@@ -264,16 +298,51 @@ void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi,
   stream += mobility.AssignStreams(all, stream);
   ns3::InternetStackHelper internet;
   stream += internet.AssignStreams(all, stream);
-  for (uint32_t i = 0; i < senders.GetN(); ++i) {
-    if (auto onoff = ns3::DynamicCast<ns3::OnOffApplication>(senders.Get(i))) {
+  for (const auto& sender : senders) {
+    if (auto onoff = ns3::DynamicCast<ns3::OnOffApplication>(sender)) {
       stream += onoff->AssignStreams(stream);
     }
   }
 }
 
-void UavNetwork::Impl::InstallApplications(const std::vector<ns3::Ipv4Address>& uav_addresses) {
+void UavNetwork::Impl::EnsureSink(int u, std::size_t ue) {
+  if (sinks.count({u, ue}))
+    return;
   const bool tcp = scenario.traffic.protocol == "tcp_bulk";
   const std::string socket = tcp ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
+  const auto port = static_cast<uint16_t>(kFirstPort + ue);
+  ns3::PacketSinkHelper helper(socket, ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
+  helper.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
+  ns3::Ptr<ns3::Application> sink = helper.Install(uavs.Get(static_cast<uint32_t>(u))).Get(0);
+  sink->SetStartTime(ns3::Seconds(0.0));
+  sinks[{u, ue}] = sink;
+  traffic->AttachSink(ue, sink);
+}
+
+ns3::Ptr<ns3::Application> UavNetwork::Impl::InstallSender(std::size_t ue, int u) {
+  const bool tcp = scenario.traffic.protocol == "tcp_bulk";
+  const std::string socket = tcp ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
+  const ns3::InetSocketAddress to(uav_addresses[static_cast<std::size_t>(u)],
+                                  static_cast<uint16_t>(kFirstPort + ue));
+  ns3::ApplicationContainer app;
+  if (tcp) {
+    ns3::BulkSendHelper bulk(socket, to);
+    bulk.SetAttribute("SendSize", ns3::UintegerValue(scenario.traffic.packet_size));
+    bulk.SetAttribute("MaxBytes", ns3::UintegerValue(0));
+    bulk.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
+    app = bulk.Install(ues.Get(static_cast<uint32_t>(ue)));
+  } else {
+    ns3::OnOffHelper onoff(socket, to);
+    onoff.SetConstantRate(ns3::DataRate(static_cast<uint64_t>(scenario.ues[ue].demand_mbps * 1e6)),
+                          scenario.traffic.packet_size);
+    onoff.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
+    app = onoff.Install(ues.Get(static_cast<uint32_t>(ue)));
+  }
+  traffic->AttachSender(ue, app.Get(0));
+  return app.Get(0);
+}
+
+void UavNetwork::Impl::InstallApplications() {
   const double duration = scenario.simulation.duration;
   // Staggered starts (drawn from the run's RNG) so that UEs do not contend in lockstep.
   start_times = ns3::CreateObject<ns3::UniformRandomVariable>();
@@ -281,36 +350,74 @@ void UavNetwork::Impl::InstallApplications(const std::vector<ns3::Ipv4Address>& 
   start_times->SetAttribute("Max", ns3::DoubleValue(0.15));
   start_times->SetStream(kStartTimesStream);  // drawn now, before AssignStreams runs
   for (std::size_t i = 0; i < scenario.ues.size(); ++i) {
-    const uint16_t port = static_cast<uint16_t>(kFirstPort + i);
-    ns3::PacketSinkHelper sink(socket, ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
-    sink.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
-    // The UE's flow ends at its serving UAV: one sink per UE, in the UEs' order.
-    ns3::ApplicationContainer sink_app = sink.Install(uavs.Get(static_cast<uint32_t>(serving[i])));
-    sink_app.Start(ns3::Seconds(0.0));
-    sinks.Add(sink_app);
-
-    const ns3::InetSocketAddress to(uav_addresses[static_cast<std::size_t>(serving[i])], port);
-    ns3::ApplicationContainer app;
-    if (tcp) {
-      ns3::BulkSendHelper bulk(socket, to);
-      bulk.SetAttribute("SendSize", ns3::UintegerValue(scenario.traffic.packet_size));
-      bulk.SetAttribute("MaxBytes", ns3::UintegerValue(0));
-      bulk.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
-      app = bulk.Install(ues.Get(i));
-    } else {
-      ns3::OnOffHelper onoff(socket, to);
-      onoff.SetConstantRate(ns3::DataRate(static_cast<uint64_t>(scenario.ues[i].demand_mbps * 1e6)),
-                            scenario.traffic.packet_size);
-      onoff.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
-      app = onoff.Install(ues.Get(i));
-    }
-    app.Start(ns3::Seconds(start_times->GetValue()));
-    app.Stop(ns3::Seconds(duration));
-    senders.Add(app);
+    // The UE's flow ends at its serving UAV.
+    EnsureSink(serving[i], i);
+    ns3::Ptr<ns3::Application> app = InstallSender(i, serving[i]);
+    app->SetStartTime(ns3::Seconds(start_times->GetValue()));
+    app->SetStopTime(ns3::Seconds(duration));
+    senders.push_back(app);
   }
 }
 
-UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement)
+std::vector<std::vector<double>> UavNetwork::Impl::SnrTable() const {
+  std::vector<std::vector<double>> snr(uavs.GetN());
+  for (std::size_t u = 0; u < snr.size(); ++u) {
+    for (const auto& link : LinksTo(u))
+      snr[u].push_back(link.snr_db);
+  }
+  return snr;
+}
+
+namespace {
+
+// Stops a sender now, for good: ns-3 applications have no public stop once started, so its
+// socket loses the callbacks into it and is closed, and the application is disposed.
+void StopSender(const ns3::Ptr<ns3::Application>& app) {
+  ns3::Ptr<ns3::Socket> socket;
+  if (auto onoff = ns3::DynamicCast<ns3::OnOffApplication>(app))
+    socket = onoff->GetSocket();
+  else if (auto bulk = ns3::DynamicCast<ns3::BulkSendApplication>(app))
+    socket = bulk->GetSocket();
+  if (socket) {
+    socket->SetConnectCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>(),
+                               ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>());
+    socket->SetCloseCallbacks(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>(),
+                              ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>());
+    socket->SetSendCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>, uint32_t>());
+    socket->SetDataSentCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>, uint32_t>());
+    socket->SetRecvCallback(ns3::MakeNullCallback<void, ns3::Ptr<ns3::Socket>>());
+    socket->Close();
+  }
+  app->Dispose();  // cancels its pending start, stop and send events
+}
+
+}  // namespace
+
+// The handover: the UE's flow to its old UAV stops and restarts at once, from its radio linked
+// to the new UAV, to a sink there (UDP: the next packet; TCP: a new connection).
+void UavNetwork::Impl::HandOver(std::size_t ue, int to) {
+  serving[ue] = to;
+  ++handovers;
+  StopSender(senders[ue]);
+  RestartFlow(ue);
+}
+
+void UavNetwork::Impl::RestartFlow(std::size_t ue) {
+  const double left = scenario.simulation.duration - ns3::Simulator::Now().GetSeconds();
+  if (left <= 0.0)
+    return;  // traffic is over
+  EnsureSink(serving[ue], ue);
+  ns3::Ptr<ns3::Application> app = InstallSender(ue, serving[ue]);
+  if (auto onoff = ns3::DynamicCast<ns3::OnOffApplication>(app)) {
+    handover_streams += onoff->AssignStreams(handover_streams);
+  }
+  // Both relative to now: the application is initialized when added to its node.
+  app->SetStartTime(ns3::Seconds(0.0));
+  app->SetStopTime(ns3::Seconds(left));
+  senders[ue] = app;
+}
+
+UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement, Handover handover)
     : impl_(std::make_unique<Impl>()) {
   if (placement.size() != scenario.uavs.size()) {
     throw std::invalid_argument(std::to_string(placement.size()) + " positions for " +
@@ -318,6 +425,7 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement)
   }
   Impl& m = *impl_;
   m.scenario = scenario;
+  m.handover = handover == Handover::kOn;
   ns3::Simulator::Destroy();  // a clean slate: node and building lists are global
   ns3::RngSeedManager::SetSeed(scenario.simulation.seed);
   ns3::RngSeedManager::SetRun(scenario.simulation.run);
@@ -341,35 +449,42 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement)
   ns3::BuildingsHelper::Install(m.ues);
   ns3::BuildingsHelper::Install(m.uavs);
 
-  std::vector<std::vector<double>> snr(scenario.uavs.size());
-  for (std::size_t u = 0; u < snr.size(); ++u) {
-    for (const auto& link : m.LinksTo(u))
-      snr[u].push_back(link.snr_db);
-  }
-  m.serving = AssociateUes(scenario, snr);
+  m.serving = AssociateUes(scenario, m.SnrTable());
 
   ns3::WifiHelper wifi;
   ns3::NetDeviceContainer devices = m.InstallWifi(wifi);
   ns3::InternetStackHelper internet;
   internet.Install(m.uavs);
   internet.Install(m.ues);
+  for (uint32_t u = 0; u < m.uavs.GetN(); ++u)
+    m.uav_devices.push_back(ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(u)));
   ns3::Ipv4AddressHelper addresses;
-  addresses.SetBase("10.1.0.0", "255.255.0.0");
-  // UAVs first: 10.1.0.1, 10.1.0.2, ...
-  ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);
+  if (!m.handover) {
+    // One subnet, UAVs first: 10.1.0.1, 10.1.0.2, ..., then the UEs.
+    addresses.SetBase("10.1.0.0", "255.255.0.0");
+    ns3::Ipv4InterfaceContainer interfaces = addresses.Assign(devices);
+    for (uint32_t u = 0; u < m.uavs.GetN(); ++u)
+      m.uav_addresses.push_back(interfaces.GetAddress(u));
+  } else {
+    // A subnet per UAV, 10.<u+1>.0.0/16: its AP (.0.1) and every UE's radio linked to it, so that
+    // a flow to UAV u leaves the UE by that radio.
+    for (std::size_t u = 0; u < m.uav_devices.size(); ++u) {
+      ns3::NetDeviceContainer subnet(m.uav_devices[u]);
+      for (const auto& radios : m.ue_devices)
+        subnet.Add(radios[u]);
+      addresses.SetBase(ns3::Ipv4Address(("10." + std::to_string(u + 1) + ".0.0").c_str()),
+                        "255.255.0.0");
+      m.uav_addresses.push_back(addresses.Assign(subnet).GetAddress(0));
+    }
+  }
   if (scenario.wifi.mode == "adhoc") {
     // No ARP on the air: in ad hoc mode unacknowledged broadcast ARP requests collide under
     // saturated load and starve UEs for seconds. (AP/STA association sorts itself out.)
     ns3::NeighborCacheHelper().PopulateNeighborCache();
   }
-  std::vector<ns3::Ipv4Address> uav_addresses;
-  for (uint32_t u = 0; u < m.uavs.GetN(); ++u) {
-    m.uav_devices.push_back(ns3::DynamicCast<ns3::WifiNetDevice>(devices.Get(u)));
-    uav_addresses.push_back(interfaces.GetAddress(u));
-  }
-  m.InstallApplications(uav_addresses);
+  m.traffic = std::make_unique<TrafficMonitor>(scenario.ues.size());
+  m.InstallApplications();
   m.AssignStreams(wifi, devices);
-  m.traffic = std::make_unique<TrafficMonitor>(m.senders, m.sinks);
 }
 
 UavNetwork::~UavNetwork() {
@@ -399,6 +514,37 @@ Placement UavNetwork::UavPositions() const {
   for (uint32_t u = 0; u < impl_->uavs.GetN(); ++u)
     placement.push_back(FromNs3(impl_->UavMobility(u)->GetPosition()));
   return placement;
+}
+
+int UavNetwork::Reassociate() {
+  Impl& m = *impl_;
+  if (!m.handover)
+    throw std::logic_error("this network was built without handover");
+  const std::vector<int> serving = AssociateUes(m.scenario, m.SnrTable());
+  int changed = 0;
+  for (std::size_t i = 0; i < serving.size(); ++i) {
+    if (serving[i] != m.serving[i]) {
+      m.HandOver(i, serving[i]);
+      ++changed;
+    }
+  }
+  return changed;
+}
+
+std::size_t UavNetwork::Handovers() const {
+  return impl_->handovers;
+}
+
+std::vector<int> UavNetwork::AssociatedAps() const {
+  const Impl& m = *impl_;
+  std::vector<int> aps(m.ue_devices.size(), -1);
+  for (std::size_t i = 0; i < aps.size(); ++i) {
+    const auto u = static_cast<std::size_t>(m.serving[i]);
+    auto sta = ns3::DynamicCast<ns3::StaWifiMac>(m.RadioOf(i, u)->GetMac());
+    if (sta && sta->IsAssociated() && sta->GetBssid(0) == m.uav_devices[u]->GetMac()->GetAddress())
+      aps[i] = static_cast<int>(u);
+  }
+  return aps;
 }
 
 const std::vector<int>& UavNetwork::Association() const {

@@ -15,13 +15,18 @@ struct LinkState {
   double snr_db = 0.0;
 };
 
+// kOn gives every UE a radio per UAV, each in that UAV's BSS (a subnet per UAV), so that
+// Reassociate can move its flow; kOff, one radio, in its serving UAV's BSS.
+enum class Handover { kOff, kOn };
+
 class UavNetwork {
  public:
   // Validates the ns-3 side of the scenario (TypeIds, attributes, channels), then builds it with
-  // UAV u at `placement[u]`. Each UE associates with its serving UAV (environment/association.h)
-  // at the positions given here and stays with it while the network lives. Throws ConfigError on
-  // a bad scenario, std::invalid_argument on a placement of another size.
-  UavNetwork(const Scenario& scenario, const Placement& placement);
+  // UAV u at `placement[u]`. Each UE is served by the UAV the association rule gives at the
+  // positions given here (environment/association.h), and changes UAV only through Reassociate.
+  // Throws ConfigError on a bad scenario, std::invalid_argument on a placement of another size.
+  UavNetwork(const Scenario& scenario, const Placement& placement,
+             Handover handover = Handover::kOff);
   ~UavNetwork();
   UavNetwork(const UavNetwork&) = delete;
   UavNetwork& operator=(const UavNetwork&) = delete;
@@ -30,7 +35,19 @@ class UavNetwork {
   void SetUavPositions(const Placement& placement);
   void SetUavPosition(std::size_t uav, const Vec3& position);
   Placement UavPositions() const;
-  // The serving UAV's index, per UE.
+  // Applies the association rule to the links as they are now (after UAVs or UEs moved) and
+  // hands over each UE whose serving UAV changes: its flow to the old UAV stops and a new one
+  // starts at once from its radio in the new UAV's BSS to a sink on that UAV (UDP: from the next
+  // packet; TCP: a new connection, from slow start). The radios stay associated, so there is no
+  // re-association gap (make-before-break). Returns the number of UEs handed over; throws
+  // std::logic_error on a network built with Handover::kOff.
+  int Reassociate();
+  // UEs handed over since the network was built.
+  std::size_t Handovers() const;
+  // Per UE, its serving UAV if the UE's radio for it is associated with that UAV's AP now (as
+  // its MAC has it), else -1: not associated (yet, or out of reach), and always in ad hoc mode.
+  std::vector<int> AssociatedAps() const;
+  // The serving UAV's index, per UE (a UE being handed over: the UAV it is joining).
   const std::vector<int>& Association() const;
   // The Wi-Fi channel number of each UAV.
   std::vector<int> UavChannels() const;

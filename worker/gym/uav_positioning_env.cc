@@ -88,8 +88,9 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
     episode.simulation.warmup = warmup;
     episode.simulation.duration = warmup + scenario_.env.episode_duration + dt;
     network_.reset();  // one ns-3 simulation at a time
-    // UEs associate at the initial placement and keep their UAV for the episode.
-    network_ = std::make_unique<UavNetwork>(episode, placement_);
+    // UEs associate at the initial placement; each step re-associates them (MoveTo).
+    network_ = std::make_unique<UavNetwork>(episode, placement_,
+                                            placement_.size() > 1 ? Handover::kOn : Handover::kOff);
     network_->BeginMeasurement({warmup - dt, warmup});
     network_->RunUntil(warmup);
   }
@@ -125,6 +126,8 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   active_ = static_cast<std::size_t>((steps_ + 1) / scenario_.env.turn_steps) % placement_.size();
   if (network_) {
     network_->SetUavPositions(placement_);
+    if (placement_.size() > 1)
+      network_->Reassociate();  // as the analytic model does at every step
     const double now = network_->Now();
     const double next = now + scenario_.env.decision_interval;
     network_->BeginMeasurement({now, next});
