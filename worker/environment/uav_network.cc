@@ -129,7 +129,8 @@ struct UavNetwork::Impl {
   // Per UE, per UAV: its radio linked to that UAV. Without handover only the serving UAV's.
   std::vector<std::vector<ns3::Ptr<ns3::WifiNetDevice>>> ue_devices;
   std::vector<ns3::Ipv4Address> uav_addresses;
-  std::vector<int> serving;  // per UE: the index of its UAV
+  std::vector<int> serving;   // per UE: the index of its UAV
+  std::vector<bool> joining;  // per UE: handed over, its flow waits for its radio to associate
   std::size_t handovers = 0;
   int64_t handover_streams = kHandoverStreams;      // the next restarted sender's first stream
   ns3::Ptr<ns3::ErrorRateModel> error_model;        // a twin of the PHYs' own (kErrorRateModel)
@@ -154,6 +155,7 @@ struct UavNetwork::Impl {
   std::vector<std::vector<double>> SnrTable() const;  // [UAV][UE], now
   ns3::Ssid SsidOf(std::size_t u) const { return ns3::Ssid("rlpos-" + scenario.uavs[u].name); }
   void HandOver(std::size_t ue, int to);
+  void OnRadioAssociated(std::size_t ue, std::size_t u, ns3::Mac48Address bssid);
   ns3::Ptr<ns3::WifiNetDevice> RadioOf(std::size_t ue, std::size_t u) const {
     return handover ? ue_devices[ue][u] : ue_devices[ue][0];
   }
@@ -393,13 +395,25 @@ void StopSender(const ns3::Ptr<ns3::Application>& app) {
 
 }  // namespace
 
-// The handover: the UE's flow to its old UAV stops and restarts at once, from its radio linked
-// to the new UAV, to a sink there (UDP: the next packet; TCP: a new connection).
+// The handover: the UE's flow to its old UAV stops, and restarts from its radio in the new UAV's
+// BSS to a sink on that UAV (UDP: from the next packet; TCP: a new connection) as soon as that
+// radio is associated: at once if it already is, else when ns-3's STA has heard the AP and
+// completed the handshake (OnRadioAssociated), so that nothing is sent into a BSS not joined.
 void UavNetwork::Impl::HandOver(std::size_t ue, int to) {
   serving[ue] = to;
   ++handovers;
   StopSender(senders[ue]);
-  RestartFlow(ue);
+  auto sta = ns3::DynamicCast<ns3::StaWifiMac>(RadioOf(ue, static_cast<std::size_t>(to))->GetMac());
+  joining[ue] = sta && !sta->IsAssociated();
+  if (!joining[ue])
+    RestartFlow(ue);
+}
+
+void UavNetwork::Impl::OnRadioAssociated(std::size_t ue, std::size_t u, ns3::Mac48Address) {
+  if (joining[ue] && static_cast<std::size_t>(serving[ue]) == u) {
+    joining[ue] = false;
+    RestartFlow(ue);
+  }
 }
 
 void UavNetwork::Impl::RestartFlow(std::size_t ue) {
@@ -481,6 +495,13 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement, Han
     // No ARP on the air: in ad hoc mode unacknowledged broadcast ARP requests collide under
     // saturated load and starve UEs for seconds. (AP/STA association sorts itself out.)
     ns3::NeighborCacheHelper().PopulateNeighborCache();
+  }
+  m.joining.assign(scenario.ues.size(), false);
+  for (std::size_t i = 0; m.handover && i < m.ue_devices.size(); ++i) {
+    for (std::size_t u = 0; u < m.ue_devices[i].size(); ++u) {
+      m.ue_devices[i][u]->GetMac()->TraceConnectWithoutContext(
+          "Assoc", ns3::MakeCallback(&Impl::OnRadioAssociated, &m).Bind(i, u));
+    }
   }
   m.traffic = std::make_unique<TrafficMonitor>(scenario.ues.size());
   m.InstallApplications();
