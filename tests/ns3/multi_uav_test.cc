@@ -313,6 +313,40 @@ TEST(TurnTakingEnv, UavsMoveInTurnAndNeverOntoEachOther) {
   EXPECT_TRUE(env.ObservationSpace().Contains(r.observation));
 }
 
+// A packet-level episode hands UEs over as the analytic model re-associates them: the same
+// moves give the same serving UAVs, step by step, including the steps where they change.
+TEST(TurnTakingEnv, PacketEpisodesReassociateAsTheAnalyticModelDoes) {
+  const std::vector<std::string> start{"uavs.0.position=[100, 50, 40]",
+                                       "uavs.1.position=[105, 50, 40]"};
+  auto analytic_overrides = start;
+  analytic_overrides.push_back("env.fidelity=analytic");
+  const Scenario analytic_scenario = Load("campus2", analytic_overrides);
+  const auto action = [&](const std::string& name) {
+    const auto& actions = analytic_scenario.env.actions;
+    return static_cast<int>(std::find(actions.begin(), actions.end(), name) - actions.begin());
+  };
+  // North flies west (its turns), south stays: UEs of the west cluster change UAV on the way.
+  const std::vector<int> moves{action("left"), action("stay"), action("left"), action("stay"),
+                               action("left"), action("stay"), action("left"), action("stay")};
+  UavPositioningEnv analytic(analytic_scenario);
+  analytic.Reset(1);
+  std::vector<std::vector<int>> serving{analytic.LastInfo().serving};
+  for (int a : moves)
+    serving.push_back(analytic.Step(a).info.serving);
+  int changes = 0;
+  for (std::size_t k = 1; k < serving.size(); ++k)
+    changes += serving[k] != serving[k - 1];
+  ASSERT_GT(changes, 0) << "the moves must change some UE's UAV";
+
+  auto packet_overrides = start;
+  packet_overrides.push_back("env.fidelity=packet");
+  UavPositioningEnv packet(Load("campus2", packet_overrides));
+  packet.Reset(1);
+  EXPECT_EQ(packet.LastInfo().serving, serving[0]);
+  for (std::size_t k = 0; k < moves.size(); ++k)
+    EXPECT_EQ(packet.Step(moves[k]).info.serving, serving[k + 1]) << "after step " << k + 1;
+}
+
 TEST(TurnTakingEnv, TurnsOfSeveralSteps) {
   const Scenario s = Load("campus2", {"env.fidelity=analytic", "env.turn_steps=2"});
   UavPositioningEnv env(s);
