@@ -65,12 +65,24 @@ msg::CampaignReply SendCampaignRequest(const DdsOptions& dds, msg::CampaignReque
   }
   request.request_id = NewRequestId();
   requests.Write(request);
+  // Any participant may match first (an unsecured domain may hold others than the coordinator):
+  // when a reader of requests or a writer of replies matches after the write, the coordinator's
+  // may be among them and have missed it, so the request goes again (same id; the coordinator's
+  // requests are idempotent). Bounded by the participants that join while we wait.
+  int readers = requests.MatchedReaders();
+  int writers = replies.MatchedWriters();
   std::string refused;  // why the first reply that `check` refused was refused
   while (Clock::now() < deadline) {
     const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
     wait_set.Wait(std::max(0.0, std::min(left, 0.1)));
     if (while_waiting)
       while_waiting();
+    const int now_readers = requests.MatchedReaders();
+    const int now_writers = replies.MatchedWriters();
+    if (now_readers > readers || now_writers > writers)
+      requests.Write(request);
+    readers = std::max(readers, now_readers);
+    writers = std::max(writers, now_writers);
     for (const auto& r : replies.Take()) {
       if (!r.valid || !r.decode_error.empty() ||
           !CheckCampaignReply(r.data, request.request_id).empty())

@@ -61,4 +61,54 @@ int RunChildWriter(int argc, char** argv) {
   }
 }
 
+int RunChildLateCoordinator(int argc, char** argv) {
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: %s %s DOMAIN TAG\n", argv[0], kChildLateCoordinatorFlag);
+    return 2;
+  }
+  try {
+    DdsOptions options;
+    options.domain = std::stoi(argv[2]);
+    options.loopback_tag = argv[3];
+    Participant participant(options);
+    Reader<msg::CampaignRequest> overheard(participant);
+    Writer<msg::CampaignReply> forger(participant);
+    std::printf("ready\n");
+    std::fflush(stdout);
+    const auto first = AwaitSample(
+        overheard, [](const Received<msg::CampaignRequest>& r) { return r.valid; }, 30.0);
+    if (!first)
+      return 3;
+    msg::CampaignReply forged;
+    forged.request_id = first->data.request_id;
+    forged.ok = true;
+    forged.campaign_id = "forged000000";
+    forger.Write(forged);
+    // The "coordinator" matches only now, after the request was written.
+    Reader<msg::CampaignRequest> requests(participant);
+    Writer<msg::CampaignReply> replies(participant);
+    const auto heard = AwaitSample(
+        requests,
+        [&](const Received<msg::CampaignRequest>& r) {
+          return r.valid && r.data.request_id == first->data.request_id;
+        },
+        30.0);
+    if (!heard)
+      return 3;
+    msg::CampaignReply reply;
+    reply.request_id = heard->data.request_id;
+    reply.ok = true;
+    reply.campaign_id = "0123456789ab";
+    reply.jobs = 3;
+    replies.Write(reply);
+    std::printf("answered\n");
+    std::fflush(stdout);
+    // Until the client has gone (its reader unmatched): a deleted writer could drop the reply.
+    return WaitFor([&] { return replies.MatchedReaders() == 0; }, 30.0) ? 0 : 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "child late coordinator: %s\n", e.what());
+    return 1;
+  }
+}
+
 }  // namespace rlpos::testing

@@ -39,6 +39,15 @@ std::string SelfExecutable();
 inline constexpr char kChildWriterFlag[] = "--rlpos-child-writer";
 int RunChildWriter(int argc, char** argv);
 
+// The flag that makes the test binary a bystander that becomes a coordinator late:
+//   rlpos_dds_tests --rlpos-child-late-coordinator DOMAIN TAG
+// It reads campaign requests and writes replies; on the first request it forges a reply
+// ("forged000000"), and only then opens a second request reader and reply writer, which
+// answer that request (ok, campaign "0123456789ab", 3 jobs) if it reaches them. Exits 0 once
+// the client is gone, 3 if the request never reached the late reader within 30 s.
+inline constexpr char kChildLateCoordinatorFlag[] = "--rlpos-child-late-coordinator";
+int RunChildLateCoordinator(int argc, char** argv);
+
 // Takes from `reader` every 10 ms until a sample satisfies `match` or `timeout_s` passed.
 // Samples taken before it are appended to `skipped` when given.
 template <typename M, typename P>
