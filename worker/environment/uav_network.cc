@@ -257,14 +257,13 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
         continue;
       if (w.mode == "adhoc") {
         mac.SetType("ns3::AdhocWifiMac");
+      } else if (handover) {
+        // The radios stay in their BSS: beacons lost in a saturated shared channel must not
+        // drop one (ns-3.37 then flushes a MAC queue with frames in flight, and crashes).
+        mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(SsidOf(u)), "MaxMissedBeacons",
+                    ns3::UintegerValue(std::numeric_limits<uint32_t>::max()));
       } else {
         mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(SsidOf(u)));
-        if (handover) {
-          // The radios stay in their BSS: beacons lost in a saturated shared channel must not
-          // drop one (ns-3.37 then flushes a MAC queue with frames in flight, and crashes).
-          mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(SsidOf(u)), "MaxMissedBeacons",
-                      ns3::UintegerValue(std::numeric_limits<uint32_t>::max()));
-        }
       }
       ns3::NetDeviceContainer radio = wifi.Install(phy_of(u), mac, ues.Get(i));
       ue_devices[i].push_back(ns3::DynamicCast<ns3::WifiNetDevice>(radio.Get(0)));
