@@ -25,6 +25,18 @@ std::string SelfExecutable() {
   return std::filesystem::read_symlink("/proc/self/exe").string();
 }
 
+namespace {
+
+// A child mode's DOMAIN and TAG (argv[2], argv[3]).
+DdsOptions ChildOptions(char** argv) {
+  DdsOptions options;
+  options.domain = std::stoi(argv[2]);
+  options.loopback_tag = argv[3];
+  return options;
+}
+
+}  // namespace
+
 int RunChildWriter(int argc, char** argv) {
   if (argc != 5) {
     std::fprintf(stderr, "usage: %s %s DOMAIN TAG WORKER_ID\n", argv[0], kChildWriterFlag);
@@ -32,10 +44,7 @@ int RunChildWriter(int argc, char** argv) {
   }
   InstallStopSignalHandlers();
   try {
-    DdsOptions options;
-    options.domain = std::stoi(argv[2]);
-    options.loopback_tag = argv[3];
-    Participant participant(options);
+    Participant participant(ChildOptions(argv));
     Writer<msg::WorkerStatus> writer(participant);
     msg::WorkerStatus status;
     status.worker_id = argv[4];
@@ -67,10 +76,7 @@ int RunChildLateCoordinator(int argc, char** argv) {
     return 2;
   }
   try {
-    DdsOptions options;
-    options.domain = std::stoi(argv[2]);
-    options.loopback_tag = argv[3];
-    Participant participant(options);
+    Participant participant(ChildOptions(argv));
     Reader<msg::CampaignRequest> overheard(participant);
     Writer<msg::CampaignReply> forger(participant);
     std::printf("ready\n");
@@ -79,11 +85,16 @@ int RunChildLateCoordinator(int argc, char** argv) {
         overheard, [](const Received<msg::CampaignRequest>& r) { return r.valid; }, 30.0);
     if (!first)
       return 3;
-    msg::CampaignReply forged;
-    forged.request_id = first->data.request_id;
-    forged.ok = true;
-    forged.campaign_id = "forged000000";
-    forger.Write(forged);
+    const auto answer = [](Writer<msg::CampaignReply>& writer, const std::string& request_id,
+                           const std::string& campaign_id, int jobs) {
+      msg::CampaignReply reply;
+      reply.request_id = request_id;
+      reply.ok = true;
+      reply.campaign_id = campaign_id;
+      reply.jobs = jobs;
+      writer.Write(reply);
+    };
+    answer(forger, first->data.request_id, "forged000000", 1);
     // The "coordinator" matches only now, after the request was written.
     Reader<msg::CampaignRequest> requests(participant);
     Writer<msg::CampaignReply> replies(participant);
@@ -95,12 +106,7 @@ int RunChildLateCoordinator(int argc, char** argv) {
         30.0);
     if (!heard)
       return 3;
-    msg::CampaignReply reply;
-    reply.request_id = heard->data.request_id;
-    reply.ok = true;
-    reply.campaign_id = "0123456789ab";
-    reply.jobs = 3;
-    replies.Write(reply);
+    answer(replies, heard->data.request_id, "0123456789ab", 3);
     std::printf("answered\n");
     std::fflush(stdout);
     // Until the client has gone (its reader unmatched): a deleted writer could drop the reply.
