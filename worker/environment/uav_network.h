@@ -36,11 +36,11 @@ class UavNetwork {
   void SetUavPosition(std::size_t uav, const Vec3& position);
   Placement UavPositions() const;
   // Applies the association rule to the links as they are now (after UAVs or UEs moved) and
-  // hands over each UE whose serving UAV changes: its flow to the old UAV stops and a new one
-  // starts at once from its radio in the new UAV's BSS to a sink on that UAV (UDP: from the next
-  // packet; TCP: a new connection, from slow start). The radios stay associated, so there is no
-  // re-association gap (make-before-break). Returns the number of UEs handed over; throws
-  // std::logic_error on a network built with Handover::kOff.
+  // hands over each UE whose serving UAV changes: its flow to the old UAV stops, and a new one
+  // from its radio in the new UAV's BSS to a sink on that UAV (UDP: from the next packet; TCP: a
+  // new connection, from slow start) starts at once if that radio is associated
+  // (make-before-break), else once ns-3's STA has associated it. Returns the number of UEs
+  // handed over; throws std::logic_error on a network built with Handover::kOff.
   int Reassociate();
   // UEs handed over since the network was built.
   std::size_t Handovers() const;
