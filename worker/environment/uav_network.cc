@@ -144,6 +144,11 @@ struct UavNetwork::Impl {
   }
   void BuildChannelModels();
   LinkState Link(uint32_t ue, std::size_t u) const;  // UE `ue`'s uplink to UAV `u`, now
+  double SnrDb(uint32_t ue, std::size_t u) const;    // its SNR alone
+  bool Tcp() const { return scenario.traffic.protocol == "tcp_bulk"; }
+  std::string SocketFactory() const {
+    return Tcp() ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
+  }
   std::vector<LinkState> LinksTo(std::size_t u) const;
   ns3::NetDeviceContainer InstallWifi(ns3::WifiHelper& wifi);
   void AssignStreams(ns3::WifiHelper& wifi, const ns3::NetDeviceContainer& devices);
@@ -309,10 +314,9 @@ void UavNetwork::Impl::AssignStreams(ns3::WifiHelper& wifi,
 void UavNetwork::Impl::EnsureSink(int u, std::size_t ue) {
   if (sinks.count({u, ue}))
     return;
-  const bool tcp = scenario.traffic.protocol == "tcp_bulk";
-  const std::string socket = tcp ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
   const auto port = static_cast<uint16_t>(kFirstPort + ue);
-  ns3::PacketSinkHelper helper(socket, ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
+  ns3::PacketSinkHelper helper(SocketFactory(),
+                               ns3::InetSocketAddress(ns3::Ipv4Address::GetAny(), port));
   helper.SetAttribute("EnableSeqTsSizeHeader", ns3::BooleanValue(true));
   ns3::Ptr<ns3::Application> sink = helper.Install(uavs.Get(static_cast<uint32_t>(u))).Get(0);
   sink->SetStartTime(ns3::Seconds(0.0));
@@ -321,8 +325,8 @@ void UavNetwork::Impl::EnsureSink(int u, std::size_t ue) {
 }
 
 ns3::Ptr<ns3::Application> UavNetwork::Impl::InstallSender(std::size_t ue, int u) {
-  const bool tcp = scenario.traffic.protocol == "tcp_bulk";
-  const std::string socket = tcp ? "ns3::TcpSocketFactory" : "ns3::UdpSocketFactory";
+  const bool tcp = Tcp();
+  const std::string socket = SocketFactory();
   const ns3::InetSocketAddress to(uav_addresses[static_cast<std::size_t>(u)],
                                   static_cast<uint16_t>(kFirstPort + ue));
   ns3::ApplicationContainer app;
@@ -361,10 +365,11 @@ void UavNetwork::Impl::InstallApplications() {
 }
 
 std::vector<std::vector<double>> UavNetwork::Impl::SnrTable() const {
+  // SNR only: the association needs no LoS (a building ray test per link).
   std::vector<std::vector<double>> snr(uavs.GetN());
   for (std::size_t u = 0; u < snr.size(); ++u) {
-    for (const auto& link : LinksTo(u))
-      snr[u].push_back(link.snr_db);
+    for (uint32_t i = 0; i < ues.GetN(); ++i)
+      snr[u].push_back(SnrDb(i, u));
   }
   return snr;
 }
@@ -576,16 +581,22 @@ std::vector<int> UavNetwork::UavChannels() const {
 }
 
 LinkState UavNetwork::Impl::Link(uint32_t i, std::size_t u) const {
-  const WifiSpec& w = scenario.wifi;
   auto uav = UavMobility(u);
   auto ue = ues.Get(i)->GetObject<ns3::MobilityModel>();
   LinkState link;
   link.los = geometry->GetChannelCondition(ue, uav)->IsLos();
+  link.snr_db = SnrDb(i, u);
+  return link;
+}
+
+double UavNetwork::Impl::SnrDb(uint32_t i, std::size_t u) const {
+  const WifiSpec& w = scenario.wifi;
   // Uplink, as the channel computes it: sender first.
   const double rx_dbm =
-      loss->CalcRxPower(w.tx_power_dbm + w.antenna_gain_dbi, ue, uav) + w.antenna_gain_dbi;
-  link.snr_db = rx_dbm - w.noise_floor_dbm;
-  return link;
+      loss->CalcRxPower(w.tx_power_dbm + w.antenna_gain_dbi,
+                        ues.Get(i)->GetObject<ns3::MobilityModel>(), UavMobility(u)) +
+      w.antenna_gain_dbi;
+  return rx_dbm - w.noise_floor_dbm;
 }
 
 std::vector<LinkState> UavNetwork::Impl::LinksTo(std::size_t u) const {

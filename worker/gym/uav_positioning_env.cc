@@ -90,7 +90,7 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
     network_.reset();  // one ns-3 simulation at a time
     // UEs associate at the initial placement; each step re-associates them (MoveTo).
     network_ = std::make_unique<UavNetwork>(episode, placement_,
-                                            placement_.size() > 1 ? Handover::kOn : Handover::kOff);
+                                            HandsOver() ? Handover::kOn : Handover::kOff);
     network_->BeginMeasurement({warmup - dt, warmup});
     network_->RunUntil(warmup);
   }
@@ -126,7 +126,7 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   active_ = static_cast<std::size_t>((steps_ + 1) / scenario_.env.turn_steps) % placement_.size();
   if (network_) {
     network_->SetUavPositions(placement_);
-    if (placement_.size() > 1)
+    if (HandsOver())
       network_->Reassociate();  // as the analytic model does at every step
     const double now = network_->Now();
     const double next = now + scenario_.env.decision_interval;

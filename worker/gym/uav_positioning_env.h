@@ -44,6 +44,8 @@ class UavPositioningEnv : public Env {
   StepInfo Observe();  // the state at the current position (after the last interval)
   StepResult MoveTo(const Placement& placement);  // one decision interval at `placement`
   bool Continuous() const { return scenario_.env.action_space == "continuous"; }
+  // Packet level with several UAVs: a radio per UAV on each UE, re-associated every step.
+  bool HandsOver() const { return scenario_.uavs.size() > 1; }
   Scenario scenario_;
   std::unique_ptr<Reward> reward_;
   std::unique_ptr<UavNetwork> network_;          // packet fidelity
