@@ -1,4 +1,4 @@
-#include "campaign/campaign_id.h"
+#include "common/campaign/campaign_id.h"
 
 #include <cstdio>
 

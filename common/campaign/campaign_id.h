@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "campaign/campaign_spec.h"
+#include "common/campaign/campaign_spec.h"
 
 namespace rlpos {
 

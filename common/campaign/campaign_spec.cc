@@ -1,17 +1,17 @@
-#include "campaign/campaign_spec.h"
+#include "common/campaign/campaign_spec.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <set>
 
-#include "config/config_error.h"
-#include "config/did_you_mean.h"
-#include "config/number_text.h"
-#include "config/object_reader.h"
-#include "scenario/scenario_parser.h"
-#include "wire/identifiers.h"
-#include "wire/job_order.h"
-#include "wire/limits.h"
+#include "common/config/config_error.h"
+#include "common/config/did_you_mean.h"
+#include "common/scenario/number_text.h"
+#include "common/config/object_reader.h"
+#include "common/scenario/scenario_parser.h"
+#include "common/wire/identifiers.h"
+#include "common/wire/job_order.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 namespace {

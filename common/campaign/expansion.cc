@@ -1,11 +1,11 @@
-#include "campaign/expansion.h"
+#include "common/campaign/expansion.h"
 
-#include "campaign/campaign_id.h"
-#include "campaign/job_content.h"
-#include "campaign/offsets.h"
-#include "hash/sha256.h"
-#include "provenance/provenance.h"
-#include "scenario/scenario_parser.h"
+#include "common/campaign/campaign_id.h"
+#include "common/campaign/job_content.h"
+#include "common/job/offsets.h"
+#include "common/hash/sha256.h"
+#include "common/provenance/provenance.h"
+#include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
 namespace {

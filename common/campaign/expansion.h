@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "campaign/campaign_spec.h"
-#include "campaign/job.h"
+#include "common/campaign/campaign_spec.h"
+#include "common/job/job.h"
 
 namespace rlpos {
 

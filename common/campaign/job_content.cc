@@ -1,9 +1,9 @@
-#include "campaign/job_content.h"
+#include "common/campaign/job_content.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "hash/sha256.h"
+#include "common/hash/sha256.h"
 
 namespace rlpos {
 

@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "campaign/job.h"
-#include "scenario/scenario.h"
+#include "common/job/job.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

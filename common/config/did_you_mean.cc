@@ -1,4 +1,4 @@
-#include "config/did_you_mean.h"
+#include "common/config/did_you_mean.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,11 +1,11 @@
-#include "config/object_reader.h"
+#include "common/config/object_reader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "config/config_error.h"
-#include "config/did_you_mean.h"
+#include "common/config/config_error.h"
+#include "common/config/did_you_mean.h"
 
 namespace rlpos {
 

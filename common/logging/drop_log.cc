@@ -1,8 +1,8 @@
-#include "logging/drop_log.h"
+#include "common/logging/drop_log.h"
 
 #include <chrono>
 
-#include "logging/log.h"
+#include "common/logging/log.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "logging/log.h"
+#include "common/logging/log.h"
 
 #include <atomic>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "metrics/run_metrics.h"
+#include "common/metrics/run_metrics.h"
 
 #include <algorithm>
 #include <cmath>

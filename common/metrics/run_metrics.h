@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "metrics/mcs_table.h"
-#include "scenario/scenario.h"
+#include "common/phy/mcs_table.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

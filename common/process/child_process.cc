@@ -1,4 +1,4 @@
-#include "process/child_process.h"
+#include "common/process/child_process.h"
 
 #include <fcntl.h>
 #include <pthread.h>

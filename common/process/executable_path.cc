@@ -1,4 +1,4 @@
-#include "process/executable_path.h"
+#include "common/process/executable_path.h"
 
 #include <filesystem>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "process/file_lock.h"
+#include "common/process/file_lock.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -1,4 +1,4 @@
-#include "process/host_name.h"
+#include "common/process/host_name.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "provenance/provenance.h"
+#include "common/provenance/provenance.h"
 
 #include "rlpos_build_info.h"
 

@@ -1,4 +1,4 @@
-#include "scenario/placement_json.h"
+#include "common/scenario/placement_json.h"
 
 namespace rlpos {
 

@@ -3,7 +3,7 @@
 // scenario's order (store/job_result.h reads it back).
 #include <nlohmann/json.hpp>
 
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

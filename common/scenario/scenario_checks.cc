@@ -1,10 +1,10 @@
-#include "scenario/scenario_checks.h"
+#include "common/scenario/scenario_checks.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "config/config_error.h"
-#include "config/object_reader.h"
+#include "common/config/config_error.h"
+#include "common/config/object_reader.h"
 
 namespace rlpos {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

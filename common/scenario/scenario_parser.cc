@@ -1,12 +1,12 @@
-#include "scenario/scenario_parser.h"
+#include "common/scenario/scenario_parser.h"
 
 #include <fstream>
 #include <sstream>
 
-#include "config/config_error.h"
-#include "config/object_reader.h"
-#include "metrics/mcs_table.h"
-#include "scenario/scenario_checks.h"
+#include "common/config/config_error.h"
+#include "common/config/object_reader.h"
+#include "common/phy/mcs_table.h"
+#include "common/scenario/scenario_checks.h"
 
 namespace rlpos {
 namespace {

@@ -1,4 +1,4 @@
-#include "stats/descriptive.h"
+#include "common/stats/descriptive.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "stats/student_t.h"
+#include "common/stats/student_t.h"
 
 namespace rlpos {
 namespace {

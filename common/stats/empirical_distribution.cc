@@ -1,4 +1,4 @@
-#include "stats/empirical_distribution.h"
+#include "common/stats/empirical_distribution.h"
 
 #include <algorithm>
 #include <cmath>

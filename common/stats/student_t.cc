@@ -1,4 +1,4 @@
-#include "stats/student_t.h"
+#include "common/stats/student_t.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,11 +1,11 @@
-#include "store/artifact_files.h"
+#include "common/store/artifact_files.h"
 
 #include <filesystem>
 #include <stdexcept>
 
-#include "files/atomic_file.h"
-#include "wire/identifiers.h"
-#include "wire/limits.h"
+#include "common/files/atomic_file.h"
+#include "common/wire/identifiers.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 

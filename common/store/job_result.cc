@@ -1,4 +1,4 @@
-#include "store/job_result.h"
+#include "common/store/job_result.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "store/legacy_argv.h"
+#include "common/store/legacy_argv.h"
 
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
-#include "campaign/job.h"
+#include "common/job/job.h"
 
 namespace rlpos {
 

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

@@ -1,17 +1,17 @@
-#include "store/results_store.h"
+#include "common/store/results_store.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-#include "campaign/job_content.h"
-#include "scenario/placement_json.h"
-#include "store/artifact_files.h"
-#include "store/job_result.h"
-#include "store/schema.h"
-#include "store/sqlite_db.h"
-#include "store/store_error.h"
+#include "common/campaign/job_content.h"
+#include "common/scenario/placement_json.h"
+#include "common/store/artifact_files.h"
+#include "common/store/job_result.h"
+#include "common/store/schema.h"
+#include "common/store/sqlite_db.h"
+#include "common/store/store_error.h"
 
 namespace rlpos {
 namespace {

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "campaign/expansion.h"
-#include "provenance/provenance.h"
-#include "wire/artifacts.h"
+#include "common/campaign/expansion.h"
+#include "common/provenance/provenance.h"
+#include "common/wire/artifacts.h"
 
 namespace rlpos {
 

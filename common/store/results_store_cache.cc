@@ -1,9 +1,9 @@
 // The result cache of ResultsStore: jobs of the same content (campaign/job_content.h) give the
 // same result, so a job takes a succeeded one's result instead of running, and identical jobs
 // that would run at once run once.
-#include "store/results_store.h"
-#include "store/sqlite_db.h"
-#include "store/store_error.h"
+#include "common/store/results_store.h"
+#include "common/store/sqlite_db.h"
+#include "common/store/store_error.h"
 
 namespace rlpos {
 

@@ -1,6 +1,6 @@
 // What `status` and `run` show while a campaign runs: workers, timings, failed jobs.
-#include "store/results_store.h"
-#include "store/sqlite_db.h"
+#include "common/store/results_store.h"
+#include "common/store/sqlite_db.h"
 
 namespace rlpos {
 

@@ -1,7 +1,7 @@
-#include "store/schema.h"
+#include "common/store/schema.h"
 
-#include "store/legacy_argv.h"
-#include "store/store_error.h"
+#include "common/store/legacy_argv.h"
+#include "common/store/store_error.h"
 
 namespace rlpos {
 namespace {

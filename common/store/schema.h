@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "store/sqlite_db.h"
+#include "common/store/sqlite_db.h"
 
 namespace rlpos {
 

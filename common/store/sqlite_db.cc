@@ -1,10 +1,10 @@
-#include "store/sqlite_db.h"
+#include "common/store/sqlite_db.h"
 
 #include <sqlite3.h>
 
 #include <utility>
 
-#include "store/store_error.h"
+#include "common/store/store_error.h"
 
 namespace rlpos {
 

@@ -1,10 +1,10 @@
-#include "wire/artifacts.h"
+#include "common/wire/artifacts.h"
 
 #include <algorithm>
 #include <set>
 
-#include "hash/sha256.h"
-#include "wire/limits.h"
+#include "common/hash/sha256.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "wire/identifiers.h"
+#include "common/wire/identifiers.h"
 
 namespace rlpos::wire {
 namespace {

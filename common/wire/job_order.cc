@@ -1,15 +1,15 @@
-#include "wire/job_order.h"
+#include "common/wire/job_order.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "config/config_error.h"
-#include "config/number_text.h"
-#include "scenario/scenario_checks.h"
-#include "scenario/scenario_parser.h"
-#include "wire/identifiers.h"
-#include "wire/json_text.h"
-#include "wire/limits.h"
+#include "common/config/config_error.h"
+#include "common/scenario/number_text.h"
+#include "common/scenario/scenario_checks.h"
+#include "common/scenario/scenario_parser.h"
+#include "common/wire/identifiers.h"
+#include "common/wire/json_text.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 

@@ -1,8 +1,8 @@
-#include "wire/json_text.h"
+#include "common/wire/json_text.h"
 
 #include <stdexcept>
 
-#include "wire/limits.h"
+#include "common/wire/limits.h"
 
 namespace rlpos::wire {
 

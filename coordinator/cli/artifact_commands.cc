@@ -7,12 +7,12 @@
 #include <iostream>
 #include <sstream>
 
-#include "cli/campaign_commands.h"
-#include "files/atomic_file.h"
-#include "hash/sha256.h"
-#include "store/artifact_files.h"
-#include "store/results_store.h"
-#include "store/store_error.h"
+#include "coordinator/cli/campaign_commands.h"
+#include "common/files/atomic_file.h"
+#include "common/hash/sha256.h"
+#include "common/store/artifact_files.h"
+#include "common/store/results_store.h"
+#include "common/store/store_error.h"
 
 namespace rlpos {
 namespace {

@@ -1,4 +1,4 @@
-#include "cli/campaign_client.h"
+#include "coordinator/cli/campaign_client.h"
 
 #include <unistd.h>
 
@@ -6,10 +6,10 @@
 #include <random>
 #include <thread>
 
-#include "dds/message_checks.h"
-#include "dds/topics.h"
-#include "dds/wait_set.h"
-#include "process/host_name.h"
+#include "idl/dds/message_checks.h"
+#include "idl/dds/topics.h"
+#include "idl/dds/wait_set.h"
+#include "common/process/host_name.h"
 
 namespace rlpos {
 namespace {

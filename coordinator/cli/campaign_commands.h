@@ -3,9 +3,9 @@
 // (rlpos_campaign.cc turns them into one line and the code below).
 #include <string>
 
-#include "campaign/expansion.h"
-#include "dds/dds_config.h"
-#include "store/results_store.h"
+#include "common/campaign/expansion.h"
+#include "idl/dds/dds_config.h"
+#include "common/store/results_store.h"
 
 namespace rlpos {
 

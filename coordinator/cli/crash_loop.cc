@@ -1,6 +1,6 @@
-#include "cli/crash_loop.h"
+#include "coordinator/cli/crash_loop.h"
 
-#include "config/number_text.h"
+#include "common/scenario/number_text.h"
 
 namespace rlpos {
 

@@ -16,21 +16,21 @@
 #include <random>
 #include <thread>
 
-#include "campaign/expansion.h"
-#include "cli/campaign_client.h"
-#include "cli/campaign_commands.h"
-#include "cli/crash_loop.h"
-#include "cli/progress_text.h"
-#include "config/number_text.h"
-#include "process/child_process.h"
-#include "process/executable_path.h"
-#include "process/file_lock.h"
-#include "process/stop_signal.h"
-#include "reporting/campaign_summary.h"
-#include "reporting/report_writer.h"
-#include "reporting/results_format.h"
-#include "store/results_store.h"
-#include "wire/campaign_request.h"
+#include "common/campaign/expansion.h"
+#include "coordinator/cli/campaign_client.h"
+#include "coordinator/cli/campaign_commands.h"
+#include "coordinator/cli/crash_loop.h"
+#include "coordinator/cli/progress_text.h"
+#include "common/scenario/number_text.h"
+#include "common/process/child_process.h"
+#include "common/process/executable_path.h"
+#include "common/process/file_lock.h"
+#include "common/process/stop_signal.h"
+#include "coordinator/reporting/campaign_summary.h"
+#include "coordinator/reporting/report_writer.h"
+#include "coordinator/reporting/results_format.h"
+#include "common/store/results_store.h"
+#include "common/campaign/campaign_request.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-#include "cli/progress_text.h"
+#include "coordinator/cli/progress_text.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,16 +3,16 @@
 #include <iostream>
 #include <thread>
 
-#include "cli/campaign_commands.h"
-#include "cli/progress_text.h"
-#include "process/executable_path.h"
-#include "process/stop_signal.h"
-#include "reporting/campaign_summary.h"
-#include "reporting/report_writer.h"
-#include "reporting/results_format.h"
-#include "reporting/uav_summary.h"
-#include "store/results_store.h"
-#include "store/store_error.h"
+#include "coordinator/cli/campaign_commands.h"
+#include "coordinator/cli/progress_text.h"
+#include "common/process/executable_path.h"
+#include "common/process/stop_signal.h"
+#include "coordinator/reporting/campaign_summary.h"
+#include "coordinator/reporting/report_writer.h"
+#include "coordinator/reporting/results_format.h"
+#include "coordinator/reporting/uav_summary.h"
+#include "common/store/results_store.h"
+#include "common/store/store_error.h"
 
 namespace rlpos {
 namespace {

@@ -2,10 +2,10 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "campaign/campaign_spec.h"
-#include "campaign/expansion.h"
-#include "cli/campaign_client.h"
-#include "cli/campaign_commands.h"
+#include "common/campaign/campaign_spec.h"
+#include "common/campaign/expansion.h"
+#include "coordinator/cli/campaign_client.h"
+#include "coordinator/cli/campaign_commands.h"
 
 namespace rlpos {
 namespace {

@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <iostream>
 
-#include "cli/campaign_commands.h"
-#include "dds/security/security_check.h"
-#include "dds/security/security_layout.h"
-#include "dds/security/security_setup.h"
+#include "coordinator/cli/campaign_commands.h"
+#include "idl/dds/security/security_check.h"
+#include "idl/dds/security/security_layout.h"
+#include "idl/dds/security/security_setup.h"
 
 namespace rlpos {
 

@@ -1,18 +1,18 @@
-#include "daemon/coordinator_daemon.h"
+#include "coordinator/daemon/coordinator_daemon.h"
 
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "daemon/scenario_documents.h"
-#include "dds/message_checks.h"
-#include "dds/topics.h"
-#include "dds/wait_set.h"
-#include "logging/log.h"
-#include "process/stop_signal.h"
-#include "store/store_error.h"
-#include "wire/json_text.h"
-#include "wire/limits.h"
+#include "coordinator/daemon/scenario_documents.h"
+#include "idl/dds/message_checks.h"
+#include "idl/dds/topics.h"
+#include "idl/dds/wait_set.h"
+#include "common/logging/log.h"
+#include "common/process/stop_signal.h"
+#include "common/store/store_error.h"
+#include "common/wire/json_text.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 

@@ -21,13 +21,13 @@
 #include <set>
 #include <string>
 
-#include "dds/messages.h"
-#include "dds/participant.h"
-#include "logging/drop_log.h"
-#include "process/file_lock.h"
-#include "scheduling/scheduler.h"
-#include "store/results_store.h"
-#include "wire/campaign_request.h"
+#include "idl/dds/messages.h"
+#include "idl/dds/participant.h"
+#include "common/logging/drop_log.h"
+#include "common/process/file_lock.h"
+#include "coordinator/scheduling/scheduler.h"
+#include "common/store/results_store.h"
+#include "common/campaign/campaign_request.h"
 
 namespace rlpos {
 

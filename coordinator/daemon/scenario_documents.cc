@@ -1,9 +1,9 @@
-#include "daemon/scenario_documents.h"
+#include "coordinator/daemon/scenario_documents.h"
 
 #include <stdexcept>
 
-#include "config/config_error.h"
-#include "scenario/scenario_parser.h"
+#include "common/config/config_error.h"
+#include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
 

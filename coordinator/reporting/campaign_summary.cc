@@ -1,9 +1,9 @@
-#include "reporting/campaign_summary.h"
+#include "coordinator/reporting/campaign_summary.h"
 
 #include <map>
 
-#include "reporting/run_groups.h"
-#include "stats/descriptive.h"
+#include "coordinator/reporting/run_groups.h"
+#include "common/stats/descriptive.h"
 
 namespace rlpos {
 namespace {

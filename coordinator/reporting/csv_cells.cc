@@ -1,4 +1,4 @@
-#include "reporting/csv_cells.h"
+#include "coordinator/reporting/csv_cells.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "reporting/distribution_curves.h"
+#include "coordinator/reporting/distribution_curves.h"
 
-#include "reporting/csv_cells.h"
-#include "reporting/run_groups.h"
-#include "stats/empirical_distribution.h"
+#include "coordinator/reporting/csv_cells.h"
+#include "coordinator/reporting/run_groups.h"
+#include "common/stats/empirical_distribution.h"
 
 namespace rlpos {
 namespace {

@@ -1,12 +1,12 @@
-#include "reporting/learning_curves.h"
+#include "coordinator/reporting/learning_curves.h"
 
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
-#include "reporting/csv_cells.h"
-#include "store/artifact_files.h"
+#include "coordinator/reporting/csv_cells.h"
+#include "common/store/artifact_files.h"
 
 namespace rlpos {
 namespace {

@@ -1,9 +1,9 @@
-#include "reporting/plot_script.h"
+#include "coordinator/reporting/plot_script.h"
 
 #include <filesystem>
 #include <sstream>
 
-#include "reporting/subprocess.h"
+#include "coordinator/reporting/subprocess.h"
 
 namespace rlpos {
 namespace {

@@ -1,6 +1,6 @@
-#include "reporting/report_markdown.h"
+#include "coordinator/reporting/report_markdown.h"
 
-#include "reporting/results_format.h"
+#include "coordinator/reporting/results_format.h"
 
 namespace rlpos {
 namespace {

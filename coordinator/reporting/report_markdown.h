@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "reporting/campaign_summary.h"
-#include "reporting/uav_summary.h"
-#include "store/results_store.h"
+#include "coordinator/reporting/campaign_summary.h"
+#include "coordinator/reporting/uav_summary.h"
+#include "common/store/results_store.h"
 
 namespace rlpos {
 

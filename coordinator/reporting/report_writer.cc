@@ -1,15 +1,15 @@
-#include "reporting/report_writer.h"
+#include "coordinator/reporting/report_writer.h"
 
 #include <filesystem>
 
-#include "files/atomic_file.h"
-#include "reporting/campaign_summary.h"
-#include "reporting/distribution_curves.h"
-#include "reporting/learning_curves.h"
-#include "reporting/plot_script.h"
-#include "reporting/report_markdown.h"
-#include "reporting/results_format.h"
-#include "reporting/uav_summary.h"
+#include "common/files/atomic_file.h"
+#include "coordinator/reporting/campaign_summary.h"
+#include "coordinator/reporting/distribution_curves.h"
+#include "coordinator/reporting/learning_curves.h"
+#include "coordinator/reporting/plot_script.h"
+#include "coordinator/reporting/report_markdown.h"
+#include "coordinator/reporting/results_format.h"
+#include "coordinator/reporting/uav_summary.h"
 
 namespace rlpos {
 

@@ -1,12 +1,12 @@
-#include "reporting/results_format.h"
+#include "coordinator/reporting/results_format.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
 
-#include "reporting/csv_cells.h"
-#include "reporting/text_table.h"
+#include "coordinator/reporting/csv_cells.h"
+#include "coordinator/reporting/text_table.h"
 
 namespace rlpos {
 namespace {

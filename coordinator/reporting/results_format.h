@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "reporting/campaign_summary.h"
+#include "coordinator/reporting/campaign_summary.h"
 
 namespace rlpos {
 

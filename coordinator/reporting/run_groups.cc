@@ -1,4 +1,4 @@
-#include "reporting/run_groups.h"
+#include "coordinator/reporting/run_groups.h"
 
 #include <algorithm>
 #include <cctype>
@@ -7,8 +7,8 @@
 #include <map>
 #include <tuple>
 
-#include "campaign/campaign_spec.h"
-#include "scenario/scenario_parser.h"
+#include "common/campaign/campaign_spec.h"
+#include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
 namespace {

@@ -1,4 +1,4 @@
-#include "reporting/subprocess.h"
+#include "coordinator/reporting/subprocess.h"
 
 #include <fcntl.h>
 #include <spawn.h>

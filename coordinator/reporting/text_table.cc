@@ -1,4 +1,4 @@
-#include "reporting/text_table.h"
+#include "coordinator/reporting/text_table.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "reporting/uav_summary.h"
+#include "coordinator/reporting/uav_summary.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <set>
 #include <tuple>
 
-#include "reporting/csv_cells.h"
-#include "reporting/run_groups.h"
-#include "reporting/text_table.h"
-#include "stats/descriptive.h"
+#include "coordinator/reporting/csv_cells.h"
+#include "coordinator/reporting/run_groups.h"
+#include "coordinator/reporting/text_table.h"
+#include "common/stats/descriptive.h"
 
 namespace rlpos {
 namespace {

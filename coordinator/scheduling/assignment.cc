@@ -1,4 +1,4 @@
-#include "scheduling/assignment.h"
+#include "coordinator/scheduling/assignment.h"
 
 #include <algorithm>
 #include <deque>

@@ -1,4 +1,4 @@
-#include "scheduling/scheduler.h"
+#include "coordinator/scheduling/scheduler.h"
 
 #include <algorithm>
 #include <map>

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "scheduling/assignment.h"
-#include "scheduling/timeouts.h"
-#include "store/results_store.h"
+#include "coordinator/scheduling/assignment.h"
+#include "coordinator/scheduling/timeouts.h"
+#include "common/store/results_store.h"
 
 namespace rlpos {
 

@@ -1,6 +1,6 @@
-#include "scheduling/timeouts.h"
+#include "coordinator/scheduling/timeouts.h"
 
-#include "config/number_text.h"
+#include "common/scenario/number_text.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "dds/dds_cli_options.h"
+#include "idl/dds/dds_cli_options.h"
 
 namespace rlpos {
 

@@ -4,7 +4,7 @@
 // RLPOS_IDENTITY), --insecure. The caller sets the role.
 #include <CLI/CLI.hpp>
 
-#include "dds/dds_config.h"
+#include "idl/dds/dds_config.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "dds/dds_config.h"
+#include "idl/dds/dds_config.h"
 
 #include <cstdio>
 #include <stdexcept>

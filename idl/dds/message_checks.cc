@@ -1,8 +1,8 @@
-#include "dds/message_checks.h"
+#include "idl/dds/message_checks.h"
 
-#include "hash/sha256.h"
-#include "wire/identifiers.h"
-#include "wire/limits.h"
+#include "common/hash/sha256.h"
+#include "common/wire/identifiers.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 namespace {

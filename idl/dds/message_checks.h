@@ -6,7 +6,7 @@
 // their scenario.
 #include <string>
 
-#include "dds/messages.h"
+#include "idl/dds/messages.h"
 
 namespace rlpos {
 

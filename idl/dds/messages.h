@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "provenance/provenance.h"
-#include "wire/artifacts.h"
-#include "wire/job_order.h"
+#include "common/provenance/provenance.h"
+#include "common/wire/artifacts.h"
+#include "common/wire/job_order.h"
 
 namespace rlpos::msg {
 

@@ -1,12 +1,12 @@
-#include "dds/participant.h"
+#include "idl/dds/participant.h"
 
 #include <dds/dds.h>
 
 #include <cstdio>
 #include <ctime>
 
-#include "dds/security/security_check.h"
-#include "dds/security/security_config.h"
+#include "idl/dds/security/security_check.h"
+#include "idl/dds/security/security_config.h"
 
 namespace rlpos {
 

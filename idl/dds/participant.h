@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "dds/dds_config.h"
+#include "idl/dds/dds_config.h"
 
 namespace rlpos {
 

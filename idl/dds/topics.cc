@@ -1,13 +1,13 @@
-#include "dds/topics.h"
+#include "idl/dds/topics.h"
 
 #include <dds/dds.h>
 
 #include <cstring>
 #include <memory>
 
-#include "dds/topic_names.h"
+#include "idl/dds/topic_names.h"
 #include "rlpos_messages.h"
-#include "wire/limits.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 namespace {

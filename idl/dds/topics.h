@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "dds/messages.h"
-#include "dds/participant.h"
+#include "idl/dds/messages.h"
+#include "idl/dds/participant.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "dds/wait_set.h"
+#include "idl/dds/wait_set.h"
 
 #include <dds/dds.h>
 

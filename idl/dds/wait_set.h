@@ -2,7 +2,7 @@
 // A Cyclone wait set over readers: a daemon sleeps until one of them has data or a timeout.
 #include <cstdint>
 
-#include "dds/participant.h"
+#include "idl/dds/participant.h"
 
 namespace rlpos {
 

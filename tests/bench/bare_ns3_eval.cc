@@ -17,7 +17,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "environment/obstacle_aware_propagation_loss_model.h"
+#include "worker/environment/obstacle_aware_propagation_loss_model.h"
 
 using namespace ns3;
 using nlohmann::json;

@@ -1,10 +1,10 @@
-#include "bench_scenario.h"
+#include "tests/bench/bench_scenario.h"
 
 #include <cstdio>
 #include <cstdlib>
 
-#include "config/config_error.h"
-#include "sim/scenario_loading.h"
+#include "common/config/config_error.h"
+#include "worker/environment/scenario_loading.h"
 
 std::optional<rlpos::Scenario> LoadBenchScenario(const char* path, const char* duration_s) {
   double duration = 0.0;

@@ -2,7 +2,7 @@
 // The scenario argument of the benches, with the one-line errors the commands give.
 #include <optional>
 
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 // Loads `path` and, if `duration_s` is given, measures that many seconds after the warm-up.
 // On a bad file or duration, prints "error: <what>: <problem>" and returns nothing.

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "bench_scenario.h"
-#include "environment/uav_network.h"
-#include "gym/analytic_evaluator.h"
-#include "scenario/scenario_checks.h"
+#include "tests/bench/bench_scenario.h"
+#include "worker/environment/uav_network.h"
+#include "worker/uav_env/analytic_evaluator.h"
+#include "common/scenario/scenario_checks.h"
 
 namespace {
 

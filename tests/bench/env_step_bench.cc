@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <string>
 
-#include "agent/dqn_agent.h"
-#include "gym/uav_positioning_env.h"
-#include "sim/scenario_loading.h"
+#include "worker/agent/dqn_agent.h"
+#include "worker/uav_env/uav_positioning_env.h"
+#include "worker/environment/scenario_loading.h"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "bench_scenario.h"
-#include "environment/uav_network.h"
+#include "tests/bench/bench_scenario.h"
+#include "worker/environment/uav_network.h"
 
 namespace {
 

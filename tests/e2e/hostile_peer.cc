@@ -23,7 +23,7 @@
 #include <thread>
 #include <vector>
 
-#include "dds/dds_config.h"
+#include "idl/dds/dds_config.h"
 #include "rlpos_messages.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/replay_buffer.h"
+#include "worker/agent/replay_buffer.h"
 
 namespace rlpos {
 

@@ -4,8 +4,8 @@
 // seed, spaces and transitions give the same network.
 #include <memory>
 
-#include "agent/agent.h"
-#include "scenario/scenario.h"
+#include "worker/agent/agent.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

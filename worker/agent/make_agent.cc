@@ -1,10 +1,10 @@
-#include "agent/make_agent.h"
+#include "worker/agent/make_agent.h"
 
 #include <stdexcept>
 
-#include "agent/dqn_agent.h"
-#include "agent/ppo_agent.h"
-#include "agent/sac_agent.h"
+#include "worker/agent/dqn_agent.h"
+#include "worker/agent/ppo_agent.h"
+#include "worker/agent/sac_agent.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "agent/mlp.h"
+#include "worker/agent/mlp.h"
 
 #include <algorithm>
 #include <filesystem>

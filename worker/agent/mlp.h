@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "gym/spaces.h"
+#include "worker/gym/spaces.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "agent/ppo_agent.h"
+#include "worker/agent/ppo_agent.h"
 
 #include <torch/torch.h>
 
@@ -8,8 +8,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "agent/mlp.h"
-#include "agent/running_moments.h"
+#include "worker/agent/mlp.h"
+#include "worker/agent/running_moments.h"
 
 namespace rlpos {
 namespace {

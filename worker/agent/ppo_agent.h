@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "agent/agent.h"
-#include "scenario/scenario.h"
+#include "worker/agent/agent.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

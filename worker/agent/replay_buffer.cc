@@ -1,4 +1,4 @@
-#include "agent/replay_buffer.h"
+#include "worker/agent/replay_buffer.h"
 
 #include <stdexcept>
 

@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "gym/spaces.h"
+#include "worker/gym/spaces.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "agent/running_moments.h"
+#include "worker/agent/running_moments.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "agent/sac_agent.h"
+#include "worker/agent/sac_agent.h"
 
 #include <torch/torch.h>
 
@@ -7,8 +7,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "agent/mlp.h"
-#include "agent/running_moments.h"
+#include "worker/agent/mlp.h"
+#include "worker/agent/running_moments.h"
 
 namespace rlpos {
 namespace {

@@ -1,4 +1,4 @@
-#include "agent/trainer.h"
+#include "worker/agent/trainer.h"
 
 #include <algorithm>
 #include <optional>

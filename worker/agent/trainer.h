@@ -8,9 +8,9 @@
 #include <functional>
 #include <vector>
 
-#include "agent/agent.h"
-#include "gym/env.h"
-#include "scenario/scenario.h"
+#include "worker/agent/agent.h"
+#include "worker/gym/env.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "daemon/job_attempt.h"
+#include "worker/daemon/job_attempt.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,10 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "config/number_text.h"
-#include "daemon/sim_command.h"
-#include "hash/sha256.h"
-#include "wire/limits.h"
+#include "common/scenario/number_text.h"
+#include "worker/daemon/sim_command.h"
+#include "common/hash/sha256.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "process/child_process.h"
-#include "wire/artifacts.h"
-#include "wire/job_order.h"
+#include "common/process/child_process.h"
+#include "common/wire/artifacts.h"
+#include "common/wire/job_order.h"
 
 namespace rlpos {
 

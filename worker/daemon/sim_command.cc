@@ -1,8 +1,8 @@
-#include "daemon/sim_command.h"
+#include "worker/daemon/sim_command.h"
 
 #include <filesystem>
 
-#include "config/number_text.h"
+#include "common/scenario/number_text.h"
 
 namespace rlpos {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "wire/job_order.h"
+#include "common/wire/job_order.h"
 
 namespace rlpos {
 

@@ -1,17 +1,17 @@
-#include "daemon/worker_daemon.h"
+#include "worker/daemon/worker_daemon.h"
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 
-#include "dds/topics.h"
-#include "dds/wait_set.h"
-#include "logging/log.h"
-#include "process/host_name.h"
-#include "process/stop_signal.h"
-#include "wire/identifiers.h"
-#include "wire/limits.h"
+#include "idl/dds/topics.h"
+#include "idl/dds/wait_set.h"
+#include "common/logging/log.h"
+#include "common/process/host_name.h"
+#include "common/process/stop_signal.h"
+#include "common/wire/identifiers.h"
+#include "common/wire/limits.h"
 
 namespace rlpos {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "daemon/job_attempt.h"
-#include "dds/messages.h"
-#include "dds/participant.h"
-#include "logging/drop_log.h"
+#include "worker/daemon/job_attempt.h"
+#include "idl/dds/messages.h"
+#include "idl/dds/participant.h"
+#include "common/logging/drop_log.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "environment/association.h"
+#include "worker/environment/association.h"
 
 namespace rlpos {
 

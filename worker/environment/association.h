@@ -4,7 +4,7 @@
 // and the analytic model decide the same way.
 #include <vector>
 
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

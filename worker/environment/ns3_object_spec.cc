@@ -1,4 +1,4 @@
-#include "environment/ns3_object_spec.h"
+#include "worker/environment/ns3_object_spec.h"
 
 #include <ns3/object-factory.h>
 #include <ns3/pointer.h>
@@ -7,9 +7,9 @@
 #include <sstream>
 #include <vector>
 
-#include "config/config_error.h"
-#include "config/did_you_mean.h"
-#include "config/object_reader.h"
+#include "common/config/config_error.h"
+#include "common/config/did_you_mean.h"
+#include "common/config/object_reader.h"
 
 namespace rlpos {
 namespace {

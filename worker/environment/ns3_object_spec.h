@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

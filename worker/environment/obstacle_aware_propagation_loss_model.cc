@@ -1,4 +1,4 @@
-#include "environment/obstacle_aware_propagation_loss_model.h"
+#include "worker/environment/obstacle_aware_propagation_loss_model.h"
 
 #include <ns3/boolean.h>
 #include <ns3/buildings-channel-condition-model.h>

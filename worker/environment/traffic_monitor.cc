@@ -1,4 +1,4 @@
-#include "environment/traffic_monitor.h"
+#include "worker/environment/traffic_monitor.h"
 
 #include <ns3/callback.h>
 #include <ns3/simulator.h>

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "metrics/run_metrics.h"
+#include "common/metrics/run_metrics.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "environment/uav_network.h"
+#include "worker/environment/uav_network.h"
 
 #include <ns3/boolean.h>
 #include <ns3/building.h>
@@ -40,11 +40,11 @@
 #include <set>
 #include <stdexcept>
 
-#include "config/config_error.h"
-#include "environment/association.h"
-#include "environment/ns3_object_spec.h"
-#include "environment/traffic_monitor.h"
-#include "environment/wifi_channel_plan.h"
+#include "common/config/config_error.h"
+#include "worker/environment/association.h"
+#include "worker/environment/ns3_object_spec.h"
+#include "worker/environment/traffic_monitor.h"
+#include "worker/environment/wifi_channel_plan.h"
 
 namespace rlpos {
 namespace {

@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
-#include "metrics/run_metrics.h"
-#include "scenario/scenario.h"
+#include "common/metrics/run_metrics.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

@@ -1,12 +1,12 @@
-#include "environment/wifi_channel_plan.h"
+#include "worker/environment/wifi_channel_plan.h"
 
 #include <ns3/wifi-phy-operating-channel.h>
 
 #include <algorithm>
 #include <tuple>
 
-#include "config/config_error.h"
-#include "metrics/mcs_table.h"
+#include "common/config/config_error.h"
+#include "common/phy/mcs_table.h"
 
 namespace rlpos {
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "gym/spaces.h"
-#include "scenario/scenario.h"
+#include "worker/gym/spaces.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

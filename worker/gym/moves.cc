@@ -1,8 +1,8 @@
-#include "gym/moves.h"
+#include "worker/gym/moves.h"
 
 #include <algorithm>
 
-#include "scenario/scenario_checks.h"
+#include "common/scenario/scenario_checks.h"
 
 namespace rlpos {
 

@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "gym/env.h"
-#include "gym/spaces.h"
-#include "scenario/scenario.h"
+#include "worker/gym/env.h"
+#include "worker/gym/spaces.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

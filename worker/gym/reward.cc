@@ -1,4 +1,4 @@
-#include "gym/reward.h"
+#include "worker/gym/reward.h"
 
 #include <map>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "gym/spaces.h"
+#include "worker/gym/spaces.h"
 
 namespace rlpos {
 

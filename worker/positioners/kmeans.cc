@@ -1,4 +1,4 @@
-#include "positioners/kmeans.h"
+#include "worker/positioners/kmeans.h"
 
 #include <cmath>
 #include <limits>

@@ -5,7 +5,7 @@
 // iterations until no UE changes cluster.
 #include <vector>
 
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

@@ -1,4 +1,4 @@
-#include "positioners/positioners.h"
+#include "worker/positioners/positioners.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <numeric>
 #include <random>
 
-#include "environment/uav_network.h"
-#include "gym/analytic_evaluator.h"
-#include "gym/reward.h"
-#include "positioners/kmeans.h"
-#include "scenario/scenario_checks.h"
+#include "worker/environment/uav_network.h"
+#include "worker/uav_env/analytic_evaluator.h"
+#include "worker/gym/reward.h"
+#include "worker/positioners/kmeans.h"
+#include "common/scenario/scenario_checks.h"
 
 namespace rlpos {
 namespace {

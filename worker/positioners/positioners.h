@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "scenario/scenario.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

@@ -9,12 +9,12 @@
 #include <optional>
 #include <stdexcept>
 
-#include "config/config_error.h"
-#include "config/number_text.h"
-#include "environment/uav_network.h"
-#include "gym/uav_positioning_env.h"
-#include "positioners/positioners.h"
-#include "sim/scenario_loading.h"
+#include "common/config/config_error.h"
+#include "common/scenario/number_text.h"
+#include "worker/environment/uav_network.h"
+#include "worker/uav_env/uav_positioning_env.h"
+#include "worker/positioners/positioners.h"
+#include "worker/environment/scenario_loading.h"
 
 namespace py = pybind11;
 

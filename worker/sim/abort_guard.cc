@@ -1,4 +1,4 @@
-#include "sim/abort_guard.h"
+#include "worker/sim/abort_guard.h"
 
 #include <csignal>
 #include <cstring>

@@ -2,9 +2,12 @@
 // The rlpos-sim subcommands. Each returns the process exit code; bad input throws ConfigError.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "scenario/scenario.h"
+#include "common/logging/log.h"
+#include "common/scenario/scenario.h"
+#include "worker/environment/scenario_loading.h"
 
 namespace rlpos::sim {
 
@@ -19,8 +22,15 @@ struct CommonOptions {
   std::string log_level;
 };
 
-// Loads the scenario with `extra` overrides first, then the user's --set ones.
-Scenario LoadScenarioFor(const CommonOptions& options, std::vector<std::string> extra);
+// Loads the scenario with `extra` overrides first, then the user's --set ones. Inline: the
+// program and the RL module it loads both use it.
+inline Scenario LoadScenarioFor(const CommonOptions& options, std::vector<std::string> extra) {
+  std::vector<std::string> overrides = std::move(extra);
+  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  Scenario scenario = LoadScenario(options.scenario_file, overrides);
+  SetLogLevel(ParseLogLevel(options.log_level.empty() ? scenario.log_level : options.log_level));
+  return scenario;
+}
 
 struct EvalOptions {
   std::vector<std::string> positions;  // x,y,z per UAV

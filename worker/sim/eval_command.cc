@@ -2,11 +2,11 @@
 #include <cstdio>
 #include <iostream>
 
-#include "environment/uav_network.h"
-#include "logging/log.h"
-#include "sim/commands.h"
-#include "sim/metrics_report.h"
-#include "sim/scenario_loading.h"
+#include "worker/environment/uav_network.h"
+#include "common/logging/log.h"
+#include "worker/sim/commands.h"
+#include "worker/sim/metrics_report.h"
+#include "worker/environment/scenario_loading.h"
 
 namespace rlpos::sim {
 namespace {

@@ -1,11 +1,11 @@
-#include "sim/metrics_report.h"
+#include "worker/sim/metrics_report.h"
 
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <string>
 
-#include "config/number_text.h"
+#include "common/scenario/number_text.h"
 
 namespace rlpos {
 namespace {

@@ -1,8 +1,8 @@
 #pragma once
 #include <ostream>
 
-#include "metrics/run_metrics.h"
-#include "scenario/scenario.h"
+#include "common/metrics/run_metrics.h"
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 // Human-readable table of one run's metrics.

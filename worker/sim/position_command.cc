@@ -2,16 +2,16 @@
 #include <fstream>
 #include <iostream>
 
-#include "campaign/offsets.h"
-#include "config/config_error.h"
-#include "config/number_text.h"
-#include "gym/analytic_evaluator.h"
-#include "gym/reward.h"
-#include "positioners/positioners.h"
-#include "scenario/placement_json.h"
-#include "scenario/scenario_parser.h"
-#include "sim/commands.h"
-#include "sim/scenario_loading.h"
+#include "common/job/offsets.h"
+#include "common/config/config_error.h"
+#include "common/scenario/number_text.h"
+#include "worker/uav_env/analytic_evaluator.h"
+#include "worker/gym/reward.h"
+#include "worker/positioners/positioners.h"
+#include "common/scenario/placement_json.h"
+#include "common/scenario/scenario_parser.h"
+#include "worker/sim/commands.h"
+#include "worker/environment/scenario_loading.h"
 
 namespace rlpos::sim {
 

@@ -4,8 +4,8 @@
 // start-up alone costs more than 0.5 s per process.
 #include <string>
 
-#include "scenario/scenario.h"
-#include "sim/commands.h"
+#include "common/scenario/scenario.h"
+#include "worker/sim/commands.h"
 
 namespace rlpos::sim {
 

@@ -12,9 +12,9 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "config/config_error.h"
-#include "sim/abort_guard.h"
-#include "sim/commands.h"
+#include "common/config/config_error.h"
+#include "worker/sim/abort_guard.h"
+#include "worker/sim/commands.h"
 
 namespace {
 

@@ -2,10 +2,10 @@
 #include <cstdio>
 #include <iostream>
 
-#include "environment/uav_network.h"
-#include "metrics/mcs_table.h"
-#include "scenario/scenario_parser.h"
-#include "sim/commands.h"
+#include "worker/environment/uav_network.h"
+#include "common/phy/mcs_table.h"
+#include "common/scenario/scenario_parser.h"
+#include "worker/sim/commands.h"
 
 namespace rlpos::sim {
 

@@ -1,4 +1,4 @@
-#include "dds/security/pki.h"
+#include "idl/dds/security/pki.h"
 
 #include <openssl/bio.h>
 #include <openssl/bn.h>

@@ -1,12 +1,12 @@
-#include "dds/security/security_check.h"
+#include "idl/dds/security/security_check.h"
 
 #include <filesystem>
 #include <set>
 #include <system_error>
 #include <vector>
 
-#include "dds/security/pki.h"
-#include "dds/security/security_documents.h"
+#include "idl/dds/security/pki.h"
+#include "idl/dds/security/security_documents.h"
 
 namespace rlpos::security {
 

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "dds/dds_config.h"
-#include "dds/security/security_layout.h"
+#include "idl/dds/dds_config.h"
+#include "idl/dds/security/security_layout.h"
 
 namespace rlpos::security {
 

@@ -1,4 +1,4 @@
-#include "dds/security/security_config.h"
+#include "idl/dds/security/security_config.h"
 
 #include <filesystem>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // file: URIs.
 #include <string>
 
-#include "dds/security/security_layout.h"
+#include "idl/dds/security/security_layout.h"
 
 namespace rlpos::security {
 

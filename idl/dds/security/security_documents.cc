@@ -1,8 +1,8 @@
-#include "dds/security/security_documents.h"
+#include "idl/dds/security/security_documents.h"
 
 #include <vector>
 
-#include "dds/security/security_layout.h"
+#include "idl/dds/security/security_layout.h"
 
 namespace rlpos::security {
 

@@ -1,8 +1,8 @@
-#include "dds/security/security_layout.h"
+#include "idl/dds/security/security_layout.h"
 
 #include <stdexcept>
 
-#include "dds/topic_names.h"
+#include "idl/dds/topic_names.h"
 
 namespace rlpos::security {
 

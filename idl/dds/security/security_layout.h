@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "dds/dds_config.h"
+#include "idl/dds/dds_config.h"
 
 namespace rlpos::security {
 

@@ -1,4 +1,4 @@
-#include "dds/security/security_setup.h"
+#include "idl/dds/security/security_setup.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "dds/security/pki.h"
-#include "dds/security/security_documents.h"
-#include "dds/security/security_layout.h"
+#include "idl/dds/security/pki.h"
+#include "idl/dds/security/security_documents.h"
+#include "idl/dds/security/security_layout.h"
 
 namespace rlpos::security {
 

@@ -5,7 +5,7 @@
 #include <ctime>
 #include <string>
 
-#include "dds/dds_config.h"
+#include "idl/dds/dds_config.h"
 
 namespace rlpos::security {
 

@@ -1,0 +1,50 @@
+#include "common/phy/dcf_contention.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rlpos {
+namespace {
+
+int BackoffStages(int cw_min, int cw_max) {
+  return std::max(0, static_cast<int>(std::lround(std::log2((cw_max + 1.0) / (cw_min + 1.0)))));
+}
+
+// Bianchi's tau for a conditional collision probability p, in the form without the 0/0 at
+// p = 1/2: tau = 2 / (1 + W + p W sum_{k<m} (2p)^k), W = CWmin + 1, m backoff stages.
+double Tau(double p, double w, int stages) {
+  double sum = 0.0, term = 1.0;
+  for (int k = 0; k < stages; ++k, term *= 2 * p)
+    sum += term;
+  return 2.0 / (1.0 + w + p * w * sum);
+}
+
+}  // namespace
+
+double BackoffTau(double p, int cw_min, int cw_max) {
+  return Tau(p, cw_min + 1.0, BackoffStages(cw_min, cw_max));
+}
+
+DcfContention SaturatedDcf(double stations, int cw_min, int cw_max) {
+  const double n = std::max(1.0, stations);
+  const double w = cw_min + 1.0;
+  const int stages = BackoffStages(cw_min, cw_max);
+  // p = 1 - (1 - tau(p))^(n-1): the left side grows and the right side falls with p, so the
+  // fixed point is unique; bisection finds it.
+  double lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 100; ++k) {
+    const double p = 0.5 * (lo + hi);
+    const double rhs = 1.0 - std::pow(1.0 - Tau(p, w, stages), n - 1.0);
+    (rhs > p ? lo : hi) = p;
+  }
+  DcfContention c;
+  c.collision_probability = 0.5 * (lo + hi);
+  c.tau = Tau(c.collision_probability, w, stages);
+  const double idle = std::pow(1.0 - c.tau, n);
+  const double success = n * c.tau * std::pow(1.0 - c.tau, n - 1.0);
+  c.idle_slots_per_success = idle / success;
+  c.collisions_per_success = (1.0 - idle - success) / success;
+  return c;
+}
+
+}  // namespace rlpos

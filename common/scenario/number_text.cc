@@ -1,0 +1,31 @@
+#include "common/scenario/number_text.h"
+
+#include <charconv>
+#include <cstdio>
+#include <system_error>
+
+namespace rlpos {
+
+std::string FormatNumber(double x) {
+  // Shortest text that reads back as x: "50", "44.5", "0.1" (not "50.000000" nor "5e+01").
+  char buffer[32];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return error == std::errc() ? std::string(buffer, end) : std::to_string(x);
+}
+
+std::string FormatPosition(const Vec3& p) {
+  return FormatNumber(p.x) + "," + FormatNumber(p.y) + "," + FormatNumber(p.z);
+}
+
+std::string DescribePlacement(const Placement& placement) {
+  std::string text;
+  char buffer[96];
+  for (const auto& p : placement) {
+    std::snprintf(buffer, sizeof buffer, "%s(%.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x, p.y,
+                  p.z);
+    text += buffer;
+  }
+  return text;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,158 @@
+#include "common/scenario/scenario_parser.h"
+
+#include <gtest/gtest.h>
+
+#include "common/config/config_error.h"
+#include "tests/common/scenario/scenario_error.h"
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+
+json ScenarioB() { return ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json"); }
+
+TEST(ScenarioParser, ShippedScenariosParse) {
+  for (const char* name : {"a", "b", "c"}) {
+    const Scenario s = ParseScenario(
+        ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/" + name + ".json"));
+    EXPECT_FALSE(s.ues.empty()) << name;
+  }
+}
+
+TEST(ScenarioParser, DefaultsAreThePapersTableOne) {
+  const Scenario s = ParseScenario(json::parse(R"({"ues": [{"position": [10, 10, 1.5],
+                                                   "demand": {"mcs": 0}}]})"));
+  EXPECT_EQ(s.wifi.standard, "802.11ac");
+  EXPECT_EQ(s.wifi.channel, 50);
+  EXPECT_EQ(s.wifi.width_mhz, 160);
+  EXPECT_EQ(s.wifi.guard_interval_ns, 800);
+  EXPECT_DOUBLE_EQ(s.wifi.tx_power_dbm, 20.0);
+  EXPECT_DOUBLE_EQ(s.wifi.antenna_gain_dbi, 0.0);
+  EXPECT_DOUBLE_EQ(s.wifi.noise_floor_dbm, -85.0);
+  EXPECT_EQ(s.wifi.rate_manager.type, "ns3::IdealWifiManager");
+  EXPECT_EQ(s.traffic.protocol, "udp_cbr");
+  EXPECT_EQ(s.traffic.packet_size, 1400);
+  EXPECT_EQ(s.propagation.type, "ns3::ObstacleAwarePropagationLossModel");
+  EXPECT_EQ(s.propagation.attributes["LosModel"]["type"], "ns3::ItuR1411LosPropagationLossModel");
+  EXPECT_DOUBLE_EQ(s.ues[0].demand_mbps, 58.5);
+  EXPECT_DOUBLE_EQ(s.venue.width, 100.0);
+}
+
+TEST(ScenarioParser, DemandsOfScenarioC) {
+  const Scenario s =
+      ParseScenario(ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/c.json"));
+  ASSERT_EQ(s.ues.size(), 4u);
+  EXPECT_DOUBLE_EQ(s.ues[0].demand_mbps, 234.0);
+  EXPECT_DOUBLE_EQ(s.ues[1].demand_mbps, 175.5);
+  EXPECT_DOUBLE_EQ(s.ues[2].demand_mbps, 117.0);
+  EXPECT_DOUBLE_EQ(s.ues[3].demand_mbps, 58.5);
+}
+
+TEST(ScenarioParser, OverridesSetAnyField) {
+  json doc = ScenarioB();
+  ApplyOverrides(doc, {"wifi.mode=adhoc", "/simulation/run=7", "ues.1.demand={\"mbps\": 10}",
+                       "uav.position=[50, 35, 10]"});
+  const Scenario s = ParseScenario(doc);
+  EXPECT_EQ(s.wifi.mode, "adhoc");
+  EXPECT_EQ(s.simulation.run, 7u);
+  EXPECT_DOUBLE_EQ(s.ues[1].demand_mbps, 10.0);
+  EXPECT_DOUBLE_EQ(s.uavs[0].initial.y, 35.0);
+}
+
+TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {
+  json doc = ScenarioB();
+  ApplyOverrides(doc, AlgorithmOverrides("sac"));
+  ApplyOverrides(doc, {"agent.sac.alpha=0.1", "agent.ppo.epochs=3", "agent.eval_interval=10",
+                       "agent.ppo.anneal_learning_rate=true"});
+  const Scenario s = ParseScenario(doc);
+  EXPECT_EQ(s.agent.algorithm, "sac");
+  EXPECT_EQ(s.env.action_space, "continuous");
+  EXPECT_EQ(s.agent.sac.alpha, 0.1);
+  EXPECT_EQ(s.agent.ppo.epochs, 3);
+  EXPECT_EQ(s.agent.eval_interval, 10);
+  EXPECT_TRUE(s.agent.ppo.anneal_learning_rate);
+  EXPECT_EQ(ToJson(ParseScenario(ToJson(s))), ToJson(s));  // the sections round-trip
+  json back = ToJson(s);
+  ApplyOverrides(back, AlgorithmOverrides("ppo"));
+  EXPECT_EQ(ParseScenario(back).env.action_space, "discrete");
+}
+
+TEST(ScenarioParser, ToJsonRoundTrips) {
+  const Scenario s = ParseScenario(ScenarioB());
+  const Scenario again = ParseScenario(ToJson(s));
+  EXPECT_EQ(ToJson(again), ToJson(s));
+}
+
+TEST(ScenarioParser, MalformedJsonNamesLineAndColumn) {
+  try {
+    ParseJsonText("{\n  \"venue\": {\"width\": 100,,}\n}");
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(e.problem().find("malformed JSON at line 2"), std::string::npos) << e.problem();
+  }
+}
+
+TEST(ScenarioParser, MissingFileIsAConfigError) {
+  EXPECT_THROW(ReadJsonFile("/nonexistent/scenario.json"), ConfigError);
+}
+
+struct BadInput {
+  const char* name;
+  std::vector<std::string> overrides;
+  const char* expected;  // "<path>: <start of problem>"
+};
+
+class ScenarioParserBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(ScenarioParserBadInput, NamesPathAndProblem) {
+  const std::string error = ErrorOf(ScenarioB(), GetParam().overrides);
+  EXPECT_NE(error.find(GetParam().expected), std::string::npos)
+      << "got: \"" << error << "\", expected to contain: \"" << GetParam().expected << "\"";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ScenarioParserBadInput,
+    ::testing::Values(
+        BadInput{"UnknownTopLevelKey", {"wfi={}"}, "/wfi: unknown key \"wfi\"; did you mean \"wifi\"?"},
+        BadInput{"UnknownNestedKey", {"venue.widht=3"}, "/venue/widht: unknown key \"widht\"; did you mean \"width\"?"},
+        BadInput{"WrongType", {"venue.width=\"wide\""}, "/venue/width: expected a number, got a string"},
+        BadInput{"NegativeNumber", {"wifi.tx_power=-100"}, "/wifi/tx_power: must be >= -30"},
+        BadInput{"NegativeDuration", {"simulation.duration=-1"}, "/simulation/duration: must be positive"},
+        BadInput{"FractionalInteger", {"wifi.channel=50.5"}, "/wifi/channel: expected an integer"},
+        BadInput{"UnknownEnum", {"wifi.mode=adhok"}, "/wifi/mode: unknown value \"adhok\" (one of: adhoc, ap_sta); did you mean \"adhoc\"?"},
+        BadInput{"BadWidth", {"wifi.width=100"}, "/wifi/width: must be 20, 40, 80 or 160 MHz"},
+        BadInput{"BadGuardInterval", {"wifi.guard_interval=1600"}, "/wifi/guard_interval: 802.11ac guard interval must be 400 or 800 ns"},
+        BadInput{"NoiseBelowThermal", {"wifi.noise_floor=-100"}, "/wifi/noise_floor: is below the thermal noise"},
+        BadInput{"UeOutsideVenue", {"ues.2.position=[130, 50, 1.5]"}, "/ues/2/position: UE at (130, 50, 1.5) is outside the venue"},
+        BadInput{"UeInsideBuilding", {"ues.0.position=[50, 50, 1.5]"}, "/ues/0/position: UE at (50, 50, 1.5) is inside building 0 (\"tower\")"},
+        BadInput{"PositionNotTriple", {"ues.0.position=[1, 2]"}, "/ues/0/position: expected [x, y, z]"},
+        BadInput{"DemandBothForms", {"ues.0.demand={\"mbps\": 1, \"mcs\": 0}"}, "/ues/0/demand: give exactly one of"},
+        BadInput{"DemandMcsTooHigh", {"ues.0.demand={\"mcs\": 10}"}, "/ues/0/demand/mcs: must be in [0, 9]"},
+        BadInput{"BuildingOutsideVenue", {"buildings.1.x=[90, 110]"}, "/buildings/1: building \"north-block\" [90, 110]"},
+        BadInput{"BuildingTooTall", {"buildings.0.height=80"}, "/buildings/0: building \"tower\""},
+        BadInput{"OverlappingBuildings", {"buildings.4.x=[40, 50]", "buildings.4.y=[40, 50]"}, "/buildings/4: building \"west-house\" overlaps building 0 (\"tower\")"},
+        BadInput{"EmptyInterval", {"buildings.0.x=[55, 45]"}, "/buildings/0/x: min must be below max"},
+        BadInput{"ZoneExcludesInitial", {"uav.zone.z=[30, 60]"}, "/uav/zone: the zone [0, 100] x [0, 100] x [30, 60] excludes the initial position (50, 50, 25)"},
+        BadInput{"UavInsideBuilding", {"uav.position=[50, 50, 10]"}, "/uav/position: UAV at (50, 50, 10) is inside building 0"},
+        BadInput{"ZoneOutsideVenue", {"uav.zone.x=[-10, 100]"}, "/uav/zone: the zone reaches outside the venue"},
+        BadInput{"WarmupTooLong", {"simulation.warmup=20"}, "/simulation/warmup: must be shorter than the duration"},
+        BadInput{"NoUes", {"ues=[]"}, "/ues: expected a non-empty array"},
+        BadInput{"SpecWithoutType", {"propagation={\"attributes\": {}}"}, "/propagation/type: is required"},
+        BadInput{"SpecBadAttributeValue", {"propagation.attributes.Frequency=[1]"}, "/propagation/attributes/Frequency: expected a number, string, boolean"},
+        BadInput{"BadOverride", {"novalue"}, "--set novalue: expected path=value"},
+        BadInput{"UnknownAlgorithm", {"agent.algorithm=a2c"}, "/agent/algorithm: unknown value \"a2c\" (one of: dqn, ppo, sac)"},
+        BadInput{"SacOnDiscreteMoves", {"agent.algorithm=sac"}, "/agent/algorithm: sac needs env.action_space \"continuous\", not \"discrete\""},
+        BadInput{"DqnOnDisplacements", {"env.action_space=continuous"}, "/agent/algorithm: dqn needs env.action_space \"discrete\""},
+        BadInput{"UnknownActionSpace", {"env.action_space=box"}, "/env/action_space: unknown value \"box\""},
+        BadInput{"NegativeEvalInterval", {"agent.eval_interval=-1"}, "/agent/eval_interval: must be in [0, 1000000]"},
+        BadInput{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
+        BadInput{"PpoUnknownKey", {"agent.ppo.lamda=0.9"}, "/agent/ppo/lamda: unknown key \"lamda\""},
+        BadInput{"PpoAnnealNotABoolean", {"agent.ppo.anneal_learning_rate=1"}, "/agent/ppo/anneal_learning_rate: expected a boolean, got a number"},
+        BadInput{"PpoMoreMinibatchesThanSteps", {"agent.ppo.minibatches=300"}, "/agent/ppo/minibatches: must not exceed rollout_steps"},
+        BadInput{"SacNegativeAlpha", {"agent.algorithm=sac", "env.action_space=continuous", "agent.sac.alpha=-1"}, "/agent/sac/alpha: must not be negative, got -1"},
+        BadInput{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"}),
+    [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
+
+}  // namespace
+}  // namespace rlpos

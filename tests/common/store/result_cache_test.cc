@@ -1,0 +1,262 @@
+// The result cache: a job takes the result of a succeeded job of the same content instead of
+// running; identical jobs that would run at once run once; --no-cache runs everything.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <map>
+
+#include "common/campaign/job_content.h"
+#include "common/hash/sha256.h"
+#include "common/store/results_store.h"
+#include "tests/support/campaign_fixtures.h"
+
+namespace rlpos {
+namespace {
+
+using testing::AtJobPosition;
+using testing::EvalResult;
+using testing::PositionResult;
+
+class ResultCacheTest : public ::testing::Test {
+ protected:
+  ResultCacheTest() : store_(dir_.File("rlpos.db")) {}
+
+  // Where a train or position job's stand-in result puts the UAV: a place of its own for each
+  // positioner (an offset is 10 m from the trained position).
+  static Vec3 Produced(const ReadyJob& job) {
+    if (job.params.positioner == "baseline")
+      return {12, 12, 30};
+    if (job.params.positioner == "centroid")
+      return {24, 12, 30};
+    if (job.params.positioner == "oracle")
+      return {36, 12, 30};
+    return {50, 50, 30};
+  }
+  // Plays the workers: runs every ready job until none is left; trains and positions end where
+  // `produced` says, evals give a throughput of 100 + run. Returns how many jobs ran.
+  int RunAll(const std::function<Vec3(const ReadyJob&)>& produced = Produced) {
+    int ran = 0;
+    for (auto ready = store_.ListReady(); !ready.empty(); ready = store_.ListReady()) {
+      for (const auto& job : ready) {
+        EXPECT_TRUE(store_.MarkRunning(job.id, "w1", 0, job.attempt));
+        nlohmann::json result =
+            job.params.kind == JobKind::kEval
+                ? AtJobPosition(store_, job.id,
+                                EvalResult(*job.params.rng_run, 100.0 + *job.params.rng_run, 5))
+                : PositionResult(produced(job).x, produced(job).y, produced(job).z);
+        EXPECT_EQ(store_.RecordSuccess(job.id, job.attempt, result, "w1"), JobUpdate::kSucceeded)
+            << job.id;
+        ++ran;
+      }
+    }
+    return ran;
+  }
+  std::string Query(const std::string& sql) {
+    return testing::QueryOne(dir_.File("rlpos.db"), sql);
+  }
+  static ExpandedCampaign Named(const std::string& name, bool use_cache = true) {
+    CampaignSpec spec = testing::MiniSpec();
+    spec.name = name;
+    ExpandedCampaign campaign = ExpandCampaign(spec);
+    campaign.use_cache = use_cache;
+    return campaign;
+  }
+
+  testing::TempDir dir_;
+  ResultsStore store_;
+};
+
+TEST_F(ResultCacheTest, ACampaignUnderANewNameIsServedWholeAtSubmit) {
+  const ExpandedCampaign first = Named("first");
+  store_.Submit(first);
+  const int ran = RunAll();
+  EXPECT_EQ(ran, static_cast<int>(first.jobs.size()));
+
+  const ExpandedCampaign again = Named("again");
+  ASSERT_NE(again.id, first.id);
+  store_.Submit(again);
+  EXPECT_TRUE(store_.ListReady().empty());
+  const CampaignProgress progress = store_.Progress(again.id);
+  EXPECT_EQ(progress.succeeded, progress.total);
+  EXPECT_EQ(progress.cached, progress.total);
+  EXPECT_EQ(store_.Progress(first.id).cached, 0);
+  EXPECT_EQ(progress.state, "finished");
+  // Every row says where its result came from, and the metrics are the same.
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE campaign_id = '" + again.id +
+                  "' AND cached_from IS NULL"),
+            "0");
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs a JOIN jobs f ON f.id = a.cached_from WHERE "
+                  "a.campaign_id = '" +
+                  again.id + "' AND f.campaign_id = '" + first.id + "'"),
+            std::to_string(first.jobs.size()));
+  const auto metrics_first = store_.Metrics(first.id), metrics_again = store_.Metrics(again.id);
+  ASSERT_EQ(metrics_again.size(), metrics_first.size());
+  for (std::size_t i = 0; i < metrics_first.size(); ++i) {
+    EXPECT_EQ(metrics_again[i].label, metrics_first[i].label);
+    EXPECT_EQ(metrics_again[i].rng_run, metrics_first[i].rng_run);
+    EXPECT_EQ(metrics_again[i].aggregate_throughput_mbps,
+              metrics_first[i].aggregate_throughput_mbps);
+  }
+}
+
+TEST_F(ResultCacheTest, RetryTakesWhatAnotherCampaignComputedMeanwhile) {
+  const ExpandedCampaign stopped = Named("stopped");
+  store_.Submit(stopped);
+  store_.CancelCampaign(stopped.id);
+  const ExpandedCampaign done = Named("done");
+  store_.Submit(done);
+  EXPECT_EQ(RunAll(), static_cast<int>(done.jobs.size()));
+
+  EXPECT_EQ(store_.RetryFailed(stopped.id), static_cast<int>(stopped.jobs.size()));
+  EXPECT_TRUE(store_.ListReady().empty());  // nothing left to run
+  const CampaignProgress progress = store_.Progress(stopped.id);
+  EXPECT_EQ(progress.cached, progress.total);
+  EXPECT_EQ(progress.state, "finished");
+}
+
+TEST_F(ResultCacheTest, NoCacheRunsEveryJob) {
+  const ExpandedCampaign first = Named("first");
+  store_.Submit(first);
+  RunAll();
+  const ExpandedCampaign again = Named("again", false);
+  store_.Submit(again);
+  EXPECT_EQ(RunAll(), static_cast<int>(again.jobs.size()));
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE cached_from IS NOT NULL"), "0");
+}
+
+TEST_F(ResultCacheTest, IdenticalEvalsInACampaignRunOnce) {
+  // Two train seeds that end at the same position: their rl evals of one run are one content
+  // (the train seed only says where a position came from).
+  CampaignSpec spec = testing::MiniSpec();
+  spec.train.seeds = {1, 2};
+  spec.positioners = {"rl"};
+  const ExpandedCampaign campaign = ExpandCampaign(spec);
+  store_.Submit(campaign);
+  const int ran = RunAll();
+  // 2 scenarios x (2 trains + 2 runs of rl); rl@seed2's evals took rl's results.
+  EXPECT_EQ(ran, 2 * (2 + 2));
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE label = 'rl@seed2' AND cached_from IS NOT "
+                  "NULL AND state = 'succeeded'"),
+            "4");
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM metrics"), "8");
+}
+
+TEST_F(ResultCacheTest, AnotherPositionOrRunIsAnotherContent) {
+  CampaignSpec spec = testing::MiniSpec();
+  spec.train.seeds = {1, 2};
+  spec.positioners = {"rl"};
+  const ExpandedCampaign campaign = ExpandCampaign(spec);
+  store_.Submit(campaign);
+  // Seed 2's training ends elsewhere: nothing is shared.
+  const int ran = RunAll([](const ReadyJob& job) {
+    return Vec3{job.params.train_seed == 2u ? 55.0 : 50.0, 50, 30};
+  });
+  EXPECT_EQ(ran, static_cast<int>(campaign.jobs.size()));
+  EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE cached_from IS NOT NULL"), "0");
+}
+
+TEST_F(ResultCacheTest, AJobWaitingForATwinThatFailsRunsItself) {
+  const ExpandedCampaign first = Named("first");
+  const ExpandedCampaign again = Named("again");
+  store_.Submit(first);
+  store_.Submit(again);
+  // Every ready job of "again" waits for its twin in "first".
+  for (const auto& job : store_.ListReady())
+    EXPECT_EQ(job.campaign_id, first.id) << job.id;
+  const std::string train = first.id + "/train/B/seed1";
+  const std::string twin = again.id + "/train/B/seed1";
+  const int attempt = store_.GetJob(train)->attempt;
+  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, attempt));
+  store_.CancelCampaign(first.id);
+  bool listed = false;
+  for (const auto& job : store_.ListReady())
+    listed = listed || job.id == twin;
+  EXPECT_TRUE(listed);
+}
+
+TEST_F(ResultCacheTest, AWaitingJobIsServedWhenItsTwinSucceeds) {
+  const ExpandedCampaign first = Named("first");
+  const ExpandedCampaign again = Named("again");
+  store_.Submit(first);
+  store_.Submit(again);
+  const std::string train = first.id + "/train/B/seed1";
+  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, 1));
+  ASSERT_EQ(store_.RecordSuccess(train, 1, PositionResult(50, 50, 30), "w1", nullptr,
+                                 {{"policy.pt", Sha256Hex("weights"), "weights"}}),
+            JobUpdate::kSucceeded);
+  const auto served = store_.GetJob(again.id + "/train/B/seed1");
+  ASSERT_TRUE(served);
+  EXPECT_EQ(served->state, "succeeded");
+  EXPECT_EQ(Query("SELECT cached_from FROM jobs WHERE id = '" + again.id + "/train/B/seed1'"),
+            train);
+  // Its artifacts are the source's files.
+  const auto artifacts = store_.Artifacts(again.id);
+  ASSERT_EQ(artifacts.size(), 1u);
+  EXPECT_EQ(artifacts[0].path, train + "/policy.pt");
+  EXPECT_EQ(artifacts[0].cached_from, train);
+}
+
+TEST(JobContent, EveryFieldThatChangesARunChangesTheKey) {
+  JobParams train;
+  train.kind = JobKind::kTrain;
+  train.scenario = "B";
+  train.train_seed = 1;
+  train.fidelity = "analytic";
+  const std::string base = JobContentBase(train, "aa", "v1");
+  EXPECT_EQ(JobContentBase(train, "aa", "v1"), base);
+  EXPECT_NE(JobContentBase(train, "ab", "v1"), base);  // scenario document
+  EXPECT_NE(JobContentBase(train, "aa", "v2"), base);  // build
+  std::map<std::string, JobParams> changed;
+  changed["seed"] = train, changed["seed"].train_seed = 2;
+  changed["fidelity"] = train, changed["fidelity"].fidelity = "packet";
+  changed["episodes"] = train, changed["episodes"].train_episodes = 10;
+  changed["duration"] = train, changed["duration"].duration_s = 5;
+  changed["warmup"] = train, changed["warmup"].warmup_s = 1;
+  changed["overrides"] = train, changed["overrides"].overrides = {{"uav.step", "5"}};
+  changed["kind"] = train, changed["kind"].kind = JobKind::kPosition;
+  for (const auto& [what, params] : changed)
+    EXPECT_NE(JobContentBase(params, "aa", "v1"), base) << what;
+  // The scenario's name in its campaign is not content.
+  JobParams renamed = train;
+  renamed.scenario = "other";
+  EXPECT_EQ(JobContentBase(renamed, "aa", "v1"), base);
+}
+
+TEST(JobContent, AnEvalsKeyNeedsItsPositionButNotItsTrainSeed) {
+  JobParams eval;
+  eval.kind = JobKind::kEval;
+  eval.rng_run = 3;
+  eval.train_seed = 1;
+  const std::string base = JobContentBase(eval, "aa", "v1");
+  JobParams other_seed = eval;
+  other_seed.train_seed = 2;
+  EXPECT_EQ(JobContentBase(other_seed, "aa", "v1"), base);
+  JobParams other_run = eval;
+  other_run.rng_run = 4;
+  EXPECT_NE(JobContentBase(other_run, "aa", "v1"), base);
+  EXPECT_FALSE(JobContentKey(base, JobKind::kEval, std::nullopt));
+  const auto key = JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}});
+  ASSERT_TRUE(key);
+  // One UAV's key is what it was before placements: single-UAV results cached then still serve.
+  EXPECT_EQ(*key, Sha256Hex(base + "|10000000,20000000,30000000"));
+  EXPECT_EQ(JobContentKey(base, JobKind::kEval, Placement{{10 + 1e-9, 20, 30}}), key);
+  EXPECT_NE(JobContentKey(base, JobKind::kEval, Placement{{10.001, 20, 30}}), key);
+  EXPECT_EQ(JobContentKey(base, JobKind::kTrain, std::nullopt), base);
+}
+
+TEST(JobContent, APlacementsKeyHasEveryUavInOrder) {
+  JobParams eval;
+  eval.kind = JobKind::kEval;
+  eval.rng_run = 3;
+  const std::string base = JobContentBase(eval, "aa", "v1");
+  const auto two = JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}, {40, 50, 30}});
+  ASSERT_TRUE(two);
+  EXPECT_NE(two, JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}}));
+  EXPECT_NE(two, JobContentKey(base, JobKind::kEval, Placement{{40, 50, 30}, {10, 20, 30}}));
+  EXPECT_NE(two, JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}, {40, 50, 31}}));
+  EXPECT_EQ(two, JobContentKey(base, JobKind::kEval, Placement{{10, 20, 30}, {40, 50, 30 + 1e-9}}));
+  EXPECT_FALSE(JobContentKey(base, JobKind::kEval, Placement{}));
+}
+
+}  // namespace
+}  // namespace rlpos

@@ -1,0 +1,656 @@
+// Every message type through a Writer and a Reader of one loopback participant, and the QoS
+// contract of topics.h: disposal, transient-local history, writers that go without disposing,
+// the IDL's bounds, and which participant a sample came from. "Nothing else arrived" is checked
+// with a marker: one writer's samples arrive in the order it wrote them, so once a marker written
+// last has arrived, whatever came before it is all that ever will.
+#include "idl/dds/topics.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "idl/dds/wait_set.h"
+#include "tests/idl/dds/dds_test_support.h"
+
+namespace rlpos {
+namespace {
+
+using testing::AwaitData;
+using testing::AwaitSample;
+using testing::TakenBeforeMarker;
+using testing::WaitFor;
+
+class TopicsTest : public ::testing::Test {
+ protected:
+  TopicsTest() : participant_(testing::TestOptions()) {}
+
+  Participant participant_;
+};
+
+msg::WorkerStatus Status(const std::string& id, int busy) {
+  msg::WorkerStatus s;
+  s.worker_id = id;
+  s.host = "h\xc3\xb4te-" + id;  // UTF-8
+  s.pid = (std::int64_t{1} << 40) + busy;
+  s.slots = 4;
+  s.busy = busy;
+  for (int i = 0; i < busy; ++i)
+    s.jobs.push_back("c0ffee/eval/B/rl/run" + std::to_string(i) + "#2");
+  return s;
+}
+
+msg::JobAssignment Assignment(const std::string& job_id, int attempt, int slot = 0) {
+  msg::JobAssignment a;
+  a.worker_id = "w1";
+  a.slot = slot;
+  JobOrder& o = a.order;
+  o.job_id = job_id;
+  o.attempt = attempt;
+  o.campaign_id = "c0ffee";
+  o.timeout_s = 12.5;
+  o.params.kind = JobKind::kEval;
+  o.params.scenario = "B";
+  o.params.rng_run = 7;
+  o.params.train_seed = 3;
+  o.params.duration_s = 5;
+  o.params.warmup_s = 0;
+  o.params.overrides = {{"wifi.mode", "\"adhoc\""}, {"ues.0.demand", "12.5"}};
+  o.placement = Placement{{50, 35.5, 10}};
+  o.scenario_document = "{\"name\": \"B\", \"pad\": \"" + std::string(100000, 'x') + "\"}";
+  return a;
+}
+
+msg::JobAssignment PositionAssignment() {
+  msg::JobAssignment a = Assignment("c0ffee/position/C/centroid", 2);
+  a.worker_id = "w-\xc3\xa9";
+  a.order.params = JobParams{};
+  a.order.params.kind = JobKind::kPosition;
+  a.order.params.scenario = "C";
+  a.order.params.positioner = "centroid";
+  a.order.params.duration_s = 0.25;
+  a.order.params.overrides = {{"/ues/0/demand", "1e-3"}};
+  a.order.placement.reset();
+  a.order.scenario_document = "{}";
+  return a;
+}
+
+msg::JobAssignment TrainAssignment() {
+  msg::JobAssignment a = Assignment("job-t", 1);
+  a.order.params = JobParams{};
+  a.order.params.kind = JobKind::kTrain;
+  a.order.params.scenario = "C";
+  a.order.params.train_seed = 9;
+  a.order.params.fidelity = "packet";
+  a.order.params.train_episodes = 25;
+  a.order.placement.reset();
+  return a;
+}
+
+void ExpectSame(const msg::WorkerStatus& a, const msg::WorkerStatus& b) {
+  EXPECT_EQ(a.worker_id, b.worker_id);
+  EXPECT_EQ(a.host, b.host);
+  EXPECT_EQ(a.pid, b.pid);
+  EXPECT_EQ(a.slots, b.slots);
+  EXPECT_EQ(a.busy, b.busy);
+  EXPECT_EQ(a.jobs, b.jobs);
+}
+
+void ExpectSame(const msg::JobAssignment& a, const msg::JobAssignment& b) {
+  EXPECT_EQ(a.worker_id, b.worker_id);
+  EXPECT_EQ(a.slot, b.slot);
+  const JobOrder &x = a.order, &y = b.order;
+  EXPECT_EQ(x.job_id, y.job_id);
+  EXPECT_EQ(x.attempt, y.attempt);
+  EXPECT_EQ(x.campaign_id, y.campaign_id);
+  EXPECT_DOUBLE_EQ(x.timeout_s, y.timeout_s);
+  EXPECT_EQ(x.scenario_document, y.scenario_document);
+  EXPECT_EQ(x.params.kind, y.params.kind);
+  EXPECT_EQ(x.params.scenario, y.params.scenario);
+  EXPECT_EQ(x.params.rng_run, y.params.rng_run);
+  EXPECT_EQ(x.params.train_seed, y.params.train_seed);
+  EXPECT_EQ(x.params.fidelity, y.params.fidelity);
+  EXPECT_EQ(x.params.train_episodes, y.params.train_episodes);
+  EXPECT_EQ(x.params.positioner, y.params.positioner);
+  EXPECT_EQ(x.params.duration_s, y.params.duration_s);
+  EXPECT_EQ(x.params.warmup_s, y.params.warmup_s);
+  EXPECT_EQ(x.params.overrides, y.params.overrides);
+  ASSERT_EQ(x.placement.has_value(), y.placement.has_value());
+  if (x.placement) {
+    ASSERT_EQ(x.placement->size(), y.placement->size());
+    for (std::size_t i = 0; i < x.placement->size(); ++i) {
+      EXPECT_EQ((*x.placement)[i].x, (*y.placement)[i].x);
+      EXPECT_EQ((*x.placement)[i].y, (*y.placement)[i].y);
+      EXPECT_EQ((*x.placement)[i].z, (*y.placement)[i].z);
+    }
+  }
+}
+
+TEST_F(TopicsTest, WorkerStatusRoundTrip) {
+  Reader<msg::WorkerStatus> reader(participant_);
+  Writer<msg::WorkerStatus> writer(participant_);
+  const msg::WorkerStatus busy = Status("w1", 3), idle = Status("w2", 0);
+  writer.Write(busy);
+  writer.Write(idle);
+  const auto got = AwaitData(reader, 2);
+  ASSERT_EQ(got.size(), 2u);
+  ExpectSame(got[0], busy);
+  ExpectSame(got[1], idle);
+  EXPECT_EQ(got[0].jobs.size(), 3u);
+  EXPECT_TRUE(got[1].jobs.empty());
+}
+
+TEST_F(TopicsTest, JobAssignmentRoundTrip) {
+  Reader<msg::JobAssignment> reader(participant_);
+  Writer<msg::JobAssignment> writer(participant_);
+  const msg::JobAssignment sent = Assignment("c0ffee/eval/B/rl/run1", 3, 1023);
+  writer.Write(sent);
+  const auto got = AwaitData(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  ExpectSame(got[0], sent);
+}
+
+TEST_F(TopicsTest, AnEvalOfThreeUavsCarriesEachPositionInOrder) {
+  Reader<msg::JobAssignment> reader(participant_);
+  Writer<msg::JobAssignment> writer(participant_);
+  msg::JobAssignment a = Assignment("c0ffee/eval/urban3/rl/run2", 1);
+  a.order.placement = Placement{{10, 20, 30}, {40.25, 50, 60}, {70, 80, 90.5}};
+  writer.Write(a);
+  const auto got = AwaitData(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  ExpectSame(got[0], a);
+  ASSERT_EQ(got[0].order.placement->size(), 3u);
+  EXPECT_EQ((*got[0].order.placement)[1].x, 40.25);
+}
+
+TEST_F(TopicsTest, JobEventRoundTripEveryState) {
+  Reader<msg::JobEvent> reader(participant_);
+  Writer<msg::JobEvent> writer(participant_);
+  const std::vector<msg::JobState> states{msg::JobState::kStarted, msg::JobState::kProgress,
+                                          msg::JobState::kSucceeded, msg::JobState::kFailed};
+  std::vector<msg::JobEvent> sent;
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    msg::JobEvent e;
+    e.job_id = "job" + std::to_string(i);
+    e.attempt = static_cast<int>(i) + 2;
+    e.worker_id = "w" + std::to_string(i);
+    e.slot = static_cast<int>(i) * 341;  // up to 1023
+    e.state = states[i];
+    e.result_json = i == 2 ? R"({"position":[1.5,2,3]})" : "";
+    e.message = i == 3 ? "line one\nline \"two\" [exit code 1]" : "episode 3/10";
+    e.provenance = {"host-" + std::to_string(i),
+                    "v0.1-" + std::to_string(i) + "-gabc",
+                    "3.37",
+                    "1.13.0",
+                    "0.10.2",
+                    std::string(64, 'a' + static_cast<char>(i))};
+    writer.Write(e);
+    sent.push_back(e);
+  }
+  const auto got = AwaitData(reader, sent.size());
+  ASSERT_EQ(got.size(), sent.size());
+  for (std::size_t i = 0; i < sent.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(got[i].job_id, sent[i].job_id);
+    EXPECT_EQ(got[i].attempt, sent[i].attempt);
+    EXPECT_EQ(got[i].worker_id, sent[i].worker_id);
+    EXPECT_EQ(got[i].slot, sent[i].slot);
+    EXPECT_EQ(got[i].state, sent[i].state);
+    EXPECT_EQ(got[i].result_json, sent[i].result_json);
+    EXPECT_EQ(got[i].message, sent[i].message);
+    const Provenance &a = got[i].provenance, &b = sent[i].provenance;
+    EXPECT_EQ(std::tie(a.host, a.rlpos_version, a.ns3_version, a.torch_version,
+                       a.cyclonedds_version, a.scenario_sha256),
+              std::tie(b.host, b.rlpos_version, b.ns3_version, b.torch_version,
+                       b.cyclonedds_version, b.scenario_sha256));
+  }
+}
+
+TEST_F(TopicsTest, JobEventReaderKeepsEveryEventOfAJobInOrder) {
+  Reader<msg::JobEvent> reader(participant_);
+  Writer<msg::JobEvent> writer(participant_);
+  msg::JobEvent e;
+  e.job_id = "j";
+  for (auto state :
+       {msg::JobState::kStarted, msg::JobState::kProgress, msg::JobState::kSucceeded}) {
+    e.state = state;
+    writer.Write(e);
+  }
+  const auto got = AwaitData(reader, 3);
+  ASSERT_EQ(got.size(), 3u);
+  EXPECT_EQ(got[0].state, msg::JobState::kStarted);
+  EXPECT_EQ(got[1].state, msg::JobState::kProgress);
+  EXPECT_EQ(got[2].state, msg::JobState::kSucceeded);
+}
+
+TEST_F(TopicsTest, CampaignRequestRoundTripEveryKind) {
+  Reader<msg::CampaignRequest> reader(participant_);
+  Writer<msg::CampaignRequest> writer(participant_);
+  const std::vector<msg::RequestKind> kinds{msg::RequestKind::kSubmit, msg::RequestKind::kCancel,
+                                            msg::RequestKind::kRetry};
+  std::vector<msg::CampaignRequest> sent;
+  for (std::size_t i = 0; i < kinds.size(); ++i) {
+    msg::CampaignRequest r;
+    r.request_id = "req-" + std::to_string(i);
+    r.kind = kinds[i];
+    r.campaign_id = i == 0 ? "" : "c0ffee";
+    r.campaign_json = i == 0 ? R"({"id":"c0ffee","jobs":[]})" : "";
+    writer.Write(r);
+    sent.push_back(r);
+  }
+  const auto got = AwaitData(reader, sent.size());
+  ASSERT_EQ(got.size(), sent.size());
+  for (std::size_t i = 0; i < sent.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(got[i].request_id, sent[i].request_id);
+    EXPECT_EQ(got[i].kind, sent[i].kind);
+    EXPECT_EQ(got[i].campaign_id, sent[i].campaign_id);
+    EXPECT_EQ(got[i].campaign_json, sent[i].campaign_json);
+  }
+}
+
+TEST_F(TopicsTest, CampaignReplyRoundTrip) {
+  Reader<msg::CampaignReply> reader(participant_);
+  Writer<msg::CampaignReply> writer(participant_);
+  msg::CampaignReply ok;
+  ok.request_id = "req-1";
+  ok.ok = true;
+  ok.campaign_id = "c0ffee";
+  ok.jobs = 44;
+  ok.created = true;
+  msg::CampaignReply refused;
+  refused.request_id = "req-2";
+  refused.ok = false;
+  refused.jobs = -1;
+  refused.message = "results store x.db: no campaign \"nope\"";
+  writer.Write(ok);
+  writer.Write(refused);
+  const auto got = AwaitData(reader, 2);
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_EQ(got[0].request_id, "req-1");
+  EXPECT_TRUE(got[0].ok);
+  EXPECT_EQ(got[0].campaign_id, "c0ffee");
+  EXPECT_EQ(got[0].jobs, 44);
+  EXPECT_TRUE(got[0].created);
+  EXPECT_EQ(got[0].message, "");
+  EXPECT_EQ(got[1].request_id, "req-2");
+  EXPECT_FALSE(got[1].ok);
+  EXPECT_EQ(got[1].campaign_id, "");
+  EXPECT_EQ(got[1].jobs, -1);
+  EXPECT_FALSE(got[1].created);
+  EXPECT_EQ(got[1].message, refused.message);
+}
+
+TEST_F(TopicsTest, DisposeArrivesAsAnInvalidSampleWithTheKey) {
+  Reader<msg::JobAssignment> reader(participant_);
+  Writer<msg::JobAssignment> writer(participant_);
+  writer.Write(Assignment("job-a", 1, 0));
+  writer.Write(Assignment("job-b", 1, 1));
+  ASSERT_EQ(AwaitData(reader, 2).size(), 2u);
+
+  msg::JobAssignment key;
+  key.worker_id = "w1";
+  key.slot = 0;
+  writer.Dispose(key);
+  const auto disposed = AwaitSample(reader, [](const auto& r) { return !r.valid; });
+  ASSERT_TRUE(disposed.has_value());
+  EXPECT_EQ(disposed->state, InstanceState::kDisposed);
+  EXPECT_EQ(disposed->data.worker_id, "w1");
+  EXPECT_EQ(disposed->data.slot, 0);
+  EXPECT_EQ(disposed->data.order.job_id, "");  // only the key travels
+  EXPECT_TRUE(disposed->data.order.scenario_document.empty());
+  // job-b's slot is untouched: nothing of it came before a marker written after the disposal.
+  writer.Write(Assignment("job-marker", 1, 2));
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& a) { return a.order.job_id == "job-marker"; });
+  ASSERT_TRUE(before.has_value()) << "the marker did not arrive";
+  EXPECT_TRUE(before->empty()) << before->size() << " samples, the first of "
+                               << before->front().data.order.job_id;
+}
+
+TEST_F(TopicsTest, LateReaderGetsTheLastWorkerStatusPerWorker) {
+  Writer<msg::WorkerStatus> writer(participant_);
+  writer.Write(Status("w1", 1));
+  writer.Write(Status("w1", 2));  // keep last 1: replaces the first
+  writer.Write(Status("w2", 0));
+  Reader<msg::WorkerStatus> reader(participant_);
+  ASSERT_TRUE(WaitFor([&] { return writer.MatchedReaders() == 1; }));
+  // The history arrives before anything written after the match: the marker closes it.
+  writer.Write(Status("w-marker", 0));
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& s) { return s.worker_id == "w-marker"; });
+  ASSERT_TRUE(before.has_value()) << "the marker did not arrive";
+  std::vector<msg::WorkerStatus> got;
+  for (const auto& r : *before) {
+    EXPECT_TRUE(r.valid);
+    got.push_back(r.data);
+  }
+  ASSERT_EQ(got.size(), 2u);
+  const auto& w1 = got[0].worker_id == "w1" ? got[0] : got[1];
+  const auto& w2 = got[0].worker_id == "w1" ? got[1] : got[0];
+  ExpectSame(w1, Status("w1", 2));
+  ExpectSame(w2, Status("w2", 0));
+}
+
+TEST_F(TopicsTest, LateReaderGetsTheLastAssignment) {
+  Writer<msg::JobAssignment> assignments(participant_);
+  assignments.Write(Assignment("job-a", 1));
+  assignments.Write(Assignment("job-a", 2));
+  Reader<msg::JobAssignment> assignment_reader(participant_);
+  const auto a = AwaitData(assignment_reader, 1);
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].order.attempt, 2);
+}
+
+TEST_F(TopicsTest, EveryKindOfAssignmentRoundTrips) {
+  Reader<msg::JobAssignment> reader(participant_);
+  Writer<msg::JobAssignment> writer(participant_);
+  const std::vector<msg::JobAssignment> sent{TrainAssignment(), PositionAssignment(),
+                                             Assignment("c0ffee/eval/B/rl/run7", 1, 1)};
+  for (const auto& a : sent)
+    writer.Write(a);
+  std::vector<Received<msg::JobAssignment>> got;
+  ASSERT_TRUE(AwaitSample(
+      reader, [&](const auto& r) { return r.data.order.job_id == sent.back().order.job_id; }, 5.0,
+      &got));
+  ASSERT_EQ(got.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_TRUE(got[i].valid);
+    EXPECT_EQ(got[i].decode_error, "");
+    ExpectSame(got[i].data, sent[i]);
+  }
+  // Only the fields of its kind travel: a train job has no position, a position job no seed.
+  EXPECT_FALSE(got[0].data.order.placement.has_value());
+  EXPECT_FALSE(got[1].data.order.params.train_seed.has_value());
+  EXPECT_EQ(got[1].data.order.params.fidelity, "");
+  EXPECT_FALSE(got[1].data.order.params.rng_run.has_value());
+}
+
+TEST_F(TopicsTest, CampaignRequestWithScenariosRoundTrip) {
+  Reader<msg::CampaignRequest> reader(participant_);
+  Writer<msg::CampaignRequest> writer(participant_);
+  msg::CampaignRequest r;
+  r.request_id = "req-scenarios";
+  r.kind = msg::RequestKind::kSubmit;
+  r.campaign_json = R"({"name": "m\u00e9", "scenarios": ["b.json", {"file": "c.json"}]})";
+  r.scenarios = {{"scenarios/b.json", R"({"name": "B", "venue": {"width": 100}})"},
+                 {"/abs/h\xc3\xb4te/c.json", ""},
+                 {"big.json", "{\"pad\": \"" + std::string(262144 - 11, 'x') + "\"}"}};
+  ASSERT_EQ(r.scenarios[2].document.size(), 262144u);  // exactly the bound
+  writer.Write(r);
+  const auto got = AwaitSample(reader, [](const auto& s) { return s.valid; });
+  ASSERT_TRUE(got.has_value());
+  EXPECT_EQ(got->decode_error, "");
+  EXPECT_EQ(got->data.request_id, r.request_id);
+  EXPECT_EQ(got->data.kind, msg::RequestKind::kSubmit);
+  EXPECT_EQ(got->data.campaign_json, r.campaign_json);
+  ASSERT_EQ(got->data.scenarios.size(), r.scenarios.size());
+  for (std::size_t i = 0; i < r.scenarios.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(got->data.scenarios[i].file, r.scenarios[i].file);
+    EXPECT_EQ(got->data.scenarios[i].document, r.scenarios[i].document);
+  }
+}
+
+// Sets a field of `base` to a size (in bytes or elements) and writes it: at `bound` it is
+// written, one more throws DdsError.
+template <typename M, typename F>
+void ExpectBound(Participant& participant, const M& base, const char* field, std::size_t bound,
+                 F set) {
+  SCOPED_TRACE(field);
+  Writer<M> writer(participant);
+  M at = base, over = base;
+  set(at, bound);
+  set(over, bound + 1);
+  EXPECT_NO_THROW(writer.Write(at));
+  EXPECT_THROW(writer.Write(over), DdsError);
+}
+
+TEST_F(TopicsTest, WriteRefusesEveryFieldOverItsIdlBound) {
+  const auto text = [](std::size_t n) { return std::string(n, 'a'); };
+  const msg::JobAssignment a = Assignment("c0ffee/j", 1);
+  ExpectBound(participant_, a, "job_id", 256, [&](auto& m, auto n) { m.order.job_id = text(n); });
+  ExpectBound(participant_, a, "worker_id", 128, [&](auto& m, auto n) { m.worker_id = text(n); });
+  ExpectBound(participant_, a, "campaign_id", 64,
+              [&](auto& m, auto n) { m.order.campaign_id = text(n); });
+  ExpectBound(participant_, a, "scenario", 128,
+              [&](auto& m, auto n) { m.order.params.scenario = text(n); });
+  ExpectBound(participant_, a, "scenario_document", 262144,
+              [&](auto& m, auto n) { m.order.scenario_document = text(n); });
+  ExpectBound(participant_, a, "overrides", 64, [&](auto& m, auto n) {
+    m.order.params.overrides.assign(n, ScenarioOverride{"wifi.mode", "adhoc"});
+  });
+  ExpectBound(participant_, a, "override path", 128, [&](auto& m, auto n) {
+    m.order.params.overrides = {{text(n), "1"}};
+  });
+  ExpectBound(participant_, a, "override value", 4096, [&](auto& m, auto n) {
+    m.order.params.overrides = {{"x", text(n)}};
+  });
+  ExpectBound(participant_, a, "positions", 8,
+              [&](auto& m, auto n) { m.order.placement = Placement(n, Vec3{1, 2, 3}); });
+
+  const msg::WorkerStatus s = Status("w1", 1);
+  ExpectBound(participant_, s, "status worker_id", 128,
+              [&](auto& m, auto n) { m.worker_id = text(n); });
+  ExpectBound(participant_, s, "host", 128, [&](auto& m, auto n) { m.host = text(n); });
+  ExpectBound(participant_, s, "jobs", 1024, [&](auto& m, auto n) { m.jobs.assign(n, "j#1"); });
+  ExpectBound(participant_, s, "job key", 300, [&](auto& m, auto n) { m.jobs = {text(n)}; });
+
+  msg::JobEvent e;
+  e.job_id = "j";
+  ExpectBound(participant_, e, "event job_id", 256, [&](auto& m, auto n) { m.job_id = text(n); });
+  ExpectBound(participant_, e, "event worker_id", 128,
+              [&](auto& m, auto n) { m.worker_id = text(n); });
+  ExpectBound(participant_, e, "result_json", 262144,
+              [&](auto& m, auto n) { m.result_json = text(n); });
+  ExpectBound(participant_, e, "message", 1024, [&](auto& m, auto n) { m.message = text(n); });
+
+  msg::CampaignRequest r;
+  r.request_id = "req";
+  ExpectBound(participant_, r, "request_id", 256, [&](auto& m, auto n) { m.request_id = text(n); });
+  ExpectBound(participant_, r, "request campaign_id", 64,
+              [&](auto& m, auto n) { m.campaign_id = text(n); });
+  ExpectBound(participant_, r, "campaign_json", 65536,
+              [&](auto& m, auto n) { m.campaign_json = text(n); });
+  ExpectBound(participant_, r, "scenarios", 32, [&](auto& m, auto n) {
+    m.scenarios.assign(n, msg::ScenarioFile{"b.json", "{}"});
+  });
+  ExpectBound(participant_, r, "scenario file", 512, [&](auto& m, auto n) {
+    m.scenarios = {{text(n), "{}"}};
+  });
+  ExpectBound(participant_, r, "scenario document", 262144, [&](auto& m, auto n) {
+    m.scenarios = {{"b.json", text(n)}};
+  });
+
+  msg::CampaignReply reply;
+  reply.request_id = "req";
+  ExpectBound(participant_, reply, "reply request_id", 256,
+              [&](auto& m, auto n) { m.request_id = text(n); });
+  ExpectBound(participant_, reply, "reply campaign_id", 64,
+              [&](auto& m, auto n) { m.campaign_id = text(n); });
+}
+
+TEST_F(TopicsTest, WriteRefusesANulInsideAString) {
+  Writer<msg::JobAssignment> writer(participant_);
+  msg::JobAssignment a = Assignment("c0ffee/j", 1);
+  a.order.job_id = std::string("c0ffee/j") + '\0' + "/x";
+  EXPECT_THROW(writer.Write(a), DdsError);
+  a = Assignment("c0ffee/j", 1);
+  a.order.params.overrides = {{"name", std::string("B") + '\0' + "C"}};
+  EXPECT_THROW(writer.Write(a), DdsError);
+}
+
+TEST_F(TopicsTest, ALongReplyMessageIsCutToItsBound) {
+  Reader<msg::CampaignReply> reader(participant_);
+  Writer<msg::CampaignReply> writer(participant_);
+  msg::CampaignReply reply;
+  reply.request_id = "req-long";
+  reply.message = std::string(1024, 'm') + "and the rest";
+  writer.Write(reply);
+  const auto got = AwaitData(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].message, std::string(1024, 'm'));
+}
+
+TEST_F(TopicsTest, WriterParticipantTellsWhichParticipantWrote) {
+  // A second participant of this process: with neither config nor tag it joins the domain that
+  // participant_ created (its loopback config), as a participant of its own.
+  DdsOptions same_domain;
+  same_domain.domain = participant_.options().domain;
+  same_domain.insecure = true;  // no config of its own: it never leaves participant_'s loopback
+  Participant other(same_domain);
+  Reader<msg::JobEvent> reader(participant_);
+  Writer<msg::JobEvent> first(participant_), second(participant_), foreign(other);
+  ASSERT_TRUE(WaitFor([&] { return reader.MatchedWriters() == 3; }));
+  std::map<std::string, Writer<msg::JobEvent>*> writers{
+      {"first", &first}, {"second", &second}, {"foreign", &foreign}};
+  for (const auto& [name, writer] : writers) {
+    msg::JobEvent e;
+    e.job_id = name;
+    writer->Write(e);
+  }
+  std::map<std::string, std::uint64_t> handle;
+  ASSERT_TRUE(WaitFor([&] {
+    for (const auto& r : reader.Take())
+      handle[r.data.job_id] = r.writer;
+    return handle.size() == 3;
+  }));
+  EXPECT_NE(handle["first"], handle["second"]);  // two writers ...
+  const std::string mine = reader.WriterParticipant(handle["first"]);
+  EXPECT_EQ(mine.size(), 32u) << mine;                          // 16 bytes in hex
+  EXPECT_EQ(reader.WriterParticipant(handle["second"]), mine);  // ... of one participant
+  const std::string theirs = reader.WriterParticipant(handle["foreign"]);
+  EXPECT_EQ(theirs.size(), 32u) << theirs;
+  EXPECT_NE(theirs, mine);
+  EXPECT_TRUE(reader.HasMatchedWriterOf(mine));
+  EXPECT_TRUE(reader.HasMatchedWriterOf(theirs));
+  EXPECT_FALSE(reader.HasMatchedWriterOf(std::string(32, '0')));
+  EXPECT_EQ(reader.WriterParticipant(0), "");  // no such writer
+}
+
+TEST_F(TopicsTest, HasMatchedWriterOfSeesPastManyOtherWriters) {
+  DdsOptions same_domain;
+  same_domain.domain = participant_.options().domain;
+  same_domain.insecure = true;  // no config of its own: it never leaves participant_'s loopback
+  Participant other(same_domain);
+  Reader<msg::JobAssignment> reader(participant_);
+  std::vector<std::unique_ptr<Writer<msg::JobAssignment>>> crowd;
+  for (int i = 0; i < 100; ++i)
+    crowd.push_back(std::make_unique<Writer<msg::JobAssignment>>(other));
+  Writer<msg::JobAssignment> mine(participant_);
+  ASSERT_TRUE(WaitFor([&] { return reader.MatchedWriters() == 101; }));
+  mine.Write(Assignment("c0ffee/j", 1));
+  const auto got = AwaitSample(reader, [](const auto& r) { return r.valid; });
+  ASSERT_TRUE(got.has_value());
+  const std::string guid = reader.WriterParticipant(got->writer);
+  ASSERT_FALSE(guid.empty());
+  // A coordinator stays followed however many other writers a peer adds to the topic.
+  EXPECT_TRUE(reader.HasMatchedWriterOf(guid));
+}
+
+TEST_F(TopicsTest, ReplyIsNotKeptForLateReaders) {
+  Writer<msg::CampaignReply> replies(participant_);
+  msg::CampaignReply reply;
+  reply.request_id = "req-9";
+  reply.ok = true;
+  replies.Write(reply);
+  replies.Unregister(reply);
+  Reader<msg::CampaignReply> reader(participant_);
+  ASSERT_TRUE(WaitFor([&] { return replies.MatchedReaders() == 1; }));
+  // A reply written once the reader is matched arrives; the earlier one was never kept (it
+  // would have come first).
+  reply.request_id = "req-10";
+  replies.Write(reply);
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& r) { return r.request_id == "req-10"; });
+  ASSERT_TRUE(before.has_value()) << "req-10 did not arrive";
+  EXPECT_TRUE(before->empty()) << before->front().data.request_id;
+}
+
+TEST_F(TopicsTest, CampaignRequestsAreVolatile) {
+  Writer<msg::CampaignRequest> writer(participant_);
+  msg::CampaignRequest early;
+  early.request_id = "early";
+  writer.Write(early);
+  Reader<msg::CampaignRequest> reader(participant_);
+  ASSERT_TRUE(WaitFor([&] { return writer.MatchedReaders() == 1; }));
+  msg::CampaignRequest late;
+  late.request_id = "late";
+  writer.Write(late);
+  msg::CampaignRequest marker;
+  marker.request_id = "marker";
+  writer.Write(marker);
+  const auto before =
+      TakenBeforeMarker(reader, [](const auto& r) { return r.request_id == "marker"; });
+  ASSERT_TRUE(before.has_value()) << "the marker did not arrive";
+  ASSERT_EQ(before->size(), 1u);
+  EXPECT_EQ(before->front().data.request_id, "late");
+}
+
+TEST_F(TopicsTest, DeletedAssignmentWriterDoesNotDispose) {
+  Reader<msg::JobAssignment> reader(participant_);
+  {
+    Writer<msg::JobAssignment> writer(participant_);
+    writer.Write(Assignment("job-a", 1));
+    const auto alive = AwaitSample(reader, [](const auto& r) { return r.valid; });
+    ASSERT_TRUE(alive.has_value());
+    EXPECT_EQ(alive->state, InstanceState::kAlive);
+  }
+  // A coordinator that stops: its workers must not read this as "stop the job".
+  const auto gone = AwaitSample(reader, [](const auto& r) { return !r.valid; });
+  ASSERT_TRUE(gone.has_value());
+  EXPECT_EQ(gone->state, InstanceState::kNoWriters);
+  EXPECT_EQ(gone->data.worker_id, "w1");
+  EXPECT_EQ(gone->data.slot, 0);
+}
+
+TEST_F(TopicsTest, DeletedWorkerStatusWriterDoesNotDispose) {
+  Reader<msg::WorkerStatus> reader(participant_);
+  {
+    Writer<msg::WorkerStatus> writer(participant_);
+    writer.Write(Status("w1", 1));
+    ASSERT_EQ(AwaitData(reader, 1).size(), 1u);
+  }
+  const auto gone = AwaitSample(reader, [](const auto& r) { return !r.valid; });
+  ASSERT_TRUE(gone.has_value());
+  EXPECT_EQ(gone->state, InstanceState::kNoWriters);
+  EXPECT_EQ(gone->data.worker_id, "w1");
+}
+
+TEST_F(TopicsTest, MatchedCounts) {
+  Writer<msg::JobEvent> writer(participant_);
+  EXPECT_EQ(writer.MatchedReaders(), 0);
+  {
+    Reader<msg::JobEvent> reader(participant_);
+    EXPECT_TRUE(WaitFor([&] { return writer.MatchedReaders() == 1; }));
+    EXPECT_TRUE(WaitFor([&] { return reader.MatchedWriters() == 1; }));
+    Reader<msg::JobEvent> second(participant_);
+    EXPECT_TRUE(WaitFor([&] { return writer.MatchedReaders() == 2; }));
+  }
+  EXPECT_TRUE(WaitFor([&] { return writer.MatchedReaders() == 0; }));
+}
+
+TEST_F(TopicsTest, WaitSetWakesOnData) {
+  Reader<msg::JobEvent> reader(participant_);
+  Writer<msg::JobEvent> writer(participant_);
+  WaitSet waits(participant_);
+  waits.Attach(reader.handle());
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_FALSE(waits.Wait(0.1));
+  EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(90));
+  msg::JobEvent e;
+  e.job_id = "j";
+  writer.Write(e);
+  EXPECT_TRUE(waits.Wait(5.0));
+  EXPECT_EQ(reader.Take().size(), 1u);
+  EXPECT_FALSE(waits.Wait(0.05));  // taken: nothing left to wake for
+  writer.Write(e);                 // ... until the next sample
+  EXPECT_TRUE(waits.Wait(5.0));
+  EXPECT_EQ(reader.Take().size(), 1u);
+}
+
+}  // namespace
+}  // namespace rlpos

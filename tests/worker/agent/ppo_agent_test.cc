@@ -1,0 +1,152 @@
+// The PPO agent on tiny known envs: it learns, it is seeded, it saves and loads, it obeys masks.
+#include "worker/agent/ppo_agent.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "worker/agent/trainer.h"
+#include "tests/worker/agent/tiny_envs.h"
+
+namespace rlpos {
+namespace {
+
+AgentSpec PpoSpecFor(std::uint64_t seed, int episodes) {
+  AgentSpec spec;
+  spec.algorithm = "ppo";
+  spec.ppo.learning_rate = 3e-3;
+  spec.ppo.rollout_steps = 64;
+  spec.train_episodes = episodes;
+  spec.eval_episodes = 1;
+  spec.seed = seed;
+  return spec;
+}
+
+TEST(PpoAgent, DefaultsAreTheReferenceSetTunedForTenEpisodes) {
+  const PpoSpec ppo;
+  EXPECT_DOUBLE_EQ(ppo.gae_lambda, 0.95);
+  EXPECT_DOUBLE_EQ(ppo.clip, 0.2);
+  EXPECT_DOUBLE_EQ(ppo.entropy_coefficient, 0.01);
+  EXPECT_DOUBLE_EQ(ppo.value_coefficient, 0.5);
+  EXPECT_DOUBLE_EQ(ppo.max_grad_norm, 0.5);
+  // Tuned (README, PPO and SAC): the reference 2.5e-4, 0.99, 128 and 4 epochs learn nothing
+  // in 10k steps.
+  EXPECT_DOUBLE_EQ(ppo.learning_rate, 1e-3);
+  EXPECT_DOUBLE_EQ(ppo.gamma, 0.9);
+  EXPECT_EQ(ppo.rollout_steps, 256);
+  EXPECT_EQ(ppo.epochs, 10);
+}
+
+TEST(PpoAgent, LearnsTheChain) {
+  ChainEnv env;
+  const AgentSpec spec = PpoSpecFor(3, 60);
+  PpoAgent agent(spec, 1, 2);
+  const TrainResult result = Train(env, agent, spec, 1);
+  const EpisodeRecord& eval = result.curve.back();
+  EXPECT_TRUE(eval.evaluation);
+  EXPECT_EQ(eval.steps, 4);  // greedy: straight to the end
+  const BoxSpace space = env.ObservationSpace();
+  for (int s = 0; s < 4; ++s) {
+    const auto p = agent.Probabilities(space.Normalise({static_cast<double>(s)}), {});
+    EXPECT_GT(p[1], 0.5f) << "state " << s;
+  }
+  int updates = 0;
+  for (const auto& r : result.curve)
+    updates += r.updates;
+  EXPECT_GT(updates, 0);
+}
+
+TEST(PpoAgent, SameSeedSamePolicyOtherSeedOther) {
+  auto train = [](std::uint64_t seed) {
+    ChainEnv env;
+    const AgentSpec spec = PpoSpecFor(seed, 8);
+    PpoAgent agent(spec, 1, 2);
+    Train(env, agent, spec, 1);
+    return agent.Probabilities({0.25f}, {});
+  };
+  EXPECT_EQ(train(11), train(11));
+  EXPECT_NE(train(11), train(12));
+}
+
+TEST(PpoAgent, NeverTakesAMaskedAction) {
+  PpoAgent agent(PpoSpecFor(1, 1), 1, 3);
+  const ActionMask no_middle{1, 0, 1};
+  for (int i = 0; i < 300; ++i) {
+    EXPECT_NE(agent.Act({0.0f}, no_middle, true), 1);
+    agent.Observe({{0.0f}, 0, 0.0f, {0.0f}, false, no_middle, {}, false});
+  }
+  EXPECT_EQ(agent.Probabilities({0.0f}, no_middle)[1], 0.0f);
+  EXPECT_NE(agent.Act({0.0f}, ActionMask{0, 1, 0}, false), 0);
+  EXPECT_THROW(agent.Act({0.0f}, ActionMask{0, 0, 0}, false), std::invalid_argument);
+}
+
+TEST(PpoAgent, LearnsOncePerRollout) {
+  AgentSpec spec = PpoSpecFor(1, 1);
+  spec.ppo.rollout_steps = 16;
+  PpoAgent agent(spec, 1, 2);
+  for (int i = 1; i <= 32; ++i) {
+    const int a = agent.Act({0.0f}, {}, true);
+    const auto loss = agent.Observe({{0.0f}, a, 1.0f, {0.0f}, false, {}, {}, i % 8 == 0});
+    EXPECT_EQ(loss.has_value(), i % 16 == 0) << "step " << i;
+  }
+}
+
+// Four rollouts planned: they learn at 1, 3/4, 1/2 and 1/4 of the rate; without annealing, or
+// without a known training length, at the full rate.
+TEST(PpoAgent, AnnealsTheLearningRateOverThePlannedRollouts) {
+  const auto rates = [](bool anneal, std::int64_t training_steps) {
+    AgentSpec spec = PpoSpecFor(1, 1);
+    spec.ppo.rollout_steps = 16;
+    spec.ppo.anneal_learning_rate = anneal;
+    PpoAgent agent(spec, 1, 2, training_steps);
+    std::vector<double> seen;
+    for (int i = 1; i <= 64; ++i) {
+      const int a = agent.Act({0.0f}, {}, true);
+      if (agent.Observe({{0.0f}, a, 1.0f, {0.0f}, false, {}, {}, i % 8 == 0}))
+        seen.push_back(agent.LearningRate() / spec.ppo.learning_rate);
+    }
+    return seen;
+  };
+  const std::vector<double> annealed = rates(true, 64);
+  ASSERT_EQ(annealed.size(), 4u);
+  EXPECT_DOUBLE_EQ(annealed[0], 1.0);
+  EXPECT_DOUBLE_EQ(annealed[1], 0.75);
+  EXPECT_DOUBLE_EQ(annealed[2], 0.5);
+  EXPECT_DOUBLE_EQ(annealed[3], 0.25);
+  EXPECT_EQ(rates(false, 64), std::vector<double>(4, 1.0));
+  EXPECT_EQ(rates(true, 0), std::vector<double>(4, 1.0));
+}
+
+TEST(PpoAgent, SaveLoadRoundTrip) {
+  ChainEnv env;
+  const AgentSpec spec = PpoSpecFor(5, 5);
+  PpoAgent trained(spec, 1, 2);
+  Train(env, trained, spec, 1);
+  const auto dir = std::filesystem::temp_directory_path() / "rlpos-ppo-roundtrip";
+  std::filesystem::remove_all(dir);
+  trained.Save(dir.string());
+  PpoAgent loaded(PpoSpecFor(99, 5), 1, 2);
+  EXPECT_NE(loaded.Probabilities({0.5f}, {}), trained.Probabilities({0.5f}, {}));
+  loaded.Load(dir.string());
+  EXPECT_EQ(loaded.Probabilities({0.5f}, {}), trained.Probabilities({0.5f}, {}));
+  PpoAgent other_shape(spec, 3, 2);
+  EXPECT_THROW(other_shape.Load(dir.string()), std::runtime_error);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PpoAgent, RestoresTheKeptPolicyAfterLearningOn) {
+  ChainEnv env;
+  const AgentSpec spec = PpoSpecFor(5, 5);
+  PpoAgent agent(spec, 1, 2);
+  EXPECT_THROW(agent.RestoreKeptPolicy(), std::logic_error);
+  Train(env, agent, spec, 1);
+  agent.KeepPolicy();
+  const auto kept = agent.Probabilities({0.5f}, {});
+  Train(env, agent, PpoSpecFor(5, 30), 100);  // enough steps for several rollouts
+  EXPECT_NE(agent.Probabilities({0.5f}, {}), kept);
+  agent.RestoreKeptPolicy();
+  EXPECT_EQ(agent.Probabilities({0.5f}, {}), kept);
+}
+
+}  // namespace
+}  // namespace rlpos

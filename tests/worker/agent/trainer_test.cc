@@ -1,0 +1,89 @@
+// The trainer's checkpoints (agent.eval_interval): when they run, which policy they keep, and
+// that the evaluation flies the kept one.
+#include "worker/agent/trainer.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <stdexcept>
+
+#include "tests/worker/agent/tiny_envs.h"
+
+namespace rlpos {
+namespace {
+
+// A scripted agent whose greedy policy after n training episodes is "right" (to the chain's
+// end, reward 1) if n is in `good`, else "left" (never there). Its "networks" are n.
+class ScriptedAgent : public Agent {
+ public:
+  explicit ScriptedAgent(std::set<int> good) : good_(std::move(good)) {}
+  std::string Algorithm() const override { return "scripted"; }
+  int Act(const std::vector<float>&, const ActionMask&, bool explore) override {
+    return explore ? 0 : (good_.count(episodes_) ? 1 : 0);
+  }
+  std::optional<double> Observe(Transition t) override {
+    if (t.episode_end)
+      ++episodes_;
+    return std::nullopt;
+  }
+  void KeepPolicy() override { kept_ = episodes_; }
+  void RestoreKeptPolicy() override {
+    if (kept_ < 0)
+      throw std::logic_error("no policy kept to restore");
+    episodes_ = kept_;
+  }
+  void Save(const std::string&) const override {}
+  void Load(const std::string&) override {}
+
+ private:
+  std::set<int> good_;
+  int episodes_ = 0;
+  int kept_ = -1;
+};
+
+AgentSpec Spec(int train_episodes, int eval_interval) {
+  AgentSpec spec;
+  spec.train_episodes = train_episodes;
+  spec.eval_episodes = 1;
+  spec.eval_interval = eval_interval;
+  return spec;
+}
+
+TEST(Trainer, WithoutCheckpointsTheLastPolicyAnswers) {
+  ChainEnv env;
+  ScriptedAgent agent({2});
+  const TrainResult r = Train(env, agent, Spec(5, 0), 1);
+  ASSERT_EQ(r.curve.size(), 6u);
+  for (const auto& e : r.curve)
+    EXPECT_FALSE(e.checkpoint);
+  EXPECT_EQ(r.policy_episode, 5);
+  EXPECT_DOUBLE_EQ(r.final_info.positions[0].x, 0.0);  // the last policy goes left
+}
+
+TEST(Trainer, CheckpointsEveryIntervalAndAfterTheLastThenTheBestIsEvaluated) {
+  ChainEnv env;
+  ScriptedAgent agent({2});  // good after episode 2 only
+  std::vector<std::string> seen;
+  const TrainResult r = Train(env, agent, Spec(5, 2), 1, [&](const EpisodeRecord& e) {
+    seen.push_back(std::to_string(e.episode) + (e.checkpoint ? "c" : e.evaluation ? "e" : "t"));
+  });
+  EXPECT_EQ(seen, (std::vector<std::string>{"1t", "2t", "2c", "3t", "4t", "4c", "5t", "5c", "6e"}));
+  ASSERT_EQ(r.curve.size(), seen.size());
+  EXPECT_TRUE(r.curve[2].evaluation);
+  EXPECT_DOUBLE_EQ(r.curve[2].final_reward, 1.0);
+  EXPECT_DOUBLE_EQ(r.curve[5].final_reward, 0.0);
+  EXPECT_EQ(r.policy_episode, 2);
+  EXPECT_DOUBLE_EQ(r.final_info.positions[0].x, 4.0);  // the kept policy flies to the end
+  EXPECT_DOUBLE_EQ(r.final_reward, 1.0);
+}
+
+TEST(Trainer, OfEqualCheckpointsTheLatestIsKept) {
+  ChainEnv env;
+  ScriptedAgent agent({2, 4});
+  const TrainResult r = Train(env, agent, Spec(5, 2), 1);
+  EXPECT_EQ(r.policy_episode, 4);
+  EXPECT_DOUBLE_EQ(r.final_reward, 1.0);
+}
+
+}  // namespace
+}  // namespace rlpos

@@ -1,0 +1,124 @@
+// Spaces, moves and clamping, observations, rewards: the gym's pure parts.
+#include <gtest/gtest.h>
+
+#include "worker/gym/moves.h"
+#include "worker/gym/reward.h"
+#include "worker/gym/spaces.h"
+#include "common/scenario/scenario_parser.h"
+
+namespace rlpos {
+namespace {
+
+Scenario ScenarioB() {
+  return ParseScenario(ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json"));
+}
+
+int ActionIndex(const Scenario& s, const std::string& name) {
+  for (std::size_t i = 0; i < s.env.actions.size(); ++i) {
+    if (s.env.actions[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+TEST(Spaces, DiscreteAndBox) {
+  const DiscreteSpace d{7};
+  EXPECT_TRUE(d.Contains(0));
+  EXPECT_TRUE(d.Contains(6));
+  EXPECT_FALSE(d.Contains(7));
+  EXPECT_FALSE(d.Contains(-1));
+  const BoxSpace box{{0, -10}, {100, 10}};
+  EXPECT_TRUE(box.Contains({50, 0}));
+  EXPECT_FALSE(box.Contains({50, 11}));
+  EXPECT_FALSE(box.Contains({50}));
+  const auto n = box.Normalise({0, 10});
+  EXPECT_FLOAT_EQ(n[0], -1.0f);
+  EXPECT_FLOAT_EQ(n[1], 1.0f);
+}
+
+// One UAV's move.
+Vec3 Move(const Scenario& s, int action, const Vec3& from) {
+  return ApplyMove(s, 0, action, {from})[0];
+}
+
+TEST(Moves, EachActionMovesOneStepInItsDirection) {
+  const Scenario s = ScenarioB();  // step 5 m, baseline (50, 50, 25)
+  const Vec3 p{50, 35, 30};
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "up"), p).z, 35);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "down"), p).z, 25);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "forward"), p).y, 40);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "backward"), p).y, 30);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "right"), p).x, 55);
+  EXPECT_DOUBLE_EQ(Move(s, ActionIndex(s, "left"), p).x, 45);
+  const Vec3 stay = Move(s, ActionIndex(s, "stay"), p);
+  EXPECT_DOUBLE_EQ(stay.x, p.x);
+  EXPECT_DOUBLE_EQ(stay.y, p.y);
+  EXPECT_DOUBLE_EQ(stay.z, p.z);
+}
+
+TEST(Moves, ZoneClampsAndAWallIsNotALoop) {
+  const Scenario s = ScenarioB();  // zone z in [5, 60]
+  Vec3 p{50, 35, 58};
+  p = Move(s, ActionIndex(s, "up"), p);
+  EXPECT_DOUBLE_EQ(p.z, 60);  // clamped, not 63
+  p = Move(s, ActionIndex(s, "up"), p);
+  EXPECT_DOUBLE_EQ(p.z, 60);  // stays at the wall
+  Vec3 corner{0, 0, 5};
+  corner = Move(s, ActionIndex(s, "left"), corner);
+  corner = Move(s, ActionIndex(s, "backward"), corner);
+  corner = Move(s, ActionIndex(s, "down"), corner);
+  EXPECT_DOUBLE_EQ(corner.x, 0);
+  EXPECT_DOUBLE_EQ(corner.y, 0);
+  EXPECT_DOUBLE_EQ(corner.z, 5);
+}
+
+TEST(Moves, NeverIntoABuilding) {
+  const Scenario s = ScenarioB();  // tower [45, 55]^2, 20 m
+  const Vec3 above{50, 50, 25};
+  const Vec3 p = Move(s, ActionIndex(s, "down"), above);  // to z = 20: the roof
+  EXPECT_DOUBLE_EQ(p.z, 25);
+}
+
+TEST(Observations, LayoutAndBounds) {
+  Scenario s = ScenarioB();
+  s.env.observations = {"x", "y", "z", "n_los", "throughput", "snr"};
+  const BoxSpace box = ObservationBounds(s);
+  ASSERT_EQ(box.Dim(), 5u + s.ues.size());
+  StepInfo info;
+  info.positions = {{10, 20, 30}};
+  info.n_los = 3;
+  info.throughput_mbps = 100;
+  info.snr_db = {10, 80, -40, 0};  // out-of-range SNRs are clipped into the space
+  const auto obs = MakeObservation(s, info);
+  EXPECT_EQ(obs.size(), box.Dim());
+  EXPECT_TRUE(box.Contains(obs));
+  EXPECT_DOUBLE_EQ(obs[0], 10);
+  EXPECT_DOUBLE_EQ(obs[3], 3);
+  EXPECT_DOUBLE_EQ(obs[4], 100);
+  EXPECT_DOUBLE_EQ(obs[6], 60);
+}
+
+TEST(Reward, PaperArithmetic) {
+  const auto r = MakeReward({"paper", 0.8, 0.2, 0.0});
+  // 3 of 4 LoS, 117 of 234 Mbit/s: 0.8 * 0.75 + 0.2 * 0.5
+  EXPECT_DOUBLE_EQ((*r)({3, 4, 117.0, 234.0, 0}), 0.7);
+  EXPECT_DOUBLE_EQ((*r)({4, 4, 234.0, 234.0, 4}), 1.0);
+  const auto weights = MakeReward({"paper", 0.5, 0.5, 0.0});
+  EXPECT_DOUBLE_EQ((*weights)({1, 4, 0.0, 234.0, 0}), 0.125);
+}
+
+TEST(Reward, DemandAwareAddsDemandsMet) {
+  const auto r = MakeReward({"demand_aware", 0.8, 0.2, 0.2});
+  EXPECT_DOUBLE_EQ((*r)({3, 4, 117.0, 234.0, 2}), 0.7 + 0.2 * 0.5);
+}
+
+TEST(Reward, RegistryTakesNewRewardsAndRejectsUnknown) {
+  struct Constant : Reward {
+    double operator()(const RewardInput&) const override { return 42.0; }
+  };
+  RegisterReward("constant", [](const RewardSpec&) { return std::make_unique<Constant>(); });
+  EXPECT_DOUBLE_EQ((*MakeReward({"constant", 0, 0, 0}))({}), 42.0);
+  EXPECT_THROW(MakeReward({"nope", 0, 0, 0}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rlpos

@@ -1,0 +1,199 @@
+// rlpos-sim as a user runs it: exit codes, one-line errors naming file and JSON path, nothing on
+// stdout on failure, deterministic results per RngRun.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/command.h"
+
+namespace rlpos::testing {
+namespace {
+
+const std::string kScenarioB = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json";
+
+std::string Sim(const std::string& args) {
+  return BuiltBinary("rlpos-sim") + " " + args;
+}
+
+// Writes `text` to a fresh file and returns its path.
+std::string TempFile(const std::string& text) {
+  char path[] = "/tmp/rlpos-test-scenario-XXXXXX";
+  const int fd = mkstemp(path);
+  close(fd);
+  std::ofstream(path) << text;
+  return path;
+}
+
+void ExpectOneLineError(const CommandResult& r, int exit_code, const std::string& fragment) {
+  EXPECT_EQ(r.exit_code, exit_code) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "stdout must stay empty on failure: " << r.out;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err;
+  EXPECT_EQ(r.err.find("rlpos-sim: error: "), 0u) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+}
+
+TEST(RlposSimCli, ValidatePrintsASummary) {
+  const auto r = RunCommand(Sim("validate " + kScenarioB));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("baseline    (50, 50, 25): nLoS 1/4"), std::string::npos) << r.out;
+}
+
+TEST(RlposSimCli, MissingFile) {
+  ExpectOneLineError(RunCommand(Sim("validate /nonexistent.json")), 2,
+                     "/nonexistent.json: /: cannot open file");
+}
+
+TEST(RlposSimCli, MalformedJson) {
+  const std::string file = TempFile("{\"ues\": [}");
+  ExpectOneLineError(RunCommand(Sim("validate " + file)), 2,
+                     file + ": /: malformed JSON at line 1");
+}
+
+TEST(RlposSimCli, UnknownKeyWithSuggestion) {
+  ExpectOneLineError(RunCommand(Sim("validate " + kScenarioB + " --set wifi.chanel=36")), 2,
+                     "/wifi/chanel: unknown key \"chanel\"; did you mean \"channel\"?");
+}
+
+TEST(RlposSimCli, UnknownTypeId) {
+  ExpectOneLineError(
+      RunCommand(
+          Sim("validate " + kScenarioB + " --set propagation.type=ns3::FriisPropagationLosModel")),
+      2,
+      "/propagation/type: unknown ns-3 TypeId \"ns3::FriisPropagationLosModel\"; did you mean "
+      "\"ns3::FriisPropagationLossModel\"?");
+}
+
+TEST(RlposSimCli, TypeOfTheWrongKind) {
+  ExpectOneLineError(
+      RunCommand(Sim("validate " + kScenarioB + " --set wifi.rate_manager.type=ns3::Node")), 2,
+      "/wifi/rate_manager/type: \"ns3::Node\" is not a ns3::WifiRemoteStationManager");
+}
+
+TEST(RlposSimCli, AttributeTheTypeDoesNotHave) {
+  ExpectOneLineError(
+      RunCommand(Sim("validate " + kScenarioB +
+                     " --set propagation.attributes.LosModel.attributes.Frequncy=5e9")),
+      2,
+      "/propagation/attributes/LosModel/attributes/Frequncy: "
+      "ns3::ItuR1411LosPropagationLossModel has no attribute \"Frequncy\"; did you mean "
+      "\"Frequency\"?");
+}
+
+TEST(RlposSimCli, AttributeValueOfTheWrongType) {
+  ExpectOneLineError(
+      RunCommand(Sim("validate " + kScenarioB +
+                     " --set 'propagation.attributes.NlosModel.attributes.Environment=\"Moon\"'")),
+      2, "/propagation/attributes/NlosModel/attributes/Environment: invalid value \"Moon\"");
+}
+
+TEST(RlposSimCli, ChannelNotOfThatWidth) {
+  ExpectOneLineError(RunCommand(Sim("validate " + kScenarioB + " --set wifi.channel=36")), 2,
+                     "/wifi/channel: channel 36 is not a 160 MHz 802.11ac channel");
+}
+
+TEST(RlposSimCli, BadPositions) {
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 1,2")), 2,
+                     "--position: expected x,y,z");
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,50,10")), 2,
+                     "--position: (50, 50, 10) is inside building 0 (\"tower\")");
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,150,10")), 2,
+                     "--position: (50, 150, 10) is outside the venue");
+}
+
+TEST(RlposSimCli, UsageErrorsExitTwo) {
+  EXPECT_EQ(RunCommand(Sim("")).exit_code, 2);
+  EXPECT_EQ(RunCommand(Sim("eval --scenario " + kScenarioB)).exit_code, 2);  // no --position
+  EXPECT_EQ(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 1,1,1 --duration -3"))
+                .exit_code,
+            2);
+}
+
+TEST(RlposSimCli, Ns3AbortIsACleanFailure) {
+  // ARF cannot drive 802.11ac (no HT rates): ns-3 aborts when the devices initialise.
+  const auto r = RunCommand(Sim("eval --scenario " + kScenarioB +
+                                " --position 50,35,10 --duration 1.5 --no-progress"
+                                " --set wifi.rate_manager.type=ns3::ArfWifiManager"));
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find("rlpos-sim: error: ns-3 aborted the simulation"), std::string::npos)
+      << r.err;
+}
+
+nlohmann::json EvalJson(const std::string& extra) {
+  const auto r = RunCommand(Sim("eval --scenario " + kScenarioB +
+                                " --position 50,50,25 --duration 2 --json --no-progress " + extra));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+TEST(RlposSimCli, SameRunSameMetricsOtherRunCloseButDifferent) {
+  const auto run1 = EvalJson("--run 1");
+  const auto again = EvalJson("--RngRun 1");
+  const auto run2 = EvalJson("--run 2");
+  EXPECT_EQ(run1, again);
+  EXPECT_NE(run1["mean_delay_ms"], run2["mean_delay_ms"]);
+  const double t1 = run1["aggregate_throughput_mbps"];
+  const double t2 = run2["aggregate_throughput_mbps"];
+  EXPECT_NEAR(t2, t1, 0.1 * t1);
+  std::printf("RngRun 1: %.3f Mbit/s %.3f ms; RngRun 2: %.3f Mbit/s %.3f ms\n", t1,
+              run1["mean_delay_ms"].get<double>(), t2, run2["mean_delay_ms"].get<double>());
+}
+
+TEST(RlposSimCli, OracleCandidatesNotRescoredCarryNull) {
+  const auto r =
+      RunCommand(Sim("position --scenario " + kScenarioB + " --positioner oracle --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto out = nlohmann::json::parse(r.out);
+  const auto& candidates = out.at("candidates");
+  ASSERT_EQ(candidates.size(), 5u) << r.out;
+  // The best three analytic positions are re-scored at packet level, the others are not.
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto& reward = candidates[i].at("packet_reward");
+    if (i < 3) {
+      EXPECT_TRUE(reward.is_number()) << i << ": " << reward;
+    } else {
+      EXPECT_TRUE(reward.is_null()) << i << ": " << reward;
+    }
+  }
+}
+
+const std::string kUrban3 = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/urban3.json";
+
+// The three-UAV scenario at packet level, briefly: one --position per UAV, per-UAV metrics.
+TEST(RlposSimCli, EvalOfThreeUavs) {
+  const auto r = RunCommand(Sim("eval --scenario " + kUrban3 +
+                                " --position 135,85,60 --position 20,135,60 --position 70,15,60"
+                                " --duration 1.5 --run 2 --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(r.out);
+  ASSERT_EQ(m["uavs"].size(), 3u);
+  int served = 0;
+  double throughput = 0;
+  for (const auto& uav : m["uavs"]) {
+    served += uav["ues_served"].get<int>();
+    throughput += uav["throughput_mbps"].get<double>();
+    EXPECT_GT(uav["throughput_mbps"].get<double>(), 0.0) << uav;
+  }
+  EXPECT_EQ(served, 20);
+  EXPECT_NEAR(throughput, m["aggregate_throughput_mbps"].get<double>(), 1e-6);
+  EXPECT_EQ(m["uavs"][1]["name"], "uav2");
+  EXPECT_EQ(m["uavs"][2]["channel"], 106);
+  EXPECT_EQ(m["ues"][0]["uav"].get<std::string>().rfind("uav", 0), 0u);
+}
+
+TEST(RlposSimCli, EvalNeedsAPositionPerUav) {
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kUrban3 + " --position 135,85,60")), 2,
+                     "--position: scenario urban3 has 3 UAV(s): give one x,y,z each (1 given)");
+  ExpectOneLineError(
+      RunCommand(Sim("eval --scenario " + kUrban3 +
+                     " --position 135,85,60 --position 135,85.5,60 --position 70,15,60")),
+      2, "--position #2: UAVs uav1 and uav2 overlap");
+  ExpectOneLineError(
+      RunCommand(Sim("eval --scenario " + kUrban3 +
+                     " --position 135,85,60 --position 25,25,10 --position 70,15,60")),
+      2, "--position #2: (25, 25, 10) is inside building 0");
+}
+
+}  // namespace
+}  // namespace rlpos::testing

@@ -1,0 +1,156 @@
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "worker/agent/make_agent.h"
+#include "worker/agent/trainer.h"
+#include "common/config/config_error.h"
+#include "common/scenario/number_text.h"
+#include "worker/uav_env/uav_positioning_env.h"
+#include "common/scenario/placement_json.h"
+#include "common/scenario/scenario_parser.h"
+#include "worker/rl_commands/rl_commands.h"
+
+namespace rlpos::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Episodes of train seed N run RngRun N*1000+1, N*1000+2, ...: never the evaluation runs.
+std::uint64_t FirstEpisodeRun(std::uint64_t seed) {
+  return seed * 1000 + 1;
+}
+
+nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {
+  const Vec3& p = r.final_info.positions.front();
+  return {{"scenario", s.name},
+          {"algorithm", s.agent.algorithm},
+          {"action_space", s.env.action_space},
+          {"fidelity", s.env.fidelity},
+          {"seed", seed},
+          {"train_episodes", s.agent.train_episodes},
+          {"eval_episodes", s.agent.eval_episodes},
+          {"first_episode_run", FirstEpisodeRun(seed)},
+          {"eval_interval", s.agent.eval_interval},
+          {"policy_episode", r.policy_episode},                  // the kept policy's
+          {"position", {p.x, p.y, p.z}},                         // the first UAV's
+          {"positions", PlacementJson(r.final_info.positions)},  // every UAV's
+          {"n_los", r.final_info.n_los},
+          {"n_ues", s.ues.size()},
+          {"throughput_mbps", r.final_info.throughput_mbps},
+          {"demands_met", r.final_info.demands_met},
+          {"reward", r.final_reward}};
+}
+
+const char* Phase(const EpisodeRecord& r) {
+  return r.checkpoint ? "checkpoint" : r.evaluation ? "eval" : "train";
+}
+
+// x, y, z: the first UAV's final position.
+void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
+  const Vec3& p = r.final_info.positions.front();
+  out << r.episode << ',' << Phase(r) << ',' << r.steps << ',' << r.total_reward << ','
+      << r.total_reward / std::max(1, r.steps) << ',' << r.epsilon << ',' << r.updates << ','
+      << r.mean_loss << ',' << r.final_reward << ',' << p.x << ',' << p.y << ',' << p.z << ','
+      << r.final_info.n_los << ',' << r.final_info.throughput_mbps << '\n';
+}
+
+}  // namespace
+
+int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
+  std::vector<std::string> extra;
+  if (!t.algorithm.empty()) {
+    // SAC acts on displacements, DQN and PPO on the moves: the flag picks the space as well.
+    for (auto& o : AlgorithmOverrides(t.algorithm))
+      extra.push_back(std::move(o));
+  }
+  if (!t.fidelity.empty())
+    extra.push_back("env.fidelity=" + t.fidelity);
+  if (t.seed >= 0)
+    extra.push_back("agent.seed=" + std::to_string(t.seed));
+  if (t.episodes > 0)
+    extra.push_back("agent.train_episodes=" + std::to_string(t.episodes));
+  const Scenario s = LoadScenarioFor(options, extra);
+  if (fs::exists(t.out)) {
+    throw ConfigError("--out", t.out + " already exists; choose another folder or remove it");
+  }
+  // Written under a temporary name and renamed at the end: no half-written output folder.
+  const fs::path partial = t.out + ".partial";
+  std::error_code ec;
+  fs::remove_all(partial, ec);
+  if (!fs::create_directories(partial, ec) || ec) {
+    throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
+  }
+  try {
+    UavPositioningEnv env(s);
+    const std::unique_ptr<Agent> agent_owner =
+        MakeAgent(s.agent, env, std::int64_t{s.agent.train_episodes} * env.StepsPerEpisode());
+    Agent& agent = *agent_owner;
+    std::ofstream curve(partial / "learning_curve.csv");
+    curve << "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
+             "x,y,z,n_los,throughput_mbps\n";
+    std::ofstream trajectory(partial / "trajectory.csv");
+    // One row per step: the UAV that moved (its index), its action and where it went.
+    trajectory << "episode,step,uav,action,x,y,z,n_los,throughput_mbps,reward\n";
+    int eval_episode = s.agent.train_episodes;
+    Placement last = s.InitialPlacement();
+    const std::size_t n_uavs = last.size();
+    const auto write_step = [&](int step, int action, const StepResult& r) {
+      if (step == 1) {
+        ++eval_episode;
+        last = s.InitialPlacement();
+      }
+      // Several UAVs move in turns of env.turn_steps steps.
+      const std::size_t uav = static_cast<std::size_t>((step - 1) / s.env.turn_steps) % n_uavs;
+      const Vec3& p = r.info.positions[uav];
+      const Vec3 from = last[uav];
+      // A continuous action is written as the displacement the UAV made, "dx dy dz".
+      const std::string moved = agent.Continuous() ? FormatNumber(p.x - from.x) + ' ' +
+                                                         FormatNumber(p.y - from.y) + ' ' +
+                                                         FormatNumber(p.z - from.z)
+                                                   : s.env.actions[action];
+      last = r.info.positions;
+      trajectory << eval_episode << ',' << step << ',' << uav << ',' << moved << ',' << p.x << ','
+                 << p.y << ',' << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ','
+                 << r.reward << '\n';
+    };
+    const int total = s.agent.train_episodes + s.agent.eval_episodes;
+    const TrainResult result = Train(
+        env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
+        [&](const EpisodeRecord& r) {
+          WriteCurveRow(curve, r);
+          // Every UAV's final position: the line is what `status` shows of a running train job.
+          std::fprintf(stderr,
+                       "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
+                       "final %s nLoS %d\n",
+                       r.episode, total, Phase(r), r.steps, r.epsilon, r.total_reward,
+                       r.total_reward / std::max(1, r.steps),
+                       DescribePlacement(r.final_info.positions).c_str(), r.final_info.n_los);
+        },
+        write_step);
+    curve.close();
+    trajectory.close();
+    agent.Save(partial.string());
+    const nlohmann::json summary = ResultJson(s, result, s.agent.seed);
+    std::ofstream(partial / "result.json") << summary.dump(2) << '\n';
+    std::ofstream(partial / "scenario.json") << ToJson(s).dump(2) << '\n';
+    fs::rename(partial, t.out);
+    if (t.json) {
+      std::cout << summary.dump(2) << std::endl;
+    } else {
+      std::printf(
+          "trained %s (%s, %s, seed %llu): final position %s, nLoS %d/%zu, reward %.4f\n"
+          "policy, learning curve and result in %s\n",
+          s.name.c_str(), s.agent.algorithm.c_str(), s.env.fidelity.c_str(),
+          static_cast<unsigned long long>(s.agent.seed),
+          DescribePlacement(result.final_info.positions).c_str(), result.final_info.n_los,
+          s.ues.size(), result.final_reward, t.out.c_str());
+    }
+  } catch (...) {
+    fs::remove_all(partial, ec);
+    throw;
+  }
+  return kExitOk;
+}
+
+}  // namespace rlpos::sim

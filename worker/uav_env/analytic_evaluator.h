@@ -1,0 +1,47 @@
+#pragma once
+// The "analytic" fidelity: the state at a UAV position without packets. LoS from the building
+// geometry and SNR from the very loss-model objects the packet-level channel uses; the MCS per
+// UE from ns-3's own rate thresholds; throughput from the airtime-share model. With several
+// UAVs each UE associates with its UAV at the placement evaluated (environment/association.h),
+// and the UEs of UAVs on one channel share that channel's airtime (their BSSs contend).
+// Holds a UavNetwork that is built but never run: only one UavNetwork may exist at a time.
+#include <memory>
+
+#include "worker/gym/env.h"
+#include "common/scenario/scenario.h"
+
+namespace rlpos {
+
+class UavNetwork;
+
+// One UE's link to a UAV at some position, with what the airtime model needs of it.
+struct UeLink {
+  bool los = false;
+  double snr_db = 0.0;
+  double phy_rate_mbps = 0.0;  // 0: below the lowest MCS
+  double mpdu_success = 1.0;
+  bool demand_met = false;
+};
+
+class AnalyticEvaluator {
+ public:
+  explicit AnalyticEvaluator(const Scenario& scenario);
+  ~AnalyticEvaluator();
+  StepInfo Evaluate(const Placement& placement);
+  // Every UE's link to UAV `uav` were it at `position` (the other UAVs do not matter).
+  std::vector<UeLink> LinksAt(std::size_t uav, const Vec3& position);
+  // The state at `placement` from links already known: `links[u]` = LinksAt(u, placement[u]).
+  // What a search that moves one UAV at a time evaluates without recomputing the others.
+  StepInfo Score(const Placement& placement, const std::vector<const std::vector<UeLink>*>& links);
+  // Per-UE estimated throughput of the last Evaluate or Score (Mbit/s).
+  const std::vector<double>& UeThroughput() const { return ue_throughput_; }
+
+ private:
+  Scenario scenario_;
+  std::unique_ptr<UavNetwork> network_;
+  std::vector<double> thresholds_db_;
+  std::vector<int> channels_;  // per UAV
+  std::vector<double> ue_throughput_;
+};
+
+}  // namespace rlpos

@@ -1,0 +1,149 @@
+#include "worker/uav_env/uav_positioning_env.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/scenario/number_text.h"
+#include "worker/environment/uav_network.h"
+#include "worker/uav_env/analytic_evaluator.h"
+#include "worker/gym/moves.h"
+
+namespace rlpos {
+
+UavPositioningEnv::UavPositioningEnv(Scenario scenario)
+    : scenario_(std::move(scenario)), reward_(MakeReward(scenario_.env.reward)) {
+  steps_per_episode_ = static_cast<int>(
+      std::llround(scenario_.env.episode_duration / scenario_.env.decision_interval));
+  if (scenario_.env.fidelity == "analytic") {
+    analytic_ = std::make_unique<AnalyticEvaluator>(scenario_);
+  }
+}
+
+UavPositioningEnv::~UavPositioningEnv() = default;
+
+DiscreteSpace UavPositioningEnv::ActionSpace() const {
+  return {Continuous() ? 0 : static_cast<int>(scenario_.env.actions.size())};
+}
+
+BoxSpace UavPositioningEnv::ContinuousActionSpace() const {
+  return Continuous() ? DisplacementBounds(scenario_) : BoxSpace{};
+}
+
+BoxSpace UavPositioningEnv::ObservationSpace() const {
+  return ObservationBounds(scenario_);
+}
+
+ActionMask UavPositioningEnv::ValidActions() const {
+  if (!scenario_.env.action_mask || Continuous())
+    return {};
+  const auto& actions = scenario_.env.actions;
+  ActionMask mask(actions.size(), 0);
+  bool moves = false;
+  for (std::size_t a = 0; a < actions.size(); ++a) {
+    const Vec3& at = placement_[active_];
+    const Vec3 to = ApplyMove(scenario_, active_, static_cast<int>(a), placement_)[active_];
+    const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
+    mask[a] = actions[a] == "stay" || changes;
+    moves = moves || changes;
+  }
+  if (!moves)
+    return {};
+  return mask;
+}
+
+double UavPositioningEnv::RewardOf(const StepInfo& info) const {
+  return (*reward_)(RewardInputOf(scenario_, info.n_los, info.throughput_mbps, info.demands_met));
+}
+
+StepInfo UavPositioningEnv::Observe() {
+  StepInfo info;
+  if (analytic_) {
+    info = analytic_->Evaluate(placement_);
+  } else {
+    const RunMetrics m = network_->Measure();
+    info.positions = placement_;
+    info.serving = network_->Association();
+    info.n_los = m.n_los;
+    info.throughput_mbps = m.aggregate_throughput_mbps;
+    info.demands_met = m.demands_met;
+    for (const auto& ue : m.ues)
+      info.snr_db.push_back(ue.snr_db);
+  }
+  info.active_uav = static_cast<int>(active_);
+  return info;
+}
+
+std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
+  placement_ = scenario_.InitialPlacement();
+  active_ = 0;
+  steps_ = 0;
+  if (!analytic_) {
+    // A fresh network per episode: RngRun = seed; traffic lasts the whole episode.
+    Scenario episode = scenario_;
+    episode.simulation.run = seed;
+    const double dt = scenario_.env.decision_interval;
+    const double warmup = std::max(scenario_.simulation.warmup, dt);
+    episode.simulation.warmup = warmup;
+    episode.simulation.duration = warmup + scenario_.env.episode_duration + dt;
+    network_.reset();  // one ns-3 simulation at a time
+    // UEs associate at the initial placement; each step re-associates them (MoveTo).
+    network_ = std::make_unique<UavNetwork>(episode, placement_,
+                                            HandsOver() ? Handover::kOn : Handover::kOff);
+    network_->BeginMeasurement({warmup - dt, warmup});
+    network_->RunUntil(warmup);
+  }
+  info_ = Observe();
+  return MakeObservation(scenario_, info_);
+}
+
+StepResult UavPositioningEnv::Step(int action) {
+  if (!ActionSpace().Contains(action)) {
+    throw std::out_of_range(Continuous() ? "this env takes a continuous action (a displacement)"
+                                         : "action " + std::to_string(action) +
+                                               " out of the action space Discrete(" +
+                                               std::to_string(ActionSpace().n) + ")");
+  }
+  return MoveTo(ApplyMove(scenario_, active_, action, placement_));
+}
+
+StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
+  if (!Continuous())
+    throw std::out_of_range("this env takes discrete actions (move indices)");
+  const double step = scenario_.env.step;  // the Box is [-step, step]^3; NaN is outside
+  const auto within = [step](double v) { return v >= -step && v <= step; };
+  if (d.size() != 3 || !std::all_of(d.begin(), d.end(), within)) {
+    const std::string bound = FormatNumber(step);
+    throw std::out_of_range("the displacement must have 3 components, each within [-" + bound +
+                            ", " + bound + "] m");
+  }
+  return MoveTo(ApplyDisplacement(scenario_, active_, {d[0], d[1], d[2]}, placement_));
+}
+
+StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
+  placement_ = placement;
+  active_ = static_cast<std::size_t>((steps_ + 1) / scenario_.env.turn_steps) % placement_.size();
+  if (network_) {
+    network_->SetUavPositions(placement_);
+    if (HandsOver())
+      network_->Reassociate();  // as the analytic model does at every step
+    const double now = network_->Now();
+    const double next = now + scenario_.env.decision_interval;
+    network_->BeginMeasurement({now, next});
+    const auto started = std::chrono::steady_clock::now();
+    network_->RunUntil(next);
+    wall_in_ns3_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  }
+  ++steps_;
+  info_ = Observe();
+  StepResult result;
+  result.info = info_;
+  result.observation = MakeObservation(scenario_, info_);
+  result.reward = RewardOf(info_);
+  result.truncated = steps_ >= steps_per_episode_;
+  return result;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,61 @@
+#pragma once
+// The UAV positioning environment, in-process with ns-3 (no sockets, no second process).
+// packet fidelity: the full ns-3 simulation advances one decision interval per step
+// (Simulator::Stop + Run); each episode rebuilds the network with RngRun = the reset seed.
+// analytic fidelity: no packets (AnalyticEvaluator). Episode length and interval from env.
+// Several UAVs take turns: each step moves the UAV whose turn it is (StepInfo::active_uav, also
+// in the observation), env.turn_steps steps in a row, so one shared policy flies them all.
+#include <memory>
+
+#include "worker/gym/env.h"
+#include "worker/gym/reward.h"
+#include "common/scenario/scenario.h"
+
+namespace rlpos {
+
+class UavNetwork;
+class AnalyticEvaluator;
+
+class UavPositioningEnv : public Env {
+ public:
+  explicit UavPositioningEnv(Scenario scenario);
+  ~UavPositioningEnv() override;
+
+  DiscreteSpace ActionSpace() const override;
+  BoxSpace ContinuousActionSpace() const override;
+  BoxSpace ObservationSpace() const override;
+  std::vector<double> Reset(std::uint64_t seed) override;
+  // Both throw std::out_of_range for an action outside the env's action space.
+  StepResult Step(int action) override;
+  StepResult StepContinuous(const std::vector<double>& displacement) override;
+  const StepInfo& LastInfo() const override { return info_; }
+  // With env.action_mask: "stay" and every move that changes the active UAV's position (not into
+  // a wall of its zone, a building or another UAV). Without it, or if nothing moves, every
+  // action.
+  ActionMask ValidActions() const override;
+
+  const Scenario& scenario() const { return scenario_; }
+  int StepsPerEpisode() const { return steps_per_episode_; }
+  double RewardOf(const StepInfo& info) const;
+  // Wall time spent inside ns-3's Simulator::Run so far (packet fidelity), for benchmarks.
+  double WallSecondsInNs3() const { return wall_in_ns3_; }
+
+ private:
+  StepInfo Observe();  // the state at the current position (after the last interval)
+  StepResult MoveTo(const Placement& placement);  // one decision interval at `placement`
+  bool Continuous() const { return scenario_.env.action_space == "continuous"; }
+  // Packet level with several UAVs: a radio per UAV on each UE, re-associated every step.
+  bool HandsOver() const { return scenario_.uavs.size() > 1; }
+  Scenario scenario_;
+  std::unique_ptr<Reward> reward_;
+  std::unique_ptr<UavNetwork> network_;          // packet fidelity
+  std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
+  Placement placement_;
+  std::size_t active_ = 0;  // the UAV the next action moves
+  StepInfo info_;
+  int steps_ = 0;
+  int steps_per_episode_ = 0;
+  double wall_in_ns3_ = 0.0;
+};
+
+}  // namespace rlpos
