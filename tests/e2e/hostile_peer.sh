@@ -47,6 +47,7 @@ for attempt in 1 2 3 4 5; do
   expect_eq "campaign id of submit $attempt during the attack" "$AGAIN" "$ID"
   if forged; then break; fi
 done
+FORGED_ON=$attempt
 "$CAMPAIGN" status "$ID" --db "$DB" --watch --period 0.5 >/dev/null || fail "status --watch"
 wait "$PEER_PID" || fail "the hostile peer failed: $(cat "$WORK/peer.out")"
 SUMMARY=$(tail -n 1 "$WORK/peer.out")
@@ -78,4 +79,4 @@ METRICS="SELECT scenario, positioner, rng_run, throughput_mbps, delay_ms, n_los,
   FROM v_eval_runs ORDER BY 1, 2, 3"
 expect_eq "metrics against the undisturbed run" "$(sql "$DB" "$METRICS")" \
   "$(sql "$WORK/calm/calm.db" "$METRICS")"
-echo "ok: a hostile peer changed nothing ($SUMMARY)"
+echo "ok: a hostile peer changed nothing (a reply forged on submit $FORGED_ON; $SUMMARY)"
