@@ -125,8 +125,7 @@ TEST_F(LivelinessTest, AnotherTagOnTheSameDomainIsNotSeen) {
   // The positive control: a listener on the writer's own tag and our domain hears the writer in
   // the same window, so that silence on our tag means the tag parted them, not that the writer
   // never wrote, wrote elsewhere or was slow.
-  const auto listener =
-      StartChildMode(testing::kChildReaderFlag, other_tag, "w-other", "listener");
+  const auto listener = StartChildMode(testing::kChildReaderFlag, other_tag, "w-other", "listener");
   ASSERT_TRUE(WaitFor([&] { return ChildOutput("listener").find("ready") != std::string::npos; }))
       << ChildOutput("listener");
   child_ = StartChildMode(testing::kChildWriterFlag, other_tag, "w-other", "child");

@@ -298,10 +298,9 @@ void HostilePeer::WriteEvents() {
 
 // Submits that fail validation.
 void HostilePeer::WriteSubmits(const std::string& r) {
-  const std::vector<std::string> campaigns{
-      "{\"name\": \"evil\"}", "not json", deep_,
-      "{\"name\": \"evil\", \"scenarios\": [\"/etc/passwd\"], "
-      "\"rng_runs\": [1, 2]}"};
+  const std::vector<std::string> campaigns{"{\"name\": \"evil\"}", "not json", deep_,
+                                           "{\"name\": \"evil\", \"scenarios\": [\"/etc/passwd\"], "
+                                           "\"rng_runs\": [1, 2]}"};
   for (std::size_t i = 0; i < campaigns.size(); ++i) {
     rlpos_msg_CampaignRequest q{};
     Set(q.request_id, "evil-" + r + "-" + std::to_string(i));
@@ -364,7 +363,8 @@ void HostilePeer::Listen(Heard& h) {
 // Once: its readers of assignments and of worker statuses each matched a writer that is
 // neither its own nor a peer's, i.e. the coordinator and the worker discovered it.
 void HostilePeer::SayWhenMatched() {
-  if (!matched_ && !heard_.empty() && ForeignWriters(heard_[0].reader) > 0 && ForeignWriters(heard_[2].reader) > 0) {
+  if (!matched_ && !heard_.empty() && ForeignWriters(heard_[0].reader) > 0 &&
+      ForeignWriters(heard_[2].reader) > 0) {
     matched_ = true;
     Say("matched the daemons");
   }
