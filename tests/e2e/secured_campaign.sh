@@ -4,9 +4,11 @@
 # in the other (the identities "worker" and "host-b"), a secured client submitting. Beside them,
 # unsecured participants: a hostile peer on the same domain and link, and an --insecure client.
 # Expected: the campaign completes with the metrics of an undisturbed run; the unsecured peer
-# hears nothing and changes nothing; the insecure client gets no answer; a raw capture of the
-# link finds no job id, campaign name or scenario text (while it does find a clear-text marker
-# sent over the same link: the capture works). Needs root; skips (77) otherwise.
+# hears nothing of it (while it hears another unsecured peer across the link: the link does
+# carry unsecured traffic) and changes nothing; the insecure client gets no answer; a raw
+# capture of the link finds no job id, campaign name or scenario text (while it does find a
+# clear-text marker sent over the same link: the capture works). Needs root; skips (77)
+# otherwise.
 source "$(dirname "$0")/lib.sh"
 source "$(dirname "$0")/netns.sh"
 
@@ -66,15 +68,27 @@ ID=$("${IN_C[@]}" "$CAMPAIGN" submit "$CAMPAIGN_FILE" --domain "$DOMAIN" --dds-c
 wait_until 60 bash -c "[ \"\$(sqlite3 '$DB' \"SELECT COUNT(*) FROM jobs
   WHERE state IN ('running', 'succeeded')\")\" -ge 1 ]" || fail "nothing started"
 
-# The unsecured side: a hostile peer on the same domain and link, and an --insecure client.
+# The unsecured side: a hostile peer on the same domain and link, and an --insecure client. The
+# peer must hear nothing of the campaign; in the same window it must hear another unsecured
+# peer across the link (the positive control: unsecured traffic does cross it here). That one
+# only writes (no reader: nothing of the campaign goes to it over the captured link), and knows
+# nothing of the campaign (no database, an empty scenario).
 "${IN_C[@]}" "$BIN/rlpos-hostile-peer" "$DOMAIN" "$XML_C" "$DB" worker "$SRC/campaigns/scenarios/b.json" 6 \
   >"$WORK/peer.out" 2>&1 &
 PEER=$!
 BG_PIDS+=("$PEER")
+"${IN_W[@]}" "$BIN/rlpos-hostile-peer" "$DOMAIN" "$XML_W" "$WORK/none.db" host-b /dev/null 6 \
+  --write-only >"$WORK/speaker.out" 2>&1 &
+SPEAKER=$!
+BG_PIDS+=("$SPEAKER")
 "$CAMPAIGN" status "$ID" --db "$DB" --watch --period 0.5 >/dev/null || fail "status --watch"
 wait "$PEER" || fail "the hostile peer failed: $(cat "$WORK/peer.out")"
-grep -q "^sent [1-9]" "$WORK/peer.out" || fail "the hostile peer sent nothing: $(cat "$WORK/peer.out")"
-grep -q "; heard 0 (" "$WORK/peer.out" || fail "an unsecured peer heard the campaign: $(cat "$WORK/peer.out")"
+wait "$SPEAKER" || fail "the writing peer failed: $(cat "$WORK/speaker.out")"
+SUMMARY=$(tail -n 1 "$WORK/peer.out")
+grep -q "^sent [1-9]" <<<"$SUMMARY" || fail "the hostile peer sent nothing: $SUMMARY"
+grep -q "; heard 0 (" <<<"$SUMMARY" || fail "an unsecured peer heard the campaign: $SUMMARY"
+grep -Eq "; heard from peers [1-9]" <<<"$SUMMARY" \
+  || fail "the unsecured peer heard nothing of the other one across the link: $SUMMARY"
 # Once the peer is gone (it would answer an unsecured request itself: that is what --insecure
 # risks), an --insecure client asks the secured coordinator to cancel: nobody answers.
 set +e
@@ -115,4 +129,4 @@ JOB=$(sql "$DB" "SELECT id FROM jobs WHERE kind = 'eval' LIMIT 1")
 for needle in "$ID" "$JOB" "tiny-b" "baseline/run" "Obstacle-rich, homogeneous" "north-block"; do
   if grep -qaF -- "$needle" "$WORK/link.pcap"; then fail "clear text on the link: '$needle'"; fi
 done
-echo "ok: secured campaign across namespaces ($FRAMES frames, no clear text; $(cat "$WORK/peer.out"))"
+echo "ok: secured campaign across namespaces ($FRAMES frames, no clear text; $SUMMARY)"

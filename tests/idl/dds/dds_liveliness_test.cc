@@ -28,23 +28,25 @@ class LivelinessTest : public ::testing::Test {
   LivelinessTest()
       : options_(testing::TestOptions()), participant_(options_), reader_(participant_) {}
 
-  // Starts the child writer (on our tag unless `tag` is given) and returns its first status.
-  std::optional<Received<msg::WorkerStatus>> StartChild(const std::string& worker_id,
-                                                        double timeout_s = 10.0,
-                                                        const std::string& tag = "") {
-    child_ = std::make_unique<ChildProcess>(
-        std::vector<std::string>{testing::SelfExecutable(), testing::kChildWriterFlag,
-                                 std::to_string(options_.domain),
-                                 tag.empty() ? options_.loopback_tag : tag, worker_id},
-        dir_ + "/child.out", dir_ + "/child.err");
+  // Starts the child writer on our tag and returns its first status.
+  std::optional<Received<msg::WorkerStatus>> StartChild(const std::string& worker_id) {
+    child_ = StartChildMode(testing::kChildWriterFlag, options_.loopback_tag, worker_id, "child");
     return AwaitSample(
-        reader_, [&](const auto& r) { return r.valid && r.data.worker_id == worker_id; },
-        timeout_s);
+        reader_, [&](const auto& r) { return r.valid && r.data.worker_id == worker_id; }, 10.0);
   }
-  std::string ChildOutput() const {
+  // This binary in a child mode on our domain, its output in NAME.out and NAME.err.
+  std::unique_ptr<ChildProcess> StartChildMode(const char* flag, const std::string& tag,
+                                               const std::string& worker_id,
+                                               const std::string& name) {
+    return std::make_unique<ChildProcess>(
+        std::vector<std::string>{testing::SelfExecutable(), flag, std::to_string(options_.domain),
+                                 tag, worker_id},
+        dir_ + "/" + name + ".out", dir_ + "/" + name + ".err");
+  }
+  std::string ChildOutput(const std::string& name = "child") const {
     std::string text;
-    for (const char* name : {"/child.out", "/child.err"}) {
-      if (FILE* f = std::fopen((dir_ + name).c_str(), "r")) {
+    for (const std::string suffix : {".out", ".err"}) {
+      if (FILE* f = std::fopen((dir_ + "/" + name + suffix).c_str(), "r")) {
         char buffer[512];
         std::size_t n = 0;
         while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0)
@@ -61,8 +63,10 @@ class LivelinessTest : public ::testing::Test {
   }
   void TearDown() override {
     child_.reset();
-    std::remove((dir_ + "/child.out").c_str());
-    std::remove((dir_ + "/child.err").c_str());
+    for (const char* name : {"child", "listener"}) {
+      std::remove((dir_ + "/" + name + ".out").c_str());
+      std::remove((dir_ + "/" + name + ".err").c_str());
+    }
     ::rmdir(dir_.c_str());
   }
 
@@ -118,12 +122,28 @@ TEST_F(LivelinessTest, CleanlyStoppedWriterShowsAsDisposed) {
 TEST_F(LivelinessTest, AnotherTagOnTheSameDomainIsNotSeen) {
   const std::string other_tag = testing::TestOptions().loopback_tag;
   ASSERT_NE(other_tag, options_.loopback_tag);
-  const auto seen = StartChild("w-other", 1.5, other_tag);
-  EXPECT_FALSE(seen.has_value()) << "a participant with another tag was discovered";
-  EXPECT_EQ(reader_.MatchedWriters(), 0);
-  // The child did run and write (it is not just slow): it said so.
-  EXPECT_TRUE(WaitFor([&] { return ChildOutput().find("ready") != std::string::npos; }))
+  // The positive control: a listener on the writer's own tag and our domain hears the writer in
+  // the same window, so that silence on our tag means the tag parted them, not that the writer
+  // never wrote, wrote elsewhere or was slow.
+  const auto listener = StartChildMode(testing::kChildReaderFlag, other_tag, "w-other", "listener");
+  ASSERT_TRUE(WaitFor([&] { return ChildOutput("listener").find("ready") != std::string::npos; }))
+      << ChildOutput("listener");
+  child_ = StartChildMode(testing::kChildWriterFlag, other_tag, "w-other", "child");
+  const auto seen_on_our_tag = [&](const auto& r) { return r.data.worker_id == "w-other"; };
+  bool seen = false;
+  EXPECT_TRUE(WaitFor(
+      [&] {
+        seen = seen || AwaitSample(reader_, seen_on_our_tag, 0.0).has_value();
+        return listener->Poll();
+      },
+      30.0));
+  ASSERT_TRUE(listener->exit_status().exited && listener->exit_status().code == 0)
+      << "the listener on the writer's tag heard nothing: " << ChildOutput("listener")
       << ChildOutput();
+  // The writer's own tag heard it; ours, until then and for 1.5 s more, did not.
+  seen = seen || AwaitSample(reader_, seen_on_our_tag, 1.5).has_value();
+  EXPECT_FALSE(seen) << "a participant with another tag was discovered";
+  EXPECT_EQ(reader_.MatchedWriters(), 0);
   EXPECT_FALSE(child_->Poll()) << ChildOutput();
 }
 

@@ -70,6 +70,29 @@ int RunChildWriter(int argc, char** argv) {
   }
 }
 
+int RunChildReader(int argc, char** argv) {
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: %s %s DOMAIN TAG WORKER_ID\n", argv[0], kChildReaderFlag);
+    return 2;
+  }
+  try {
+    Participant participant(ChildOptions(argv));
+    Reader<msg::WorkerStatus> reader(participant);
+    std::printf("ready\n");
+    std::fflush(stdout);
+    const std::string worker_id = argv[4];
+    if (!AwaitSample(
+            reader, [&](const auto& r) { return r.valid && r.data.worker_id == worker_id; }, 30.0))
+      return 3;
+    std::printf("heard\n");
+    std::fflush(stdout);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "child reader: %s\n", e.what());
+    return 1;
+  }
+}
+
 int RunChildLateCoordinator(int argc, char** argv) {
   if (argc != 4) {
     std::fprintf(stderr, "usage: %s %s DOMAIN TAG\n", argv[0], kChildLateCoordinatorFlag);

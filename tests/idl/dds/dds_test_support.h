@@ -39,6 +39,13 @@ std::string SelfExecutable();
 inline constexpr char kChildWriterFlag[] = "--rlpos-child-writer";
 int RunChildWriter(int argc, char** argv);
 
+// The flag that makes the test binary a listener, the positive control of a "not seen" check:
+//   rlpos_dds_tests --rlpos-child-reader DOMAIN TAG WORKER_ID
+// It prints "ready" once its reader exists, then "heard" and exits 0 once a WorkerStatus of
+// WORKER_ID arrived; it exits 3 if none did within 30 s.
+inline constexpr char kChildReaderFlag[] = "--rlpos-child-reader";
+int RunChildReader(int argc, char** argv);
+
 // The flag that makes the test binary a bystander that becomes a coordinator late:
 //   rlpos_dds_tests --rlpos-child-late-coordinator DOMAIN TAG
 // It reads campaign requests and writes replies; on the first request it forges a reply
