@@ -1,7 +1,7 @@
 #pragma once
-// The C++ side of rlpos_messages.idl: plain structs the daemons use; topics.cc converts them to
-// and from the generated C types, so no other file sees the C API. A job travels as the typed
-// JobOrder of common/wire/job_order.h.
+// The C++ side of rlpos_messages.idl: plain structs the daemons use; message_fields.h lists each
+// one's fields against the generated C type once, for both directions, so no other file sees
+// the C API. A job travels as the typed JobOrder of common/wire/job_order.h.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -18,13 +18,16 @@
 //   CampaignReply    reliable, volatile, keep all: the client waits for the coordinator's
 //                    writer before it asks, and each reply is unregistered once written, so
 //                    nothing is kept per request
-// Strings and documents are checked against the IDL's bounds both ways: Write throws DdsError
-// for a field too long; Take marks a sample that does not decode (decode_error).
+// Strings and documents are checked against the IDL's bounds both ways, by one field list per
+// message (message_fields.h) and with one error, MessageError: Write throws it for a field too
+// long; Take records it in decode_error for a sample that does not decode.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "idl/dds/message_error.h"
 #include "idl/dds/messages.h"
 #include "idl/dds/participant.h"
 
@@ -42,10 +45,28 @@ struct Received {
 };
 
 // Decodes one received sample of M's C type (rlpos_messages.h) as Reader::Take does: bounds
-// and enum values checked (decode_error), only the key fields when !valid. Public so that the
-// decoders are fuzz-tested without a network.
+// and enum values checked (decode_error: the MessageError's what()), only the key fields when
+// !valid. Public so that the decoders are fuzz-tested without a network.
 template <typename M>
 Received<M> DecodeSample(const void* c_sample, bool valid);
+
+// The C sample of a message as Writer hands it to Cyclone. Its octet sequences borrow the
+// message's texts: `message` must outlive it. Throws MessageError for a field over its bound.
+// Public, like DecodeSample, so that both directions are tested without a network.
+template <typename M>
+class EncodedSample {
+ public:
+  explicit EncodedSample(const M& message);
+  ~EncodedSample();
+  EncodedSample(const EncodedSample&) = delete;
+  EncodedSample& operator=(const EncodedSample&) = delete;
+
+  const void* c_sample() const;  // M's C type
+
+ private:
+  struct Storage;
+  std::unique_ptr<Storage> storage_;
+};
 
 template <typename M>
 class Writer {

@@ -1,0 +1,268 @@
+// Each message through its field list both ways without a network: C++ -> C sample -> C++ gives
+// back every field (each set to a value other than its default, so that a field the list drops
+// or maps to another shows), and a field over its bound is refused with MessageError naming it,
+// when written and when received.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "idl/dds/topics.h"
+#include "rlpos_messages.h"
+#include "common/wire/limits.h"
+
+namespace rlpos {
+namespace {
+
+template <typename M>
+Received<M> RoundTrip(const M& message) {
+  const EncodedSample<M> encoded(message);
+  return DecodeSample<M>(encoded.c_sample(), true);
+}
+
+// The field named by the MessageError that encoding `message` throws, or "" when none is thrown.
+template <typename M>
+std::string RefusedField(const M& message) {
+  try {
+    EncodedSample<M> encoded(message);
+  } catch (const MessageError& e) {
+    return e.field();
+  }
+  return "";
+}
+
+// Every field as a tuple of standard types, for one EXPECT_EQ that names what differs.
+auto Fields(const msg::WorkerStatus& m) {
+  return std::make_tuple(m.worker_id, m.host, m.pid, m.slots, m.busy, m.jobs);
+}
+
+auto Fields(const msg::JobAssignment& m) {
+  const JobOrder& o = m.order;
+  const JobParams& p = o.params;
+  std::vector<std::tuple<std::string, std::string>> overrides;
+  for (const auto& x : p.overrides)
+    overrides.emplace_back(x.path, x.value);
+  std::optional<std::vector<std::array<double, 3>>> placement;
+  if (o.placement) {
+    placement.emplace();
+    for (const Vec3& q : *o.placement)
+      placement->push_back({q.x, q.y, q.z});
+  }
+  return std::make_tuple(m.worker_id, m.slot, o.job_id, o.attempt, o.campaign_id, o.timeout_s,
+                         static_cast<int>(p.kind), p.scenario, o.scenario_document, overrides,
+                         p.train_seed, p.fidelity, p.train_episodes, p.positioner, placement,
+                         p.rng_run, p.duration_s, p.warmup_s);
+}
+
+auto Fields(const msg::JobEvent& m) {
+  const Provenance& p = m.provenance;
+  std::vector<std::tuple<std::string, std::string, std::string>> artifacts;
+  for (const auto& a : m.artifacts)
+    artifacts.emplace_back(a.name, a.sha256, a.data);
+  return std::make_tuple(m.worker_id, m.slot, m.job_id, m.attempt, static_cast<int>(m.state),
+                         m.result_json, m.message, p.host, p.rlpos_version, p.ns3_version,
+                         p.torch_version, p.cyclonedds_version, p.scenario_sha256, artifacts);
+}
+
+auto Fields(const msg::CampaignRequest& m) {
+  std::vector<std::tuple<std::string, std::string>> scenarios;
+  for (const auto& s : m.scenarios)
+    scenarios.emplace_back(s.file, s.document);
+  return std::make_tuple(m.request_id, static_cast<int>(m.kind), m.campaign_id, m.campaign_json,
+                         scenarios, m.no_cache);
+}
+
+auto Fields(const msg::CampaignReply& m) {
+  return std::make_tuple(m.request_id, m.ok, m.campaign_id, m.jobs, m.created, m.message);
+}
+
+template <typename M>
+void ExpectRoundTrip(const M& sent) {
+  const Received<M> got = RoundTrip(sent);
+  EXPECT_EQ(got.decode_error, "");
+  EXPECT_EQ(Fields(got.data), Fields(sent));
+}
+
+msg::WorkerStatus Status() {
+  msg::WorkerStatus s;
+  s.worker_id = "w-7";
+  s.host = "h\xc3\xb4te";
+  s.pid = (std::int64_t{1} << 40) + 3;
+  s.slots = 4;
+  s.busy = 2;
+  s.jobs = {"c0ffee/eval/B/rl/run1#2", "c0ffee/train/B/seed3#1"};
+  return s;
+}
+
+msg::JobAssignment Eval() {
+  msg::JobAssignment a;
+  a.worker_id = "w-7";
+  a.slot = 3;
+  JobOrder& o = a.order;
+  o.job_id = "c0ffee/eval/B/rl/run2";
+  o.attempt = 4;
+  o.campaign_id = "c0ffee";
+  o.timeout_s = 12.5;
+  o.params.kind = JobKind::kEval;
+  o.params.scenario = "B";
+  o.params.train_seed = 9;
+  o.params.rng_run = 7;
+  o.params.duration_s = 5;
+  o.params.warmup_s = 0.5;
+  o.params.overrides = {{"wifi.mode", "\"adhoc\""}, {"ues.0.demand", "12.5"}};
+  o.placement = Placement{{10, 20, 30}, {40.25, 50, 60}, {70, 80, 90.5}};
+  o.scenario_document = R"({"name": "B"})";
+  return a;
+}
+
+msg::JobAssignment Train() {
+  msg::JobAssignment a = Eval();
+  a.order.params = JobParams{};
+  a.order.params.kind = JobKind::kTrain;
+  a.order.params.scenario = "C";
+  a.order.params.train_seed = 11;
+  a.order.params.fidelity = "packet";
+  a.order.params.train_episodes = 25;
+  a.order.placement.reset();
+  return a;
+}
+
+msg::JobAssignment Position() {
+  msg::JobAssignment a = Eval();
+  a.order.params = JobParams{};
+  a.order.params.kind = JobKind::kPosition;
+  a.order.params.scenario = "C";
+  a.order.params.positioner = "oracle";
+  a.order.params.duration_s = 0.25;
+  a.order.placement.reset();
+  return a;
+}
+
+msg::JobEvent Event() {
+  msg::JobEvent e;
+  e.worker_id = "w-7";
+  e.slot = 2;
+  e.job_id = "c0ffee/train/B/seed3";
+  e.attempt = 5;
+  e.state = msg::JobState::kSucceeded;
+  e.result_json = R"({"reward": 3.5})";
+  e.message = "episode 3/10";
+  e.provenance = {"host-a", "v0.1-3-gabc", "3.37", "1.13.0", "0.10.2", std::string(64, 'e')};
+  e.artifacts = {{"policy.pt", std::string(64, 'a'), std::string("\0\x01\xff", 3)},
+                 {"learning_curve.csv", std::string(64, 'b'), "episode,reward\n1,2\n"}};
+  return e;
+}
+
+msg::CampaignRequest Request() {
+  msg::CampaignRequest r;
+  r.request_id = "client-1-7";
+  r.kind = msg::RequestKind::kRetry;
+  r.campaign_id = "c0ffee";
+  r.campaign_json = R"({"name": "m"})";
+  r.scenarios = {{"scenarios/b.json", R"({"name": "B"})"}, {"c.json", "{}"}};
+  r.no_cache = true;
+  return r;
+}
+
+msg::CampaignReply Reply() {
+  msg::CampaignReply r;
+  r.request_id = "client-1-7";
+  r.ok = true;
+  r.campaign_id = "c0ffee";
+  r.jobs = 44;
+  r.created = true;
+  r.message = "submitted";
+  return r;
+}
+
+TEST(MessageCodec, WorkerStatusRoundTrips) {
+  ExpectRoundTrip(Status());
+  msg::WorkerStatus s = Status();
+  s.jobs.push_back(std::string(301, 'j'));
+  EXPECT_EQ(RefusedField(s), "jobs");
+}
+
+TEST(MessageCodec, JobAssignmentOfEachKindRoundTrips) {
+  for (const auto& a : {Eval(), Train(), Position()}) {
+    SCOPED_TRACE(a.order.job_id + " " + ToString(a.order.params.kind));
+    ExpectRoundTrip(a);
+  }
+  msg::JobAssignment a = Eval();
+  a.order.params.overrides[1].value = std::string(4097, 'v');
+  EXPECT_EQ(RefusedField(a), "override value");
+}
+
+TEST(MessageCodec, JobEventRoundTrips) {
+  ExpectRoundTrip(Event());
+  msg::JobEvent e = Event();
+  e.provenance.ns3_version = std::string(33, '3');
+  EXPECT_EQ(RefusedField(e), "provenance ns3_version");
+}
+
+TEST(MessageCodec, CampaignRequestRoundTrips) {
+  ExpectRoundTrip(Request());
+  msg::CampaignRequest r = Request();
+  r.scenarios.assign(wire::kMaxCampaignScenarios + 1, msg::ScenarioFile{"b.json", "{}"});
+  EXPECT_EQ(RefusedField(r), "scenarios");
+}
+
+TEST(MessageCodec, CampaignReplyRoundTrips) {
+  ExpectRoundTrip(Reply());
+  msg::CampaignReply r = Reply();
+  r.campaign_id = std::string(65, 'c');
+  EXPECT_EQ(RefusedField(r), "campaign_id");
+}
+
+TEST(MessageCodec, TheErrorNamesTheFieldItsSizeAndBound) {
+  msg::WorkerStatus s = Status();
+  s.host = std::string(129, 'h');
+  try {
+    EncodedSample<msg::WorkerStatus> encoded(s);
+    FAIL() << "a host of 129 bytes was encoded";
+  } catch (const MessageError& e) {
+    EXPECT_STREQ(e.what(), "host: 129 bytes exceed the bound of 128");
+  }
+  s.host = std::string("h\0st", 4);
+  EXPECT_EQ(RefusedField(s), "host");
+}
+
+// A received sample over a bound, or with an enum value the IDL does not know, gets the same
+// error in decode_error; its key fields stay, so that the daemons can name its instance.
+TEST(MessageCodec, AReceivedFieldOverItsBoundIsRefusedWithTheSameError) {
+  std::string result(wire::kMaxResultJson + 1, 'r');
+  rlpos_msg_JobEvent c{};
+  std::strcpy(c.worker_id, "w-7");
+  c.slot = 2;
+  c.result_json._buffer = reinterpret_cast<std::uint8_t*>(result.data());
+  c.result_json._length = c.result_json._maximum = static_cast<std::uint32_t>(result.size());
+  Received<msg::JobEvent> got = DecodeSample<msg::JobEvent>(&c, true);
+  EXPECT_EQ(got.decode_error, "result_json: 262145 bytes exceed the bound of 262144");
+  EXPECT_EQ(got.data.worker_id, "w-7");
+  EXPECT_EQ(got.data.slot, 2);
+
+  c.result_json._length = c.result_json._maximum = 0;
+  const std::int32_t unknown = 4;
+  std::memcpy(&c.state, &unknown, sizeof unknown);
+  got = DecodeSample<msg::JobEvent>(&c, true);
+  EXPECT_EQ(got.decode_error, "state: 4 is not a known value");
+}
+
+TEST(MessageCodec, ASampleWithoutDataDecodesOnlyItsKey) {
+  const msg::JobAssignment sent = Eval();
+  const EncodedSample<msg::JobAssignment> encoded(sent);
+  const Received<msg::JobAssignment> got =
+      DecodeSample<msg::JobAssignment>(encoded.c_sample(), false);
+  EXPECT_EQ(got.decode_error, "");
+  EXPECT_EQ(got.data.worker_id, sent.worker_id);
+  EXPECT_EQ(got.data.slot, sent.slot);
+  EXPECT_EQ(got.data.order.job_id, "");
+  EXPECT_FALSE(got.data.order.placement.has_value());
+}
+
+}  // namespace
+}  // namespace rlpos
