@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "store/results_store.h"
+#include "store/store_records.h"
 
 namespace rlpos {
 

@@ -25,8 +25,8 @@
 #include "dds/participant.h"
 #include "logging/drop_log.h"
 #include "process/file_lock.h"
+#include "scheduling/coordinator_store.h"
 #include "scheduling/scheduler.h"
-#include "store/results_store.h"
 #include "wire/campaign_request.h"
 
 namespace rlpos {
@@ -85,7 +85,7 @@ class CoordinatorDaemon {
 
   CoordinatorOptions options_;
   ExclusiveFileLock lock_;  // one coordinator per database
-  ResultsStore store_;
+  CoordinatorStore store_;
   Scheduler scheduler_;
   Participant participant_;
   std::unique_ptr<Endpoints> dds_;

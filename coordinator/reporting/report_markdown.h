@@ -7,7 +7,7 @@
 
 #include "reporting/campaign_summary.h"
 #include "reporting/uav_summary.h"
-#include "store/results_store.h"
+#include "store/results_reader.h"
 
 namespace rlpos {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "store/results_store.h"
+#include "store/results_reader.h"
 
 namespace rlpos {
 
