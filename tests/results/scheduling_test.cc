@@ -223,5 +223,23 @@ TEST_F(SchedulerTest, RunsAMiniCampaignToTheEnd) {
   EXPECT_EQ(ticks, 9);  // 44 jobs on 5 slots, never idle: producers free evals in time
 }
 
+// The binding rule refuses what it cannot bind: offset evals are defined around one UAV, so a
+// producer with offset dependants that reports several UAVs fails that attempt, and nothing of
+// the result is written.
+TEST_F(SchedulerTest, APlacementOfSeveralUavsCannotFeedOffsetEvals) {
+  const std::string train = campaign_.id + "/train/B/seed1";
+  ASSERT_TRUE(store_.ledger.MarkRunning(train, "w1", 0, 1));
+  nlohmann::json result = testing::PositionResult(50, 35, 10);
+  result["positions"] = {{50, 35, 10}, {20, 20, 10}};
+  EXPECT_EQ(store_.recorder.RecordSuccess(train, 1, result, "w1"), JobUpdate::kRetrying);
+  const JobRecord job = *store_.reader.GetJob(train);
+  EXPECT_EQ(job.state, "ready");
+  EXPECT_EQ(job.error.value_or(""),
+            "malformed result: a placement of 2 UAVs, but offset evals (defined for one) depend "
+            "on it");
+  EXPECT_FALSE(job.result.has_value());
+  EXPECT_FALSE(store_.reader.GetJob(campaign_.id + "/eval/B/offset1/run1")->placement);
+}
+
 }  // namespace
 }  // namespace rlpos
