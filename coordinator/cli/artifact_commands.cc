@@ -11,7 +11,8 @@
 #include "common/files/atomic_file.h"
 #include "common/hash/sha256.h"
 #include "common/store/artifact_files.h"
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
+#include "common/store/store_db.h"
 #include "common/store/store_error.h"
 
 namespace rlpos {
@@ -34,7 +35,8 @@ int ListOrExportArtifacts(const std::string& db, const std::string& id,
                           const std::string& out_dir) {
   StoreOptions options;
   options.read_only = true;
-  ResultsStore store(db, options);
+  StoreDb opened(db, options);
+  ResultsReader store(opened);
   const std::vector<ArtifactRecord> artifacts = store.Artifacts(id);
   if (artifacts.empty()) {
     if (!store.GetJob(id))

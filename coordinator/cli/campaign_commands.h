@@ -5,7 +5,7 @@
 
 #include "common/campaign/expansion.h"
 #include "idl/dds/dds_config.h"
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
 
 namespace rlpos {
 
@@ -44,7 +44,7 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
                 bool per_uav);
 // The summary table, then the per-UAV one when the campaign has scenarios of several UAVs.
-std::string ResultsTables(ResultsStore& store, const std::string& campaign_id);
+std::string ResultsTables(ResultsReader& store, const std::string& campaign_id);
 // security init DIR; security add-worker|add-client DIR NAME.
 int InitSecurity(const std::string& dir, int days);
 int AddSecurityIdentity(const std::string& dir, const std::string& name, DdsRole role, int days);

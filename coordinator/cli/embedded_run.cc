@@ -29,7 +29,8 @@
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
+#include "common/store/store_db.h"
 #include "common/campaign/campaign_request.h"
 
 namespace rlpos {
@@ -196,7 +197,7 @@ int RunCampaign(const RunOptions& options) {
   const fs::path db_dir = fs::absolute(options.db).parent_path();
   fs::create_directories(db_dir);
   // A database that cannot be opened or migrated is bad input: say so before starting anything.
-  { ResultsStore check(options.db); }
+  { StoreDb check(options.db); }
   {
     // The coordinator would refuse a database another coordinator owns; say so up front.
     try {
@@ -269,7 +270,8 @@ int RunCampaign(const RunOptions& options) {
 
     StoreOptions read_only;
     read_only.read_only = true;
-    ResultsStore store(options.db, read_only);
+    StoreDb opened(options.db, read_only);
+    ResultsReader store(opened);
     for (;;) {
       if (StopRequested()) {
         stop_all();

@@ -11,7 +11,8 @@
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/uav_summary.h"
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
+#include "common/store/store_db.h"
 #include "common/store/store_error.h"
 
 namespace rlpos {
@@ -31,7 +32,8 @@ StoreOptions ReadOnly() {
 
 int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch, double period_s) {
   for (;;) {
-    ResultsStore store(db, ReadOnly());
+    StoreDb opened(db, ReadOnly());
+    ResultsReader store(opened);
     std::vector<CampaignProgress> campaigns;
     if (campaign_id.empty()) {
       campaigns = store.AllProgress();
@@ -72,7 +74,8 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
 
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
                 bool per_uav) {
-  ResultsStore store(db, ReadOnly());
+  StoreDb opened(db, ReadOnly());
+  ResultsReader store(opened);
   store.Progress(campaign_id);  // StoreError for an unknown campaign
   if (per_uav) {
     const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
@@ -95,7 +98,7 @@ int ShowResults(const std::string& db, const std::string& campaign_id, const std
   return kExitOk;
 }
 
-std::string ResultsTables(ResultsStore& store, const std::string& campaign_id) {
+std::string ResultsTables(ResultsReader& store, const std::string& campaign_id) {
   std::string out = FormatSummaryText(SummarizeCampaign(store, campaign_id));
   const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
   if (!uavs.empty())
@@ -105,7 +108,8 @@ std::string ResultsTables(ResultsStore& store, const std::string& campaign_id) {
 
 int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
                         const std::string& out_dir) {
-  ResultsStore store(db, ReadOnly());
+  StoreDb opened(db, ReadOnly());
+  ResultsReader store(opened);
   ReportOptions options;
   options.plot_script = DefaultPlotScript(ExecutableDir());
   const ReportResult result = WriteReport(store, campaign_id, out_dir, options);

@@ -61,11 +61,11 @@ CoordinatorDaemon::CoordinatorDaemon(CoordinatorOptions options, const DdsOption
     : options_(std::move(options)),
       lock_(options_.db_file + ".coordinator.lock"),
       store_(options_.db_file, StoreOptionsOf(options_)),
-      scheduler_(store_),
+      scheduler_(store_.ledger),
       participant_(dds),
       dds_(std::make_unique<Endpoints>(participant_)) {
   // Nothing is known alive until DDS says so.
-  store_.MarkAllWorkersLost();
+  store_.ledger.MarkAllWorkersLost();
   started_ = Now();
 }
 
@@ -96,7 +96,7 @@ void CoordinatorDaemon::HandleRequests() {
           CampaignPlan campaign =
               PlanSubmittedCampaign(r.data.campaign_json, scenarios, options_.limits);
           campaign.use_cache = !r.data.no_cache;
-          const SubmitResult result = store_.Submit(campaign);
+          const SubmitResult result = store_.ledger.Submit(campaign);
           reply.campaign_id = result.campaign_id;
           reply.jobs = result.jobs;
           reply.created = result.created;
@@ -107,7 +107,7 @@ void CoordinatorDaemon::HandleRequests() {
         }
         case msg::RequestKind::kCancel: {
           reply.campaign_id = r.data.campaign_id;
-          const auto stopped = store_.CancelCampaign(r.data.campaign_id);
+          const auto stopped = store_.ledger.CancelCampaign(r.data.campaign_id);
           for (const auto& job : stopped)
             Withdraw(job.id);
           reply.jobs = static_cast<int>(stopped.size());
@@ -116,7 +116,7 @@ void CoordinatorDaemon::HandleRequests() {
         }
         case msg::RequestKind::kRetry: {
           reply.campaign_id = r.data.campaign_id;
-          reply.jobs = store_.RetryFailed(r.data.campaign_id);
+          reply.jobs = store_.ledger.RetryFailed(r.data.campaign_id);
           Log(LogLevel::kInfo,
               "retrying " + std::to_string(reply.jobs) + " job(s) of " + r.data.campaign_id);
           break;
@@ -169,7 +169,7 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
         record.pid = r.data.pid;
         record.slots = r.data.slots;
         record.busy = r.data.busy;
-        store_.UpsertWorker(record);
+        store_.ledger.UpsertWorker(record);
         w.host = r.data.host;
         w.pid = r.data.pid;
         w.written_at = now;
@@ -194,7 +194,7 @@ void CoordinatorDaemon::HandleWorkerStatuses() {
     }
     const int slots = known->second.slots.slots;
     live_.erase(known);
-    store_.SetWorkerState(id, stopped ? "stopped" : "lost");
+    store_.ledger.SetWorkerState(id, stopped ? "stopped" : "lost");
     const auto requeued = scheduler_.WorkerLost(id);
     for (const auto& job_id : requeued)
       Withdraw(job_id);
@@ -267,7 +267,7 @@ void CoordinatorDaemon::HandleJobEvent(const msg::JobEvent& e, const std::string
     Log(LogLevel::kDebug, key + " on " + e.worker_id + ": " +
                               (e.message.empty() ? std::string("started") : e.message));
     if (e.state == msg::JobState::kProgress)
-      store_.SetProgress(e.job_id, e.attempt, e.message, e.worker_id);
+      store_.ledger.SetProgress(e.job_id, e.attempt, e.message, e.worker_id);
     return;
   }
   JobUpdate update = JobUpdate::kUnknown;
@@ -276,13 +276,13 @@ void CoordinatorDaemon::HandleJobEvent(const msg::JobEvent& e, const std::string
     try {
       result = wire::ParseBoundedJson(e.result_json, wire::kMaxResultJson, "the result");
     } catch (const std::invalid_argument& error) {
-      update = store_.RecordFailure(e.job_id, e.attempt, error.what(), e.worker_id);
+      update = store_.ledger.RecordFailure(e.job_id, e.attempt, error.what(), e.worker_id);
     }
     if (update == JobUpdate::kUnknown)
-      update = store_.RecordSuccess(e.job_id, e.attempt, result, e.worker_id, &e.provenance,
-                                    e.artifacts);
+      update = store_.recorder.RecordSuccess(e.job_id, e.attempt, result, e.worker_id,
+                                             &e.provenance, e.artifacts);
   } else {
-    update = store_.RecordFailure(e.job_id, e.attempt, e.message, e.worker_id);
+    update = store_.ledger.RecordFailure(e.job_id, e.attempt, e.message, e.worker_id);
   }
   if (update == JobUpdate::kUnknown || update == JobUpdate::kStale) {
     // Not the worker's current attempt (late, duplicate, or not its job): nothing changed.
@@ -306,7 +306,7 @@ void CoordinatorDaemon::WithdrawStale(const std::string& worker_id, int slots,
   // does not give a job of this worker is emptied.
   std::set<std::string> held;
   std::set<int> held_slots;
-  for (const auto& job : store_.ListRunning()) {
+  for (const auto& job : store_.ledger.ListRunning()) {
     if (job.worker_id == worker_id) {
       held.insert(job.id + "#" + std::to_string(job.attempt));
       held_slots.insert(job.slot);
@@ -331,7 +331,7 @@ void CoordinatorDaemon::WithdrawStale(const std::string& worker_id, int slots,
 void CoordinatorDaemon::AfterGrace() {
   grace_over_ = true;
   std::set<std::string> gone;
-  for (const auto& job : store_.ListRunning()) {
+  for (const auto& job : store_.ledger.ListRunning()) {
     if (!live_.count(job.worker_id))
       gone.insert(job.worker_id);
   }
@@ -339,7 +339,7 @@ void CoordinatorDaemon::AfterGrace() {
     const auto requeued = scheduler_.WorkerLost(worker_id);
     for (const auto& job_id : requeued)
       Withdraw(job_id);
-    store_.SetWorkerState(worker_id, "lost");
+    store_.ledger.SetWorkerState(worker_id, "lost");
     Log(LogLevel::kWarning, "worker " + worker_id + " did not come back; " +
                                 std::to_string(requeued.size()) + " job(s) back to the queue");
   }
@@ -363,10 +363,10 @@ void CoordinatorDaemon::Publish(const ReadyJob& job, const std::string& worker_i
 void CoordinatorDaemon::Republish(const std::string& worker_id) {
   // After a restart: a worker that is back gets its running jobs again (it ignores attempts it
   // already has), in case an assignment was lost with the old coordinator.
-  for (const auto& job : store_.ListRunning()) {
+  for (const auto& job : store_.ledger.ListRunning()) {
     if (job.worker_id != worker_id || published_.count(job.id))
       continue;
-    if (const auto record = store_.GetJob(job.id)) {
+    if (const auto record = store_.reader.GetJob(job.id)) {
       ReadyJob ready;
       ready.id = record->id;
       ready.campaign_id = record->campaign_id;
@@ -400,7 +400,7 @@ const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campai
                                                        const std::string& name) {
   auto it = documents_.find(campaign_id);
   if (it == documents_.end()) {
-    const auto spec = store_.CampaignSpecPart(campaign_id, "scenarios");
+    const auto spec = store_.reader.CampaignSpecPart(campaign_id, "scenarios");
     it = documents_
              .emplace(campaign_id,
                       spec ? ScenarioDocumentsByName(*spec) : std::map<std::string, std::string>{})
@@ -436,7 +436,7 @@ void CoordinatorDaemon::PublishTick(const TickResult& tick) {
 void CoordinatorDaemon::Run() {
   Log(LogLevel::kInfo, "coordinator ready on DDS domain " +
                            std::to_string(participant_.options().domain) + ", database " +
-                           store_.file());
+                           store_.db.file());
   auto last_round = std::chrono::steady_clock::now();
   bool busy = false;
   while (!StopRequested()) {
@@ -451,7 +451,7 @@ void CoordinatorDaemon::Run() {
     HandleRequests();  // its replies follow its own commits
     // One commit for the round's statuses, events and assignments; the assignments go out
     // only once it is on disk, so a restarted coordinator never forgets a job it handed out.
-    StoreBatch batch = store_.Batch();
+    StoreBatch batch = store_.db.Batch();
     HandleWorkerStatuses();
     const std::size_t events = HandleJobEvents();
     if (!grace_over_ && Now() - started_ >= options_.restart_grace_s)

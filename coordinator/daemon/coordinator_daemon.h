@@ -25,8 +25,8 @@
 #include "idl/dds/participant.h"
 #include "common/logging/drop_log.h"
 #include "common/process/file_lock.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "coordinator/scheduling/scheduler.h"
-#include "common/store/results_store.h"
 #include "common/campaign/campaign_request.h"
 
 namespace rlpos {
@@ -85,7 +85,7 @@ class CoordinatorDaemon {
 
   CoordinatorOptions options_;
   ExclusiveFileLock lock_;  // one coordinator per database
-  ResultsStore store_;
+  CoordinatorStore store_;
   Scheduler scheduler_;
   Participant participant_;
   std::unique_ptr<Endpoints> dds_;

@@ -75,7 +75,7 @@ std::vector<PositionerSummary> SummarizeRuns(const std::vector<MetricRow>& rows)
   return out;
 }
 
-std::vector<PositionerSummary> SummarizeCampaign(ResultsStore& store,
+std::vector<PositionerSummary> SummarizeCampaign(ResultsReader& store,
                                                  const std::string& campaign_id) {
   store.Progress(campaign_id);  // throws StoreError for an unknown campaign
   return SummarizeRuns(store.Metrics(campaign_id));

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
 
 namespace rlpos {
 
@@ -40,8 +40,8 @@ struct PositionerSummary {
 // report order (see ReportLabelLess). Empty rows give an empty summary.
 std::vector<PositionerSummary> SummarizeRuns(const std::vector<MetricRow>& rows);
 
-// SummarizeRuns over ResultsStore::Metrics. Throws StoreError for an unknown campaign.
-std::vector<PositionerSummary> SummarizeCampaign(ResultsStore& store,
+// SummarizeRuns over ResultsReader::Metrics. Throws StoreError for an unknown campaign.
+std::vector<PositionerSummary> SummarizeCampaign(ResultsReader& store,
                                                  const std::string& campaign_id);
 
 }  // namespace rlpos

@@ -60,7 +60,7 @@ std::vector<LearningCurvePoint> ReadCurveFile(const std::string& file, const Art
 
 }  // namespace
 
-std::vector<LearningCurvePoint> ReadLearningCurves(ResultsStore& store,
+std::vector<LearningCurvePoint> ReadLearningCurves(ResultsReader& store,
                                                    const std::string& campaign_id,
                                                    std::vector<std::string>& warnings) {
   const std::filesystem::path root = ArtifactsDirOf(store.file());

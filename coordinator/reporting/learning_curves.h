@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
 
 namespace rlpos {
 
@@ -17,7 +17,7 @@ struct LearningCurvePoint {
 
 // The points of every train job of the campaign that has a learning curve, in job order. A
 // curve file that is missing or unreadable adds a warning naming it and is skipped.
-std::vector<LearningCurvePoint> ReadLearningCurves(ResultsStore& store,
+std::vector<LearningCurvePoint> ReadLearningCurves(ResultsReader& store,
                                                    const std::string& campaign_id,
                                                    std::vector<std::string>& warnings);
 

@@ -7,7 +7,7 @@
 
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/uav_summary.h"
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
 
 namespace rlpos {
 

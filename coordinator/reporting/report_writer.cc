@@ -13,7 +13,7 @@
 
 namespace rlpos {
 
-ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
+ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
                          const std::string& out_dir, const ReportOptions& options) {
   const CampaignProgress progress = store.Progress(campaign_id);  // StoreError when unknown
   const std::vector<MetricRow> rows = store.Metrics(campaign_id);

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
 
 namespace rlpos {
 
@@ -24,7 +24,7 @@ struct ReportResult {
 // their curves home), then the PNGs of the plot script. Throws
 // StoreError for an unknown campaign, std::runtime_error naming the path when a file or the
 // folder cannot be written. A plot failure is a warning, not an error.
-ReportResult WriteReport(ResultsStore& store, const std::string& campaign_id,
+ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
                          const std::string& out_dir, const ReportOptions& options = {});
 
 // Where the build and install put the plot script relative to the folder of the rlpos

@@ -1,6 +1,6 @@
 #pragma once
 // Per UAV of the scenarios with several: what each UAV's share of the succeeded eval runs says
-// (ResultsStore::UavMetrics, view v_eval_uavs), for `rlpos-campaign results` and the report.
+// (ResultsReader::UavMetrics, view v_eval_uavs), for `rlpos-campaign results` and the report.
 // Single-UAV scenarios are left out: their one UAV is the summary's row.
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
 
 namespace rlpos {
 

@@ -10,8 +10,8 @@ TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double 
   TickResult result;
   if (now >= next_timeout_check_) {
     next_timeout_check_ = now + kTimeoutCheckS;
-    for (auto& t : FindTimedOut(store_.ListRunning(), now)) {
-      const JobUpdate update = store_.RecordFailure(t.job.id, t.job.attempt, t.error);
+    for (auto& t : FindTimedOut(ledger_.ListRunning(), now)) {
+      const JobUpdate update = ledger_.RecordFailure(t.job.id, t.job.attempt, t.error);
       if (update == JobUpdate::kRetrying || update == JobUpdate::kFailed) {
         result.timed_out.push_back(std::move(t));
       }
@@ -21,7 +21,7 @@ TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double 
   std::map<std::string, int> by_worker;
   std::map<std::string, int> by_campaign;
   std::map<std::string, std::set<int>> taken;  // worker -> slots that run a job
-  for (const auto& running : store_.RunningSlots()) {
+  for (const auto& running : ledger_.RunningSlots()) {
     ++by_worker[running.worker_id];
     ++by_campaign[running.campaign_id];
     taken[running.worker_id].insert(running.slot);
@@ -39,14 +39,14 @@ TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double 
   for (const auto& w : workers)
     slots[w.id] = w.slots;
   // `free` per campaign is enough for any fair share of the free slots.
-  for (auto& a : AssignJobs(store_.ListReady(free), workers, by_campaign)) {
+  for (auto& a : AssignJobs(ledger_.ListReady(free), workers, by_campaign)) {
     std::set<int>& used = taken[a.worker_id];
     int slot = 0;
     while (used.count(slot))
       ++slot;
     if (slot >= slots[a.worker_id])
       continue;  // not reached: AssignJobs gives no worker more jobs than free slots
-    if (store_.MarkRunning(a.job.id, a.worker_id, slot, a.job.attempt)) {
+    if (ledger_.MarkRunning(a.job.id, a.worker_id, slot, a.job.attempt)) {
       used.insert(slot);
       a.slot = slot;
       result.assigned.push_back(std::move(a));
@@ -56,7 +56,7 @@ TickResult Scheduler::Tick(const std::vector<WorkerSlots>& live_workers, double 
 }
 
 std::vector<std::string> Scheduler::WorkerLost(const std::string& worker_id) {
-  return store_.RequeueWorker(worker_id);
+  return ledger_.RequeueWorker(worker_id);
 }
 
 }  // namespace rlpos

@@ -8,7 +8,7 @@
 
 #include "coordinator/scheduling/assignment.h"
 #include "coordinator/scheduling/timeouts.h"
-#include "common/store/results_store.h"
+#include "common/store/job_ledger.h"
 
 namespace rlpos {
 
@@ -19,7 +19,7 @@ struct TickResult {
 
 class Scheduler {
  public:
-  explicit Scheduler(ResultsStore& store) : store_(store) {}
+  explicit Scheduler(JobLedger& ledger) : ledger_(ledger) {}
 
   // Fails timed-out jobs (looked for at most once per kTimeoutCheckS), then assigns ready jobs
   // to `live_workers`, each to the lowest slot of its worker that runs nothing in the store. A
@@ -33,7 +33,7 @@ class Scheduler {
   std::vector<std::string> WorkerLost(const std::string& worker_id);
 
  private:
-  ResultsStore& store_;
+  JobLedger& ledger_;
   double next_timeout_check_ = 0;
 };
 

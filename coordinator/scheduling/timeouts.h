@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "common/store/results_store.h"
+#include "common/store/store_records.h"
 
 namespace rlpos {
 

@@ -97,7 +97,7 @@ std::string Text(const std::vector<ScenarioOverride>& overrides) {
   return ::testing::AssertionFailure() << "params differ:" << diff;
 }
 
-nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id,
+nlohmann::json AtJobPosition(ResultsReader& store, const std::string& job_id,
                              nlohmann::json result) {
   const auto job = store.GetJob(job_id);
   if (job && job->placement) {

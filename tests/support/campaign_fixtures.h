@@ -8,7 +8,7 @@
 
 #include "common/campaign/campaign_spec.h"
 #include "common/campaign/expansion.h"
-#include "common/store/results_store.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "tests/support/temp_dir.h"
 
 namespace rlpos::testing {
@@ -31,7 +31,8 @@ std::string QueryOne(const std::string& db_file, const std::string& sql);
 
 // `result` with the position the store bound to the eval job (results of another position are
 // refused as implausible).
-nlohmann::json AtJobPosition(ResultsStore& store, const std::string& job_id, nlohmann::json result);
+nlohmann::json AtJobPosition(ResultsReader& store, const std::string& job_id,
+                             nlohmann::json result);
 
 // "x,y,z" per UAV, space-separated; "unbound" for none.
 std::string FormatPlacement(const std::optional<Placement>& placement);

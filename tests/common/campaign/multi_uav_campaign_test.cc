@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "common/store/results_store.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "common/store/schema.h"
 #include "common/store/sqlite_db.h"
 #include "tests/support/campaign_fixtures.h"
@@ -60,14 +60,14 @@ json EvalOfTwo(const Placement& at, std::uint64_t run) {
 class MultiUavStoreTest : public ::testing::Test {
  protected:
   MultiUavStoreTest() : campaign_(SeveralUavsCampaign()), store_(dir_.File("rlpos.db")) {
-    store_.Submit(campaign_);
+    store_.ledger.Submit(campaign_);
   }
   std::string Id(const std::string& key) const { return campaign_.id + "/" + key; }
-  JobRecord Job(const std::string& key) { return store_.GetJob(Id(key)).value(); }
+  JobRecord Job(const std::string& key) { return store_.reader.GetJob(Id(key)).value(); }
   JobUpdate Run(const std::string& key, const json& result) {
     const int attempt = Job(key).attempt;
-    EXPECT_TRUE(store_.MarkRunning(Id(key), "w1", 0, attempt)) << key;
-    return store_.RecordSuccess(Id(key), attempt, result);
+    EXPECT_TRUE(store_.ledger.MarkRunning(Id(key), "w1", 0, attempt)) << key;
+    return store_.recorder.RecordSuccess(Id(key), attempt, result);
   }
   std::string Query(const std::string& sql) {
     return testing::QueryOne(dir_.File("rlpos.db"), sql);
@@ -75,7 +75,7 @@ class MultiUavStoreTest : public ::testing::Test {
 
   testing::TempDir dir_;
   ExpandedCampaign campaign_;
-  ResultsStore store_;
+  CoordinatorStore store_;
 };
 
 TEST(MultiUavExpansion, EveryPositionerButTheOffsets) {
@@ -121,7 +121,7 @@ TEST_F(MultiUavStoreTest, ATrainedPlacementIsBoundToEveryRlEval) {
       "20.0,80.0,25.0 [[20.0,80.0,25.0],[60.5,15.0,30.0]]");
   // What a worker is ordered.
   int rl_evals = 0;
-  for (const ReadyJob& job : store_.ListReady()) {
+  for (const ReadyJob& job : store_.ledger.ListReady()) {
     if (job.params.kind != JobKind::kEval)
       continue;
     ++rl_evals;
@@ -147,7 +147,7 @@ TEST_F(MultiUavStoreTest, EachUavsMetricsLandInTheirTableAndView) {
       Query("SELECT DISTINCT positioner || ' ' || rng_run || ' ' || campaign FROM v_eval_uavs"),
       "centroid 2 several-uavs");
 
-  const std::vector<UavMetricRow> rows = store_.UavMetrics(campaign_.id);
+  const std::vector<UavMetricRow> rows = store_.reader.UavMetrics(campaign_.id);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[1].name, "south");
   EXPECT_EQ(rows[1].uav, 1);
@@ -181,18 +181,19 @@ TEST_F(MultiUavStoreTest, AResultOfAnotherPlacementOrThatDoesNotAddUpIsAFailedAt
 TEST(MultiUavStore, ASingleUavEvalHasOneRowNamedUav) {
   testing::TempDir dir;
   ExpandedCampaign mini = testing::MiniCampaign();
-  ResultsStore store(dir.File("rlpos.db"));
-  store.Submit(mini);
+  CoordinatorStore store(dir.File("rlpos.db"));
+  store.ledger.Submit(mini);
   const std::string producer = mini.id + "/position/B/baseline";
-  ASSERT_TRUE(store.MarkRunning(producer, "w1", 0, 1));
-  ASSERT_EQ(store.RecordSuccess(producer, 1, testing::PositionResult(50, 35, 10)),
+  ASSERT_TRUE(store.ledger.MarkRunning(producer, "w1", 0, 1));
+  ASSERT_EQ(store.recorder.RecordSuccess(producer, 1, testing::PositionResult(50, 35, 10)),
             JobUpdate::kSucceeded);
   const std::string eval = mini.id + "/eval/B/baseline/run1";
-  ASSERT_TRUE(store.MarkRunning(eval, "w1", 0, 1));
-  ASSERT_EQ(store.RecordSuccess(
-                eval, 1, testing::AtJobPosition(store, eval, testing::EvalResult(1, 120, 30))),
-            JobUpdate::kSucceeded);
-  const auto rows = store.UavMetrics(mini.id);
+  ASSERT_TRUE(store.ledger.MarkRunning(eval, "w1", 0, 1));
+  ASSERT_EQ(
+      store.recorder.RecordSuccess(
+          eval, 1, testing::AtJobPosition(store.reader, eval, testing::EvalResult(1, 120, 30))),
+      JobUpdate::kSucceeded);
+  const auto rows = store.reader.UavMetrics(mini.id);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].name, "uav");
   EXPECT_EQ(rows[0].uav, 0);
@@ -229,9 +230,9 @@ TEST(MultiUavStore, ASchemaNineFilesEvalsGetTheirOneUav) {
         "min_snr_db, x, y, z, worst_ue_throughput_mbps, jain_fairness) VALUES "
         "('c0ffee/e', 'c0ffee', 'B', 'rl', 4, 99.5, 12, 0, 2, 4, 4, 20, 1, 2, 3, 10, 0.9);");
   }
-  ResultsStore store(file);
-  EXPECT_EQ(store.SchemaVersion(), LatestSchemaVersion());
-  const auto rows = store.UavMetrics("c0ffee");
+  CoordinatorStore store(file);
+  EXPECT_EQ(store.db.SchemaVersion(), LatestSchemaVersion());
+  const auto rows = store.reader.UavMetrics("c0ffee");
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].name, "uav");
   EXPECT_EQ(rows[0].ues_served, 4);
@@ -239,7 +240,7 @@ TEST(MultiUavStore, ASchemaNineFilesEvalsGetTheirOneUav) {
   EXPECT_DOUBLE_EQ(rows[0].throughput_mbps, 99.5);
   EXPECT_DOUBLE_EQ(rows[0].jain_fairness.value(), 0.9);
   EXPECT_DOUBLE_EQ(rows[0].z, 3);
-  EXPECT_EQ(testing::FormatPlacement(store.GetJob("c0ffee/e")->placement), "1,2,3");
+  EXPECT_EQ(testing::FormatPlacement(store.reader.GetJob("c0ffee/e")->placement), "1,2,3");
 }
 
 }  // namespace

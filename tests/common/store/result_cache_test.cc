@@ -7,7 +7,7 @@
 
 #include "common/campaign/job_content.h"
 #include "common/hash/sha256.h"
-#include "common/store/results_store.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {
@@ -36,15 +36,17 @@ class ResultCacheTest : public ::testing::Test {
   // `produced` says, evals give a throughput of 100 + run. Returns how many jobs ran.
   int RunAll(const std::function<Vec3(const ReadyJob&)>& produced = Produced) {
     int ran = 0;
-    for (auto ready = store_.ListReady(); !ready.empty(); ready = store_.ListReady()) {
+    for (auto ready = store_.ledger.ListReady(); !ready.empty();
+         ready = store_.ledger.ListReady()) {
       for (const auto& job : ready) {
-        EXPECT_TRUE(store_.MarkRunning(job.id, "w1", 0, job.attempt));
+        EXPECT_TRUE(store_.ledger.MarkRunning(job.id, "w1", 0, job.attempt));
         nlohmann::json result =
             job.params.kind == JobKind::kEval
-                ? AtJobPosition(store_, job.id,
+                ? AtJobPosition(store_.reader, job.id,
                                 EvalResult(*job.params.rng_run, 100.0 + *job.params.rng_run, 5))
                 : PositionResult(produced(job).x, produced(job).y, produced(job).z);
-        EXPECT_EQ(store_.RecordSuccess(job.id, job.attempt, result, "w1"), JobUpdate::kSucceeded)
+        EXPECT_EQ(store_.recorder.RecordSuccess(job.id, job.attempt, result, "w1"),
+                  JobUpdate::kSucceeded)
             << job.id;
         ++ran;
       }
@@ -63,23 +65,23 @@ class ResultCacheTest : public ::testing::Test {
   }
 
   testing::TempDir dir_;
-  ResultsStore store_;
+  CoordinatorStore store_;
 };
 
 TEST_F(ResultCacheTest, ACampaignUnderANewNameIsServedWholeAtSubmit) {
   const ExpandedCampaign first = Named("first");
-  store_.Submit(first);
+  store_.ledger.Submit(first);
   const int ran = RunAll();
   EXPECT_EQ(ran, static_cast<int>(first.jobs.size()));
 
   const ExpandedCampaign again = Named("again");
   ASSERT_NE(again.id, first.id);
-  store_.Submit(again);
-  EXPECT_TRUE(store_.ListReady().empty());
-  const CampaignProgress progress = store_.Progress(again.id);
+  store_.ledger.Submit(again);
+  EXPECT_TRUE(store_.ledger.ListReady().empty());
+  const CampaignProgress progress = store_.reader.Progress(again.id);
   EXPECT_EQ(progress.succeeded, progress.total);
   EXPECT_EQ(progress.cached, progress.total);
-  EXPECT_EQ(store_.Progress(first.id).cached, 0);
+  EXPECT_EQ(store_.reader.Progress(first.id).cached, 0);
   EXPECT_EQ(progress.state, "finished");
   // Every row says where its result came from, and the metrics are the same.
   EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE campaign_id = '" + again.id +
@@ -89,7 +91,8 @@ TEST_F(ResultCacheTest, ACampaignUnderANewNameIsServedWholeAtSubmit) {
                   "a.campaign_id = '" +
                   again.id + "' AND f.campaign_id = '" + first.id + "'"),
             std::to_string(first.jobs.size()));
-  const auto metrics_first = store_.Metrics(first.id), metrics_again = store_.Metrics(again.id);
+  const auto metrics_first = store_.reader.Metrics(first.id),
+             metrics_again = store_.reader.Metrics(again.id);
   ASSERT_EQ(metrics_again.size(), metrics_first.size());
   for (std::size_t i = 0; i < metrics_first.size(); ++i) {
     EXPECT_EQ(metrics_again[i].label, metrics_first[i].label);
@@ -101,25 +104,25 @@ TEST_F(ResultCacheTest, ACampaignUnderANewNameIsServedWholeAtSubmit) {
 
 TEST_F(ResultCacheTest, RetryTakesWhatAnotherCampaignComputedMeanwhile) {
   const ExpandedCampaign stopped = Named("stopped");
-  store_.Submit(stopped);
-  store_.CancelCampaign(stopped.id);
+  store_.ledger.Submit(stopped);
+  store_.ledger.CancelCampaign(stopped.id);
   const ExpandedCampaign done = Named("done");
-  store_.Submit(done);
+  store_.ledger.Submit(done);
   EXPECT_EQ(RunAll(), static_cast<int>(done.jobs.size()));
 
-  EXPECT_EQ(store_.RetryFailed(stopped.id), static_cast<int>(stopped.jobs.size()));
-  EXPECT_TRUE(store_.ListReady().empty());  // nothing left to run
-  const CampaignProgress progress = store_.Progress(stopped.id);
+  EXPECT_EQ(store_.ledger.RetryFailed(stopped.id), static_cast<int>(stopped.jobs.size()));
+  EXPECT_TRUE(store_.ledger.ListReady().empty());  // nothing left to run
+  const CampaignProgress progress = store_.reader.Progress(stopped.id);
   EXPECT_EQ(progress.cached, progress.total);
   EXPECT_EQ(progress.state, "finished");
 }
 
 TEST_F(ResultCacheTest, NoCacheRunsEveryJob) {
   const ExpandedCampaign first = Named("first");
-  store_.Submit(first);
+  store_.ledger.Submit(first);
   RunAll();
   const ExpandedCampaign again = Named("again", false);
-  store_.Submit(again);
+  store_.ledger.Submit(again);
   EXPECT_EQ(RunAll(), static_cast<int>(again.jobs.size()));
   EXPECT_EQ(Query("SELECT COUNT(*) FROM jobs WHERE cached_from IS NOT NULL"), "0");
 }
@@ -131,7 +134,7 @@ TEST_F(ResultCacheTest, IdenticalEvalsInACampaignRunOnce) {
   spec.train.seeds = {1, 2};
   spec.positioners = {"rl"};
   const ExpandedCampaign campaign = ExpandCampaign(spec);
-  store_.Submit(campaign);
+  store_.ledger.Submit(campaign);
   const int ran = RunAll();
   // 2 scenarios x (2 trains + 2 runs of rl); rl@seed2's evals took rl's results.
   EXPECT_EQ(ran, 2 * (2 + 2));
@@ -146,7 +149,7 @@ TEST_F(ResultCacheTest, AnotherPositionOrRunIsAnotherContent) {
   spec.train.seeds = {1, 2};
   spec.positioners = {"rl"};
   const ExpandedCampaign campaign = ExpandCampaign(spec);
-  store_.Submit(campaign);
+  store_.ledger.Submit(campaign);
   // Seed 2's training ends elsewhere: nothing is shared.
   const int ran = RunAll([](const ReadyJob& job) {
     return Vec3{job.params.train_seed == 2u ? 55.0 : 50.0, 50, 30};
@@ -158,18 +161,18 @@ TEST_F(ResultCacheTest, AnotherPositionOrRunIsAnotherContent) {
 TEST_F(ResultCacheTest, AJobWaitingForATwinThatFailsRunsItself) {
   const ExpandedCampaign first = Named("first");
   const ExpandedCampaign again = Named("again");
-  store_.Submit(first);
-  store_.Submit(again);
+  store_.ledger.Submit(first);
+  store_.ledger.Submit(again);
   // Every ready job of "again" waits for its twin in "first".
-  for (const auto& job : store_.ListReady())
+  for (const auto& job : store_.ledger.ListReady())
     EXPECT_EQ(job.campaign_id, first.id) << job.id;
   const std::string train = first.id + "/train/B/seed1";
   const std::string twin = again.id + "/train/B/seed1";
-  const int attempt = store_.GetJob(train)->attempt;
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, attempt));
-  store_.CancelCampaign(first.id);
+  const int attempt = store_.reader.GetJob(train)->attempt;
+  ASSERT_TRUE(store_.ledger.MarkRunning(train, "w1", 0, attempt));
+  store_.ledger.CancelCampaign(first.id);
   bool listed = false;
-  for (const auto& job : store_.ListReady())
+  for (const auto& job : store_.ledger.ListReady())
     listed = listed || job.id == twin;
   EXPECT_TRUE(listed);
 }
@@ -177,20 +180,20 @@ TEST_F(ResultCacheTest, AJobWaitingForATwinThatFailsRunsItself) {
 TEST_F(ResultCacheTest, AWaitingJobIsServedWhenItsTwinSucceeds) {
   const ExpandedCampaign first = Named("first");
   const ExpandedCampaign again = Named("again");
-  store_.Submit(first);
-  store_.Submit(again);
+  store_.ledger.Submit(first);
+  store_.ledger.Submit(again);
   const std::string train = first.id + "/train/B/seed1";
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, 1));
-  ASSERT_EQ(store_.RecordSuccess(train, 1, PositionResult(50, 50, 30), "w1", nullptr,
-                                 {{"policy.pt", Sha256Hex("weights"), "weights"}}),
+  ASSERT_TRUE(store_.ledger.MarkRunning(train, "w1", 0, 1));
+  ASSERT_EQ(store_.recorder.RecordSuccess(train, 1, PositionResult(50, 50, 30), "w1", nullptr,
+                                          {{"policy.pt", Sha256Hex("weights"), "weights"}}),
             JobUpdate::kSucceeded);
-  const auto served = store_.GetJob(again.id + "/train/B/seed1");
+  const auto served = store_.reader.GetJob(again.id + "/train/B/seed1");
   ASSERT_TRUE(served);
   EXPECT_EQ(served->state, "succeeded");
   EXPECT_EQ(Query("SELECT cached_from FROM jobs WHERE id = '" + again.id + "/train/B/seed1'"),
             train);
   // Its artifacts are the source's files.
-  const auto artifacts = store_.Artifacts(again.id);
+  const auto artifacts = store_.reader.Artifacts(again.id);
   ASSERT_EQ(artifacts.size(), 1u);
   EXPECT_EQ(artifacts[0].path, train + "/policy.pt");
   EXPECT_EQ(artifacts[0].cached_from, train);

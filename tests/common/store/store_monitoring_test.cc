@@ -2,7 +2,7 @@
 // jobs, running jobs and their progress lines.
 #include <gtest/gtest.h>
 
-#include "common/store/results_store.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "common/store/store_error.h"
 #include "tests/support/campaign_fixtures.h"
 
@@ -48,21 +48,21 @@ class MonitoringTest : public ::testing::Test {
   testing::TempDir dir_;
   double now_ = 1000.0;
   ExpandedCampaign campaign_;
-  ResultsStore store_;
+  CoordinatorStore store_;
 };
 
 TEST_F(MonitoringTest, UpsertWorkerKeepsFirstSeenAndRefreshesTheRest) {
-  EXPECT_TRUE(store_.ListWorkers().empty());
-  store_.UpsertWorker(Worker("w2", 4, 1));
+  EXPECT_TRUE(store_.reader.ListWorkers().empty());
+  store_.ledger.UpsertWorker(Worker("w2", 4, 1));
   now_ = 1010;
-  store_.UpsertWorker(Worker("w1", 2, 0));
+  store_.ledger.UpsertWorker(Worker("w1", 2, 0));
   now_ = 1020;
   WorkerRecord again = Worker("w2", 4, 3);
   again.host = "elsewhere";
   again.pid = 99;
-  store_.UpsertWorker(again);
+  store_.ledger.UpsertWorker(again);
 
-  const auto workers = store_.ListWorkers();
+  const auto workers = store_.reader.ListWorkers();
   ASSERT_EQ(Ids(workers), (std::vector<std::string>{"w1", "w2"}));
   const WorkerRecord& w1 = workers[0];
   EXPECT_EQ(w1.host, "host-w1");
@@ -82,16 +82,16 @@ TEST_F(MonitoringTest, UpsertWorkerKeepsFirstSeenAndRefreshesTheRest) {
 }
 
 TEST_F(MonitoringTest, WorkerStatesAndListOrder) {
-  store_.UpsertWorker(Worker("a", 1, 1));
-  store_.UpsertWorker(Worker("b", 2, 2));
-  store_.UpsertWorker(Worker("c", 3, 1));
-  store_.UpsertWorker(Worker("d", 4, 0));
+  store_.ledger.UpsertWorker(Worker("a", 1, 1));
+  store_.ledger.UpsertWorker(Worker("b", 2, 2));
+  store_.ledger.UpsertWorker(Worker("c", 3, 1));
+  store_.ledger.UpsertWorker(Worker("d", 4, 0));
   now_ = 1100;
-  store_.SetWorkerState("a", "lost");
-  store_.SetWorkerState("c", "stopped");
-  store_.SetWorkerState("nobody", "lost");  // no-op
+  store_.ledger.SetWorkerState("a", "lost");
+  store_.ledger.SetWorkerState("c", "stopped");
+  store_.ledger.SetWorkerState("nobody", "lost");  // no-op
 
-  auto workers = store_.ListWorkers();
+  auto workers = store_.reader.ListWorkers();
   // Alive first, then the others, each group by id.
   EXPECT_EQ(Ids(workers), (std::vector<std::string>{"b", "d", "a", "c"}));
   if (const auto* a = Find(workers, "a")) {
@@ -103,18 +103,18 @@ TEST_F(MonitoringTest, WorkerStatesAndListOrder) {
   if (const auto* c = Find(workers, "c")) {
     EXPECT_EQ(c->state, "stopped");
   }
-  EXPECT_THROW(store_.SetWorkerState("b", "zombie"), StoreError);  // CHECK constraint
+  EXPECT_THROW(store_.ledger.SetWorkerState("b", "zombie"), StoreError);  // CHECK constraint
 
   // A lost worker that shows up again is alive.
   now_ = 1200;
-  store_.UpsertWorker(Worker("a", 1, 1));
-  workers = store_.ListWorkers();
+  store_.ledger.UpsertWorker(Worker("a", 1, 1));
+  workers = store_.reader.ListWorkers();
   EXPECT_EQ(Ids(workers), (std::vector<std::string>{"a", "b", "d", "c"}));
 
   // The coordinator's start: every alive worker is lost (busy 0, last_seen kept); stopped stays.
   now_ = 1300;
-  store_.MarkAllWorkersLost();
-  workers = store_.ListWorkers();
+  store_.ledger.MarkAllWorkersLost();
+  workers = store_.reader.ListWorkers();
   EXPECT_EQ(Ids(workers), (std::vector<std::string>{"a", "b", "c", "d"}));
   for (const auto& w : workers) {
     SCOPED_TRACE(w.id);
@@ -128,45 +128,45 @@ TEST_F(MonitoringTest, WorkerStatesAndListOrder) {
 }
 
 TEST_F(MonitoringTest, UnknownCampaignThrows) {
-  store_.Submit(campaign_);
-  EXPECT_THROW(store_.Timing("nope"), StoreError);
-  EXPECT_THROW(store_.FailedJobs("nope"), StoreError);
-  EXPECT_THROW(store_.RunningJobs("nope"), StoreError);
-  EXPECT_FALSE(store_.CampaignSpecPart("nope", "scenarios").has_value());
+  store_.ledger.Submit(campaign_);
+  EXPECT_THROW(store_.reader.Timing("nope"), StoreError);
+  EXPECT_THROW(store_.reader.FailedJobs("nope"), StoreError);
+  EXPECT_THROW(store_.reader.RunningJobs("nope"), StoreError);
+  EXPECT_FALSE(store_.reader.CampaignSpecPart("nope", "scenarios").has_value());
   for (const std::string key : {"scenarios", "name", "rng_runs", "retries"}) {
-    const auto part = store_.CampaignSpecPart(campaign_.id, key);
+    const auto part = store_.reader.CampaignSpecPart(campaign_.id, key);
     ASSERT_TRUE(part.has_value()) << key;
     EXPECT_EQ(*part, nlohmann::json({{key, nlohmann::json::parse(campaign_.spec_json).at(key)}}))
         << key;
   }
-  EXPECT_EQ(store_.CampaignSpecPart(campaign_.id, "nosuchkey"), nlohmann::json::object());
+  EXPECT_EQ(store_.reader.CampaignSpecPart(campaign_.id, "nosuchkey"), nlohmann::json::object());
 }
 
 TEST_F(MonitoringTest, TimingFollowsStartsAndFinishes) {
-  store_.Submit(campaign_);
-  CampaignTiming t = store_.Timing(campaign_.id);
+  store_.ledger.Submit(campaign_);
+  CampaignTiming t = store_.reader.Timing(campaign_.id);
   EXPECT_DOUBLE_EQ(t.created_at, 1000);
   EXPECT_FALSE(t.first_started_at.has_value());
   EXPECT_FALSE(t.last_finished_at.has_value());
   EXPECT_EQ(t.finished, 0);
 
   now_ = 1010;
-  ASSERT_TRUE(store_.MarkRunning(Id("position/B/centroid"), "w1", 0, 1));
+  ASSERT_TRUE(store_.ledger.MarkRunning(Id("position/B/centroid"), "w1", 0, 1));
   now_ = 1025;
-  ASSERT_TRUE(store_.MarkRunning(Id("position/C/oracle"), "w1", 0, 1));
-  t = store_.Timing(campaign_.id);
+  ASSERT_TRUE(store_.ledger.MarkRunning(Id("position/C/oracle"), "w1", 0, 1));
+  t = store_.reader.Timing(campaign_.id);
   ASSERT_TRUE(t.first_started_at.has_value());
   EXPECT_DOUBLE_EQ(*t.first_started_at, 1010);
   EXPECT_FALSE(t.last_finished_at.has_value());
   EXPECT_EQ(t.finished, 0);
 
   now_ = 1040;
-  ASSERT_EQ(store_.RecordSuccess(Id("position/C/oracle"), 1, PositionResult(50, 50, 30)),
+  ASSERT_EQ(store_.recorder.RecordSuccess(Id("position/C/oracle"), 1, PositionResult(50, 50, 30)),
             JobUpdate::kSucceeded);
   now_ = 1060;
-  ASSERT_EQ(store_.RecordSuccess(Id("position/B/centroid"), 1, PositionResult(40, 40, 25)),
+  ASSERT_EQ(store_.recorder.RecordSuccess(Id("position/B/centroid"), 1, PositionResult(40, 40, 25)),
             JobUpdate::kSucceeded);
-  t = store_.Timing(campaign_.id);
+  t = store_.reader.Timing(campaign_.id);
   EXPECT_DOUBLE_EQ(t.created_at, 1000);
   EXPECT_DOUBLE_EQ(*t.first_started_at, 1010);
   ASSERT_TRUE(t.last_finished_at.has_value());
@@ -174,23 +174,23 @@ TEST_F(MonitoringTest, TimingFollowsStartsAndFinishes) {
   EXPECT_EQ(t.finished, 2);
 
   now_ = 1100;
-  store_.CancelCampaign(campaign_.id);
-  t = store_.Timing(campaign_.id);
+  store_.ledger.CancelCampaign(campaign_.id);
+  t = store_.reader.Timing(campaign_.id);
   EXPECT_EQ(t.finished, 44);  // 2 succeeded, 42 cancelled
   EXPECT_DOUBLE_EQ(*t.last_finished_at, 1100);
 }
 
 TEST_F(MonitoringTest, FailedJobsListExhaustedJobsAndTheirDependents) {
-  store_.Submit(campaign_);
-  EXPECT_TRUE(store_.FailedJobs(campaign_.id).empty());
+  store_.ledger.Submit(campaign_);
+  EXPECT_TRUE(store_.reader.FailedJobs(campaign_.id).empty());
   const std::string train = Id("train/B/seed1");
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, 1));
-  ASSERT_EQ(store_.RecordFailure(train, 1, "first crash"), JobUpdate::kRetrying);
-  EXPECT_TRUE(store_.FailedJobs(campaign_.id).empty());  // retrying is not failed
-  ASSERT_TRUE(store_.MarkRunning(train, "w1", 0, 2));
-  ASSERT_EQ(store_.RecordFailure(train, 2, "second crash"), JobUpdate::kFailed);
+  ASSERT_TRUE(store_.ledger.MarkRunning(train, "w1", 0, 1));
+  ASSERT_EQ(store_.ledger.RecordFailure(train, 1, "first crash"), JobUpdate::kRetrying);
+  EXPECT_TRUE(store_.reader.FailedJobs(campaign_.id).empty());  // retrying is not failed
+  ASSERT_TRUE(store_.ledger.MarkRunning(train, "w1", 0, 2));
+  ASSERT_EQ(store_.ledger.RecordFailure(train, 2, "second crash"), JobUpdate::kFailed);
 
-  const auto failed = store_.FailedJobs(campaign_.id);
+  const auto failed = store_.reader.FailedJobs(campaign_.id);
   // The train job, then its 12 evals (rl and offset1..5, runs 1 and 2) in expansion order.
   ASSERT_EQ(failed.size(), 13u);
   EXPECT_EQ(failed[0].key, "train/B/seed1");
@@ -209,20 +209,20 @@ TEST_F(MonitoringTest, FailedJobsListExhaustedJobsAndTheirDependents) {
     EXPECT_GT(seq, previous_seq);
     previous_seq = seq;
   }
-  EXPECT_EQ(store_.Timing(campaign_.id).finished, 13);
+  EXPECT_EQ(store_.reader.Timing(campaign_.id).finished, 13);
 }
 
 TEST_F(MonitoringTest, RunningJobsShowWorkerAttemptAndProgress) {
-  store_.Submit(campaign_);
+  store_.ledger.Submit(campaign_);
   now_ = 1005;
-  ASSERT_TRUE(store_.MarkRunning(Id("position/B/oracle"), "w7", 0, 1));
+  ASSERT_TRUE(store_.ledger.MarkRunning(Id("position/B/oracle"), "w7", 0, 1));
   now_ = 1007;
-  ASSERT_TRUE(store_.MarkRunning(Id("train/C/seed1"), "w8", 0, 1));
-  store_.SetProgress(Id("train/C/seed1"), 1, "episode 3/10");
-  store_.SetProgress(Id("train/C/seed1"), 2, "stale attempt");  // ignored
-  store_.SetProgress(Id("train/B/seed1"), 1, "not running");    // ignored
+  ASSERT_TRUE(store_.ledger.MarkRunning(Id("train/C/seed1"), "w8", 0, 1));
+  store_.ledger.SetProgress(Id("train/C/seed1"), 1, "episode 3/10");
+  store_.ledger.SetProgress(Id("train/C/seed1"), 2, "stale attempt");  // ignored
+  store_.ledger.SetProgress(Id("train/B/seed1"), 1, "not running");    // ignored
 
-  const auto running = store_.RunningJobs(campaign_.id);
+  const auto running = store_.reader.RunningJobs(campaign_.id);
   ASSERT_EQ(running.size(), 2u);
   EXPECT_EQ(running[0].key, "position/B/oracle");
   EXPECT_EQ(running[0].worker_id, "w7");
@@ -236,8 +236,8 @@ TEST_F(MonitoringTest, RunningJobsShowWorkerAttemptAndProgress) {
 }
 
 TEST_F(MonitoringTest, ReadyJobsCarryTheirScenarioName) {
-  store_.Submit(campaign_);
-  const auto ready = store_.ListReady();
+  store_.ledger.Submit(campaign_);
+  const auto ready = store_.ledger.ListReady();
   ASSERT_FALSE(ready.empty());
   int b = 0, c = 0;
   for (const auto& job : ready) {

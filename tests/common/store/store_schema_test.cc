@@ -14,7 +14,7 @@
 
 #include "common/job/position_rule.h"
 #include "common/scenario/number_text.h"
-#include "common/store/results_store.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "common/store/schema.h"
 #include "common/store/store_error.h"
 #include "tests/support/campaign_fixtures.h"
@@ -42,7 +42,7 @@ std::string OpenError(const std::string& file, bool read_only = false) {
   try {
     StoreOptions options;
     options.read_only = read_only;
-    ResultsStore store(file, options);
+    CoordinatorStore store(file, options);
   } catch (const StoreError& e) {
     EXPECT_EQ(e.file(), file);
     return e.what();
@@ -63,9 +63,9 @@ TEST(StoreSchema, NewFileGetsTheLatestSchemaInWalMode) {
   TempDir dir;
   const std::string file = dir.File("new.db");
   {
-    ResultsStore store(file);
-    EXPECT_EQ(store.SchemaVersion(), LatestSchemaVersion());
-    EXPECT_EQ(store.file(), file);
+    CoordinatorStore store(file);
+    EXPECT_EQ(store.db.SchemaVersion(), LatestSchemaVersion());
+    EXPECT_EQ(store.db.file(), file);
   }
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
@@ -89,29 +89,29 @@ TEST(StoreSchema, EmptyFileIsMigrated) {
   TempDir dir;
   const std::string file = dir.File("empty.db");
   WriteFile(file, "");
-  ResultsStore store(file);
-  EXPECT_EQ(store.SchemaVersion(), LatestSchemaVersion());
-  EXPECT_TRUE(store.AllProgress().empty());
+  CoordinatorStore store(file);
+  EXPECT_EQ(store.db.SchemaVersion(), LatestSchemaVersion());
+  EXPECT_TRUE(store.reader.AllProgress().empty());
 }
 
 TEST(StoreSchema, ReopeningKeepsEverything) {
   TempDir dir;
   const std::string file = dir.File("keep.db");
   const ExpandedCampaign campaign = testing::MiniCampaign();
-  ResultsStore(file).Submit(campaign);
-  ResultsStore again(file);
-  EXPECT_EQ(again.Progress(campaign.id).total, 44);
-  EXPECT_FALSE(again.Submit(campaign).created);
+  CoordinatorStore(file).ledger.Submit(campaign);
+  CoordinatorStore again(file);
+  EXPECT_EQ(again.reader.Progress(campaign.id).total, 44);
+  EXPECT_FALSE(again.ledger.Submit(campaign).created);
   StoreOptions read_only;
   read_only.read_only = true;
-  ResultsStore reader(file, read_only);
-  EXPECT_EQ(reader.Progress(campaign.id).ready, 8);
+  CoordinatorStore reader(file, read_only);
+  EXPECT_EQ(reader.reader.Progress(campaign.id).ready, 8);
 }
 
 TEST(StoreSchema, NewerVersionIsRefused) {
   TempDir dir;
   const std::string file = dir.File("future.db");
-  ResultsStore{file};
+  StoreDb{file};
   Sql(file, "UPDATE schema_version SET version = 99");
   const std::string error = OpenError(file);
   EXPECT_EQ(error, "results store " + file +
@@ -132,12 +132,12 @@ TEST(StoreSchema, ReadOnlyOpenDoesNotMigrate) {
 TEST(StoreSchema, ReadOnlyStoreRefusesWrites) {
   TempDir dir;
   const std::string file = dir.File("ro.db");
-  ResultsStore{file};
+  StoreDb{file};
   StoreOptions options;
   options.read_only = true;
-  ResultsStore reader(file, options);
+  CoordinatorStore reader(file, options);
   try {
-    reader.Submit(testing::MiniCampaign());
+    reader.ledger.Submit(testing::MiniCampaign());
     FAIL() << "no error";
   } catch (const StoreError& e) {
     EXPECT_NE(std::string(e.what()).find(file), std::string::npos) << e.what();
@@ -165,7 +165,7 @@ TEST(StoreSchema, NotADatabase) {
 TEST(StoreSchema, CorruptDatabase) {
   TempDir dir;
   const std::string file = dir.File("corrupt.db");
-  ResultsStore{file};
+  StoreDb{file};
   {
     // Overwrite the schema page's b-tree header and cells, keeping the 100-byte file header.
     std::fstream io(file, std::ios::in | std::ios::out | std::ios::binary);
@@ -216,7 +216,7 @@ std::string OpenErrorWithoutPrivileges(const std::string& dir, const std::string
       code = 3;
     } else {
       try {
-        ResultsStore store(file);
+        CoordinatorStore store(file);
       } catch (const StoreError& e) {
         answer = e.what();
       } catch (const std::exception& e) {
@@ -247,7 +247,7 @@ std::string OpenErrorWithoutPrivileges(const std::string& dir, const std::string
 TEST(StoreSchema, ReadOnlyFile) {
   TempDir dir;
   const std::string file = dir.File("locked.db");
-  ResultsStore{file};
+  StoreDb{file};
   ASSERT_EQ(chmod(file.c_str(), 0444), 0);
   std::string skip;
   const std::string error = OpenErrorWithoutPrivileges(dir.path(), file, skip);
@@ -331,8 +331,8 @@ class LegacyStoreTest : public ::testing::Test {
 
 TEST_F(LegacyStoreTest, ArgvBecomesTypedColumnsAndIsDropped) {
   InsertOldCampaign();
-  ResultsStore store(file_);
-  EXPECT_EQ(store.SchemaVersion(), LatestSchemaVersion());
+  CoordinatorStore store(file_);
+  EXPECT_EQ(store.db.SchemaVersion(), LatestSchemaVersion());
   EXPECT_EQ(Query("SELECT COUNT(*) FROM pragma_table_info('jobs') WHERE name = 'argv_json'"), "0");
 
   const std::string eval = "eval/B/rl/run2";
@@ -360,10 +360,10 @@ TEST_F(LegacyStoreTest, ArgvBecomesTypedColumnsAndIsDropped) {
 
 TEST_F(LegacyStoreTest, MigratedJobsReadAndRunAsTheyWould) {
   InsertOldCampaign();
-  ResultsStore store(file_);
+  CoordinatorStore store(file_);
   const std::vector<ScenarioOverride> eval_set{{"simulation.warmup", "0.5"},
                                                {"wifi.mode", "adhoc"}};
-  const auto ready = store.ListReady();
+  const auto ready = store.ledger.ListReady();
   ASSERT_EQ(ready.size(), 2u);
   EXPECT_EQ(ready[0].id, "c0ffee/position/B/oracle");
   EXPECT_EQ(ready[0].params.kind, JobKind::kPosition);
@@ -381,7 +381,7 @@ TEST_F(LegacyStoreTest, MigratedJobsReadAndRunAsTheyWould) {
   EXPECT_EQ(testing::FormatPlacement(ready[1].placement), "50,35.5,10");
   EXPECT_DOUBLE_EQ(ready[1].timeout_s, 300.0);
 
-  const auto train = store.GetJob("c0ffee/train/B/seed1");
+  const auto train = store.reader.GetJob("c0ffee/train/B/seed1");
   ASSERT_TRUE(train.has_value());
   EXPECT_EQ(train->state, "succeeded");
   EXPECT_EQ(train->params.kind, JobKind::kTrain);
@@ -401,14 +401,15 @@ TEST_F(LegacyStoreTest, MigratedJobsReadAndRunAsTheyWould) {
   EXPECT_EQ(scenario["wifi"]["mode"], "adhoc");
 
   // The waiting eval is bound when its position job succeeds, like any schema-3 job.
-  const auto waiting = store.GetJob("c0ffee/eval/B/oracle/run1");
+  const auto waiting = store.reader.GetJob("c0ffee/eval/B/oracle/run1");
   ASSERT_TRUE(waiting.has_value());
   EXPECT_EQ(waiting->state, "pending");
   EXPECT_FALSE(waiting->placement.has_value());
-  ASSERT_TRUE(store.MarkRunning("c0ffee/position/B/oracle", "w1", 0, 1));
-  ASSERT_EQ(store.RecordSuccess("c0ffee/position/B/oracle", 1, testing::PositionResult(20, 30, 15)),
+  ASSERT_TRUE(store.ledger.MarkRunning("c0ffee/position/B/oracle", "w1", 0, 1));
+  ASSERT_EQ(store.recorder.RecordSuccess("c0ffee/position/B/oracle", 1,
+                                         testing::PositionResult(20, 30, 15)),
             JobUpdate::kSucceeded);
-  const auto bound = store.GetJob("c0ffee/eval/B/oracle/run1");
+  const auto bound = store.reader.GetJob("c0ffee/eval/B/oracle/run1");
   EXPECT_EQ(bound->state, "ready");
   EXPECT_EQ(testing::FormatPlacement(bound->placement), "20,30,15");
 }
@@ -418,7 +419,7 @@ TEST_F(LegacyStoreTest, UnreadableArgvLeavesTheFileAtVersionTwo) {
   InsertJob(4, "eval", "eval/B/rl/run3", "rl", "3", "1", "train/B/seed1", "ready",
             {"rlpos-sim", "eval", "--set", "no-equals-sign"});
   try {
-    ResultsStore store(file_);
+    CoordinatorStore store(file_);
     FAIL() << "migrated";
   } catch (const StoreError& e) {
     EXPECT_EQ(e.file(), file_);

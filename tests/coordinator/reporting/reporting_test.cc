@@ -17,7 +17,7 @@
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/run_groups.h"
-#include "common/store/results_store.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "common/store/store_error.h"
 #include "tests/support/campaign_fixtures.h"
 
@@ -72,14 +72,14 @@ std::string ExeDir() {
 class ReportingTest : public ::testing::Test {
  protected:
   ReportingTest() : campaign_(testing::MiniCampaign()), store_(dir_.File("rlpos.db")) {
-    store_.Submit(campaign_);
+    store_.ledger.Submit(campaign_);
   }
 
   std::string Id(const std::string& key) const { return campaign_.id + "/" + key; }
 
   void Produce(const std::string& key) {
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1)) << key;
-    ASSERT_EQ(store_.RecordSuccess(Id(key), 1, testing::PositionResult(50, 35, 10)),
+    ASSERT_TRUE(store_.ledger.MarkRunning(Id(key), "w1", 0, 1)) << key;
+    ASSERT_EQ(store_.recorder.RecordSuccess(Id(key), 1, testing::PositionResult(50, 35, 10)),
               JobUpdate::kSucceeded)
         << key;
   }
@@ -91,16 +91,16 @@ class ReportingTest : public ::testing::Test {
     if (!delay_ms)
       result["mean_delay_ms"] = nullptr;
     result["n_los"] = n_los;
-    result = testing::AtJobPosition(store_, Id(key), result);
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1)) << key;
-    ASSERT_EQ(store_.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded) << key;
+    result = testing::AtJobPosition(store_.reader, Id(key), result);
+    ASSERT_TRUE(store_.ledger.MarkRunning(Id(key), "w1", 0, 1)) << key;
+    ASSERT_EQ(store_.recorder.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded) << key;
   }
 
   void FailTwice(const std::string& key) {
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1));
-    ASSERT_EQ(store_.RecordFailure(Id(key), 1, "exit code 1"), JobUpdate::kRetrying);
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 2));
-    ASSERT_EQ(store_.RecordFailure(Id(key), 2, "exit code 1"), JobUpdate::kFailed);
+    ASSERT_TRUE(store_.ledger.MarkRunning(Id(key), "w1", 0, 1));
+    ASSERT_EQ(store_.ledger.RecordFailure(Id(key), 1, "exit code 1"), JobUpdate::kRetrying);
+    ASSERT_TRUE(store_.ledger.MarkRunning(Id(key), "w1", 0, 2));
+    ASSERT_EQ(store_.ledger.RecordFailure(Id(key), 2, "exit code 1"), JobUpdate::kFailed);
   }
 
   void RecordResults() {
@@ -123,7 +123,7 @@ class ReportingTest : public ::testing::Test {
 
   testing::TempDir dir_;
   ExpandedCampaign campaign_;
-  ResultsStore store_;
+  CoordinatorStore store_;
 };
 
 // --- Order ---
@@ -170,7 +170,7 @@ TEST(ReportOrder, ScenariosKeepTheOrderOfTheRows) {
 
 TEST_F(ReportingTest, SummaryMatchesHandComputedValues) {
   RecordResults();
-  const auto summary = SummarizeCampaign(store_, campaign_.id);
+  const auto summary = SummarizeCampaign(store_.reader, campaign_.id);
   std::vector<std::string> order;
   for (const auto& s : summary)
     order.push_back(s.scenario + "/" + s.positioner);
@@ -244,9 +244,9 @@ TEST_F(ReportingTest, MedianOfThreeRunsIsTheMiddleOne) {
 }
 
 TEST_F(ReportingTest, EmptyAndUnknownCampaigns) {
-  EXPECT_TRUE(SummarizeCampaign(store_, campaign_.id).empty());
-  EXPECT_THROW(SummarizeCampaign(store_, "nope"), StoreError);
-  EXPECT_THROW(WriteReport(store_, "nope", dir_.File("out")), StoreError);
+  EXPECT_TRUE(SummarizeCampaign(store_.reader, campaign_.id).empty());
+  EXPECT_THROW(SummarizeCampaign(store_.reader, "nope"), StoreError);
+  EXPECT_THROW(WriteReport(store_.reader, "nope", dir_.File("out")), StoreError);
   EXPECT_FALSE(fs::exists(dir_.File("out")));
 }
 
@@ -265,7 +265,7 @@ TEST(CsvCells, QuotesAndNumbers) {
 
 TEST_F(ReportingTest, CsvHasOneRowPerPositionerAndEmptyCellsForAbsentValues) {
   RecordResults();
-  const auto lines = Lines(FormatSummaryCsv(SummarizeCampaign(store_, campaign_.id)));
+  const auto lines = Lines(FormatSummaryCsv(SummarizeCampaign(store_.reader, campaign_.id)));
   ASSERT_EQ(lines.size(), 6u);
   EXPECT_EQ(lines[0],
             "scenario,positioner,runs,throughput_median_mbps,throughput_mean_mbps,"
@@ -297,30 +297,31 @@ TEST_F(ReportingTest, WorstUeAndFairnessAreStoredAndAveraged) {
     json result = testing::EvalResult(run, 100, 4.0);
     result["worst_ue_throughput_mbps"] = run == 1 ? 10.0 : 20.0;
     result["jain_fairness"] = run == 1 ? json(0.5) : json(nullptr);  // run 2: nothing received
-    result = testing::AtJobPosition(store_, Id(key), result);
-    ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1));
-    ASSERT_EQ(store_.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded);
+    result = testing::AtJobPosition(store_.reader, Id(key), result);
+    ASSERT_TRUE(store_.ledger.MarkRunning(Id(key), "w1", 0, 1));
+    ASSERT_EQ(store_.recorder.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded);
   }
-  EXPECT_EQ(testing::QueryOne(store_.file(), "SELECT group_concat(worst_ue_mbps || '/' || "
-                                             "IFNULL(jain_fairness, 'null'), ' ') FROM (SELECT * "
-                                             "FROM v_eval_runs ORDER BY rng_run)"),
+  EXPECT_EQ(testing::QueryOne(store_.db.file(),
+                              "SELECT group_concat(worst_ue_mbps || '/' || "
+                              "IFNULL(jain_fairness, 'null'), ' ') FROM (SELECT * "
+                              "FROM v_eval_runs ORDER BY rng_run)"),
             "10.0/0.5 20.0/null");
-  const auto summary = SummarizeCampaign(store_, campaign_.id);
+  const auto summary = SummarizeCampaign(store_.reader, campaign_.id);
   ASSERT_EQ(summary.size(), 1u);
   EXPECT_DOUBLE_EQ(summary[0].worst_ue_mean_mbps.value_or(-1), 15.0);
   EXPECT_DOUBLE_EQ(summary[0].jain_mean.value_or(-1), 0.5);  // over the runs that have one
   // Implausible values from the network are refused.
   const std::string key = "eval/C/oracle/run1";
   Produce("position/C/oracle");
-  json result = testing::AtJobPosition(store_, Id(key), testing::EvalResult(1, 100, 4.0));
+  json result = testing::AtJobPosition(store_.reader, Id(key), testing::EvalResult(1, 100, 4.0));
   result["jain_fairness"] = 1.5;
-  ASSERT_TRUE(store_.MarkRunning(Id(key), "w1", 0, 1));
-  EXPECT_NE(store_.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded);
+  ASSERT_TRUE(store_.ledger.MarkRunning(Id(key), "w1", 0, 1));
+  EXPECT_NE(store_.recorder.RecordSuccess(Id(key), 1, result), JobUpdate::kSucceeded);
 }
 
 TEST_F(ReportingTest, JsonHasNullForAbsentValues) {
   RecordResults();
-  const json j = SummaryToJson(SummarizeCampaign(store_, campaign_.id));
+  const json j = SummaryToJson(SummarizeCampaign(store_.reader, campaign_.id));
   ASSERT_TRUE(j.is_array());
   ASSERT_EQ(j.size(), 5u);
   EXPECT_EQ(j[0]["scenario"], "B");
@@ -344,7 +345,7 @@ TEST_F(ReportingTest, JsonHasNullForAbsentValues) {
 
 TEST_F(ReportingTest, TextTableIsAlignedAndRounded) {
   RecordResults();
-  const auto lines = Lines(FormatSummaryText(SummarizeCampaign(store_, campaign_.id)));
+  const auto lines = Lines(FormatSummaryText(SummarizeCampaign(store_.reader, campaign_.id)));
   ASSERT_EQ(lines.size(), 7u);  // header, rule, 5 rows
   EXPECT_EQ(lines[0].rfind("scenario  positioner  runs", 0), 0u) << lines[0];
   EXPECT_NE(lines[2].find("110.00"), std::string::npos) << lines[2];
@@ -360,7 +361,8 @@ TEST_F(ReportingTest, TextTableIsAlignedAndRounded) {
     EXPECT_NE(lines[i][end - 1], ' ') << lines[i];
   }
   EXPECT_EQ(Lines(FormatSummaryText({})).size(), 2u);
-  const auto markdown = Lines(FormatSummaryMarkdown(SummarizeCampaign(store_, campaign_.id)));
+  const auto markdown =
+      Lines(FormatSummaryMarkdown(SummarizeCampaign(store_.reader, campaign_.id)));
   ASSERT_EQ(markdown.size(), 7u);
   EXPECT_EQ(markdown[1].rfind("|---|---|---:|", 0), 0u);
   EXPECT_EQ(markdown[2].rfind("| B | baseline | 2 | 110.00 |", 0), 0u) << markdown[2];
@@ -370,7 +372,7 @@ TEST_F(ReportingTest, TextTableIsAlignedAndRounded) {
 
 TEST_F(ReportingTest, CurvesPerScenarioAndPositioner) {
   RecordResults();
-  const auto rows = store_.Metrics(campaign_.id);
+  const auto rows = store_.reader.Metrics(campaign_.id);
   const auto ccdf = ThroughputCcdf(rows);
   std::vector<std::string> points;
   for (const auto& p : ccdf) {
@@ -403,7 +405,7 @@ TEST_F(ReportingTest, CurvesPerScenarioAndPositioner) {
 TEST_F(ReportingTest, WriteReportWritesEveryFile) {
   RecordResults();
   const std::string out = dir_.File("reports/mini");  // parents are created too
-  const ReportResult result = WriteReport(store_, campaign_.id, out);
+  const ReportResult result = WriteReport(store_.reader, campaign_.id, out);
   const std::vector<std::string> names{"summary.csv", "summary.md", "throughput_ccdf.csv",
                                        "delay_cdf.csv"};
   ASSERT_EQ(result.files.size(), names.size());
@@ -412,7 +414,7 @@ TEST_F(ReportingTest, WriteReportWritesEveryFile) {
     EXPECT_TRUE(fs::is_regular_file(result.files[i])) << result.files[i];
   }
   EXPECT_TRUE(result.warnings.empty());  // no plot script asked for: no plots, no warning
-  const auto rows = store_.Metrics(campaign_.id);
+  const auto rows = store_.reader.Metrics(campaign_.id);
   const auto summary = SummarizeRuns(rows);
   EXPECT_EQ(ReadText(out + "/summary.csv"), FormatSummaryCsv(summary));
   EXPECT_EQ(ReadText(out + "/throughput_ccdf.csv"), FormatThroughputCcdfCsv(ThroughputCcdf(rows)));
@@ -427,14 +429,14 @@ TEST_F(ReportingTest, WriteReportWritesEveryFile) {
   EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 4);
 
   // Again over the existing files: replaced, not appended to.
-  WriteReport(store_, campaign_.id, out);
+  WriteReport(store_.reader, campaign_.id, out);
   EXPECT_EQ(ReadText(out + "/summary.csv"), FormatSummaryCsv(summary));
 }
 
 TEST_F(ReportingTest, EmptyCampaignWritesHeadersOnly) {
   const std::string out = dir_.File("empty");
   const ReportResult result = WriteReport(
-      store_, campaign_.id, out, PlotWith(testing::SourcePath("scripts/plot_campaign.py")));
+      store_.reader, campaign_.id, out, PlotWith(testing::SourcePath("scripts/plot_campaign.py")));
   EXPECT_EQ(result.files.size(), 4u);  // no curve: the plot script is not even run
   EXPECT_TRUE(result.warnings.empty());
   EXPECT_EQ(Lines(ReadText(out + "/summary.csv")).size(), 1u);
@@ -450,7 +452,7 @@ TEST_F(ReportingTest, OutDirThatCannotBeCreatedIsAnErrorNamingIt) {
   testing::WriteFile(dir_.File("a_file"), "x");
   const std::string out = dir_.File("a_file/report");
   try {
-    WriteReport(store_, campaign_.id, out);
+    WriteReport(store_.reader, campaign_.id, out);
     FAIL() << "no error";
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find(out), std::string::npos) << error.what();
@@ -461,7 +463,7 @@ TEST_F(ReportingTest, MissingPlotScriptIsAWarning) {
   RecordResults();
   const std::string out = dir_.File("report");
   const std::string script = dir_.File("no/plot_campaign.py");
-  const ReportResult result = WriteReport(store_, campaign_.id, out, PlotWith(script));
+  const ReportResult result = WriteReport(store_.reader, campaign_.id, out, PlotWith(script));
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_NE(result.warnings[0].find(script), std::string::npos) << result.warnings[0];
   EXPECT_EQ(result.files.size(), 4u);
@@ -475,13 +477,14 @@ TEST_F(ReportingTest, FailingInterpreterOrScriptIsAWarning) {
   RecordResults();
   const ReportOptions no_python =
       PlotWith(testing::SourcePath("scripts/plot_campaign.py"), dir_.File("no-such-python"));
-  ReportResult result = WriteReport(store_, campaign_.id, dir_.File("r1"), no_python);
+  ReportResult result = WriteReport(store_.reader, campaign_.id, dir_.File("r1"), no_python);
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_NE(result.warnings[0].find("no-such-python"), std::string::npos) << result.warnings[0];
   EXPECT_EQ(result.files.size(), 4u);
 
   testing::WriteFile(dir_.File("broken.py"), "import sys\nprint('boom')\nsys.exit(1)\n");
-  result = WriteReport(store_, campaign_.id, dir_.File("r2"), PlotWith(dir_.File("broken.py")));
+  result =
+      WriteReport(store_.reader, campaign_.id, dir_.File("r2"), PlotWith(dir_.File("broken.py")));
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_NE(result.warnings[0].find("boom"), std::string::npos) << result.warnings[0];
   EXPECT_NE(result.warnings[0].find("exit status 1"), std::string::npos) << result.warnings[0];
@@ -501,7 +504,7 @@ TEST_F(ReportingTest, PlotsArePngsWhenMatplotlibIsThere) {
   RecordResults();
   const std::string out = dir_.File("report with space");
   const ReportResult result =
-      WriteReport(store_, campaign_.id, out, PlotWith(DefaultPlotScript(ExeDir())));
+      WriteReport(store_.reader, campaign_.id, out, PlotWith(DefaultPlotScript(ExeDir())));
   EXPECT_TRUE(result.warnings.empty()) << result.warnings[0];
   // B and C: one throughput CCDF and one delay CDF each.
   const std::vector<std::string> pngs{"throughput_ccdf_B.png", "delay_cdf_B.png",

@@ -11,7 +11,7 @@
 #include "common/campaign/expansion.h"
 #include "tests/support/command.h"
 #include "common/hash/sha256.h"
-#include "common/store/results_store.h"
+#include "coordinator/scheduling/coordinator_store.h"
 
 namespace rlpos::testing {
 namespace {
@@ -206,15 +206,15 @@ TEST_F(RlposCampaignCli, DryRunPrintsThePlanAndWritesNothing) {
 TEST_F(RlposCampaignCli, ArtifactsListExportAndTheirBadInputs) {
   std::string id, job;
   {
-    ResultsStore store(dir_ + "/r.db");
+    CoordinatorStore store(dir_ + "/r.db");
     const ExpandedCampaign campaign =
         ExpandCampaign(ReadCampaignFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/mini.json"));
-    store.Submit(campaign);
+    store.ledger.Submit(campaign);
     id = campaign.id;
     job = id + "/train/B/seed1";
-    ASSERT_TRUE(store.MarkRunning(job, "w1", 0, 1));
-    ASSERT_EQ(store.RecordSuccess(job, 1, {{"position", {50, 50, 30}}}, "w1", nullptr,
-                                  {{"policy.pt", Sha256Hex("weights"), "weights"}}),
+    ASSERT_TRUE(store.ledger.MarkRunning(job, "w1", 0, 1));
+    ASSERT_EQ(store.recorder.RecordSuccess(job, 1, {{"position", {50, 50, 30}}}, "w1", nullptr,
+                                           {{"policy.pt", Sha256Hex("weights"), "weights"}}),
               JobUpdate::kSucceeded);
   }
   const auto list = Campaign("artifacts " + id + " --db r.db");

@@ -114,7 +114,7 @@ TEST(Timeouts, OnlyPastTheirTimeout) {
 class SchedulerTest : public ::testing::Test {
  protected:
   SchedulerTest() : campaign_(testing::MiniCampaign()), store_(dir_.File("s.db"), Options()) {
-    store_.Submit(campaign_);
+    store_.ledger.Submit(campaign_);
   }
   StoreOptions Options() {
     StoreOptions options;
@@ -131,8 +131,8 @@ class SchedulerTest : public ::testing::Test {
   testing::TempDir dir_;
   double now_ = 0.0;
   ExpandedCampaign campaign_;
-  ResultsStore store_;
-  Scheduler scheduler_{store_};
+  CoordinatorStore store_;
+  Scheduler scheduler_{store_.ledger};
 };
 
 TEST_F(SchedulerTest, AssignsMarksRunningAndRespectsTheStoresCount) {
@@ -141,8 +141,8 @@ TEST_F(SchedulerTest, AssignsMarksRunningAndRespectsTheStoresCount) {
   ASSERT_EQ(first.assigned.size(), 3u);
   EXPECT_EQ(PerWorker(first.assigned), (std::map<std::string, int>{{"w1", 2}, {"w2", 1}}));
   EXPECT_EQ(first.assigned[0].job.params.kind, JobKind::kTrain);
-  EXPECT_EQ(store_.ListRunning().size(), 3u);
-  EXPECT_EQ(store_.GetJob(first.assigned[0].job.id)->state, "running");
+  EXPECT_EQ(store_.ledger.ListRunning().size(), 3u);
+  EXPECT_EQ(store_.reader.GetJob(first.assigned[0].job.id)->state, "running");
   // The workers report idle, but the store knows they are full.
   EXPECT_TRUE(scheduler_.Tick({{"w1", 2, 0}, {"w2", 1, 0}}, now_).assigned.empty());
   // A new worker gets work.
@@ -159,9 +159,9 @@ TEST_F(SchedulerTest, EachJobGetsTheLowestFreeSlotOfItsWorker) {
       std::find_if(first.assigned.begin(), first.assigned.end(),
                    [](const Assignment& a) { return a.worker_id == "w1" && a.slot == 1; });
   ASSERT_NE(middle, first.assigned.end());
-  EXPECT_EQ(store_.GetJob(middle->job.id)->slot, 1);
+  EXPECT_EQ(store_.reader.GetJob(middle->job.id)->slot, 1);
   // Slot 1 frees: the next job goes there, and w1's other slots stay as they are.
-  ASSERT_EQ(store_.RecordFailure(middle->job.id, middle->job.attempt, "boom"),
+  ASSERT_EQ(store_.ledger.RecordFailure(middle->job.id, middle->job.attempt, "boom"),
             JobUpdate::kRetrying);
   const TickResult next = scheduler_.Tick({{"w1", 3, 0}, {"w2", 1, 0}}, now_);
   ASSERT_EQ(next.assigned.size(), 1u);
@@ -181,10 +181,11 @@ TEST_F(SchedulerTest, TimedOutJobsFailAndAreReassigned) {
   ASSERT_EQ(later.assigned.size(), 2u);
   EXPECT_EQ(later.assigned[0].job.id, first.assigned[0].job.id);
   EXPECT_EQ(later.assigned[0].job.attempt, 2);
-  EXPECT_EQ(store_.GetJob(later.assigned[0].job.id)->error, "timed out after 300 s");
+  EXPECT_EQ(store_.reader.GetJob(later.assigned[0].job.id)->error, "timed out after 300 s");
   // The first attempt's result, arriving now, is stale.
-  EXPECT_EQ(store_.RecordSuccess(first.assigned[0].job.id, 1, testing::PositionResult(1, 1, 9)),
-            JobUpdate::kStale);
+  EXPECT_EQ(
+      store_.recorder.RecordSuccess(first.assigned[0].job.id, 1, testing::PositionResult(1, 1, 9)),
+      JobUpdate::kStale);
 }
 
 TEST_F(SchedulerTest, LostWorkersJobsGoToTheOthers) {
@@ -203,22 +204,41 @@ TEST_F(SchedulerTest, LostWorkersJobsGoToTheOthers) {
 
 TEST_F(SchedulerTest, RunsAMiniCampaignToTheEnd) {
   int ticks = 0;
-  while (store_.Progress(campaign_.id).state == "active" && ticks < 100) {
+  while (store_.reader.Progress(campaign_.id).state == "active" && ticks < 100) {
     ++ticks;
     for (const auto& a : scheduler_.Tick({{"w1", 3, 0}, {"w2", 2, 0}}, now_).assigned) {
-      const JobRecord job = *store_.GetJob(a.job.id);
+      const JobRecord job = *store_.reader.GetJob(a.job.id);
       const auto result =
           a.job.params.kind == JobKind::kEval
               ? testing::EvalResult(static_cast<std::uint64_t>(*job.params.rng_run), 90, 2)
               : testing::PositionResult(50, 35, 10);
-      ASSERT_EQ(store_.RecordSuccess(a.job.id, a.job.attempt,
-                                     testing::AtJobPosition(store_, a.job.id, result)),
-                JobUpdate::kSucceeded);
+      ASSERT_EQ(
+          store_.recorder.RecordSuccess(a.job.id, a.job.attempt,
+                                        testing::AtJobPosition(store_.reader, a.job.id, result)),
+          JobUpdate::kSucceeded);
     }
   }
-  EXPECT_EQ(store_.Progress(campaign_.id).state, "finished");
-  EXPECT_EQ(store_.Metrics(campaign_.id).size(), 36u);
+  EXPECT_EQ(store_.reader.Progress(campaign_.id).state, "finished");
+  EXPECT_EQ(store_.reader.Metrics(campaign_.id).size(), 36u);
   EXPECT_EQ(ticks, 9);  // 44 jobs on 5 slots, never idle: producers free evals in time
+}
+
+// The binding rule refuses what it cannot bind: offset evals are defined around one UAV, so a
+// producer with offset dependants that reports several UAVs fails that attempt, and nothing of
+// the result is written.
+TEST_F(SchedulerTest, APlacementOfSeveralUavsCannotFeedOffsetEvals) {
+  const std::string train = campaign_.id + "/train/B/seed1";
+  ASSERT_TRUE(store_.ledger.MarkRunning(train, "w1", 0, 1));
+  nlohmann::json result = testing::PositionResult(50, 35, 10);
+  result["positions"] = {{50, 35, 10}, {20, 20, 10}};
+  EXPECT_EQ(store_.recorder.RecordSuccess(train, 1, result, "w1"), JobUpdate::kRetrying);
+  const JobRecord job = *store_.reader.GetJob(train);
+  EXPECT_EQ(job.state, "ready");
+  EXPECT_EQ(job.error.value_or(""),
+            "malformed result: a placement of 2 UAVs, but offset evals (defined for one) depend "
+            "on it");
+  EXPECT_FALSE(job.result.has_value());
+  EXPECT_FALSE(store_.reader.GetJob(campaign_.id + "/eval/B/offset1/run1")->placement);
 }
 
 }  // namespace

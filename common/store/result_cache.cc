@@ -1,13 +1,18 @@
-// The result cache of ResultsStore: jobs of the same content (campaign/job_content.h) give the
-// same result, so a job takes a succeeded one's result instead of running, and identical jobs
-// that would run at once run once.
-#include "common/store/results_store.h"
+#include "common/store/result_cache.h"
+
+#include <nlohmann/json.hpp>
+
+#include "common/provenance/provenance.h"
+#include "common/store/result_recorder.h"
 #include "common/store/sqlite_db.h"
+#include "common/store/store_db.h"
 #include "common/store/store_error.h"
 
 namespace rlpos {
 
-void ResultsStore::ResolveFromCache(const std::string& job_id) {
+ResultCache::ResultCache(StoreDb& store) : store_(store), db_(&store.sql()) {}
+
+void ResultCache::ResolveFromCache(const std::string& job_id) {
   Statement job = db_->Prepare(
       "SELECT j.cache_key, j.attempt, c.use_cache FROM jobs j JOIN campaigns c ON "
       "c.id = j.campaign_id WHERE j.id = ? AND j.state = 'ready'");
@@ -43,7 +48,7 @@ void ResultsStore::ResolveFromCache(const std::string& job_id) {
   }
 }
 
-void ResultsStore::ServeWaiting(const std::string& job_id) {
+void ResultCache::ServeWaiting(const std::string& job_id) {
   Statement waiting =
       db_->Prepare("SELECT id, attempt FROM jobs WHERE cache_twin = ? AND state = 'ready'");
   waiting.Bind(job_id);
@@ -55,7 +60,7 @@ void ResultsStore::ServeWaiting(const std::string& job_id) {
     ServeFrom(id, attempt, job_id);
 }
 
-void ResultsStore::ServeFrom(const std::string& job_id, int attempt, const std::string& source) {
+void ResultCache::ServeFrom(const std::string& job_id, int attempt, const std::string& source) {
   Statement select = db_->Prepare(
       "SELECT result_json, host, rlpos_version, ns3_version, torch_version, cyclonedds_version, "
       "scenario_sha256 FROM jobs WHERE id = ? AND state = 'succeeded'");
@@ -66,7 +71,7 @@ void ResultsStore::ServeFrom(const std::string& job_id, int attempt, const std::
   try {
     result = nlohmann::json::parse(select.Text(0));
   } catch (const nlohmann::json::exception& e) {
-    throw StoreError(file(), "job " + source + ": malformed result_json: " + e.what());
+    throw StoreError(store_.file(), "job " + source + ": malformed result_json: " + e.what());
   }
   Provenance provenance;
   provenance.host = select.OptionalText(1).value_or("");
@@ -81,7 +86,7 @@ void ResultsStore::ServeFrom(const std::string& job_id, int attempt, const std::
   db_->Prepare(
          "UPDATE jobs SET state = 'running', worker_id = NULL, started_at = ?, cache_twin = NULL "
          "WHERE id = ? AND attempt = ? AND state = 'ready'")
-      .Bind(Now())
+      .Bind(store_.Now())
       .Bind(job_id)
       .Bind(attempt)
       .Run();
@@ -91,7 +96,7 @@ void ResultsStore::ServeFrom(const std::string& job_id, int attempt, const std::
   // (which may be served in turn).
   // A result this job would refuse (which the same content rules out) is not served: the
   // savepoint rolls back and the job runs itself.
-  if (RecordSuccess(job_id, attempt, result, "", &provenance) != JobUpdate::kSucceeded)
+  if (recorder_->RecordSuccess(job_id, attempt, result, "", &provenance) != JobUpdate::kSucceeded)
     return;
   db_->Prepare("UPDATE jobs SET cached_from = ? WHERE id = ?").Bind(source).Bind(job_id).Run();
   db_->Prepare(

@@ -1,40 +1,11 @@
 // What `status` and `run` show while a campaign runs: workers, timings, failed jobs.
-#include "common/store/results_store.h"
+#include "common/store/results_reader.h"
 #include "common/store/sqlite_db.h"
+#include "common/store/store_db.h"
 
 namespace rlpos {
 
-void ResultsStore::UpsertWorker(const WorkerRecord& worker) {
-  const double now = Now();
-  db_->Prepare(
-         "INSERT INTO workers (id, host, pid, slots, busy, state, first_seen, last_seen) "
-         "VALUES (?, ?, ?, ?, ?, 'alive', ?, ?) "
-         "ON CONFLICT(id) DO UPDATE SET host = excluded.host, pid = excluded.pid, "
-         "slots = excluded.slots, busy = excluded.busy, state = 'alive', "
-         "last_seen = excluded.last_seen")
-      .Bind(worker.id)
-      .Bind(worker.host)
-      .Bind(worker.pid)
-      .Bind(worker.slots)
-      .Bind(worker.busy)
-      .Bind(now)
-      .Bind(now)
-      .Run();
-}
-
-void ResultsStore::SetWorkerState(const std::string& worker_id, const std::string& state) {
-  db_->Prepare("UPDATE workers SET state = ?, busy = 0, last_seen = ? WHERE id = ?")
-      .Bind(state)
-      .Bind(Now())
-      .Bind(worker_id)
-      .Run();
-}
-
-void ResultsStore::MarkAllWorkersLost() {
-  db_->Prepare("UPDATE workers SET state = 'lost', busy = 0 WHERE state = 'alive'").Run();
-}
-
-std::vector<WorkerRecord> ResultsStore::ListWorkers() {
+std::vector<WorkerRecord> ResultsReader::ListWorkers() {
   Statement select = db_->Prepare(
       "SELECT id, host, pid, slots, busy, state, first_seen, last_seen FROM workers "
       "ORDER BY state = 'alive' DESC, id");
@@ -54,8 +25,8 @@ std::vector<WorkerRecord> ResultsStore::ListWorkers() {
   return out;
 }
 
-std::optional<nlohmann::json> ResultsStore::CampaignSpecPart(const std::string& campaign_id,
-                                                             const std::string& key) {
+std::optional<nlohmann::json> ResultsReader::CampaignSpecPart(const std::string& campaign_id,
+                                                              const std::string& key) {
   // json_quote keeps an extracted object or array as it is and quotes a string.
   Statement select = db_->Prepare(
       "SELECT json_type(spec_json, ?1) IS NOT NULL, json_quote(json_extract(spec_json, ?1)) "
@@ -69,21 +40,8 @@ std::optional<nlohmann::json> ResultsStore::CampaignSpecPart(const std::string& 
   return part;
 }
 
-void ResultsStore::SetProgress(const std::string& job_id, int attempt, const std::string& line,
-                               const std::string& worker_id) {
-  db_->Prepare(
-         "UPDATE jobs SET progress = ? WHERE id = ? AND attempt = ? AND state = 'running' "
-         "AND (? = '' OR worker_id = ?)")
-      .Bind(line)
-      .Bind(job_id)
-      .Bind(attempt)
-      .Bind(worker_id)
-      .Bind(worker_id)
-      .Run();
-}
-
-std::vector<RunningJobView> ResultsStore::RunningJobs(const std::string& campaign_id) {
-  RequireCampaign(campaign_id);
+std::vector<RunningJobView> ResultsReader::RunningJobs(const std::string& campaign_id) {
+  store_.RequireCampaign(campaign_id);
   Statement select = db_->Prepare(
       "SELECT key, COALESCE(worker_id, ''), attempt, COALESCE(started_at, 0), "
       "COALESCE(progress, '') FROM jobs WHERE campaign_id = ? AND state = 'running' "
@@ -97,8 +55,8 @@ std::vector<RunningJobView> ResultsStore::RunningJobs(const std::string& campaig
   return out;
 }
 
-CampaignTiming ResultsStore::Timing(const std::string& campaign_id) {
-  RequireCampaign(campaign_id);
+CampaignTiming ResultsReader::Timing(const std::string& campaign_id) {
+  store_.RequireCampaign(campaign_id);
   Statement select = db_->Prepare(
       "SELECT c.created_at, MIN(j.started_at), MAX(j.finished_at), "
       "COALESCE(SUM(j.state IN ('succeeded', 'failed', 'cancelled')), 0) "
@@ -113,8 +71,8 @@ CampaignTiming ResultsStore::Timing(const std::string& campaign_id) {
   return t;
 }
 
-std::vector<FailedJob> ResultsStore::FailedJobs(const std::string& campaign_id) {
-  RequireCampaign(campaign_id);
+std::vector<FailedJob> ResultsReader::FailedJobs(const std::string& campaign_id) {
+  store_.RequireCampaign(campaign_id);
   Statement select = db_->Prepare(
       "SELECT key, attempt, COALESCE(error, '') FROM jobs "
       "WHERE campaign_id = ? AND state = 'failed' ORDER BY seq");
@@ -126,7 +84,7 @@ std::vector<FailedJob> ResultsStore::FailedJobs(const std::string& campaign_id) 
   return out;
 }
 
-std::vector<ArtifactRecord> ResultsStore::Artifacts(const std::string& campaign_or_job_id) {
+std::vector<ArtifactRecord> ResultsReader::Artifacts(const std::string& campaign_or_job_id) {
   Statement select = db_->Prepare(
       "SELECT a.job_id, j.key, a.name, a.path, COALESCE(a.sha256, ''), COALESCE(a.bytes, 0), "
       "j.cached_from, j.scenario, j.label FROM artifacts a JOIN jobs j ON j.id = a.job_id "

@@ -1,0 +1,78 @@
+#pragma once
+// The store's read side: campaigns, jobs, metrics, workers and artifacts as `status`,
+// `results`, `report` and the coordinator read them. Reads only (a read-only StoreDb will do).
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/store/store_records.h"
+
+namespace rlpos {
+
+class Database;
+class StoreDb;
+
+struct MetricRow {
+  std::string job_id, scenario, label;
+  std::int64_t rng_run = 0;
+  double aggregate_throughput_mbps = 0;
+  std::optional<double> mean_delay_ms, loss_ratio, min_snr_db;  // null: no packet received
+  int n_los = 0, n_ues = 0, demands_met = 0;
+  double x = 0, y = 0, z = 0;  // the first UAV's position
+  std::optional<double> worst_ue_throughput_mbps, jain_fairness;  // null: recorded before v9
+};
+
+// One UAV's share of one succeeded eval (table uav_metrics, view v_eval_uavs).
+struct UavMetricRow {
+  std::string job_id, scenario, label;
+  std::int64_t rng_run = 0;
+  int uav = 0;       // index in the scenario's order
+  std::string name;  // "uav" for a single-UAV scenario
+  int ues_served = 0;
+  double throughput_mbps = 0;
+  std::optional<double> mean_delay_ms, loss_ratio;  // null: its UEs received nothing
+  int n_los = 0;
+  std::optional<double> worst_ue_throughput_mbps, jain_fairness;  // null: it serves no UE
+  double x = 0, y = 0, z = 0;
+};
+
+class ResultsReader {
+ public:
+  explicit ResultsReader(StoreDb& store);
+
+  const std::string& file() const;
+  // The distinct builds (DescribeBuild) of a campaign's succeeded jobs that recorded one: more
+  // than one means its results come from mixed versions.
+  std::vector<std::string> CampaignBuilds(const std::string& campaign_id);
+
+  // Throws StoreError for an unknown campaign.
+  CampaignProgress Progress(const std::string& campaign_id);
+  std::vector<CampaignProgress> AllProgress();
+  std::optional<JobRecord> GetJob(const std::string& job_id);
+  // One row per succeeded eval job, by scenario (campaign order), label, rng_run.
+  std::vector<MetricRow> Metrics(const std::string& campaign_id);
+  // One row per UAV of each succeeded eval, in the order of Metrics, then by UAV.
+  std::vector<UavMetricRow> UavMetrics(const std::string& campaign_id);
+
+  // What `status` and `run` show while a campaign runs (results_reader_monitoring.cc).
+  std::vector<WorkerRecord> ListWorkers();
+  // Throw StoreError for an unknown campaign.
+  std::vector<RunningJobView> RunningJobs(const std::string& campaign_id);
+  CampaignTiming Timing(const std::string& campaign_id);
+  std::vector<FailedJob> FailedJobs(const std::string& campaign_id);
+  // The campaign's spec with only its top-level `key` ({} when the spec has none), read out by
+  // SQLite: a spec lists every RngRun, and a 100k-run list need not be parsed to get at the
+  // scenarios. nullopt for an unknown campaign.
+  std::optional<nlohmann::json> CampaignSpecPart(const std::string& campaign_id,
+                                                 const std::string& key);
+  // The artifacts of a campaign (or of one job, given its id), by job then name.
+  std::vector<ArtifactRecord> Artifacts(const std::string& campaign_or_job_id);
+
+ private:
+  StoreDb& store_;
+  Database* db_;
+};
+
+}  // namespace rlpos
