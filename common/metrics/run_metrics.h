@@ -1,5 +1,5 @@
 #pragma once
-// The metric definitions, in one place (see README "Metrics"):
+// The metric definitions, in one place (see docs/scenarios.md, "Metrics"):
 // - throughput (Mbit/s): application bytes received at the UAV sink inside the measurement
 //   window x 8 / window length;
 // - mean delay (ms): mean one-way delay of the packets received inside the window

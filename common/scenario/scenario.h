@@ -125,7 +125,7 @@ struct EnvSpec {
   double decision_interval = 0.1;   // s between actions
   double episode_duration = 100.0;  // s per episode
   // Moves into a wall of the zone or a building are masked out (not only clamped): otherwise
-  // a policy can press "up" at the ceiling for the whole episode (README, RL).
+  // a policy can press "up" at the ceiling for the whole episode (docs/rl.md).
   bool action_mask = true;
   // "discrete": the moves above. "continuous": a displacement (dx, dy, dz) in metres, each
   // component within [-step, step] (Gymnasium's Box), clamped to the zone like a move.
@@ -137,7 +137,7 @@ struct EnvSpec {
 
 // PPO (clipped objective, GAE) on the discrete moves. Defaults: the well-known Atari/CleanRL set,
 // except the learning rate, gamma, rollout and epochs: that set is tuned for millions of steps,
-// our training is 10 episodes of 1,000 (README, PPO and SAC).
+// our training is 10 episodes of 1,000 (docs/rl.md, PPO and SAC).
 struct PpoSpec {
   double learning_rate = 1e-3;
   double gamma = 0.9;
@@ -150,7 +150,7 @@ struct PpoSpec {
   int epochs = 10;          // passes over a rollout
   int minibatches = 4;      // per pass
   // The learning rate falls linearly to 0 over the training's updates (CleanRL's anneal_lr):
-  // late updates then refine the policy instead of knocking it off its best (README, PPO).
+  // late updates then refine the policy instead of knocking it off its best (docs/rl.md).
   bool anneal_learning_rate = false;
 };
 
@@ -175,29 +175,29 @@ struct AgentSpec {
   double learning_rate = 1e-2;
   std::int64_t replay_capacity = 1000000;
   int batch_size = 64;
-  double gamma = 0.9;  // not in the paper; 0.9 learned B and C reliably (README)
+  double gamma = 0.9;  // not in the paper; 0.9 learned B and C reliably (docs/rl.md)
   // The paper trains with epsilon 1 (random moves) throughout. Decaying it to 0.05 over the
   // first 8 of the 10 episodes lets the greedy policy correct itself where it goes, instead of
-  // extrapolating from random flights (README, RL).
+  // extrapolating from random flights (docs/rl.md).
   double epsilon_start = 1.0;
   double epsilon_end = 0.05;
   int epsilon_decay_steps = 8000;
   // Steps; one episode of the paper (100 s / 0.1 s). Where rewards differ by 1 % (scenario A)
-  // a target that moves every 100 steps chases its own noise (README, RL).
+  // a target that moves every 100 steps chases its own noise (docs/rl.md).
   int target_update_interval = 1000;
   int warmup_steps = 64;  // transitions before learning starts
   // Not the paper's plain DQN: on scenario A's flat plateau the max in plain DQN's target
-  // overestimates enough that a greedy policy can fly past the best region (README, RL).
+  // overestimates enough that a greedy policy can fly past the best region (docs/rl.md).
   bool double_dqn = true;
   // Rewards standardised by the running mean and standard deviation of those seen before the
   // TD targets use them. It leaves the greedy policy of a never-terminating env (ours) as it
-  // is and lets the network resolve rewards 1 % apart (scenario A; README, RL).
+  // is and lets the network resolve rewards 1 % apart (scenario A; docs/rl.md).
   bool normalise_rewards = true;
   int train_episodes = 10;
   int eval_episodes = 1;
   // Every this many training episodes (and after the last) a greedy episode scores the policy,
   // from the evaluation's seed; the best-scoring policy is the one kept, evaluated and saved
-  // (Stable-Baselines3's EvalCallback best_model). 0: the last policy (README, RL).
+  // (Stable-Baselines3's EvalCallback best_model). 0: the last policy (docs/rl.md).
   int eval_interval = 0;
   std::uint64_t seed = 1;
   PpoSpec ppo;

@@ -1,7 +1,7 @@
 #pragma once
 // The results store's schema, versioned: `schema_version` holds one row with the version, and
 // migrations run in order, each in its own transaction, from the file's version to the newest.
-// The schema is documented in results/README.md; change both together, and only by appending
+// The schema is documented in docs/results-database.md; change both together, and only by appending
 // a migration (never by editing one that has shipped).
 #include <functional>
 #include <vector>

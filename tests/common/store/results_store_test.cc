@@ -480,7 +480,7 @@ TEST_F(StoreTest, CampaignFinishesAndViewsAnswer) {
   EXPECT_EQ(store_.reader.AllProgress().size(), 1u);
   EXPECT_EQ(store_.reader.Metrics(campaign_.id).size(), 36u);
 
-  // The README's example queries, as a user would type them.
+  // Queries like docs/results-database.md's examples, as a user would type them.
   EXPECT_EQ(Query("SELECT COUNT(*) FROM v_eval_runs WHERE scenario = 'B' AND positioner = 'rl'"),
             "2");
   EXPECT_EQ(Query("SELECT ROUND(AVG(throughput_mbps), 2) FROM v_eval_runs "

@@ -86,9 +86,9 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   EXPECT_DOUBLE_EQ(spec.epsilon_end, 0.05);
   EXPECT_EQ(spec.epsilon_decay_steps, 8000);
   // Not the paper's: the target network is refreshed once per paper episode (100 s / 0.1 s),
-  // which is what let scenario A's greedy policy beat the baseline (README, RL).
+  // which is what let scenario A's greedy policy beat the baseline (docs/rl.md).
   EXPECT_EQ(spec.target_update_interval, 1000);
-  // Not the paper's either: Double DQN and standardised rewards (README, RL).
+  // Not the paper's either: Double DQN and standardised rewards (docs/rl.md).
   EXPECT_TRUE(spec.double_dqn);
   EXPECT_TRUE(spec.normalise_rewards);
 }

@@ -13,7 +13,7 @@ Scenario Load(const std::string& name, std::vector<std::string> overrides = {}) 
                       overrides);
 }
 
-// A position of scenario B that sees all four UEs (see README, "Scenarios").
+// A position of scenario B that sees all four UEs (see docs/scenarios.md, "Scenarios A, B and C").
 const Vec3 kAllLosB{50, 35, 10};
 
 TEST(UavNetwork, ScenarioBAllLosBeatsTheBaseline) {
