@@ -7,6 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "common/scenario/agent_hyperparameters.h"
+#include "common/scenario/dqn_hyperparameters.h"
+#include "common/scenario/ppo_hyperparameters.h"
+#include "common/scenario/sac_hyperparameters.h"
+
 namespace rlpos {
 
 struct Vec3 {
@@ -125,7 +130,7 @@ struct EnvSpec {
   double decision_interval = 0.1;   // s between actions
   double episode_duration = 100.0;  // s per episode
   // Moves into a wall of the zone or a building are masked out (not only clamped): otherwise
-  // a policy can press "up" at the ceiling for the whole episode (docs/rl.md).
+  // a policy can press "up" at the ceiling for the whole episode (README, RL).
   bool action_mask = true;
   // "discrete": the moves above. "continuous": a displacement (dx, dy, dz) in metres, each
   // component within [-step, step] (Gymnasium's Box), clamped to the zone like a move.
@@ -135,71 +140,13 @@ struct EnvSpec {
   RewardSpec reward;
 };
 
-// PPO (clipped objective, GAE) on the discrete moves. Defaults: the well-known Atari/CleanRL set,
-// except the learning rate, gamma, rollout and epochs: that set is tuned for millions of steps,
-// our training is 10 episodes of 1,000 (docs/rl.md, PPO and SAC).
-struct PpoSpec {
-  double learning_rate = 1e-3;
-  double gamma = 0.9;
-  double gae_lambda = 0.95;
-  double clip = 0.2;
-  double entropy_coefficient = 0.01;
-  double value_coefficient = 0.5;
-  double max_grad_norm = 0.5;
-  int rollout_steps = 256;  // transitions per update
-  int epochs = 10;          // passes over a rollout
-  int minibatches = 4;      // per pass
-  // The learning rate falls linearly to 0 over the training's updates (CleanRL's anneal_lr):
-  // late updates then refine the policy instead of knocking it off its best (docs/rl.md).
-  bool anneal_learning_rate = false;
-};
-
-// SAC (twin Q, tanh-squashed Gaussian policy, automatic temperature) on the continuous action
-// space. Defaults: Haarnoja et al. 2018 / CleanRL's, except the warm-up (1,000 random steps, not
-// 5,000: half of a 10,000-step training would be random). Its replay holds
-// agent.replay_capacity transitions.
-struct SacSpec {
-  double policy_learning_rate = 3e-4;
-  double q_learning_rate = 3e-4;
-  double gamma = 0.99;
-  double tau = 0.005;
-  int batch_size = 256;
-  int warmup_steps = 1000;  // uniformly random actions before learning starts
-  int update_interval = 1;  // env steps per gradient step
-  std::optional<double> alpha;  // unset: tuned automatically towards -|A| entropy
-};
-
-struct AgentSpec {
+// The agent: its algorithm, network and hyperparameters. Each algorithm declares its own in
+// one file (scenario/dqn_hyperparameters.h, ppo_..., sac_..., agent_... for the shared ones).
+// DQN's and the shared keys sit in "agent" itself (DQN came first): so they are bases, and
+// agent.learning_rate reads the same in C++ as in JSON.
+struct AgentSpec : DqnSpec, AgentCommonSpec {
   std::string algorithm = "dqn";  // dqn | ppo | sac (sac needs env.action_space "continuous")
   std::vector<int> hidden = {32, 32};
-  double learning_rate = 1e-2;
-  std::int64_t replay_capacity = 1000000;
-  int batch_size = 64;
-  double gamma = 0.9;  // not in the paper; 0.9 learned B and C reliably (docs/rl.md)
-  // The paper trains with epsilon 1 (random moves) throughout. Decaying it to 0.05 over the
-  // first 8 of the 10 episodes lets the greedy policy correct itself where it goes, instead of
-  // extrapolating from random flights (docs/rl.md).
-  double epsilon_start = 1.0;
-  double epsilon_end = 0.05;
-  int epsilon_decay_steps = 8000;
-  // Steps; one episode of the paper (100 s / 0.1 s). Where rewards differ by 1 % (scenario A)
-  // a target that moves every 100 steps chases its own noise (docs/rl.md).
-  int target_update_interval = 1000;
-  int warmup_steps = 64;  // transitions before learning starts
-  // Not the paper's plain DQN: on scenario A's flat plateau the max in plain DQN's target
-  // overestimates enough that a greedy policy can fly past the best region (docs/rl.md).
-  bool double_dqn = true;
-  // Rewards standardised by the running mean and standard deviation of those seen before the
-  // TD targets use them. It leaves the greedy policy of a never-terminating env (ours) as it
-  // is and lets the network resolve rewards 1 % apart (scenario A; docs/rl.md).
-  bool normalise_rewards = true;
-  int train_episodes = 10;
-  int eval_episodes = 1;
-  // Every this many training episodes (and after the last) a greedy episode scores the policy,
-  // from the evaluation's seed; the best-scoring policy is the one kept, evaluated and saved
-  // (Stable-Baselines3's EvalCallback best_model). 0: the last policy (docs/rl.md).
-  int eval_interval = 0;
-  std::uint64_t seed = 1;
   PpoSpec ppo;
   SacSpec sac;
 };
@@ -211,7 +158,7 @@ struct Scenario {
   std::vector<BuildingSpec> buildings;
   std::vector<UeSpec> ues;
   std::vector<UavSpec> uavs = {UavSpec{}};  // "uav" in the JSON is one; "uavs" one or more
-  bool uavs_listed = false;                  // given as "uavs": errors name /uavs/<i>
+  bool uavs_listed = false;                 // given as "uavs": errors name /uavs/<i>
   WifiSpec wifi;
   TrafficSpec traffic;
   ObjectSpec propagation;

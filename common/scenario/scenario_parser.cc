@@ -271,74 +271,49 @@ EnvSpec ReadEnv(const json& v) {
   return e;
 }
 
-PpoSpec ReadPpo(const json& v) {
-  ObjectReader r(v, "/agent/ppo");
-  PpoSpec p;
-  p.learning_rate = r.Number("learning_rate", p.learning_rate, {0.0, 1.0, true});
-  p.gamma = r.Number("gamma", p.gamma, Between(0.0, 1.0));
-  p.gae_lambda = r.Number("gae_lambda", p.gae_lambda, Between(0.0, 1.0));
-  p.clip = r.Number("clip", p.clip, {0.0, 1.0, true});
-  p.entropy_coefficient = r.Number("entropy_coefficient", p.entropy_coefficient, NonNegative());
-  p.value_coefficient = r.Number("value_coefficient", p.value_coefficient, NonNegative());
-  p.max_grad_norm = r.Number("max_grad_norm", p.max_grad_norm, Positive());
-  p.rollout_steps = static_cast<int>(r.Integer("rollout_steps", p.rollout_steps, 2, 1000000));
-  p.epochs = static_cast<int>(r.Integer("epochs", p.epochs, 1, 1000));
-  p.minibatches = static_cast<int>(r.Integer("minibatches", p.minibatches, 1, 1000000));
-  if (p.minibatches > p.rollout_steps)
-    throw ConfigError(r.PathOf("minibatches"), "must not exceed rollout_steps");
-  p.anneal_learning_rate = r.Bool("anneal_learning_rate", p.anneal_learning_rate);
+// An algorithm's own object ("agent.ppo", "agent.sac"): its declared hyperparameters only.
+template <typename Spec>
+Spec ReadAlgorithm(const json& v, const HyperparameterTable<Spec>& table) {
+  ObjectReader r(v, table.path);
+  Spec spec;
+  ReadHyperparameters(r, table, spec);
   r.Finish();
-  return p;
+  return spec;
 }
 
-SacSpec ReadSac(const json& v) {
-  ObjectReader r(v, "/agent/sac");
-  SacSpec p;
-  p.policy_learning_rate =
-      r.Number("policy_learning_rate", p.policy_learning_rate, {0.0, 1.0, true});
-  p.q_learning_rate = r.Number("q_learning_rate", p.q_learning_rate, {0.0, 1.0, true});
-  p.gamma = r.Number("gamma", p.gamma, Between(0.0, 1.0));
-  p.tau = r.Number("tau", p.tau, {0.0, 1.0, true});
-  p.batch_size = static_cast<int>(r.Integer("batch_size", p.batch_size, 1, 65536));
-  p.warmup_steps = static_cast<int>(r.Integer("warmup_steps", p.warmup_steps, 0, 1000000000));
-  p.update_interval = static_cast<int>(r.Integer("update_interval", p.update_interval, 1, 1000000));
-  if (const json* alpha = r.Child("alpha"); alpha && !alpha->is_null())
-    p.alpha = CheckedNumber(*alpha, r.PathOf("alpha"), NonNegative());
-  r.Finish();
-  return p;
+std::vector<int> ReadHidden(const json& h, const std::string& path) {
+  if (!h.is_array() || h.empty())
+    throw ConfigError(path, "expected [units, ...]");
+  std::vector<int> hidden;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    hidden.push_back(static_cast<int>(CheckedNumber(h[i], JoinPath(path, i), Between(1, 4096))));
+  }
+  return hidden;
 }
 
 AgentSpec ReadAgent(const json& v) {
   ObjectReader r(v, "/agent");
   AgentSpec a;
   a.algorithm = r.String("algorithm", a.algorithm, AllAlgorithms());
-  if (const json* h = r.Child("hidden")) {
-    if (!h->is_array() || h->empty()) throw ConfigError(r.PathOf("hidden"), "expected [units, ...]");
-    a.hidden.clear();
-    for (std::size_t i = 0; i < h->size(); ++i) {
-      const double units = CheckedNumber((*h)[i], JoinPath(r.PathOf("hidden"), i), Between(1, 4096));
-      a.hidden.push_back(static_cast<int>(units));
-    }
-  }
-  a.learning_rate = r.Number("learning_rate", a.learning_rate, {0.0, 1.0, true});
-  a.replay_capacity = r.Integer("replay_capacity", a.replay_capacity, 1, 100000000);
-  a.batch_size = static_cast<int>(r.Integer("batch_size", a.batch_size, 1, 65536));
-  a.gamma = r.Number("gamma", a.gamma, Between(0.0, 1.0));
-  a.epsilon_start = r.Number("epsilon_start", a.epsilon_start, Between(0.0, 1.0));
-  a.epsilon_end = r.Number("epsilon_end", a.epsilon_end, Between(0.0, 1.0));
-  a.epsilon_decay_steps = static_cast<int>(r.Integer("epsilon_decay_steps", a.epsilon_decay_steps, 0, 1000000000));
-  a.target_update_interval = static_cast<int>(r.Integer("target_update_interval", a.target_update_interval, 1, 1000000000));
-  a.warmup_steps = static_cast<int>(r.Integer("warmup_steps", a.warmup_steps, 0, 1000000000));
-  a.double_dqn = r.Bool("double_dqn", a.double_dqn);
-  a.normalise_rewards = r.Bool("normalise_rewards", a.normalise_rewards);
-  a.train_episodes = static_cast<int>(r.Integer("train_episodes", a.train_episodes, 1, 1000000));
-  a.eval_episodes = static_cast<int>(r.Integer("eval_episodes", a.eval_episodes, 1, 1000000));
-  a.eval_interval = static_cast<int>(r.Integer("eval_interval", a.eval_interval, 0, 1000000));
-  a.seed = static_cast<std::uint64_t>(r.Integer("seed", static_cast<long long>(a.seed), 0, 9007199254740991LL));
-  if (const json* p = r.Child("ppo")) a.ppo = ReadPpo(*p);
-  if (const json* p = r.Child("sac")) a.sac = ReadSac(*p);
+  if (const json* h = r.Child("hidden"))
+    a.hidden = ReadHidden(*h, r.PathOf("hidden"));
+  ReadHyperparameters(r, DqnHyperparameters(), static_cast<DqnSpec&>(a));
+  ReadHyperparameters(r, AgentCommonHyperparameters(), static_cast<AgentCommonSpec&>(a));
+  if (const json* p = r.Child("ppo"))
+    a.ppo = ReadAlgorithm(*p, PpoHyperparameters());
+  if (const json* p = r.Child("sac"))
+    a.sac = ReadAlgorithm(*p, SacHyperparameters());
   r.Finish();
   return a;
+}
+
+json AgentJson(const AgentSpec& a) {
+  json agent = {{"algorithm", a.algorithm}, {"hidden", a.hidden}};
+  WriteHyperparameters<DqnSpec>(a, DqnHyperparameters(), agent);
+  WriteHyperparameters<AgentCommonSpec>(a, AgentCommonHyperparameters(), agent);
+  WriteHyperparameters(a.ppo, PpoHyperparameters(), agent["ppo"]);
+  WriteHyperparameters(a.sac, SacHyperparameters(), agent["sac"]);
+  return agent;
 }
 
 json Vec3Json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
@@ -545,45 +520,7 @@ json ToJson(const Scenario& s) {
               {"w1", s.env.reward.w1},
               {"w2", s.env.reward.w2},
               {"w3", s.env.reward.w3}}}}},
-          {"agent",
-           {{"algorithm", s.agent.algorithm},
-            {"hidden", s.agent.hidden},
-            {"learning_rate", s.agent.learning_rate},
-            {"replay_capacity", s.agent.replay_capacity},
-            {"batch_size", s.agent.batch_size},
-            {"gamma", s.agent.gamma},
-            {"epsilon_start", s.agent.epsilon_start},
-            {"epsilon_end", s.agent.epsilon_end},
-            {"epsilon_decay_steps", s.agent.epsilon_decay_steps},
-            {"target_update_interval", s.agent.target_update_interval},
-            {"warmup_steps", s.agent.warmup_steps},
-            {"double_dqn", s.agent.double_dqn},
-            {"normalise_rewards", s.agent.normalise_rewards},
-            {"train_episodes", s.agent.train_episodes},
-            {"eval_episodes", s.agent.eval_episodes},
-            {"eval_interval", s.agent.eval_interval},
-            {"seed", s.agent.seed},
-            {"ppo",
-             {{"learning_rate", s.agent.ppo.learning_rate},
-              {"gamma", s.agent.ppo.gamma},
-              {"gae_lambda", s.agent.ppo.gae_lambda},
-              {"clip", s.agent.ppo.clip},
-              {"entropy_coefficient", s.agent.ppo.entropy_coefficient},
-              {"value_coefficient", s.agent.ppo.value_coefficient},
-              {"max_grad_norm", s.agent.ppo.max_grad_norm},
-              {"rollout_steps", s.agent.ppo.rollout_steps},
-              {"epochs", s.agent.ppo.epochs},
-              {"minibatches", s.agent.ppo.minibatches},
-              {"anneal_learning_rate", s.agent.ppo.anneal_learning_rate}}},
-            {"sac",
-             {{"policy_learning_rate", s.agent.sac.policy_learning_rate},
-              {"q_learning_rate", s.agent.sac.q_learning_rate},
-              {"gamma", s.agent.sac.gamma},
-              {"tau", s.agent.sac.tau},
-              {"batch_size", s.agent.sac.batch_size},
-              {"warmup_steps", s.agent.sac.warmup_steps},
-              {"update_interval", s.agent.sac.update_interval},
-              {"alpha", s.agent.sac.alpha ? json(*s.agent.sac.alpha) : json(nullptr)}}}}}};
+          {"agent", AgentJson(s.agent)}};
   if (s.env.turn_steps != 1)  // absent before several UAVs existed: documents stay as they were
     document["env"]["turn_steps"] = s.env.turn_steps;
   if (s.uavs_listed) {

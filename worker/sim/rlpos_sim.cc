@@ -5,6 +5,7 @@
 //   rlpos-sim train --scenario FILE [--algorithm dqn|ppo|sac] [--fidelity packet|analytic]
 //                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
+//   rlpos-sim describe hyperparameters [--algorithm dqn|ppo|sac]
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include "common/config/config_error.h"
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
+#include "worker/sim/describe_hyperparameters.h"
 
 namespace {
 
@@ -66,9 +68,10 @@ int main(int argc, char** argv) {
       app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
   TrainOptions train_options;
   train->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
-  train->add_option("--algorithm", train_options.algorithm,
-                    "dqn|ppo|sac (default: agent.algorithm); sac acts on the continuous action "
-                    "space")
+  train
+      ->add_option("--algorithm", train_options.algorithm,
+                   "dqn|ppo|sac (default: agent.algorithm); sac acts on the continuous action "
+                   "space")
       ->check(CLI::IsMember({"dqn", "ppo", "sac"}));
   train->add_option("--fidelity", train_options.fidelity, "packet|analytic (default: env.fidelity)")
       ->check(CLI::IsMember({"packet", "analytic"}));
@@ -96,6 +99,11 @@ int main(int argc, char** argv) {
   position->add_flag("--json", position_options.json, "Print the result as JSON");
   AddScenarioOverrides(position, options);
 
+  auto* describe = app.add_subcommand("describe", "Print reference tables as markdown");
+  describe->require_subcommand(1);
+  DescribeHyperparametersOptions hyperparameters_options;
+  auto* hyperparameters = AddDescribeHyperparameters(describe, hyperparameters_options);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -112,6 +120,8 @@ int main(int argc, char** argv) {
       return RunTrain(options, train_options);
     if (*position)
       return RunPosition(options, position_options);
+    if (*hyperparameters)
+      return RunDescribeHyperparameters(hyperparameters_options);
     return RunEval(options, eval_options);
   } catch (const rlpos::ConfigError& e) {
     const bool cli = e.path().rfind("--", 0) == 0;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "tests/support/command.h"
@@ -193,6 +194,33 @@ TEST(RlposSimCli, EvalNeedsAPositionPerUav) {
       RunCommand(Sim("eval --scenario " + kUrban3 +
                      " --position 135,85,60 --position 25,25,10 --position 70,15,60")),
       2, "--position #2: (25, 25, 10) is inside building 0");
+}
+
+TEST(RlposSimCli, DescribeHyperparametersOfOneAlgorithm) {
+  const auto r = RunCommand(Sim("describe hyperparameters --algorithm ppo"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("## agent\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("## ppo\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| `agent.ppo.anneal_learning_rate` | boolean | false |"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("## sac"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("## dqn"), std::string::npos) << r.out;
+}
+
+TEST(RlposSimCli, DescribeHyperparametersOfEveryAlgorithmIsTheDocsPage) {
+  const auto r = RunCommand(Sim("describe hyperparameters"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(std::string(RLPOS_SOURCE_DIR) + "/docs/hyperparameters.md");
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(r.out, page);
+}
+
+TEST(RlposSimCli, DescribeRefusesAnUnknownAlgorithmOrNoTable) {
+  const auto unknown = RunCommand(Sim("describe hyperparameters --algorithm a2c"));
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_TRUE(unknown.out.empty()) << unknown.out;
+  EXPECT_NE(unknown.err.find("--algorithm"), std::string::npos) << unknown.err;
+  EXPECT_EQ(RunCommand(Sim("describe")).exit_code, 2);
 }
 
 }  // namespace

@@ -1,0 +1,44 @@
+#pragma once
+// The hyperparameters every algorithm shares (training length, checkpoints, seed, reward
+// standardisation): declared once here, read by worker/agent and worker/sim/train_command.cc.
+// Their keys sit in the scenario's "agent" object.
+#include <cstdint>
+
+#include "common/scenario/hyperparameter.h"
+
+namespace rlpos {
+
+struct AgentCommonSpec {
+  bool normalise_rewards = true;
+  int train_episodes = 10;
+  int eval_episodes = 1;
+  int eval_interval = 0;
+  std::uint64_t seed = 1;
+};
+
+inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() {
+  static const HyperparameterTable<AgentCommonSpec> table{
+      "agent",
+      "/agent",
+      "Every algorithm's: training length, checkpoints, seed.",
+      {{"normalise_rewards", &AgentCommonSpec::normalise_rewards, NoRange(),
+        "TD targets (and PPO's and SAC's) use rewards standardised by the running mean and "
+        "standard deviation of the rewards seen so far. Not in the paper. The greedy policy of "
+        "an env that never terminates (ours) is unchanged by it, but the network no longer has "
+        "to resolve 1 % differences (scenario A) on top of a large constant"},
+       {"train_episodes", &AgentCommonSpec::train_episodes, Integers(1, 1000000),
+        "training episodes"},
+       {"eval_episodes", &AgentCommonSpec::eval_episodes, Integers(1, 1000000),
+        "greedy evaluation episodes after training"},
+       {"eval_interval", &AgentCommonSpec::eval_interval, Integers(0, 1000000),
+        "every this many training episodes, and after the last, a greedy checkpoint episode "
+        "from the evaluation's seed scores the policy by its final reward; the best-scoring "
+        "policy (the latest of equals) is kept, evaluated and saved (as Stable-Baselines3's "
+        "EvalCallback keeps best_model). 0: the last policy. Each checkpoint costs one episode "
+        "(at packet level, a full simulation)"},
+       {"seed", &AgentCommonSpec::seed, Integers(0, 9007199254740991LL),
+        "weights, exploration and replay sampling"}}};
+  return table;
+}
+
+}  // namespace rlpos

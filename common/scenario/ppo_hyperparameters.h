@@ -1,0 +1,59 @@
+#pragma once
+// PPO's hyperparameters (clipped objective, GAE): declared once here, read by
+// worker/agent/ppo_agent.cc. Defaults: CleanRL's ppo.py (Atari/classic control) except the
+// learning rate, gamma, rollout and epochs: that set is tuned for millions of steps, our
+// training is 10 episodes of 1,000 (README, PPO and SAC).
+#include "common/config/config_error.h"
+#include "common/scenario/hyperparameter.h"
+
+namespace rlpos {
+
+struct PpoSpec {
+  double learning_rate = 1e-3;
+  double gamma = 0.9;
+  double gae_lambda = 0.95;
+  double clip = 0.2;
+  double entropy_coefficient = 0.01;
+  double value_coefficient = 0.5;
+  double max_grad_norm = 0.5;
+  int rollout_steps = 256;
+  int epochs = 10;
+  int minibatches = 4;
+  bool anneal_learning_rate = false;
+};
+
+inline void CheckPpoSpec(const PpoSpec& p, const ObjectReader& reader) {
+  if (p.minibatches > p.rollout_steps)
+    throw ConfigError(reader.PathOf("minibatches"), "must not exceed rollout_steps");
+}
+
+inline const HyperparameterTable<PpoSpec>& PpoHyperparameters() {
+  static const HyperparameterTable<PpoSpec> table{
+      "ppo",
+      "/agent/ppo",
+      "PPO on the discrete moves; CleanRL's ppo.py values where they differ.",
+      {{"learning_rate", &PpoSpec::learning_rate, PositiveAtMost(1.0),
+        "Adam (eps 1e-5), actor and critic together. CleanRL: 2.5e-4"},
+       {"gamma", &PpoSpec::gamma, Between(0.0, 1.0), "discount. CleanRL: 0.99"},
+       {"gae_lambda", &PpoSpec::gae_lambda, Between(0.0, 1.0), "GAE's lambda"},
+       {"clip", &PpoSpec::clip, PositiveAtMost(1.0), "the surrogate objective's ratio clip"},
+       {"entropy_coefficient", &PpoSpec::entropy_coefficient, NonNegative(),
+        "weight of the entropy bonus"},
+       {"value_coefficient", &PpoSpec::value_coefficient, NonNegative(),
+        "weight of the value loss"},
+       {"max_grad_norm", &PpoSpec::max_grad_norm, Positive(), "gradient norm clipping"},
+       {"rollout_steps", &PpoSpec::rollout_steps, Integers(2, 1000000),
+        "transitions per update. CleanRL: 128"},
+       {"epochs", &PpoSpec::epochs, Integers(1, 1000), "passes over a rollout. CleanRL: 4"},
+       {"minibatches", &PpoSpec::minibatches, Integers(1, 1000000),
+        "minibatches per pass; at most rollout_steps"},
+       {"anneal_learning_rate", &PpoSpec::anneal_learning_rate, NoRange(),
+        "the rate falls linearly to 0 over the training's rollouts (train_episodes x steps per "
+        "episode / rollout_steps), the first at the full rate (CleanRL's anneal_lr, on there): "
+        "late updates then refine the policy instead of knocking it off its best. Off by "
+        "default: the single-UAV figures were measured without it; campus2 and urban3 use it"}},
+      CheckPpoSpec};
+  return table;
+}
+
+}  // namespace rlpos

@@ -1,0 +1,122 @@
+// The agents' hyperparameter declarations drive the parser: every declared key is accepted
+// through --set and comes back from ToJson, and values beyond its declared range are refused
+// naming its JSON path. The docs page is the declarations' rendering.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "common/scenario/hyperparameter_docs.h"
+#include "common/scenario/scenario_parser.h"
+#include "tests/common/scenario/scenario_error.h"
+
+namespace rlpos {
+namespace {
+
+using nlohmann::json;
+
+json ScenarioB() {
+  return ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json");
+}
+
+std::string Pointer(const std::string& dotted_key) {
+  std::string path = "/" + dotted_key;
+  for (auto& c : path)
+    c = (c == '.') ? '/' : c;
+  return path;
+}
+
+// A value inside the declared range that is not the default.
+json ValidValue(const HyperparameterRow& row) {
+  const json fallback = json::parse(row.default_value);
+  const NumberRange& r = row.bounds;
+  if (row.type == "boolean")
+    return !fallback.get<bool>();
+  if (row.type == "integer") {
+    const long long d = fallback.get<long long>();
+    return d + 1 <= static_cast<long long>(r.max) ? d + 1 : d - 1;
+  }
+  const double d = fallback.is_null() ? r.min : fallback.get<double>();
+  if (r.max >= 1e300)
+    return d + 1.0;
+  return d < r.max ? (d + r.max) / 2 : (d + r.min) / 2;
+}
+
+// Values just beyond the declared range (none for booleans, "above" only when bounded).
+std::vector<json> OutOfRangeValues(const HyperparameterRow& row) {
+  if (row.type == "boolean")
+    return {"yes"};
+  const NumberRange& r = row.bounds;
+  std::vector<json> out;
+  if (row.type == "integer") {
+    out.push_back(static_cast<long long>(r.min) - 1);
+    if (r.max < 1e300)
+      out.push_back(static_cast<long long>(r.max) + 1);
+  } else {
+    out.push_back(r.min_exclusive ? r.min : r.min - 1.0);
+    if (r.max < 1e300)
+      out.push_back(r.max + 1.0);
+  }
+  return out;
+}
+
+TEST(Hyperparameters, EveryDeclaredOneIsAcceptedAndWrittenBack) {
+  std::size_t count = 0;
+  for (const auto& section : AllHyperparameterSections()) {
+    for (const auto& row : section.rows) {
+      const json value = ValidValue(row);
+      json doc = ScenarioB();
+      ApplyOverrides(doc, {row.key + "=" + value.dump()});
+      const json written = ToJson(ParseScenario(doc));
+      EXPECT_EQ(written.at(json::json_pointer(Pointer(row.key))), value) << row.key;
+      ++count;
+    }
+  }
+  EXPECT_GE(count, 30u);  // the four tables, not an empty loop
+}
+
+TEST(Hyperparameters, ValuesBeyondTheDeclaredRangeAreRefused) {
+  for (const auto& section : AllHyperparameterSections()) {
+    for (const auto& row : section.rows) {
+      for (const json& value : OutOfRangeValues(row)) {
+        const std::string error = ErrorOf(ScenarioB(), {row.key + "=" + value.dump()});
+        EXPECT_EQ(error.rfind(Pointer(row.key) + ": ", 0), 0u)
+            << row.key << "=" << value.dump() << " gave \"" << error << "\"";
+      }
+    }
+  }
+}
+
+TEST(Hyperparameters, UnknownKeysSuggestADeclaredOne) {
+  EXPECT_EQ(ErrorOf(ScenarioB(), {"agent.ppo.entropy_coeficient=0.1"}),
+            "/agent/ppo/entropy_coeficient: unknown key \"entropy_coeficient\"; did you mean "
+            "\"entropy_coefficient\"?");
+  EXPECT_EQ(ErrorOf(ScenarioB(), {"agent.sac.alfa=0.1"}),
+            "/agent/sac/alfa: unknown key \"alfa\"; did you mean \"alpha\"?");
+  EXPECT_EQ(ErrorOf(ScenarioB(), {"agent.eval_intervall=2"}),
+            "/agent/eval_intervall: unknown key \"eval_intervall\"; did you mean "
+            "\"eval_interval\"?");
+}
+
+TEST(Hyperparameters, TheDocsPageIsTheDeclarationsRendering) {
+  std::ifstream in(std::string(RLPOS_SOURCE_DIR) + "/docs/hyperparameters.md");
+  ASSERT_TRUE(in) << "docs/hyperparameters.md is missing";
+  std::stringstream page;
+  page << in.rdbuf();
+  EXPECT_EQ(page.str(), HyperparametersMarkdown(AllHyperparameterSections()))
+      << "regenerate it: rlpos-sim describe hyperparameters > docs/hyperparameters.md";
+}
+
+TEST(Hyperparameters, AnAlgorithmsTablesAreTheSharedOneAndItsOwn) {
+  const auto sections = HyperparameterSectionsFor("ppo");
+  ASSERT_EQ(sections.size(), 2u);
+  EXPECT_EQ(sections[0].section, "agent");
+  EXPECT_EQ(sections[1].section, "ppo");
+  EXPECT_EQ(sections[1].rows[0].key, "agent.ppo.learning_rate");
+  EXPECT_EQ(sections[1].rows[0].default_value, "0.001");
+  EXPECT_EQ(sections[1].rows[0].range, "(0, 1]");
+  EXPECT_EQ(AllHyperparameterSections().size(), 4u);
+}
+
+}  // namespace
+}  // namespace rlpos

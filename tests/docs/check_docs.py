@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""Checks the documentation against the code.
+
+1. Every relative link in README.md, results/README.md and docs/*.md names a file that exists,
+   and every #anchor a heading of that file (GitHub's slugs).
+2. Every block between `<!-- BEGIN GENERATED name -->` and `<!-- END GENERATED name -->` is what
+   the program that owns the declaration prints for it (GENERATORS below), so a table that
+   mirrors code cannot drift from it. `--fix` rewrites the blocks instead of failing.
+
+Usage: check_docs.py BIN_DIR SOURCE_DIR [--fix]
+"""
+import glob
+import os
+import re
+import subprocess
+import sys
+
+# name of a generated block -> the command (program in BIN_DIR, then its arguments).
+GENERATORS = {
+    'metrics': ['rlpos-sim', 'describe', 'metrics'],
+    'exit-codes': ['rlpos-campaign', 'describe', 'exit-codes'],
+}
+BLOCK = re.compile(r'(<!-- BEGIN GENERATED ([\w-]+) -->\n)(.*?)(<!-- END GENERATED \2 -->)', re.S)
+LINK = re.compile(r'\[[^\]]*\]\(([^)\s]+)\)')
+
+
+def slug(heading):
+    text = re.sub(r'[`*_]|\[([^\]]*)\]\([^)]*\)', r'\1', heading.strip().lower())
+    return re.sub(r'[^\w\- ]', '', text).replace(' ', '-')
+
+
+def anchors(path):
+    seen, out, fenced = {}, set(), False
+    for line in open(path, encoding='utf-8'):
+        if line.startswith('```'):
+            fenced = not fenced
+        m = re.match(r'(#{1,6})\s+(.*)', line)
+        if m and not fenced:
+            base = slug(m.group(2))
+            n = seen.get(base, 0)
+            seen[base] = n + 1
+            out.add(base if n == 0 else f'{base}-{n}')
+    return out
+
+
+def check_links(pages, source_dir):
+    errors = []
+    for page in pages:
+        text = re.sub(r'```.*?```', '', open(page, encoding='utf-8').read(), flags=re.S)
+        for target in LINK.findall(text):
+            if re.match(r'[a-z]+:', target):
+                continue  # http(s), mailto: not ours to check
+            file_part, _, anchor = target.partition('#')
+            dest = os.path.normpath(os.path.join(os.path.dirname(page), file_part)) \
+                if file_part else page
+            rel = os.path.relpath(page, source_dir)
+            if not os.path.exists(dest):
+                errors.append(f'{rel}: link to {target}: no such file')
+            elif anchor and dest.endswith('.md') and anchor not in anchors(dest):
+                errors.append(f'{rel}: link to {target}: no heading #{anchor}')
+    return errors
+
+
+def generated(bin_dir, name):
+    cmd = GENERATORS[name]
+    run = subprocess.run([os.path.join(bin_dir, cmd[0])] + cmd[1:], capture_output=True,
+                         text=True, timeout=60)
+    if run.returncode != 0:
+        raise RuntimeError(f'{" ".join(cmd)} exited {run.returncode}: {run.stderr.strip()}')
+    return run.stdout
+
+
+def check_blocks(pages, bin_dir, source_dir, fix):
+    errors = []
+    for page in pages:
+        text = open(page, encoding='utf-8').read()
+        rel = os.path.relpath(page, source_dir)
+
+        def replace(m):
+            name = m.group(2)
+            if name not in GENERATORS:
+                errors.append(f'{rel}: generated block "{name}" has no generator')
+                return m.group(0)
+            want = generated(bin_dir, name)
+            if m.group(3) != want and not fix:
+                errors.append(f'{rel}: block "{name}" differs from `{" ".join(GENERATORS[name])}`'
+                              f' (run tests/docs/check_docs.py BIN_DIR . --fix)')
+            return m.group(1) + want + m.group(4)
+
+        new = BLOCK.sub(replace, text)
+        if fix and new != text:
+            open(page, 'w', encoding='utf-8').write(new)
+            print(f'rewrote {rel}')
+    return errors
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    bin_dir, source_dir = sys.argv[1], sys.argv[2]
+    fix = '--fix' in sys.argv[3:]
+    pages = [os.path.join(source_dir, p) for p in ('README.md', 'results/README.md')]
+    pages += sorted(glob.glob(os.path.join(source_dir, 'docs', '*.md')))
+    errors = check_links(pages, source_dir) + check_blocks(pages, bin_dir, source_dir, fix)
+    for e in errors:
+        print(e, file=sys.stderr)
+    print(f'{len(pages)} pages, {len(errors)} problems')
+    sys.exit(1 if errors else 0)
+
+
+if __name__ == '__main__':
+    main()
