@@ -16,22 +16,22 @@
 #include <random>
 #include <thread>
 
+#include "common/campaign/campaign_request.h"
 #include "common/campaign/expansion.h"
-#include "coordinator/cli/campaign_client.h"
-#include "coordinator/cli/campaign_commands.h"
-#include "coordinator/cli/crash_loop.h"
-#include "coordinator/cli/progress_text.h"
-#include "common/scenario/number_text.h"
 #include "common/process/child_process.h"
 #include "common/process/executable_path.h"
 #include "common/process/file_lock.h"
 #include "common/process/stop_signal.h"
+#include "common/scenario/number_text.h"
+#include "common/store/results_reader.h"
+#include "common/store/store_db.h"
+#include "coordinator/cli/campaign_client.h"
+#include "coordinator/cli/campaign_commands.h"
+#include "coordinator/cli/crash_loop.h"
+#include "coordinator/cli/progress_text.h"
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
-#include "common/store/results_reader.h"
-#include "common/store/store_db.h"
-#include "common/campaign/campaign_request.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;
@@ -173,6 +173,166 @@ void PrintPlan(const CampaignPlan& campaign) {
   }
 }
 
+using Daemons = std::vector<std::unique_ptr<Daemon>>;
+
+// Where a run's daemons are, meet and write.
+struct RunSite {
+  std::string bin;  // the folder of rlpos-coordinator and rlpos-worker
+  std::string tag;  // the DDS discovery tag
+  DdsOptions dds;
+  fs::path db_dir;
+  fs::path log_dir;
+};
+
+// The private loopback domain of the run: the tag's, unless one is given.
+DdsOptions LoopbackDds(const RunOptions& options, const std::string& tag) {
+  DdsOptions dds;
+  dds.loopback_tag = tag;
+  dds.domain = options.domain >= 0 ? options.domain
+                                   : 1 + static_cast<int>(std::hash<std::string>{}(tag) % 200);
+  CheckDdsOptions(dds);
+  return dds;
+}
+
+// A database that cannot be opened or migrated, or that another coordinator owns, is bad
+// input: say so before starting anything (the coordinator would refuse it).
+void CheckDatabaseIsFree(const std::string& db) {
+  { StoreDb check(db); }
+  try {
+    ExclusiveFileLock probe(db + ".coordinator.lock");
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(db + " is in use by another coordinator (" + e.what() +
+                                "); use another --db, or `submit` to that one");
+  }
+}
+
+RunSite PrepareSite(const RunOptions& options) {
+  RunSite site;
+  site.bin = ExecutableDir();
+  // The embedded daemons stay on a private loopback tag, unsecured: an RLPOS_SECURITY meant for
+  // a deployment (whose identities may not all be here) must not reach them.
+  ::unsetenv("RLPOS_SECURITY");
+  ::unsetenv("RLPOS_IDENTITY");
+  site.tag = options.tag.empty() ? NewTag() : options.tag;
+  site.dds = LoopbackDds(options, site.tag);
+  site.db_dir = fs::absolute(options.db).parent_path();
+  fs::create_directories(site.db_dir);
+  CheckDatabaseIsFree(options.db);
+  site.log_dir =
+      options.log_dir.empty() ? site.db_dir / "logs" / site.tag : fs::path(options.log_dir);
+  fs::create_directories(site.log_dir);
+  return site;
+}
+
+// The coordinator first, then the workers w0, w1, ...
+Daemons MakeDaemons(const RunOptions& options, const RunSite& site) {
+  const auto dds_args = DdsArgs(site.dds);
+  Daemons daemons;
+  std::vector<std::string> coordinator{site.bin + "/rlpos-coordinator", "--db", options.db,
+                                       "--log-level", "info"};
+  coordinator.insert(coordinator.end(), dds_args.begin(), dds_args.end());
+  daemons.push_back(std::make_unique<Daemon>(
+      "rlpos-coordinator", [coordinator](int) { return coordinator; },
+      (site.log_dir / "coordinator.log").string()));
+  for (int i = 0; i < options.workers; ++i) {
+    const std::string name = "w" + std::to_string(i);
+    const auto command_line = [site, dds_args, name,
+                               slots = options.slots_per_worker](int restart) {
+      const std::string id =
+          site.tag + "-" + name + (restart > 0 ? "." + std::to_string(restart) : "");
+      std::vector<std::string> worker{site.bin + "/rlpos-worker",
+                                      "--id",
+                                      id,
+                                      "--slots",
+                                      std::to_string(slots),
+                                      "--work-dir",
+                                      (site.db_dir / "work" / site.tag / id).string(),
+                                      "--log-level",
+                                      "info"};
+      worker.insert(worker.end(), dds_args.begin(), dds_args.end());
+      return worker;
+    };
+    daemons.push_back(std::make_unique<Daemon>("rlpos-worker " + site.tag + "-" + name,
+                                               command_line,
+                                               (site.log_dir / (name + ".log")).string()));
+  }
+  return daemons;
+}
+
+// Workers first (all at once), so that the coordinator sees them stop, not get lost.
+void StopDaemons(const Daemons& daemons) {
+  for (std::size_t i = 1; i < daemons.size(); ++i)
+    daemons[i]->Terminate();
+  for (std::size_t i = 1; i < daemons.size(); ++i)
+    daemons[i]->Stop(3.0);
+  daemons[0]->Stop(5.0);
+}
+
+// Submits the campaign once the coordinator answers; returns its id. Throws if a daemon ends
+// first, or the coordinator refuses the campaign or expands it to another one.
+std::string SubmitToCoordinator(const CampaignSubmission& submission, const RunOptions& options,
+                                const DdsOptions& dds, const Daemons& daemons) {
+  const CampaignPlan& campaign = submission.campaign;
+  const msg::CampaignReply reply =
+      SendCampaignRequest(dds, SubmitRequest(submission, options.use_cache), 60.0, [&] {
+        if (StopRequested())
+          throw std::runtime_error("interrupted before the campaign started");
+        for (auto& d : daemons)
+          d->RequireRunning();
+      });
+  if (!reply.ok)
+    throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
+  if (reply.campaign_id != campaign.id) {
+    throw std::runtime_error("the coordinator expanded the campaign to " + reply.campaign_id +
+                             ", not " + campaign.id + " (different rlpos versions?)");
+  }
+  return reply.campaign_id;
+}
+
+// Shows the campaign's progress until it is settled (true) or the user interrupts (false),
+// restarting the daemons that end.
+bool FollowUntilSettled(ResultsReader& store, const std::string& campaign_id, const Daemons& daemons,
+                        ProgressPrinter& printer) {
+  for (;;) {
+    if (StopRequested())
+      return false;
+    for (auto& d : daemons) {
+      const std::string note = d->KeepAlive();
+      if (!note.empty())
+        printer.Note(note);
+    }
+    const CampaignProgress progress = store.Progress(campaign_id);
+    const bool settled = IsSettled(progress);
+    const auto eta = EstimateRemainingSeconds(progress, store.Timing(campaign_id), WallNow());
+    printer.Show(ProgressLine(progress, settled ? std::nullopt : eta), settled);
+    if (settled)
+      return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  }
+}
+
+// The summary tables, the report and the failed jobs of a settled campaign; returns the exit
+// code.
+int PrintOutcome(ResultsReader& store, const std::string& campaign_id, const RunOptions& options,
+                 const RunSite& site, ProgressPrinter& printer) {
+  const CampaignProgress progress = store.Progress(campaign_id);
+  std::cout << ResultsTables(store, campaign_id);
+  const std::string report_dir = options.report_dir.empty()
+                                     ? (site.db_dir / "reports" / campaign_id).string()
+                                     : options.report_dir;
+  ReportOptions report_options;
+  report_options.plot_script = DefaultPlotScript(site.bin);
+  const ReportResult report = WriteReport(store, campaign_id, report_dir, report_options);
+  for (const auto& w : report.warnings)
+    printer.Note("warning: " + w);
+  std::cout << "report: " << report_dir << "\n";
+  for (const auto& f : store.FailedJobs(campaign_id)) {
+    printer.Note("failed: " + f.key + " after " + std::to_string(f.attempts) +
+                 " attempt(s): " + f.error);
+  }
+  return progress.failed > 0 ? kExitJobsFailed : kExitOk;
+}
+
 }  // namespace
 
 int RunCampaign(const RunOptions& options) {
@@ -183,135 +343,31 @@ int RunCampaign(const RunOptions& options) {
     PrintPlan(campaign);
     return kExitOk;
   }
-  const std::string bin = ExecutableDir();
-  // The embedded daemons stay on a private loopback tag, unsecured: an RLPOS_SECURITY meant for
-  // a deployment (whose identities may not all be here) must not reach them.
-  ::unsetenv("RLPOS_SECURITY");
-  ::unsetenv("RLPOS_IDENTITY");
-  const std::string tag = options.tag.empty() ? NewTag() : options.tag;
-  DdsOptions dds;
-  dds.loopback_tag = tag;
-  dds.domain = options.domain >= 0 ? options.domain
-                                   : 1 + static_cast<int>(std::hash<std::string>{}(tag) % 200);
-  CheckDdsOptions(dds);
-  const fs::path db_dir = fs::absolute(options.db).parent_path();
-  fs::create_directories(db_dir);
-  // A database that cannot be opened or migrated is bad input: say so before starting anything.
-  { StoreDb check(options.db); }
-  {
-    // The coordinator would refuse a database another coordinator owns; say so up front.
-    try {
-      ExclusiveFileLock probe(options.db + ".coordinator.lock");
-    } catch (const std::runtime_error& e) {
-      throw std::invalid_argument(options.db + " is in use by another coordinator (" + e.what() +
-                                  "); use another --db, or `submit` to that one");
-    }
-  }
-  const fs::path log_dir =
-      options.log_dir.empty() ? db_dir / "logs" / tag : fs::path(options.log_dir);
-  fs::create_directories(log_dir);
-  const auto dds_args = DdsArgs(dds);
-
-  std::vector<std::unique_ptr<Daemon>> daemons;
-  std::vector<std::string> coordinator{bin + "/rlpos-coordinator", "--db", options.db,
-                                       "--log-level", "info"};
-  coordinator.insert(coordinator.end(), dds_args.begin(), dds_args.end());
-  daemons.push_back(std::make_unique<Daemon>(
-      "rlpos-coordinator", [coordinator](int) { return coordinator; },
-      (log_dir / "coordinator.log").string()));
-  for (int i = 0; i < options.workers; ++i) {
-    const std::string name = "w" + std::to_string(i);
-    const auto command_line = [&, name](int restart) {
-      const std::string id = tag + "-" + name + (restart > 0 ? "." + std::to_string(restart) : "");
-      std::vector<std::string> worker{bin + "/rlpos-worker",
-                                      "--id",
-                                      id,
-                                      "--slots",
-                                      std::to_string(options.slots_per_worker),
-                                      "--work-dir",
-                                      (db_dir / "work" / tag / id).string(),
-                                      "--log-level",
-                                      "info"};
-      worker.insert(worker.end(), dds_args.begin(), dds_args.end());
-      return worker;
-    };
-    daemons.push_back(std::make_unique<Daemon>("rlpos-worker " + tag + "-" + name, command_line,
-                                               (log_dir / (name + ".log")).string()));
-  }
+  const RunSite site = PrepareSite(options);
+  const Daemons daemons = MakeDaemons(options, site);
   ProgressPrinter printer(options.progress);
-  const auto stop_all = [&] {
-    // Workers first (all at once), so that the coordinator sees them stop, not get lost.
-    for (std::size_t i = 1; i < daemons.size(); ++i)
-      daemons[i]->Terminate();
-    for (std::size_t i = 1; i < daemons.size(); ++i)
-      daemons[i]->Stop(3.0);
-    daemons[0]->Stop(5.0);
-  };
   try {
     for (auto& d : daemons)
       d->Start();
     printer.Note("running " + campaign.name + " (" + std::to_string(campaign.JobCount()) +
                  " jobs) on " + std::to_string(options.workers) + " worker(s); " +
-                 DescribeDds(dds) + "; logs in " + log_dir.string());
-    const msg::CampaignReply reply =
-        SendCampaignRequest(dds, SubmitRequest(submission, options.use_cache), 60.0, [&] {
-          if (StopRequested())
-            throw std::runtime_error("interrupted before the campaign started");
-          for (auto& d : daemons)
-            d->RequireRunning();
-        });
-    if (!reply.ok)
-      throw std::runtime_error("the coordinator refused the campaign: " + reply.message);
-    if (reply.campaign_id != campaign.id) {
-      throw std::runtime_error("the coordinator expanded the campaign to " + reply.campaign_id +
-                               ", not " + campaign.id + " (different rlpos versions?)");
-    }
-    std::cout << "campaign " << reply.campaign_id << "\n" << std::flush;
+                 DescribeDds(site.dds) + "; logs in " + site.log_dir.string());
+    const std::string campaign_id = SubmitToCoordinator(submission, options, site.dds, daemons);
+    std::cout << "campaign " << campaign_id << "\n" << std::flush;
 
     StoreOptions read_only;
     read_only.read_only = true;
     StoreDb opened(options.db, read_only);
     ResultsReader store(opened);
-    for (;;) {
-      if (StopRequested()) {
-        stop_all();
-        printer.Note("interrupted; run the same command again to resume");
-        return kExitInterrupted;
-      }
-      for (auto& d : daemons) {
-        const std::string note = d->KeepAlive();
-        if (!note.empty())
-          printer.Note(note);
-      }
-      const CampaignProgress progress = store.Progress(reply.campaign_id);
-      const bool settled = IsSettled(progress);
-      const auto eta =
-          EstimateRemainingSeconds(progress, store.Timing(reply.campaign_id), WallNow());
-      printer.Show(ProgressLine(progress, settled ? std::nullopt : eta), settled);
-      if (settled)
-        break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    if (!FollowUntilSettled(store, campaign_id, daemons, printer)) {
+      StopDaemons(daemons);
+      printer.Note("interrupted; run the same command again to resume");
+      return kExitInterrupted;
     }
-    stop_all();
-
-    const CampaignProgress progress = store.Progress(reply.campaign_id);
-    std::cout << ResultsTables(store, reply.campaign_id);
-    const std::string report_dir = options.report_dir.empty()
-                                       ? (db_dir / "reports" / reply.campaign_id).string()
-                                       : options.report_dir;
-    ReportOptions report_options;
-    report_options.plot_script = DefaultPlotScript(bin);
-    const ReportResult report = WriteReport(store, reply.campaign_id, report_dir, report_options);
-    for (const auto& w : report.warnings)
-      printer.Note("warning: " + w);
-    std::cout << "report: " << report_dir << "\n";
-    for (const auto& f : store.FailedJobs(reply.campaign_id)) {
-      printer.Note("failed: " + f.key + " after " + std::to_string(f.attempts) +
-                   " attempt(s): " + f.error);
-    }
-    return progress.failed > 0 ? kExitJobsFailed : kExitOk;
+    StopDaemons(daemons);
+    return PrintOutcome(store, campaign_id, options, site, printer);
   } catch (...) {
-    stop_all();
+    StopDaemons(daemons);
     throw;
   }
 }

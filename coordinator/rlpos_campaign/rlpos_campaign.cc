@@ -12,173 +12,218 @@
 #include <iostream>
 #include <thread>
 
+#include "common/config/config_error.h"
+#include "common/process/stop_signal.h"
+#include "common/store/store_error.h"
 #include "coordinator/cli/campaign_client.h"
 #include "coordinator/cli/campaign_commands.h"
-#include "common/config/config_error.h"
 #include "idl/dds/dds_cli_options.h"
 #include "idl/dds/participant.h"
 #include "idl/dds/security/security_check.h"
-#include "common/process/stop_signal.h"
-#include "common/store/store_error.h"
 
+namespace rlpos {
 namespace {
 
-void AddRequestOptions(CLI::App* command, rlpos::DdsOptions& dds, double& timeout_s) {
-  rlpos::AddDdsOptions(command, dds);
+const char* const kNoCacheHelp =
+    "Run every job, even one whose result the database already holds from an identical job";
+
+// What the command line gives, and the subcommands to ask which one was parsed. Subcommands
+// share a value where they take the same flag (--db, the campaign id, the DDS flags).
+struct CommandLine {
+  std::string db = "results/rlpos.db";
+  RunOptions run_options;
+  std::string campaign_file, campaign_id, format = "table", out_dir, artifacts_out;
+  bool use_cache = true, watch = false, per_uav = false;
+  double period_s = 2;
+  DdsOptions dds;
+  double timeout_s = 10;
+  std::string security_dir, identity_name;
+  int days = 365;
+
+  CLI::App *run = nullptr, *submit = nullptr, *status = nullptr, *results = nullptr,
+           *report = nullptr, *artifacts = nullptr, *cancel = nullptr, *retry = nullptr,
+           *security_init = nullptr, *add_worker = nullptr, *add_client = nullptr;
+};
+
+void AddDbOption(CLI::App* command, std::string& db) {
+  command->add_option("--db", db, "Results database (default: results/rlpos.db)");
+}
+
+void AddRequestOptions(CLI::App* command, DdsOptions& dds, double& timeout_s) {
+  AddDdsOptions(command, dds);
   command->add_option("--timeout", timeout_s, "Seconds to wait for the coordinator (default 10)")
       ->check(CLI::PositiveNumber);
 }
 
+void AddRunCommand(CLI::App& app, CommandLine& cli) {
+  RunOptions& options = cli.run_options;
+  options.workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  auto* run = app.add_subcommand("run", "Run a campaign here: coordinator + workers on loopback");
+  run->add_option("campaign", options.campaign_file, "Campaign JSON")->required();
+  run->add_option("--workers", options.workers, "Local workers (default: the number of cores)")
+      ->check(CLI::Range(1, 256));
+  run->add_option("--slots", options.slots_per_worker, "Jobs per worker at once (default 1)")
+      ->check(CLI::Range(1, 256));
+  AddDbOption(run, cli.db);
+  run->add_option("--report", options.report_dir,
+                  "Report folder (default: reports/<campaign id> next to the database)");
+  run->add_option("--tag", options.tag, "DDS discovery tag (default: a random one)");
+  run->add_flag("!--no-progress", options.progress, "No progress bar");
+  run->add_flag("--dry-run", options.dry_run,
+                "Print the campaign id and its jobs per scenario; run nothing");
+  run->add_flag("!--no-cache", options.use_cache, kNoCacheHelp);
+  cli.run = run;
+}
+
+void AddSubmitCommand(CLI::App& app, CommandLine& cli) {
+  auto* submit = app.add_subcommand("submit", "Submit a campaign to a running coordinator");
+  submit->add_option("campaign", cli.campaign_file, "Campaign JSON")->required();
+  submit->add_flag("!--no-cache", cli.use_cache, kNoCacheHelp);
+  AddRequestOptions(submit, cli.dds, cli.timeout_s);
+  cli.submit = submit;
+}
+
+// status, results, report and artifacts: they read the database.
+void AddReadCommands(CLI::App& app, CommandLine& cli) {
+  auto* status = app.add_subcommand("status", "Jobs by state, workers alive, progress and ETA");
+  status->add_option("id", cli.campaign_id, "Campaign id (default: every campaign)");
+  status->add_flag("--watch", cli.watch, "Refresh until the campaigns are settled");
+  status->add_option("--period", cli.period_s, "Seconds between refreshes (default 2)")
+      ->check(CLI::PositiveNumber);
+  AddDbOption(status, cli.db);
+
+  auto* results = app.add_subcommand("results", "Per scenario and positioner: median, mean, CI");
+  results->add_option("id", cli.campaign_id, "Campaign id")->required();
+  results->add_option("--format", cli.format, "table|csv|json (default table)")
+      ->check(CLI::IsMember({"table", "csv", "json"}));
+  results->add_flag("--per-uav", cli.per_uav,
+                    "Per UAV of the scenarios with several (the table shows both by default)");
+  AddDbOption(results, cli.db);
+
+  auto* report = app.add_subcommand("report", "Write CSV, Markdown and PNG plots of a campaign");
+  report->add_option("id", cli.campaign_id, "Campaign id")->required();
+  report->add_option("--out", cli.out_dir, "Report folder")->required();
+  AddDbOption(report, cli.db);
+
+  auto* artifacts = app.add_subcommand(
+      "artifacts", "List a campaign's (or a job's) artifacts: policies, learning curves, ...");
+  artifacts->add_option("id", cli.campaign_id, "Campaign id or job id")->required();
+  artifacts->add_option("--out", cli.artifacts_out,
+                        "Export them to this new folder, as <job key>/<name>");
+  AddDbOption(artifacts, cli.db);
+  cli.status = status;
+  cli.results = results;
+  cli.report = report;
+  cli.artifacts = artifacts;
+}
+
+// cancel and retry: requests to the coordinator.
+void AddRequestCommands(CLI::App& app, CommandLine& cli) {
+  cli.cancel = app.add_subcommand("cancel", "Cancel a campaign's unfinished jobs");
+  cli.cancel->add_option("id", cli.campaign_id, "Campaign id")->required();
+  AddRequestOptions(cli.cancel, cli.dds, cli.timeout_s);
+  cli.retry = app.add_subcommand("retry", "Run a campaign's failed jobs again");
+  cli.retry->add_option("id", cli.campaign_id, "Campaign id")->required();
+  AddRequestOptions(cli.retry, cli.dds, cli.timeout_s);
+}
+
+void AddSecurityCommands(CLI::App& app, CommandLine& cli) {
+  auto* security = app.add_subcommand("security", "Make DDS Security identities (CA, permissions)");
+  security->require_subcommand(1);
+  cli.security_init = security->add_subcommand("init",
+                                               "New folder: a CA, governance, and identities "
+                                               "coordinator, worker and client");
+  cli.security_init->add_option("dir", cli.security_dir, "Folder to create")->required();
+  cli.add_worker = security->add_subcommand("add-worker", "Issue one more worker identity");
+  cli.add_client = security->add_subcommand("add-client", "Issue one more client identity");
+  for (auto* command : {cli.add_worker, cli.add_client}) {
+    command->add_option("dir", cli.security_dir, "Folder made by `security init`")->required();
+    command->add_option("name", cli.identity_name, "Identity name (use it with --identity)")
+        ->required();
+  }
+  for (auto* command : {cli.security_init, cli.add_worker, cli.add_client}) {
+    command->add_option("--days", cli.days, "Identities valid this many days (default 365)")
+        ->check(CLI::Range(1, 36500));
+  }
+}
+
+// Runs the parsed subcommand; returns its exit code.
+int RunCommand(CommandLine& cli) {
+  if (cli.submit->parsed() || cli.cancel->parsed() || cli.retry->parsed())
+    PreflightDds(cli.dds);
+  InstallStopSignalHandlers();
+  if (cli.security_init->parsed())
+    return InitSecurity(cli.security_dir, cli.days);
+  if (cli.add_worker->parsed())
+    return AddSecurityIdentity(cli.security_dir, cli.identity_name, DdsRole::kWorker, cli.days);
+  if (cli.add_client->parsed())
+    return AddSecurityIdentity(cli.security_dir, cli.identity_name, DdsRole::kClient, cli.days);
+  if (cli.run->parsed()) {
+    cli.run_options.db = cli.db;
+    return RunCampaign(cli.run_options);
+  }
+  if (cli.submit->parsed())
+    return SubmitCampaign(cli.campaign_file, cli.use_cache, cli.dds, cli.timeout_s);
+  if (cli.status->parsed())
+    return ShowStatus(cli.db, cli.campaign_id, cli.watch, cli.period_s);
+  if (cli.results->parsed())
+    return ShowResults(cli.db, cli.campaign_id, cli.format, cli.per_uav);
+  if (cli.report->parsed())
+    return WriteCampaignReport(cli.db, cli.campaign_id, cli.out_dir);
+  if (cli.artifacts->parsed())
+    return ListOrExportArtifacts(cli.db, cli.campaign_id, cli.artifacts_out);
+  if (cli.cancel->parsed())
+    return CancelCampaign(cli.campaign_id, cli.dds, cli.timeout_s);
+  if (cli.retry->parsed())
+    return RetryCampaign(cli.campaign_id, cli.dds, cli.timeout_s);
+  return kExitFailure;
+}
+
+// Says `e` on one line of stderr; returns `exit_code`.
+int Fail(const std::exception& e, int exit_code) {
+  std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
+  return exit_code;
+}
+
+// RunCommand, with its errors said on one line and mapped to the exit codes.
+int RunCommandReportingErrors(CommandLine& cli) {
+  try {
+    return RunCommand(cli);
+  } catch (const ConfigError& e) {
+    const std::string& file = cli.run->parsed() ? cli.run_options.campaign_file : cli.campaign_file;
+    std::cerr << "rlpos-campaign: error: " << file << ": " << e.describe() << "\n";
+    return kExitBadInput;
+  } catch (const StoreError& e) {
+    return Fail(e, kExitBadInput);
+  } catch (const std::invalid_argument& e) {
+    return Fail(e, kExitBadInput);
+  } catch (const security::SecuritySetupError& e) {
+    return Fail(e, kExitBadInput);
+  } catch (const NoCoordinatorError& e) {
+    return Fail(e, kExitNoCoordinator);
+  } catch (const std::exception& e) {
+    return Fail(e, kExitFailure);
+  }
+}
+
 }  // namespace
+}  // namespace rlpos
 
 int main(int argc, char** argv) {
   using namespace rlpos;
   CLI::App app{"rlpos-campaign: run RLpos experiment campaigns and read their results"};
   app.require_subcommand(1);
-  std::string db = "results/rlpos.db";
-  const auto add_db = [&db](CLI::App* command) {
-    command->add_option("--db", db, "Results database (default: results/rlpos.db)");
-  };
-
-  RunOptions run_options;
-  run_options.workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  auto* run = app.add_subcommand("run", "Run a campaign here: coordinator + workers on loopback");
-  run->add_option("campaign", run_options.campaign_file, "Campaign JSON")->required();
-  run->add_option("--workers", run_options.workers, "Local workers (default: the number of cores)")
-      ->check(CLI::Range(1, 256));
-  run->add_option("--slots", run_options.slots_per_worker, "Jobs per worker at once (default 1)")
-      ->check(CLI::Range(1, 256));
-  add_db(run);
-  run->add_option("--report", run_options.report_dir,
-                  "Report folder (default: reports/<campaign id> next to the database)");
-  run->add_option("--tag", run_options.tag, "DDS discovery tag (default: a random one)");
-  run->add_flag("!--no-progress", run_options.progress, "No progress bar");
-  run->add_flag("--dry-run", run_options.dry_run,
-                "Print the campaign id and its jobs per scenario; run nothing");
-  const char* const no_cache_help =
-      "Run every job, even one whose result the database already holds from an identical job";
-  run->add_flag("!--no-cache", run_options.use_cache, no_cache_help);
-
-  std::string campaign_file, campaign_id, format = "table", out_dir;
-  DdsOptions dds;
-  dds.role = DdsRole::kClient;
-  double timeout_s = 10;
-  auto* submit = app.add_subcommand("submit", "Submit a campaign to a running coordinator");
-  submit->add_option("campaign", campaign_file, "Campaign JSON")->required();
-  bool use_cache = true;
-  submit->add_flag("!--no-cache", use_cache, no_cache_help);
-  AddRequestOptions(submit, dds, timeout_s);
-
-  bool watch = false;
-  bool per_uav = false;
-  double period_s = 2;
-  auto* status = app.add_subcommand("status", "Jobs by state, workers alive, progress and ETA");
-  status->add_option("id", campaign_id, "Campaign id (default: every campaign)");
-  status->add_flag("--watch", watch, "Refresh until the campaigns are settled");
-  status->add_option("--period", period_s, "Seconds between refreshes (default 2)")
-      ->check(CLI::PositiveNumber);
-  add_db(status);
-
-  auto* results = app.add_subcommand("results", "Per scenario and positioner: median, mean, CI");
-  results->add_option("id", campaign_id, "Campaign id")->required();
-  results->add_option("--format", format, "table|csv|json (default table)")
-      ->check(CLI::IsMember({"table", "csv", "json"}));
-  results->add_flag("--per-uav", per_uav,
-                    "Per UAV of the scenarios with several (the table shows both by default)");
-  add_db(results);
-
-  auto* report = app.add_subcommand("report", "Write CSV, Markdown and PNG plots of a campaign");
-  report->add_option("id", campaign_id, "Campaign id")->required();
-  report->add_option("--out", out_dir, "Report folder")->required();
-  add_db(report);
-
-  std::string artifacts_out;
-  auto* artifacts = app.add_subcommand(
-      "artifacts", "List a campaign's (or a job's) artifacts: policies, learning curves, ...");
-  artifacts->add_option("id", campaign_id, "Campaign id or job id")->required();
-  artifacts->add_option("--out", artifacts_out,
-                        "Export them to this new folder, as <job key>/<name>");
-  add_db(artifacts);
-
-  auto* cancel = app.add_subcommand("cancel", "Cancel a campaign's unfinished jobs");
-  cancel->add_option("id", campaign_id, "Campaign id")->required();
-  AddRequestOptions(cancel, dds, timeout_s);
-  auto* retry = app.add_subcommand("retry", "Run a campaign's failed jobs again");
-  retry->add_option("id", campaign_id, "Campaign id")->required();
-  AddRequestOptions(retry, dds, timeout_s);
-
-  std::string security_dir, identity_name;
-  int days = 365;
-  auto* security = app.add_subcommand("security", "Make DDS Security identities (CA, permissions)");
-  security->require_subcommand(1);
-  auto* security_init = security->add_subcommand("init",
-                                                 "New folder: a CA, governance, and identities "
-                                                 "coordinator, worker and client");
-  security_init->add_option("dir", security_dir, "Folder to create")->required();
-  auto* add_worker = security->add_subcommand("add-worker", "Issue one more worker identity");
-  auto* add_client = security->add_subcommand("add-client", "Issue one more client identity");
-  for (auto* command : {add_worker, add_client}) {
-    command->add_option("dir", security_dir, "Folder made by `security init`")->required();
-    command->add_option("name", identity_name, "Identity name (use it with --identity)")
-        ->required();
-  }
-  for (auto* command : {security_init, add_worker, add_client}) {
-    command->add_option("--days", days, "Identities valid this many days (default 365)")
-        ->check(CLI::Range(1, 36500));
-  }
-
+  CommandLine cli;
+  cli.dds.role = DdsRole::kClient;
+  AddRunCommand(app, cli);
+  AddSubmitCommand(app, cli);
+  AddReadCommands(app, cli);
+  AddRequestCommands(app, cli);
+  AddSecurityCommands(app, cli);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kExitOk : kExitBadInput;
   }
-  const std::string file = run->parsed() ? run_options.campaign_file : campaign_file;
-  try {
-    if (submit->parsed() || cancel->parsed() || retry->parsed())
-      PreflightDds(dds);
-    InstallStopSignalHandlers();
-    if (security_init->parsed())
-      return InitSecurity(security_dir, days);
-    if (add_worker->parsed())
-      return AddSecurityIdentity(security_dir, identity_name, DdsRole::kWorker, days);
-    if (add_client->parsed())
-      return AddSecurityIdentity(security_dir, identity_name, DdsRole::kClient, days);
-    if (run->parsed()) {
-      run_options.db = db;
-      return RunCampaign(run_options);
-    }
-    if (submit->parsed())
-      return SubmitCampaign(campaign_file, use_cache, dds, timeout_s);
-    if (status->parsed())
-      return ShowStatus(db, campaign_id, watch, period_s);
-    if (results->parsed())
-      return ShowResults(db, campaign_id, format, per_uav);
-    if (report->parsed())
-      return WriteCampaignReport(db, campaign_id, out_dir);
-    if (artifacts->parsed())
-      return ListOrExportArtifacts(db, campaign_id, artifacts_out);
-    if (cancel->parsed())
-      return CancelCampaign(campaign_id, dds, timeout_s);
-    if (retry->parsed())
-      return RetryCampaign(campaign_id, dds, timeout_s);
-  } catch (const ConfigError& e) {
-    std::cerr << "rlpos-campaign: error: " << file << ": " << e.describe() << "\n";
-    return kExitBadInput;
-  } catch (const StoreError& e) {
-    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const security::SecuritySetupError& e) {
-    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const NoCoordinatorError& e) {
-    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
-    return kExitNoCoordinator;
-  } catch (const std::exception& e) {
-    std::cerr << "rlpos-campaign: error: " << e.what() << "\n";
-    return kExitFailure;
-  }
-  return kExitFailure;
+  return RunCommandReportingErrors(cli);
 }

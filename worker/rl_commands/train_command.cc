@@ -1,15 +1,16 @@
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 
-#include "worker/agent/make_agent.h"
-#include "worker/agent/trainer.h"
 #include "common/config/config_error.h"
 #include "common/scenario/number_text.h"
-#include "worker/uav_env/uav_positioning_env.h"
 #include "common/scenario/placement_json.h"
 #include "common/scenario/scenario_parser.h"
+#include "worker/agent/make_agent.h"
+#include "worker/agent/trainer.h"
 #include "worker/rl_commands/rl_commands.h"
+#include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos::sim {
 namespace {
@@ -55,9 +56,8 @@ void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
       << r.final_info.n_los << ',' << r.final_info.throughput_mbps << '\n';
 }
 
-}  // namespace
-
-int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
+// The scenario overrides the train flags make.
+std::vector<std::string> TrainOverrides(const TrainOptions& t) {
   std::vector<std::string> extra;
   if (!t.algorithm.empty()) {
     // SAC acts on displacements, DQN and PPO on the moves: the flag picks the space as well.
@@ -70,83 +70,134 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
     extra.push_back("agent.seed=" + std::to_string(t.seed));
   if (t.episodes > 0)
     extra.push_back("agent.train_episodes=" + std::to_string(t.episodes));
-  const Scenario s = LoadScenarioFor(options, extra);
-  if (fs::exists(t.out)) {
-    throw ConfigError("--out", t.out + " already exists; choose another folder or remove it");
+  return extra;
+}
+
+// The output is written under a temporary name (returned) and renamed at the end: no
+// half-written output folder.
+fs::path CreatePartialFolder(const std::string& out) {
+  if (fs::exists(out)) {
+    throw ConfigError("--out", out + " already exists; choose another folder or remove it");
   }
-  // Written under a temporary name and renamed at the end: no half-written output folder.
-  const fs::path partial = t.out + ".partial";
+  const fs::path partial = out + ".partial";
   std::error_code ec;
   fs::remove_all(partial, ec);
   if (!fs::create_directories(partial, ec) || ec) {
     throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
   }
+  return partial;
+}
+
+std::ofstream OpenLearningCurve(const fs::path& file) {
+  std::ofstream curve(file);
+  curve << "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
+           "x,y,z,n_los,throughput_mbps\n";
+  return curve;
+}
+
+// The line `status` shows of a running train job, with every UAV's final position.
+void PrintEpisode(const EpisodeRecord& r, int total) {
+  std::fprintf(stderr,
+               "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
+               "final %s nLoS %d\n",
+               r.episode, total, Phase(r), r.steps, r.epsilon, r.total_reward,
+               r.total_reward / std::max(1, r.steps),
+               DescribePlacement(r.final_info.positions).c_str(), r.final_info.n_los);
+}
+
+// The evaluation episodes' steps, one row each: the UAV that moved (its index), its action and
+// where it went.
+class TrajectoryWriter {
+ public:
+  TrajectoryWriter(const fs::path& file, const Scenario& s, const Agent& agent)
+      : out_(file),
+        s_(s),
+        agent_(agent),
+        episode_(s.agent.train_episodes),
+        last_(s.InitialPlacement()),
+        n_uavs_(last_.size()) {
+    out_ << "episode,step,uav,action,x,y,z,n_los,throughput_mbps,reward\n";
+  }
+
+  void operator()(int step, int action, const StepResult& r) {
+    if (step == 1) {
+      ++episode_;
+      last_ = s_.InitialPlacement();
+    }
+    // Several UAVs move in turns of env.turn_steps steps.
+    const std::size_t uav = static_cast<std::size_t>((step - 1) / s_.env.turn_steps) % n_uavs_;
+    const Vec3& p = r.info.positions[uav];
+    const Vec3 from = last_[uav];
+    // A continuous action is written as the displacement the UAV made, "dx dy dz".
+    const std::string moved = agent_.Continuous()
+                                  ? FormatNumber(p.x - from.x) + ' ' + FormatNumber(p.y - from.y) +
+                                        ' ' + FormatNumber(p.z - from.z)
+                                  : s_.env.actions[action];
+    last_ = r.info.positions;
+    out_ << episode_ << ',' << step << ',' << uav << ',' << moved << ',' << p.x << ',' << p.y << ','
+         << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ',' << r.reward << '\n';
+  }
+  void Close() { out_.close(); }
+
+ private:
+  std::ofstream out_;
+  const Scenario& s_;
+  const Agent& agent_;
+  int episode_;  // the evaluation episodes follow the training ones
+  Placement last_;
+  std::size_t n_uavs_;
+};
+
+// Trains the scenario's agent, and writes into `folder` its policy, the learning curve and the
+// evaluation trajectory.
+TrainResult TrainAndRecord(const Scenario& s, const fs::path& folder) {
+  UavPositioningEnv env(s);
+  const std::unique_ptr<Agent> agent_owner =
+      MakeAgent(s.agent, env, std::int64_t{s.agent.train_episodes} * env.StepsPerEpisode());
+  Agent& agent = *agent_owner;
+  std::ofstream curve = OpenLearningCurve(folder / "learning_curve.csv");
+  TrajectoryWriter trajectory(folder / "trajectory.csv", s, agent);
+  const int total = s.agent.train_episodes + s.agent.eval_episodes;
+  const TrainResult result = Train(
+      env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
+      [&](const EpisodeRecord& r) {
+        WriteCurveRow(curve, r);
+        PrintEpisode(r, total);
+      },
+      std::ref(trajectory));
+  curve.close();
+  trajectory.Close();
+  agent.Save(folder.string());
+  return result;
+}
+
+void PrintTrained(const Scenario& s, const TrainResult& result, const std::string& out) {
+  std::printf(
+      "trained %s (%s, %s, seed %llu): final position %s, nLoS %d/%zu, reward %.4f\n"
+      "policy, learning curve and result in %s\n",
+      s.name.c_str(), s.agent.algorithm.c_str(), s.env.fidelity.c_str(),
+      static_cast<unsigned long long>(s.agent.seed),
+      DescribePlacement(result.final_info.positions).c_str(), result.final_info.n_los, s.ues.size(),
+      result.final_reward, out.c_str());
+}
+
+}  // namespace
+
+int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
+  const Scenario s = LoadScenarioFor(options, TrainOverrides(t));
+  const fs::path partial = CreatePartialFolder(t.out);
   try {
-    UavPositioningEnv env(s);
-    const std::unique_ptr<Agent> agent_owner =
-        MakeAgent(s.agent, env, std::int64_t{s.agent.train_episodes} * env.StepsPerEpisode());
-    Agent& agent = *agent_owner;
-    std::ofstream curve(partial / "learning_curve.csv");
-    curve << "episode,phase,steps,total_reward,mean_reward,epsilon,updates,mean_loss,final_reward,"
-             "x,y,z,n_los,throughput_mbps\n";
-    std::ofstream trajectory(partial / "trajectory.csv");
-    // One row per step: the UAV that moved (its index), its action and where it went.
-    trajectory << "episode,step,uav,action,x,y,z,n_los,throughput_mbps,reward\n";
-    int eval_episode = s.agent.train_episodes;
-    Placement last = s.InitialPlacement();
-    const std::size_t n_uavs = last.size();
-    const auto write_step = [&](int step, int action, const StepResult& r) {
-      if (step == 1) {
-        ++eval_episode;
-        last = s.InitialPlacement();
-      }
-      // Several UAVs move in turns of env.turn_steps steps.
-      const std::size_t uav = static_cast<std::size_t>((step - 1) / s.env.turn_steps) % n_uavs;
-      const Vec3& p = r.info.positions[uav];
-      const Vec3 from = last[uav];
-      // A continuous action is written as the displacement the UAV made, "dx dy dz".
-      const std::string moved = agent.Continuous() ? FormatNumber(p.x - from.x) + ' ' +
-                                                         FormatNumber(p.y - from.y) + ' ' +
-                                                         FormatNumber(p.z - from.z)
-                                                   : s.env.actions[action];
-      last = r.info.positions;
-      trajectory << eval_episode << ',' << step << ',' << uav << ',' << moved << ',' << p.x << ','
-                 << p.y << ',' << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ','
-                 << r.reward << '\n';
-    };
-    const int total = s.agent.train_episodes + s.agent.eval_episodes;
-    const TrainResult result = Train(
-        env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
-        [&](const EpisodeRecord& r) {
-          WriteCurveRow(curve, r);
-          // Every UAV's final position: the line is what `status` shows of a running train job.
-          std::fprintf(stderr,
-                       "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
-                       "final %s nLoS %d\n",
-                       r.episode, total, Phase(r), r.steps, r.epsilon, r.total_reward,
-                       r.total_reward / std::max(1, r.steps),
-                       DescribePlacement(r.final_info.positions).c_str(), r.final_info.n_los);
-        },
-        write_step);
-    curve.close();
-    trajectory.close();
-    agent.Save(partial.string());
+    const TrainResult result = TrainAndRecord(s, partial);
     const nlohmann::json summary = ResultJson(s, result, s.agent.seed);
     std::ofstream(partial / "result.json") << summary.dump(2) << '\n';
     std::ofstream(partial / "scenario.json") << ToJson(s).dump(2) << '\n';
     fs::rename(partial, t.out);
-    if (t.json) {
+    if (t.json)
       std::cout << summary.dump(2) << std::endl;
-    } else {
-      std::printf(
-          "trained %s (%s, %s, seed %llu): final position %s, nLoS %d/%zu, reward %.4f\n"
-          "policy, learning curve and result in %s\n",
-          s.name.c_str(), s.agent.algorithm.c_str(), s.env.fidelity.c_str(),
-          static_cast<unsigned long long>(s.agent.seed),
-          DescribePlacement(result.final_info.positions).c_str(), result.final_info.n_los,
-          s.ues.size(), result.final_reward, t.out.c_str());
-    }
+    else
+      PrintTrained(s, result, t.out);
   } catch (...) {
+    std::error_code ec;
     fs::remove_all(partial, ec);
     throw;
   }
