@@ -48,6 +48,8 @@ struct PositionOptions {
 };
 
 int RunValidate(const CommonOptions& options, bool json);
+// Prints a table that mirrors the code, as Markdown for the docs: "metrics" (the eval metrics).
+int RunDescribe(const std::string& what);
 int RunEval(const CommonOptions& options, const EvalOptions& eval);
 int RunTrain(const CommonOptions& options, const TrainOptions& train);
 int RunPosition(const CommonOptions& options, const PositionOptions& position);

@@ -5,6 +5,7 @@
 //   rlpos-sim train --scenario FILE [--algorithm dqn|ppo|sac] [--fidelity packet|analytic]
 //                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
+//   rlpos-sim describe metrics
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
 #include <unistd.h>
@@ -96,6 +97,12 @@ int main(int argc, char** argv) {
   position->add_flag("--json", position_options.json, "Print the result as JSON");
   AddScenarioOverrides(position, options);
 
+  auto* describe = app.add_subcommand("describe", "Print a table of the docs as Markdown");
+  std::string describe_what;
+  describe->add_option("table", describe_what, "metrics: the eval metrics")
+      ->required()
+      ->check(CLI::IsMember({"metrics"}));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -108,6 +115,8 @@ int main(int argc, char** argv) {
   try {
     if (*validate)
       return RunValidate(options, validate_json);
+    if (*describe)
+      return RunDescribe(describe_what);
     if (*train)
       return RunTrain(options, train_options);
     if (*position)
