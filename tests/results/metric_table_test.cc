@@ -3,10 +3,13 @@
 // migrations of a new metric and the docs' table.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "metrics/eval_metrics.h"
 #include "metrics/run_metrics.h"
+#include "reporting/results_format.h"
+#include "reporting/uav_summary.h"
 #include "store/job_result.h"
 #include "store/metric_columns.h"
 #include "store/schema.h"
@@ -178,6 +181,23 @@ TEST(MetricTable, TheDocsTableHasARowPerMetric) {
   EXPECT_NE(markdown.find("| throughput | Mbit/s | `aggregate_throughput_mbps` (UAV: "
                           "`throughput_mbps`) |"),
             std::string::npos);
+}
+
+// The summaries' columns are written by hand: each mean the table declares must be among them.
+TEST(MetricTable, TheSummariesShowTheMeansTheTableDeclares) {
+  const auto has = [](const std::vector<std::string>& columns, const char* name) {
+    return std::count(columns.begin(), columns.end(), name) == 1;
+  };
+  int means = 0;
+  for (const auto& m : kEvalMetrics) {
+    if (!m.mean_column)
+      continue;
+    ++means;
+    EXPECT_TRUE(has(SummaryCsvColumns(), m.mean_column)) << m.mean_column;
+    if (m.HasUav())
+      EXPECT_TRUE(has(UavSummaryCsvColumns(), m.mean_column)) << m.mean_column;
+  }
+  EXPECT_EQ(means, 2);
 }
 
 }  // namespace
