@@ -11,6 +11,20 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 nlohmann::json Number(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
 }
+
+nlohmann::json UavToJson(const UavMetrics& u) {
+  const Vec3& p = u.uav.position;
+  nlohmann::json out = {
+      {"name", u.uav.name}, {"position", {p.x, p.y, p.z}}, {"channel", u.uav.channel}};
+  for (const auto& metric : kEvalMetrics) {
+    if (metric.uav_count) {
+      out[metric.uav_key] = u.*metric.uav_count;
+    } else if (metric.uav_real) {
+      out[metric.uav_key] = Number(u.*metric.uav_real);
+    }
+  }
+  return out;
+}
 }  // namespace
 
 void FlowAccumulator::OnSent(double sent_at) {
@@ -126,12 +140,21 @@ RunMetrics Summarize(const std::vector<UavIdentity>& uavs, MeasurementWindow win
   m.min_snr_db = all.ues == 0 ? std::numeric_limits<double>::infinity() : all.min_snr_db;
   m.worst_ue_throughput_mbps = all.ues == 0 ? 0.0 : all.worst_ue_throughput_mbps;
   m.jain_fairness = all.jain_fairness;
+  m.n_ues = static_cast<int>(ues.size());
   for (std::size_t u = 0; u < uavs.size(); ++u) {
     const int index = static_cast<int>(u);
     const Aggregate a =
         AggregateOf(window, flows, ues, [index](const UeMetrics& ue) { return ue.uav == index; });
-    m.uavs.push_back({uavs[u], a.ues, a.throughput_mbps, a.mean_delay_ms, a.loss_ratio, a.n_los,
-                      a.worst_ue_throughput_mbps, a.jain_fairness});
+    UavMetrics share;
+    share.uav = uavs[u];
+    share.ues_served = a.ues;
+    share.throughput_mbps = a.throughput_mbps;
+    share.mean_delay_ms = a.mean_delay_ms;
+    share.loss_ratio = a.loss_ratio;
+    share.n_los = a.n_los;
+    share.worst_ue_throughput_mbps = a.worst_ue_throughput_mbps;
+    share.jain_fairness = a.jain_fairness;
+    m.uavs.push_back(share);
   }
   m.ues = std::move(ues);
   return m;
@@ -161,31 +184,15 @@ nlohmann::json ToJson(const RunMetrics& m) {
   nlohmann::json out = {{"position", {m.position.x, m.position.y, m.position.z}},
                         {"window_s", {m.window.start, m.window.end}},
                         {"run", m.run},
-                        {"aggregate_throughput_mbps", Number(m.aggregate_throughput_mbps)},
-                        {"mean_delay_ms", Number(m.mean_delay_ms)},
-                        {"loss_ratio", Number(m.loss_ratio)},
-                        {"n_los", m.n_los},
-                        {"n_ues", m.ues.size()},
-                        {"demands_met", m.demands_met},
-                        {"min_snr_db", Number(m.min_snr_db)},
-                        {"worst_ue_throughput_mbps", Number(m.worst_ue_throughput_mbps)},
-                        {"jain_fairness", Number(m.jain_fairness)},
                         {"ues", ues}};
+  for (const auto& metric : kEvalMetrics) {
+    out[metric.key] =
+        metric.IsCount() ? nlohmann::json(m.*metric.run_count) : Number(m.*metric.run_real);
+  }
   if (m.uavs.size() > 1) {
     nlohmann::json uavs = nlohmann::json::array();
-    for (const auto& u : m.uavs) {
-      const Vec3& p = u.uav.position;
-      uavs.push_back({{"name", u.uav.name},
-                      {"position", {p.x, p.y, p.z}},
-                      {"channel", u.uav.channel},
-                      {"ues_served", u.ues_served},
-                      {"throughput_mbps", Number(u.throughput_mbps)},
-                      {"mean_delay_ms", Number(u.mean_delay_ms)},
-                      {"loss_ratio", Number(u.loss_ratio)},
-                      {"n_los", u.n_los},
-                      {"worst_ue_throughput_mbps", Number(u.worst_ue_throughput_mbps)},
-                      {"jain_fairness", Number(u.jain_fairness)}});
-    }
+    for (const auto& u : m.uavs)
+      uavs.push_back(UavToJson(u));
     out["uavs"] = uavs;
     for (std::size_t i = 0; i < m.ues.size(); ++i)
       out["ues"][i]["uav"] = m.uavs.at(static_cast<std::size_t>(m.ues[i].uav)).uav.name;

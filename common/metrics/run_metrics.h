@@ -1,21 +1,14 @@
 #pragma once
-// The metric definitions, in one place (see docs/scenarios.md, "Metrics"):
-// - throughput (Mbit/s): application bytes received at the UAV sink inside the measurement
-//   window x 8 / window length;
-// - mean delay (ms): mean one-way delay of the packets received inside the window
-//   (packet-weighted over all UEs for the aggregate);
-// - loss: share of the packets sent inside the window that never arrived (late arrivals after
-//   the window still count as arrived);
-// - nLoS: UEs whose link to the UAV is geometrically clear of every building;
-// - demand check: the MCS a UE's demand needs -> that MCS's minimum SNR -> met if SNR >= it;
-// - worst UE: the lowest per-UE throughput; Jain's fairness index over the per-UE throughputs
-//   x_i: (sum x_i)^2 / (n sum x_i^2), from 1/n (one UE gets everything) to 1 (all equal);
-//   undefined (NaN) when no UE received anything.
+// How the eval metrics are measured: per flow against the measurement window, then summed over
+// the UEs of the run and of each UAV. What each metric means is its entry in EvalMetricTable()
+// (metrics/eval_metrics.h). The demand check: the MCS a UE's demand needs -> that MCS's minimum
+// SNR -> met if SNR >= it.
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "common/metrics/eval_metrics.h"
 #include "common/phy/mcs_table.h"
 #include "common/scenario/scenario.h"
 
@@ -83,29 +76,15 @@ struct UavIdentity {
 
 // One UAV's share of a run: the same definitions over the UEs it serves (n_los: those with a
 // clear line to it). worst UE and Jain's index are NaN when it serves nobody.
-struct UavMetrics {
+struct UavMetrics : UavMetricFields<double> {
   UavIdentity uav;
-  int ues_served = 0;
-  double throughput_mbps = 0.0;
-  double mean_delay_ms = 0.0;
-  double loss_ratio = 0.0;
-  int n_los = 0;
-  double worst_ue_throughput_mbps = 0.0;
-  double jain_fairness = 0.0;
 };
 
-struct RunMetrics {
+// The metrics (RunMetricFields, eval_metrics.h) and what they were measured on.
+struct RunMetrics : RunMetricFields<double> {
   Vec3 position;  // of the first UAV (the only one in a single-UAV scenario)
   MeasurementWindow window;
   std::uint64_t run = 0;
-  double aggregate_throughput_mbps = 0.0;
-  double mean_delay_ms = 0.0;
-  double loss_ratio = 0.0;
-  int n_los = 0;
-  int demands_met = 0;
-  double min_snr_db = 0.0;
-  double worst_ue_throughput_mbps = 0.0;
-  double jain_fairness = 0.0;
   std::vector<UeMetrics> ues;
   std::vector<UavMetrics> uavs;  // one per UAV, the scenario's order
 };

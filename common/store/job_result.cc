@@ -11,7 +11,8 @@ namespace {
 using nlohmann::json;
 
 const json& Field(const json& result, const char* key) {
-  if (!result.is_object()) throw std::invalid_argument("result is not a JSON object");
+  if (!result.is_object())
+    throw std::invalid_argument("result is not a JSON object");
   if (!result.contains(key)) {
     throw std::invalid_argument(std::string("result has no \"") + key + "\"");
   }
@@ -27,7 +28,8 @@ double Finite(const json& v, const char* key) {
 
 std::optional<double> NullableNumber(const json& result, const char* key) {
   const json& v = Field(result, key);
-  if (v.is_null()) return std::nullopt;
+  if (v.is_null())
+    return std::nullopt;
   return Finite(v, key);
 }
 
@@ -55,46 +57,107 @@ const json& UavList(const json& result, const char* key) {
   return list;
 }
 
+using StoredMetric = MetricDef<std::optional<double>>;
+constexpr auto kStoredMetrics = EvalMetricTable<std::optional<double>>();
+// A result's structure before any metric was added to it: a run's is schema 1, a UAV's 10.
+constexpr int kRunKeysSince = 1, kUavKeysSince = 10;
+
+std::optional<double> ReadReal(const json& object, const char* key, bool nullable) {
+  if (nullable)
+    return NullableNumber(object, key);
+  return Finite(Field(object, key), key);
+}
+
+// A metric newer than the result's structure may be absent (results of older builds).
+template <typename Fields, typename Object>
+void ReadMetric(const json& object, const char* key, std::optional<double> Fields::*real,
+                int Fields::*count, const StoredMetric& m, int keys_since, Object& out) {
+  if (m.since_schema > keys_since && !object.contains(key))
+    return;
+  if (count) {
+    out.*count = Count(object, key);
+  } else {
+    out.*real = ReadReal(object, key, m.nullable);
+  }
+}
+
+bool Plausible(const StoredMetric& m, double v) {
+  switch (m.range) {
+    case MetricRange::kUpTo:
+      return v >= 0 && v <= m.max;
+    case MetricRange::kRatio:
+      return v >= 0 && v <= 1;
+    case MetricRange::kPositive:
+      return v > 0 && v <= 1;
+    case MetricRange::kAny:
+      break;
+  }
+  return true;
+}
+
+const char* RangeError(MetricRange range) {
+  switch (range) {
+    case MetricRange::kRatio:
+      return "is not in [0, 1]";
+    case MetricRange::kPositive:
+      return "is not in (0, 1]";
+    default:
+      return "is out of range";
+  }
+}
+
 UavEvalResult ParseUav(const json& entry, std::size_t index) {
   const std::string where = "uavs/" + std::to_string(index);
   if (!entry.is_object())
     throw std::invalid_argument("result \"" + where + "\" is not an object");
   UavEvalResult u;
   const json& name = Field(entry, "name");
-  if (!name.is_string() || name.get<std::string>().empty() ||
-      name.get<std::string>().size() > 64) {
+  if (!name.is_string() || name.get<std::string>().empty() || name.get<std::string>().size() > 64) {
     throw std::invalid_argument("result \"" + where + "/name\" is not a UAV name");
   }
   u.name = name.get<std::string>();
   u.position = Triple(Field(entry, "position"), where + "/position");
-  u.ues_served = Count(entry, "ues_served");
-  u.throughput_mbps = Finite(Field(entry, "throughput_mbps"), "throughput_mbps");
-  u.mean_delay_ms = NullableNumber(entry, "mean_delay_ms");
-  u.loss_ratio = NullableNumber(entry, "loss_ratio");
-  u.n_los = Count(entry, "n_los");
-  u.worst_ue_throughput_mbps = NullableNumber(entry, "worst_ue_throughput_mbps");
-  u.jain_fairness = NullableNumber(entry, "jain_fairness");
-  if (u.throughput_mbps < 0 || (u.mean_delay_ms && *u.mean_delay_ms < 0) ||
-      (u.loss_ratio && (*u.loss_ratio < 0 || *u.loss_ratio > 1)) ||
-      (u.worst_ue_throughput_mbps && *u.worst_ue_throughput_mbps < 0) ||
-      (u.jain_fairness && (*u.jain_fairness <= 0 || *u.jain_fairness > 1)) ||
-      u.n_los > u.ues_served) {
-    throw std::invalid_argument("result \"" + where + "\" holds an implausible metric");
+  bool plausible = true;
+  for (const auto& m : kStoredMetrics) {
+    if (!m.HasUav())
+      continue;
+    ReadMetric(entry, m.uav_key, m.uav_real, m.uav_count, m, kUavKeysSince, u);
+    if (m.uav_real && u.*m.uav_real && !Plausible(m, *(u.*m.uav_real)))
+      plausible = false;
   }
+  if (!plausible || u.n_los > u.ues_served)
+    throw std::invalid_argument("result \"" + where + "\" holds an implausible metric");
   return u;
 }
 
 // A single-UAV result's one UAV: its totals.
 UavEvalResult OnlyUav(const EvalResult& r) {
-  return {"uav",
-          r.placement.front(),
-          r.n_ues,
-          r.aggregate_throughput_mbps,
-          r.mean_delay_ms,
-          r.loss_ratio,
-          r.worst_ue_throughput_mbps,
-          r.jain_fairness,
-          r.n_los};
+  UavEvalResult u;
+  u.name = "uav";
+  u.position = r.placement.front();
+  for (const auto& m : kStoredMetrics) {
+    if (m.uav_real)
+      u.*m.uav_real = r.*m.run_real;
+    if (m.uav_count)
+      u.*m.uav_count = r.*m.run_count;
+  }
+  return u;
+}
+
+// Reads the run's metrics, then checks that they are plausible, not only well-formed: a result
+// from the network must not poison the statistics.
+void ReadRunMetrics(const json& result, EvalResult& r) {
+  for (const auto& m : kStoredMetrics)
+    ReadMetric(result, m.key, m.run_real, m.run_count, m, kRunKeysSince, r);
+  for (const auto& m : kStoredMetrics) {
+    if (m.run_real && r.*m.run_real && !Plausible(m, *(r.*m.run_real)))
+      throw std::invalid_argument(std::string("result \"") + m.key + "\" " + RangeError(m.range));
+  }
+  if (r.worst_ue_throughput_mbps && *r.worst_ue_throughput_mbps > *r.aggregate_throughput_mbps)
+    throw std::invalid_argument("result \"worst_ue_throughput_mbps\" is out of range");
+  if (r.n_los > r.n_ues || r.demands_met > r.n_ues) {
+    throw std::invalid_argument("result counts more UEs in LoS or served than \"n_ues\"");
+  }
 }
 
 // The per-UAV entries must add up to the totals they split.
@@ -104,11 +167,11 @@ void CheckUavsAddUp(const EvalResult& r) {
   for (const auto& u : r.uavs) {
     ues += u.ues_served;
     n_los += u.n_los;
-    throughput += u.throughput_mbps;
+    throughput += *u.throughput_mbps;
   }
+  const double total = *r.aggregate_throughput_mbps;
   if (ues != r.n_ues || n_los != r.n_los ||
-      std::fabs(throughput - r.aggregate_throughput_mbps) >
-          1e-6 * std::max(1.0, r.aggregate_throughput_mbps)) {
+      std::fabs(throughput - total) > 1e-6 * std::max(1.0, total)) {
     throw std::invalid_argument("result \"uavs\" do not add up to the run's totals");
   }
 }
@@ -138,38 +201,7 @@ Placement ProducedPlacement(const json& result) {
 EvalResult ParseEvalResult(const json& result) {
   EvalResult r;
   const Vec3 first = Triple(Field(result, "position"), "position");
-  r.aggregate_throughput_mbps =
-      Finite(Field(result, "aggregate_throughput_mbps"), "aggregate_throughput_mbps");
-  r.mean_delay_ms = NullableNumber(result, "mean_delay_ms");
-  r.loss_ratio = NullableNumber(result, "loss_ratio");
-  r.min_snr_db = NullableNumber(result, "min_snr_db");
-  if (result.contains("worst_ue_throughput_mbps"))
-    r.worst_ue_throughput_mbps = NullableNumber(result, "worst_ue_throughput_mbps");
-  if (result.contains("jain_fairness"))
-    r.jain_fairness = NullableNumber(result, "jain_fairness");
-  r.n_los = Count(result, "n_los");
-  r.n_ues = Count(result, "n_ues");
-  r.demands_met = Count(result, "demands_met");
-  // Plausible, not only well-formed: a result from the network must not poison the statistics.
-  if (r.aggregate_throughput_mbps < 0 || r.aggregate_throughput_mbps > 1e6) {
-    throw std::invalid_argument("result \"aggregate_throughput_mbps\" is out of range");
-  }
-  if (r.mean_delay_ms && (*r.mean_delay_ms < 0 || *r.mean_delay_ms > 1e9)) {
-    throw std::invalid_argument("result \"mean_delay_ms\" is out of range");
-  }
-  if (r.loss_ratio && (*r.loss_ratio < 0 || *r.loss_ratio > 1)) {
-    throw std::invalid_argument("result \"loss_ratio\" is not in [0, 1]");
-  }
-  if (r.worst_ue_throughput_mbps &&
-      (*r.worst_ue_throughput_mbps < 0 || *r.worst_ue_throughput_mbps > r.aggregate_throughput_mbps)) {
-    throw std::invalid_argument("result \"worst_ue_throughput_mbps\" is out of range");
-  }
-  if (r.jain_fairness && (*r.jain_fairness <= 0 || *r.jain_fairness > 1)) {
-    throw std::invalid_argument("result \"jain_fairness\" is not in (0, 1]");
-  }
-  if (r.n_los > r.n_ues || r.demands_met > r.n_ues) {
-    throw std::invalid_argument("result counts more UEs in LoS or served than \"n_ues\"");
-  }
+  ReadRunMetrics(result, r);
   if (result.contains("run")) {
     const json& run = result["run"];
     if (!run.is_number_integer() || run.get<long long>() < 0) {

@@ -10,27 +10,21 @@
 #include <string>
 #include <vector>
 
+#include "common/metrics/eval_metrics.h"
 #include "common/scenario/scenario.h"
 
 namespace rlpos {
 
-// One UAV's share of an eval. Null (absent) where the UAV's UEs received nothing or it serves none.
-struct UavEvalResult {
+// One UAV's share of an eval (UavMetricFields, metrics/eval_metrics.h). Null (absent) where the
+// UAV's UEs received nothing or it serves none.
+struct UavEvalResult : UavMetricFields<std::optional<double>> {
   std::string name;
   Vec3 position;
-  int ues_served = 0;
-  double throughput_mbps = 0;
-  std::optional<double> mean_delay_ms, loss_ratio, worst_ue_throughput_mbps, jain_fairness;
-  int n_los = 0;
 };
 
-struct EvalResult {
+// The run's metrics (RunMetricFields); a metric newer than the result's build is absent.
+struct EvalResult : RunMetricFields<std::optional<double>> {
   Placement placement;  // one position per UAV
-  double aggregate_throughput_mbps = 0;
-  std::optional<double> mean_delay_ms, loss_ratio, min_snr_db;
-  // Absent from results of builds before schema 9; null when no UE received anything.
-  std::optional<double> worst_ue_throughput_mbps, jain_fairness;
-  int n_los = 0, n_ues = 0, demands_met = 0;
   std::optional<std::uint64_t> run;
   // One per UAV. A result without "uavs" (one UAV) gives one named "uav" from the totals.
   std::vector<UavEvalResult> uavs;

@@ -8,6 +8,7 @@
 #include "common/store/job_ledger.h"
 #include "common/store/job_result.h"
 #include "common/store/job_rows.h"
+#include "common/store/metric_rows.h"
 #include "common/store/result_cache.h"
 #include "common/store/sqlite_db.h"
 #include "common/store/store_db.h"
@@ -54,8 +55,8 @@ JobUpdate ResultRecorder::RecordSuccess(const std::string& job_id, int attempt, 
   }
   MarkSucceeded(job_id, attempt, result, provenance);
   if (job.kind == JobKind::kEval) {
-    InsertMetrics(job_id, job, eval);
-    InsertUavMetrics(job_id, job, eval);
+    InsertEvalMetrics(
+        *db_, {job_id, job.campaign_id, job.scenario, job.label, job.rng_run.value_or(0)}, eval);
   } else {
     dependants_.Bind(job_id, produced);
   }
@@ -167,65 +168,6 @@ void ResultRecorder::MarkSucceeded(const std::string& job_id, int attempt, const
       .Bind(job_id)
       .Bind(attempt)
       .Run();
-}
-
-void ResultRecorder::InsertMetrics(const std::string& job_id, const SettlingJob& job,
-                                   const EvalResult& eval) {
-  // job_id is the primary key: a second row for the same job cannot exist.
-  db_->Prepare(
-         "INSERT INTO metrics (job_id, campaign_id, scenario, label, rng_run, "
-         "aggregate_throughput_mbps, mean_delay_ms, loss_ratio, n_los, n_ues, demands_met, "
-         "min_snr_db, x, y, z, worst_ue_throughput_mbps, jain_fairness) "
-         "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
-      .Bind(job_id)
-      .Bind(job.campaign_id)
-      .Bind(job.scenario)
-      .Bind(job.label)
-      .Bind(job.rng_run.value_or(0))
-      .Bind(eval.aggregate_throughput_mbps)
-      .Bind(eval.mean_delay_ms)
-      .Bind(eval.loss_ratio)
-      .Bind(eval.n_los)
-      .Bind(eval.n_ues)
-      .Bind(eval.demands_met)
-      .Bind(eval.min_snr_db)
-      .Bind(eval.placement.front().x)
-      .Bind(eval.placement.front().y)
-      .Bind(eval.placement.front().z)
-      .Bind(eval.worst_ue_throughput_mbps)
-      .Bind(eval.jain_fairness)
-      .Run();
-}
-
-void ResultRecorder::InsertUavMetrics(const std::string& job_id, const SettlingJob& job,
-                                      const EvalResult& eval) {
-  Statement uav = db_->Prepare(
-      "INSERT INTO uav_metrics (job_id, uav, name, campaign_id, scenario, label, rng_run, "
-      "ues_served, throughput_mbps, mean_delay_ms, loss_ratio, n_los, "
-      "worst_ue_throughput_mbps, jain_fairness, x, y, z) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-  for (std::size_t i = 0; i < eval.uavs.size(); ++i) {
-    const UavEvalResult& u = eval.uavs[i];
-    uav.Reset();
-    uav.Bind(job_id)
-        .Bind(static_cast<std::int64_t>(i))
-        .Bind(u.name)
-        .Bind(job.campaign_id)
-        .Bind(job.scenario)
-        .Bind(job.label)
-        .Bind(job.rng_run.value_or(0))
-        .Bind(u.ues_served)
-        .Bind(u.throughput_mbps)
-        .Bind(u.mean_delay_ms)
-        .Bind(u.loss_ratio)
-        .Bind(u.n_los)
-        .Bind(u.worst_ue_throughput_mbps)
-        .Bind(u.jain_fairness)
-        .Bind(u.position.x)
-        .Bind(u.position.y)
-        .Bind(u.position.z)
-        .Run();
-  }
 }
 
 }  // namespace rlpos

@@ -63,8 +63,6 @@ class ResultRecorder {
   // One statement for the row: the result and, when given, where it came from.
   void MarkSucceeded(const std::string& job_id, int attempt, const nlohmann::json& result,
                      const Provenance* provenance);
-  void InsertMetrics(const std::string& job_id, const SettlingJob& job, const EvalResult& eval);
-  void InsertUavMetrics(const std::string& job_id, const SettlingJob& job, const EvalResult& eval);
 
   StoreDb& store_;
   Database* db_;

@@ -102,70 +102,11 @@ std::optional<JobRecord> ResultsReader::GetJob(const std::string& job_id) {
 }
 
 std::vector<MetricRow> ResultsReader::Metrics(const std::string& campaign_id) {
-  Statement select = db_->Prepare(
-      "SELECT job_id, scenario, positioner, rng_run, throughput_mbps, delay_ms, loss_ratio, "
-      "min_snr_db, n_los, n_ues, demands_met, x, y, z, worst_ue_mbps, jain_fairness "
-      "FROM v_eval_runs v "
-      "WHERE campaign_id = ? "
-      // Scenarios in campaign order (their first job), not by name.
-      "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
-      "AND j.scenario = v.scenario), positioner, rng_run");
-  select.Bind(campaign_id);
-  std::vector<MetricRow> out;
-  while (select.Step()) {
-    MetricRow m;
-    m.job_id = select.Text(0);
-    m.scenario = select.Text(1);
-    m.label = select.Text(2);
-    m.rng_run = select.Int(3);
-    m.aggregate_throughput_mbps = select.Double(4);
-    m.mean_delay_ms = select.OptionalDouble(5);
-    m.loss_ratio = select.OptionalDouble(6);
-    m.min_snr_db = select.OptionalDouble(7);
-    m.n_los = static_cast<int>(select.Int(8));
-    m.n_ues = static_cast<int>(select.Int(9));
-    m.demands_met = static_cast<int>(select.Int(10));
-    m.x = select.Double(11);
-    m.y = select.Double(12);
-    m.z = select.Double(13);
-    m.worst_ue_throughput_mbps = select.OptionalDouble(14);
-    m.jain_fairness = select.OptionalDouble(15);
-    out.push_back(std::move(m));
-  }
-  return out;
+  return ReadMetricRows(*db_, campaign_id);
 }
 
 std::vector<UavMetricRow> ResultsReader::UavMetrics(const std::string& campaign_id) {
-  Statement select = db_->Prepare(
-      "SELECT job_id, scenario, positioner, rng_run, uav, uav_name, ues_served, throughput_mbps, "
-      "delay_ms, loss_ratio, n_los, worst_ue_mbps, jain_fairness, x, y, z "
-      "FROM v_eval_uavs v "
-      "WHERE campaign_id = ? "
-      "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
-      "AND j.scenario = v.scenario), positioner, rng_run, uav");
-  select.Bind(campaign_id);
-  std::vector<UavMetricRow> out;
-  while (select.Step()) {
-    UavMetricRow m;
-    m.job_id = select.Text(0);
-    m.scenario = select.Text(1);
-    m.label = select.Text(2);
-    m.rng_run = select.Int(3);
-    m.uav = static_cast<int>(select.Int(4));
-    m.name = select.Text(5);
-    m.ues_served = static_cast<int>(select.Int(6));
-    m.throughput_mbps = select.Double(7);
-    m.mean_delay_ms = select.OptionalDouble(8);
-    m.loss_ratio = select.OptionalDouble(9);
-    m.n_los = static_cast<int>(select.Int(10));
-    m.worst_ue_throughput_mbps = select.OptionalDouble(11);
-    m.jain_fairness = select.OptionalDouble(12);
-    m.x = select.Double(13);
-    m.y = select.Double(14);
-    m.z = select.Double(15);
-    out.push_back(std::move(m));
-  }
-  return out;
+  return ReadUavMetricRows(*db_, campaign_id);
 }
 
 }  // namespace rlpos

@@ -7,36 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "common/store/metric_rows.h"
 #include "common/store/store_records.h"
 
 namespace rlpos {
 
 class Database;
 class StoreDb;
-
-struct MetricRow {
-  std::string job_id, scenario, label;
-  std::int64_t rng_run = 0;
-  double aggregate_throughput_mbps = 0;
-  std::optional<double> mean_delay_ms, loss_ratio, min_snr_db;  // null: no packet received
-  int n_los = 0, n_ues = 0, demands_met = 0;
-  double x = 0, y = 0, z = 0;  // the first UAV's position
-  std::optional<double> worst_ue_throughput_mbps, jain_fairness;  // null: recorded before v9
-};
-
-// One UAV's share of one succeeded eval (table uav_metrics, view v_eval_uavs).
-struct UavMetricRow {
-  std::string job_id, scenario, label;
-  std::int64_t rng_run = 0;
-  int uav = 0;       // index in the scenario's order
-  std::string name;  // "uav" for a single-UAV scenario
-  int ues_served = 0;
-  double throughput_mbps = 0;
-  std::optional<double> mean_delay_ms, loss_ratio;  // null: its UEs received nothing
-  int n_los = 0;
-  std::optional<double> worst_ue_throughput_mbps, jain_fairness;  // null: it serves no UE
-  double x = 0, y = 0, z = 0;
-};
 
 class ResultsReader {
  public:

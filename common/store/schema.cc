@@ -1,6 +1,7 @@
 #include "common/store/schema.h"
 
 #include "common/store/legacy_argv.h"
+#include "common/store/metric_columns.h"
 #include "common/store/store_error.h"
 
 namespace rlpos {
@@ -302,16 +303,22 @@ void ConvertArgvColumns(Database& db) {
 }  // namespace
 
 const std::vector<Migration>& Migrations() {
-  static const std::vector<Migration> migrations{{1, kVersion1, nullptr, nullptr},
-                                                 {2, kVersion2, nullptr, nullptr},
-                                                 {3, kVersion3, ConvertArgvColumns, kVersion3After},
-                                                 {4, kVersion4, nullptr, nullptr},
-                                                 {5, kVersion5, nullptr, nullptr},
-                                                 {6, kVersion6, nullptr, nullptr},
-                                                 {7, kVersion7, nullptr, nullptr},
-                                                 {8, kVersion8, nullptr, nullptr},
-                                                 {9, kVersion9, nullptr, nullptr},
-                                                 {10, kVersion10, nullptr, nullptr}};
+  static const std::vector<Migration> migrations = [] {
+    std::vector<Migration> out{{1, kVersion1, nullptr, nullptr},
+                               {2, kVersion2, nullptr, nullptr},
+                               {3, kVersion3, ConvertArgvColumns, kVersion3After},
+                               {4, kVersion4, nullptr, nullptr},
+                               {5, kVersion5, nullptr, nullptr},
+                               {6, kVersion6, nullptr, nullptr},
+                               {7, kVersion7, nullptr, nullptr},
+                               {8, kVersion8, nullptr, nullptr},
+                               {9, kVersion9, nullptr, nullptr},
+                               {10, kVersion10, nullptr, nullptr}};
+    // The columns of the eval metrics declared after version 10 (store/metric_columns.h).
+    for (auto& migration : DerivedMetricMigrations())
+      out.push_back(std::move(migration));
+    return out;
+  }();
   return migrations;
 }
 

@@ -15,7 +15,7 @@ PositionerSummary Summarize(const RunGroup& group) {
   s.runs = static_cast<int>(group.runs.size());
   std::vector<double> throughput, delay, nlos_ratio, demands_met, ues, worst_ue, jain;
   for (const MetricRow* run : group.runs) {
-    throughput.push_back(run->aggregate_throughput_mbps);
+    throughput.push_back(run->aggregate_throughput_mbps.value_or(0));
     if (run->mean_delay_ms) {
       delay.push_back(*run->mean_delay_ms);
     } else {

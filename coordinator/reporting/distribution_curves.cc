@@ -30,7 +30,7 @@ std::vector<CurvePoint> ThroughputCcdf(const std::vector<MetricRow>& rows) {
   for (const RunGroup& group : GroupRuns(rows)) {
     std::vector<double> sample;
     for (const MetricRow* run : group.runs)
-      sample.push_back(run->aggregate_throughput_mbps);
+      sample.push_back(run->aggregate_throughput_mbps.value_or(0));
     AddCurve(group, EmpiricalCcdf(sample), out);
   }
   return out;

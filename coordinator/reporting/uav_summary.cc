@@ -24,7 +24,7 @@ UavSummary Summarize(const std::vector<const UavMetricRow*>& runs) {
   std::vector<double> served, throughput, delay, nlos, worst, jain;
   for (const UavMetricRow* r : runs) {
     served.push_back(r->ues_served);
-    throughput.push_back(r->throughput_mbps);
+    throughput.push_back(r->throughput_mbps.value_or(0));
     nlos.push_back(r->n_los);
     if (r->mean_delay_ms)
       delay.push_back(*r->mean_delay_ms);

@@ -370,8 +370,8 @@ TEST(WireFuzz, ResultParser) {
   for (int i = 0; i < kInputs; ++i) {
     const bool is_eval = in.Chance(0.7);
     const bool several = in.Chance(0.3);
-    const std::string& base = is_eval ? (several ? eval_of_two : eval)
-                                      : (several ? positions : position);
+    const std::string& base =
+        is_eval ? (several ? eval_of_two : eval) : (several ? positions : position);
     const double mode = in.Below(100);
     const std::string text = mode < 5    ? in.RandomBytes(200)
                              : mode < 55 ? in.MutateJsonValue(base)
@@ -391,8 +391,8 @@ TEST(WireFuzz, ResultParser) {
           EXPECT_EQ(r.placement.size(), r.uavs.size()) << i << ": " << text;
           for (const Vec3& p : r.placement)
             EXPECT_TRUE(Finite(p)) << i << ": " << text;
-          EXPECT_TRUE(std::isfinite(r.aggregate_throughput_mbps) &&
-                      r.aggregate_throughput_mbps >= 0)
+          EXPECT_TRUE(r.aggregate_throughput_mbps && std::isfinite(*r.aggregate_throughput_mbps) &&
+                      *r.aggregate_throughput_mbps >= 0)
               << i << ": " << text;
           EXPECT_TRUE(r.n_los >= 0 && r.n_los <= r.n_ues) << i << ": " << text;
           EXPECT_TRUE(r.demands_met >= 0 && r.demands_met <= r.n_ues) << i << ": " << text;

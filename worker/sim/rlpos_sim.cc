@@ -5,7 +5,7 @@
 //   rlpos-sim train --scenario FILE [--algorithm dqn|ppo|sac] [--fidelity packet|analytic]
 //                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
-//   rlpos-sim describe hyperparameters [--algorithm dqn|ppo|sac]
+//   rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
 #include <unistd.h>
@@ -16,11 +16,25 @@
 #include "common/config/config_error.h"
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
-#include "worker/sim/describe_hyperparameters.h"
+#include "worker/sim/describe_command.h"
 
 namespace {
 
-using rlpos::sim::CommonOptions;
+using namespace rlpos::sim;
+
+// What the command line asked for: the subcommands and their options.
+struct Invocation {
+  CommonOptions options;
+  CLI::App* validate = nullptr;
+  bool validate_json = false;
+  CLI::App* eval = nullptr;
+  EvalOptions eval_options;
+  CLI::App* train = nullptr;
+  TrainOptions train_options;
+  CLI::App* position = nullptr;
+  PositionOptions position_options;
+  DescribeCommand describe;
+};
 
 void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
   command
@@ -32,78 +46,107 @@ void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
       ->check(CLI::IsMember({"error", "warning", "info", "debug"}));
 }
 
-}  // namespace
+void AddValidate(CLI::App& app, Invocation& in) {
+  in.validate = app.add_subcommand("validate", "Check a scenario and print a summary");
+  in.validate->add_option("file", in.options.scenario_file, "Scenario JSON")->required();
+  in.validate->add_flag("--json", in.validate_json, "Print the summary as JSON");
+  AddScenarioOverrides(in.validate, in.options);
+}
 
-int main(int argc, char** argv) {
-  using namespace rlpos::sim;
-  rlpos::InstallAbortGuard("rlpos-sim", kExitNs3Abort);
-  CLI::App app{"rlpos-sim: train, position and evaluate a UAV in ns-3 scenarios"};
-  app.require_subcommand(1);
-  CommonOptions options;
-
-  auto* validate = app.add_subcommand("validate", "Check a scenario and print a summary");
-  validate->add_option("file", options.scenario_file, "Scenario JSON")->required();
-  bool validate_json = false;
-  validate->add_flag("--json", validate_json, "Print the summary as JSON");
-  AddScenarioOverrides(validate, options);
-
-  auto* eval = app.add_subcommand("eval", "Simulate the UAV fixed at a position; print metrics");
-  EvalOptions eval_options;
-  eval_options.progress = isatty(STDERR_FILENO) != 0;
-  eval->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
-  eval->add_option("--position", eval_options.positions,
+void AddEval(CLI::App& app, Invocation& in) {
+  in.eval = app.add_subcommand("eval", "Simulate the UAV fixed at a position; print metrics");
+  in.eval_options.progress = isatty(STDERR_FILENO) != 0;
+  in.eval->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
+  in.eval
+      ->add_option("--position", in.eval_options.positions,
                    "UAV position x,y,z (m); once per UAV, in the scenario's order")
       ->required();
-  eval->add_option("--duration", eval_options.duration,
+  in.eval
+      ->add_option("--duration", in.eval_options.duration,
                    "Simulated seconds (overrides simulation.duration)")
       ->check(CLI::PositiveNumber);
-  eval->add_option("--run,--RngRun", eval_options.run, "ns-3 RngRun (overrides simulation.run)")
+  in.eval
+      ->add_option("--run,--RngRun", in.eval_options.run, "ns-3 RngRun (overrides simulation.run)")
       ->check(CLI::NonNegativeNumber);
-  eval->add_flag("--json", eval_options.json, "Print the metrics as JSON");
-  eval->add_flag("--progress,!--no-progress", eval_options.progress,
-                 "Progress on stderr (default: on a TTY)");
-  AddScenarioOverrides(eval, options);
+  in.eval->add_flag("--json", in.eval_options.json, "Print the metrics as JSON");
+  in.eval->add_flag("--progress,!--no-progress", in.eval_options.progress,
+                    "Progress on stderr (default: on a TTY)");
+  AddScenarioOverrides(in.eval, in.options);
+}
 
-  auto* train =
-      app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
-  TrainOptions train_options;
-  train->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
-  train
-      ->add_option("--algorithm", train_options.algorithm,
+void AddTrain(CLI::App& app, Invocation& in) {
+  in.train = app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
+  in.train->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
+  in.train
+      ->add_option("--algorithm", in.train_options.algorithm,
                    "dqn|ppo|sac (default: agent.algorithm); sac acts on the continuous action "
                    "space")
       ->check(CLI::IsMember({"dqn", "ppo", "sac"}));
-  train->add_option("--fidelity", train_options.fidelity, "packet|analytic (default: env.fidelity)")
+  in.train
+      ->add_option("--fidelity", in.train_options.fidelity,
+                   "packet|analytic (default: env.fidelity)")
       ->check(CLI::IsMember({"packet", "analytic"}));
-  train->add_option("--seed", train_options.seed, "Agent seed (default: agent.seed)")
+  in.train->add_option("--seed", in.train_options.seed, "Agent seed (default: agent.seed)")
       ->check(CLI::NonNegativeNumber);
-  train->add_option("--episodes", train_options.episodes, "Training episodes")
+  in.train->add_option("--episodes", in.train_options.episodes, "Training episodes")
       ->check(CLI::PositiveNumber);
-  train->add_option("--out", train_options.out, "Output folder (must not exist)")->required();
-  train->add_flag("--json", train_options.json, "Print the result as JSON");
-  AddScenarioOverrides(train, options);
+  in.train->add_option("--out", in.train_options.out, "Output folder (must not exist)")->required();
+  in.train->add_flag("--json", in.train_options.json, "Print the result as JSON");
+  AddScenarioOverrides(in.train, in.options);
+}
 
-  auto* position = app.add_subcommand("position", "Where a positioner puts the UAV");
-  PositionOptions position_options;
-  position->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
-  position
-      ->add_option("--positioner", position_options.positioner,
+void AddPosition(CLI::App& app, Invocation& in) {
+  in.position = app.add_subcommand("position", "Where a positioner puts the UAV");
+  in.position->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
+  in.position
+      ->add_option("--positioner", in.position_options.positioner,
                    "baseline|centroid|oracle|rl|offsets")
       ->required()
       ->check(CLI::IsMember({"baseline", "centroid", "oracle", "rl", "offsets"}));
-  position->add_option("--policy", position_options.policy,
-                       "Folder written by train (rl; offsets around the rl position)");
-  position->add_option("--from", position_options.from, "offsets: around this x,y,z");
-  position->add_option("--offset", position_options.offset,
-                       "offsets: position 1-5 (10 m towards +x, -x, +y, -y, +z)");
-  position->add_flag("--json", position_options.json, "Print the result as JSON");
-  AddScenarioOverrides(position, options);
+  in.position->add_option("--policy", in.position_options.policy,
+                          "Folder written by train (rl; offsets around the rl position)");
+  in.position->add_option("--from", in.position_options.from, "offsets: around this x,y,z");
+  in.position->add_option("--offset", in.position_options.offset,
+                          "offsets: position 1-5 (10 m towards +x, -x, +y, -y, +z)");
+  in.position->add_flag("--json", in.position_options.json, "Print the result as JSON");
+  AddScenarioOverrides(in.position, in.options);
+}
 
-  auto* describe = app.add_subcommand("describe", "Print reference tables as markdown");
-  describe->require_subcommand(1);
-  DescribeHyperparametersOptions hyperparameters_options;
-  auto* hyperparameters = AddDescribeHyperparameters(describe, hyperparameters_options);
+// Runs the subcommand that was parsed; bad input is one line on stderr and exit code 2.
+int Run(const Invocation& in) {
+  try {
+    if (*in.validate)
+      return RunValidate(in.options, in.validate_json);
+    if (*in.describe.command)
+      return RunDescribe(in.describe);
+    if (*in.train)
+      return RunTrain(in.options, in.train_options);
+    if (*in.position)
+      return RunPosition(in.options, in.position_options);
+    return RunEval(in.options, in.eval_options);
+  } catch (const rlpos::ConfigError& e) {
+    const bool cli = e.path().rfind("--", 0) == 0;
+    std::cerr << "rlpos-sim: error: " << (cli ? "" : in.options.scenario_file + ": ")
+              << e.describe() << std::endl;
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "rlpos-sim: error: " << e.what() << std::endl;
+    return kExitRuntime;
+  }
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  rlpos::InstallAbortGuard("rlpos-sim", kExitNs3Abort);
+  CLI::App app{"rlpos-sim: train, position and evaluate a UAV in ns-3 scenarios"};
+  app.require_subcommand(1);
+  Invocation in;
+  AddValidate(app, in);
+  AddEval(app, in);
+  AddTrain(app, in);
+  AddPosition(app, in);
+  AddDescribe(app, in.describe);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -112,24 +155,5 @@ int main(int argc, char** argv) {
     app.exit(e);
     return kExitBadInput;
   }
-
-  try {
-    if (*validate)
-      return RunValidate(options, validate_json);
-    if (*train)
-      return RunTrain(options, train_options);
-    if (*position)
-      return RunPosition(options, position_options);
-    if (*hyperparameters)
-      return RunDescribeHyperparameters(hyperparameters_options);
-    return RunEval(options, eval_options);
-  } catch (const rlpos::ConfigError& e) {
-    const bool cli = e.path().rfind("--", 0) == 0;
-    std::cerr << "rlpos-sim: error: " << (cli ? "" : options.scenario_file + ": ") << e.describe()
-              << std::endl;
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "rlpos-sim: error: " << e.what() << std::endl;
-    return kExitRuntime;
-  }
+  return Run(in);
 }

@@ -197,7 +197,7 @@ TEST(MultiUavStore, ASingleUavEvalHasOneRowNamedUav) {
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].name, "uav");
   EXPECT_EQ(rows[0].uav, 0);
-  EXPECT_DOUBLE_EQ(rows[0].throughput_mbps, 120);
+  EXPECT_DOUBLE_EQ(rows[0].throughput_mbps.value(), 120);
   EXPECT_EQ(rows[0].ues_served, 4);
   EXPECT_EQ(testing::QueryOne(dir.File("rlpos.db"),
                               "SELECT positions_json FROM jobs WHERE id = '" + eval + "'"),
@@ -237,7 +237,7 @@ TEST(MultiUavStore, ASchemaNineFilesEvalsGetTheirOneUav) {
   EXPECT_EQ(rows[0].name, "uav");
   EXPECT_EQ(rows[0].ues_served, 4);
   EXPECT_EQ(rows[0].n_los, 2);
-  EXPECT_DOUBLE_EQ(rows[0].throughput_mbps, 99.5);
+  EXPECT_DOUBLE_EQ(rows[0].throughput_mbps.value(), 99.5);
   EXPECT_DOUBLE_EQ(rows[0].jain_fairness.value(), 0.9);
   EXPECT_DOUBLE_EQ(rows[0].z, 3);
   EXPECT_EQ(testing::FormatPlacement(store.reader.GetJob("c0ffee/e")->placement), "1,2,3");

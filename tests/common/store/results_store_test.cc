@@ -280,7 +280,7 @@ TEST_F(StoreTest, MetricsRowHoldsTheEvalResult) {
   EXPECT_EQ(rows[0].scenario, "C");
   EXPECT_EQ(rows[0].label, "oracle");
   EXPECT_EQ(rows[0].rng_run, 1);
-  EXPECT_DOUBLE_EQ(rows[0].aggregate_throughput_mbps, 80.25);
+  EXPECT_DOUBLE_EQ(rows[0].aggregate_throughput_mbps.value_or(-1), 80.25);
   EXPECT_FALSE(rows[0].mean_delay_ms.has_value());
   EXPECT_DOUBLE_EQ(*rows[0].loss_ratio, 0.01);
   EXPECT_DOUBLE_EQ(*rows[0].min_snr_db, 12.5);

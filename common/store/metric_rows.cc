@@ -1,0 +1,149 @@
+#include "common/store/metric_rows.h"
+
+#include "common/store/sqlite_db.h"
+
+namespace rlpos {
+namespace {
+
+constexpr auto kStoredMetrics = EvalMetricTable<std::optional<double>>();
+
+// "a, b, c" from the metrics' `column` (the run's or a UAV's).
+template <typename Column>
+std::string ColumnList(Column column) {
+  std::string out;
+  for (const auto& m : kStoredMetrics) {
+    if (const char* name = column(m))
+      out += std::string(", ") + name;
+  }
+  return out;
+}
+
+std::string Placeholders(int count) {
+  std::string out = "?";
+  for (int i = 1; i < count; ++i)
+    out += ", ?";
+  return out;
+}
+
+// Binds the metrics held in `fields` (real_of, count_of: the metric's member of that side).
+template <typename Fields, typename Real, typename Count>
+void BindMetrics(Statement& insert, const Fields& fields, Real real_of, Count count_of) {
+  for (const auto& m : kStoredMetrics) {
+    if (const auto real = real_of(m)) {
+      insert.Bind(fields.*real);
+    } else if (const auto count = count_of(m)) {
+      insert.Bind(fields.*count);
+    }
+  }
+}
+
+// Reads the metrics from `column` on, in the order of ColumnList.
+template <typename Fields, typename Real, typename Count>
+void ReadMetrics(const Statement& select, int column, Fields& fields, Real real_of,
+                 Count count_of) {
+  for (const auto& m : kStoredMetrics) {
+    if (const auto real = real_of(m)) {
+      fields.*real = select.OptionalDouble(column++);
+    } else if (const auto count = count_of(m)) {
+      fields.*count = static_cast<int>(select.Int(column++));
+    }
+  }
+}
+
+using Def = MetricDef<std::optional<double>>;
+const auto kRunColumn = [](const Def& m) { return m.key; };
+const auto kRunView = [](const Def& m) { return m.RunView(); };
+const auto kRunReal = [](const Def& m) { return m.run_real; };
+const auto kRunCount = [](const Def& m) { return m.run_count; };
+const auto kUavColumn = [](const Def& m) { return m.uav_key; };
+const auto kUavView = [](const Def& m) { return m.HasUav() ? m.UavView() : nullptr; };
+const auto kUavReal = [](const Def& m) { return m.uav_real; };
+const auto kUavCount = [](const Def& m) { return m.uav_count; };
+
+int CountOf(const std::string& columns) {
+  int commas = 0;
+  for (const char c : columns)
+    commas += c == ',' ? 1 : 0;
+  return commas;
+}
+
+}  // namespace
+
+void InsertEvalMetrics(Database& db, const EvalRowKey& key, const EvalResult& eval) {
+  // job_id is the primary key: a second row for the same job cannot exist.
+  const std::string run_columns = ColumnList(kRunColumn);
+  Statement run =
+      db.Prepare("INSERT INTO metrics (job_id, campaign_id, scenario, label, rng_run, x, y, z" +
+                 run_columns + ") VALUES (" + Placeholders(8 + CountOf(run_columns)) + ")");
+  const Vec3& first = eval.placement.front();
+  run.Bind(key.job_id).Bind(key.campaign_id).Bind(key.scenario).Bind(key.label);
+  run.Bind(key.rng_run).Bind(first.x).Bind(first.y).Bind(first.z);
+  BindMetrics(run, eval, kRunReal, kRunCount);
+  run.Run();
+  const std::string uav_columns = ColumnList(kUavColumn);
+  Statement uav = db.Prepare(
+      "INSERT INTO uav_metrics (job_id, uav, name, campaign_id, scenario, label, rng_run, x, y, "
+      "z" +
+      uav_columns + ") VALUES (" + Placeholders(10 + CountOf(uav_columns)) + ")");
+  for (std::size_t i = 0; i < eval.uavs.size(); ++i) {
+    const UavEvalResult& u = eval.uavs[i];
+    uav.Reset();
+    uav.Bind(key.job_id).Bind(static_cast<std::int64_t>(i)).Bind(u.name).Bind(key.campaign_id);
+    uav.Bind(key.scenario).Bind(key.label).Bind(key.rng_run);
+    uav.Bind(u.position.x).Bind(u.position.y).Bind(u.position.z);
+    BindMetrics(uav, u, kUavReal, kUavCount);
+    uav.Run();
+  }
+}
+
+std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_id) {
+  Statement select =
+      db.Prepare("SELECT job_id, scenario, positioner, rng_run, x, y, z" + ColumnList(kRunView) +
+                 " FROM v_eval_runs v WHERE campaign_id = ? "
+                 // Scenarios in campaign order (their first job), not by name.
+                 "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
+                 "AND j.scenario = v.scenario), positioner, rng_run");
+  select.Bind(campaign_id);
+  std::vector<MetricRow> out;
+  while (select.Step()) {
+    MetricRow m;
+    m.job_id = select.Text(0);
+    m.scenario = select.Text(1);
+    m.label = select.Text(2);
+    m.rng_run = select.Int(3);
+    m.x = select.Double(4);
+    m.y = select.Double(5);
+    m.z = select.Double(6);
+    ReadMetrics(select, 7, m, kRunReal, kRunCount);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+std::vector<UavMetricRow> ReadUavMetricRows(Database& db, const std::string& campaign_id) {
+  Statement select =
+      db.Prepare("SELECT job_id, scenario, positioner, rng_run, uav, uav_name, x, y, z" +
+                 ColumnList(kUavView) +
+                 " FROM v_eval_uavs v WHERE campaign_id = ? "
+                 "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
+                 "AND j.scenario = v.scenario), positioner, rng_run, uav");
+  select.Bind(campaign_id);
+  std::vector<UavMetricRow> out;
+  while (select.Step()) {
+    UavMetricRow m;
+    m.job_id = select.Text(0);
+    m.scenario = select.Text(1);
+    m.label = select.Text(2);
+    m.rng_run = select.Int(3);
+    m.uav = static_cast<int>(select.Int(4));
+    m.name = select.Text(5);
+    m.x = select.Double(6);
+    m.y = select.Double(7);
+    m.z = select.Double(8);
+    ReadMetrics(select, 9, m, kUavReal, kUavCount);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+}  // namespace rlpos

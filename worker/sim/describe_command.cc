@@ -1,0 +1,33 @@
+#include "worker/sim/describe_command.h"
+
+#include <iostream>
+
+#include "common/metrics/eval_metrics.h"
+#include "common/scenario/hyperparameter_docs.h"
+#include "common/scenario/scenario_parser.h"
+#include "worker/sim/commands.h"
+
+namespace rlpos::sim {
+
+void AddDescribe(CLI::App& app, DescribeCommand& describe) {
+  describe.command = app.add_subcommand("describe", "Print a table of the docs as Markdown");
+  describe.command->require_subcommand(1);
+  describe.metrics = describe.command->add_subcommand(
+      "metrics", "Print the eval metrics (name, unit, JSON key, SQL column, doc)");
+  describe.hyperparameters = describe.command->add_subcommand(
+      "hyperparameters", "Print the agents' hyperparameters (key, type, default, range, doc)");
+  describe.hyperparameters
+      ->add_option("--algorithm", describe.algorithm,
+                   "dqn|ppo|sac: its own and the shared ones (default: every algorithm)")
+      ->check(CLI::IsMember(AllAlgorithms()));
+}
+
+int RunDescribe(const DescribeCommand& describe) {
+  if (*describe.metrics)
+    std::cout << EvalMetricsMarkdown();
+  else
+    std::cout << HyperparametersMarkdown(HyperparameterSectionsFor(describe.algorithm));
+  return kExitOk;
+}
+
+}  // namespace rlpos::sim

@@ -1,0 +1,23 @@
+#pragma once
+// rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]: the tables that mirror
+// the code, printed as Markdown from their one declaration (common/metrics/eval_metrics.h,
+// common/scenario/*_hyperparameters.h). The docs hold this output (docs/scenarios.md between
+// its "GENERATED metrics" markers, docs/hyperparameters.md), and tests check that they still do.
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace rlpos::sim {
+
+struct DescribeCommand {
+  CLI::App* command = nullptr;
+  CLI::App* metrics = nullptr;
+  CLI::App* hyperparameters = nullptr;
+  std::string algorithm;  // hyperparameters: dqn|ppo|sac; empty: every algorithm
+};
+
+// Adds `describe` and its subcommands to `app`.
+void AddDescribe(CLI::App& app, DescribeCommand& describe);
+// Prints the table of the subcommand that was parsed.
+int RunDescribe(const DescribeCommand& describe);
+
+}  // namespace rlpos::sim
