@@ -18,8 +18,11 @@ import sys
 # name of a generated block -> the command (program in BIN_DIR, then its arguments).
 GENERATORS = {
     'metrics': ['rlpos-sim', 'describe', 'metrics'],
-    'exit-codes': ['rlpos-campaign', 'describe', 'exit-codes'],
 }
+# The exit codes' one declaration: the ExitCode enum of rlpos-campaign. The docs' table explains
+# each code at more length, so only its set of codes is checked against the enum.
+EXIT_CODES_HEADER = 'coordinator/cli/campaign_commands.h'
+EXIT_CODE = re.compile(r'^\s*kExit\w+\s*=\s*(\d+),', re.M)
 BLOCK = re.compile(r'(<!-- BEGIN GENERATED ([\w-]+) -->\n)(.*?)(<!-- END GENERATED \2 -->)', re.S)
 LINK = re.compile(r'\[[^\]]*\]\(([^)\s]+)\)')
 
@@ -70,6 +73,17 @@ def generated(bin_dir, name):
     return run.stdout
 
 
+def check_exit_codes(rel, table, source_dir):
+    header = open(os.path.join(source_dir, EXIT_CODES_HEADER), encoding='utf-8').read()
+    declared = sorted(int(c) for c in EXIT_CODE.findall(header))
+    documented = sorted(int(c) for c in re.findall(r'^\| (\d+) \|', table, re.M))
+    if not declared:
+        return [f'{EXIT_CODES_HEADER}: no exit codes found']
+    if declared != documented:
+        return [f'{rel}: exit codes {documented} differ from {EXIT_CODES_HEADER}: {declared}']
+    return []
+
+
 def check_blocks(pages, bin_dir, source_dir, fix):
     errors = []
     for page in pages:
@@ -78,6 +92,9 @@ def check_blocks(pages, bin_dir, source_dir, fix):
 
         def replace(m):
             name = m.group(2)
+            if name == 'exit-codes':
+                errors.extend(check_exit_codes(rel, m.group(3), source_dir))
+                return m.group(0)
             if name not in GENERATORS:
                 errors.append(f'{rel}: generated block "{name}" has no generator')
                 return m.group(0)
