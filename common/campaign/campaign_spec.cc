@@ -6,8 +6,8 @@
 
 #include "common/config/config_error.h"
 #include "common/config/did_you_mean.h"
-#include "common/scenario/number_text.h"
 #include "common/config/object_reader.h"
+#include "common/scenario/number_text.h"
 #include "common/scenario/scenario_parser.h"
 #include "common/wire/identifiers.h"
 #include "common/wire/job_order.h"
@@ -327,7 +327,8 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
   spec.rng_runs = ReadRngRuns(*runs, "/rng_runs");
 
   if (const json* positioners = r.Child("positioners")) {
-    spec.positioners = ReadCanonicalList(*positioners, "/positioners", AllPositioners(), "positioner");
+    spec.positioners =
+        ReadCanonicalList(*positioners, "/positioners", AllPositioners(), "positioner");
   } else {
     spec.positioners = AllPositioners();
   }

@@ -2,8 +2,8 @@
 
 #include "common/campaign/campaign_id.h"
 #include "common/campaign/job_content.h"
-#include "common/job/offsets.h"
 #include "common/hash/sha256.h"
+#include "common/job/offsets.h"
 #include "common/provenance/provenance.h"
 #include "common/scenario/scenario_parser.h"
 
@@ -81,9 +81,8 @@ std::size_t CampaignPlan::JobCount() const {
   std::size_t count = 0;
   for (const auto& s : spec.scenarios) {
     const std::size_t trains = NeedsTraining(spec, s) ? seeds : 0;
-    const std::size_t labels =
-        producers +
-        trains * ((spec.Uses("rl") ? 1 : 0) + (UsesOffsets(spec, s) ? kOffsetCount : 0));
+    const std::size_t labels = producers + trains * ((spec.Uses("rl") ? 1 : 0) +
+                                                     (UsesOffsets(spec, s) ? kOffsetCount : 0));
     count += producers + trains + labels * spec.rng_runs.size();
   }
   return count;

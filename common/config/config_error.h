@@ -13,7 +13,9 @@ class ConfigError : public std::runtime_error {
   const std::string& path() const { return path_; }
   const std::string& problem() const { return problem_; }
   // "<path>: <problem>", the one line users see (prefixed with the file name by callers).
-  std::string describe() const { return (path_.empty() ? std::string("/") : path_) + ": " + problem_; }
+  std::string describe() const {
+    return (path_.empty() ? std::string("/") : path_) + ": " + problem_;
+  }
 
  private:
   std::string path_;

@@ -13,9 +13,15 @@ struct NumberRange {
   double max = 1e300;
   bool min_exclusive = false;
 };
-inline NumberRange NonNegative() { return {0.0, 1e300, false}; }
-inline NumberRange Positive() { return {0.0, 1e300, true}; }
-inline NumberRange Between(double lo, double hi) { return {lo, hi, false}; }
+inline NumberRange NonNegative() {
+  return {0.0, 1e300, false};
+}
+inline NumberRange Positive() {
+  return {0.0, 1e300, true};
+}
+inline NumberRange Between(double lo, double hi) {
+  return {lo, hi, false};
+}
 
 std::string JoinPath(const std::string& parent, const std::string& key);
 std::string JoinPath(const std::string& parent, std::size_t index);

@@ -6,7 +6,8 @@ namespace rlpos {
 
 std::string HostName() {
   char host[256] = {0};
-  if (gethostname(host, sizeof host - 1) != 0) return "localhost";
+  if (gethostname(host, sizeof host - 1) != 0)
+    return "localhost";
   return host;
 }
 

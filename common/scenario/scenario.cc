@@ -4,19 +4,22 @@ namespace rlpos {
 
 double Scenario::TotalDemandMbps() const {
   double total = 0.0;
-  for (const auto& ue : ues) total += ue.demand_mbps;
+  for (const auto& ue : ues)
+    total += ue.demand_mbps;
   return total;
 }
 
 Placement Scenario::InitialPlacement() const {
   Placement placement;
-  for (const auto& uav : uavs) placement.push_back(uav.initial);
+  for (const auto& uav : uavs)
+    placement.push_back(uav.initial);
   return placement;
 }
 
 int Scenario::UavIndex(const std::string& name) const {
   for (std::size_t i = 0; i < uavs.size(); ++i) {
-    if (uavs[i].name == name) return static_cast<int>(i);
+    if (uavs[i].name == name)
+      return static_cast<int>(i);
   }
   return -1;
 }

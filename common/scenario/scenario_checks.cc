@@ -27,7 +27,8 @@ void CheckInVenue(const Venue& venue, const Vec3& p, const std::string& path, co
 
 std::string UavNames(const Scenario& s) {
   std::string names = " (UAVs:";
-  for (const auto& uav : s.uavs) names += " \"" + uav.name + "\"";
+  for (const auto& uav : s.uavs)
+    names += " \"" + uav.name + "\"";
   return names + ")";
 }
 
@@ -49,14 +50,14 @@ void CheckUav(const Scenario& s, std::size_t i) {
   }
   const int inside = BuildingContaining(s, uav.initial);
   if (inside >= 0) {
-    throw ConfigError(base + "/position", "UAV at " + Format(uav.initial) +
-                                              " is inside building " + std::to_string(inside) +
-                                              " (\"" + s.buildings[inside].name + "\")");
+    throw ConfigError(base + "/position", "UAV at " + Format(uav.initial) + " is inside building " +
+                                              std::to_string(inside) + " (\"" +
+                                              s.buildings[inside].name + "\")");
   }
   for (std::size_t j = 0; j < i; ++j) {
     if (s.uavs[j].name == uav.name) {
-      throw ConfigError(base + "/name", "UAV " + std::to_string(j) + " has the name \"" +
-                                            uav.name + "\" already");
+      throw ConfigError(base + "/name",
+                        "UAV " + std::to_string(j) + " has the name \"" + uav.name + "\" already");
     }
     if (UavsOverlap(s.uavs[j].initial, uav.initial)) {
       std::ostringstream out;
@@ -84,7 +85,8 @@ bool OverlapsAnother(const Placement& placement, std::size_t uav, const Vec3& p)
 
 int BuildingContaining(const Scenario& scenario, const Vec3& p) {
   for (std::size_t i = 0; i < scenario.buildings.size(); ++i) {
-    if (scenario.buildings[i].Footprint3d().Contains(p)) return static_cast<int>(i);
+    if (scenario.buildings[i].Footprint3d().Contains(p))
+      return static_cast<int>(i);
   }
   return -1;
 }
@@ -120,7 +122,8 @@ void CheckScenarioGeometry(const Scenario& s) {
                                   "\")");
     }
   }
-  for (std::size_t i = 0; i < s.uavs.size(); ++i) CheckUav(s, i);
+  for (std::size_t i = 0; i < s.uavs.size(); ++i)
+    CheckUav(s, i);
   for (std::size_t i = 0; i < s.ues.size(); ++i) {
     const std::string& name = s.ues[i].uav;
     if (!name.empty() && s.UavIndex(name) < 0) {

@@ -15,9 +15,9 @@ using nlohmann::json;
 
 Vec3 ReadVec3(const json& v, const std::string& path) {
   if (!v.is_array() || v.size() != 3) {
-    throw ConfigError(path, "expected [x, y, z], got " + (v.is_array() ? "an array of " +
-                                                             std::to_string(v.size())
-                                                                       : TypeName(v)));
+    throw ConfigError(path,
+                      "expected [x, y, z], got " +
+                          (v.is_array() ? "an array of " + std::to_string(v.size()) : TypeName(v)));
   }
   return {CheckedNumber(v[0], JoinPath(path, 0), {}), CheckedNumber(v[1], JoinPath(path, 1), {}),
           CheckedNumber(v[2], JoinPath(path, 2), {})};
@@ -40,7 +40,8 @@ ObjectSpec ReadObjectSpec(const json& v, const std::string& path) {
   ObjectReader r(v, path);
   ObjectSpec spec;
   spec.type = r.String("type", "");
-  if (spec.type.empty()) throw ConfigError(r.PathOf("type"), "is required (an ns-3 TypeId name)");
+  if (spec.type.empty())
+    throw ConfigError(r.PathOf("type"), "is required (an ns-3 TypeId name)");
   if (const json* attributes = r.Child("attributes")) {
     if (!attributes->is_object()) {
       throw ConfigError(r.PathOf("attributes"), "expected an object, got " + TypeName(*attributes));
@@ -77,8 +78,10 @@ BuildingSpec ReadBuilding(const json& v, const std::string& path, std::size_t in
   b.name = r.String("name", "building" + std::to_string(index));
   const json* x = r.Child("x");
   const json* y = r.Child("y");
-  if (!x) throw ConfigError(r.PathOf("x"), "is required ([xmin, xmax])");
-  if (!y) throw ConfigError(r.PathOf("y"), "is required ([ymin, ymax])");
+  if (!x)
+    throw ConfigError(r.PathOf("x"), "is required ([xmin, xmax])");
+  if (!y)
+    throw ConfigError(r.PathOf("y"), "is required ([ymin, ymax])");
   std::tie(b.xmin, b.xmax) = ReadInterval(*x, r.PathOf("x"), false);
   std::tie(b.ymin, b.ymax) = ReadInterval(*y, r.PathOf("y"), false);
   b.height = r.RequiredNumber("height", Positive());
@@ -115,10 +118,12 @@ UeSpec ReadUe(const json& v, const std::string& path, std::size_t index, const P
   ue.name = r.String("name", "ue" + std::to_string(index));
   ue.uav = r.String("uav", "");
   const json* position = r.Child("position");
-  if (!position) throw ConfigError(r.PathOf("position"), "is required ([x, y, z])");
+  if (!position)
+    throw ConfigError(r.PathOf("position"), "is required ([x, y, z])");
   ue.position = ReadVec3(*position, r.PathOf("position"));
   const json* demand = r.Child("demand");
-  if (!demand) throw ConfigError(r.PathOf("demand"), "is required ({\"mbps\": R} or {\"mcs\": I})");
+  if (!demand)
+    throw ConfigError(r.PathOf("demand"), "is required ({\"mbps\": R} or {\"mcs\": I})");
   ObjectReader d(*demand, r.PathOf("demand"));
   if (d.Has("mbps") == d.Has("mcs")) {
     throw ConfigError(d.path(), "give exactly one of \"mbps\" or \"mcs\"");
@@ -142,16 +147,21 @@ UavSpec ReadUav(const json& v, const Venue& venue, const std::string& path,
   ObjectReader r(v, path);
   UavSpec uav;
   uav.name = r.String("name", default_name);
-  if (uav.name.empty()) throw ConfigError(r.PathOf("name"), "must not be empty");
+  if (uav.name.empty())
+    throw ConfigError(r.PathOf("name"), "must not be empty");
   uav.channel = static_cast<int>(r.Integer("channel", 0, 1, 233));
   uav.zone = {0, venue.width, 0, venue.depth, 1.0, venue.height};
   uav.initial = {venue.width / 2, venue.depth / 2, 10.0};
-  if (const json* p = r.Child("position")) uav.initial = ReadVec3(*p, r.PathOf("position"));
+  if (const json* p = r.Child("position"))
+    uav.initial = ReadVec3(*p, r.PathOf("position"));
   if (const json* zone = r.Child("zone")) {
     ObjectReader z(*zone, r.PathOf("zone"));
-    if (const json* x = z.Child("x")) std::tie(uav.zone.xmin, uav.zone.xmax) = ReadInterval(*x, z.PathOf("x"), true);
-    if (const json* y = z.Child("y")) std::tie(uav.zone.ymin, uav.zone.ymax) = ReadInterval(*y, z.PathOf("y"), true);
-    if (const json* h = z.Child("z")) std::tie(uav.zone.zmin, uav.zone.zmax) = ReadInterval(*h, z.PathOf("z"), true);
+    if (const json* x = z.Child("x"))
+      std::tie(uav.zone.xmin, uav.zone.xmax) = ReadInterval(*x, z.PathOf("x"), true);
+    if (const json* y = z.Child("y"))
+      std::tie(uav.zone.ymin, uav.zone.ymax) = ReadInterval(*y, z.PathOf("y"), true);
+    if (const json* h = z.Child("z"))
+      std::tie(uav.zone.zmin, uav.zone.zmax) = ReadInterval(*h, z.PathOf("z"), true);
     z.Finish();
   }
   r.Finish();
@@ -170,7 +180,8 @@ WifiSpec ReadWifi(const json& v) {
   if (w.standard == "802.11n" && w.width_mhz > 40) {
     throw ConfigError(r.PathOf("width"), "802.11n supports 20 or 40 MHz");
   }
-  w.guard_interval_ns = static_cast<int>(r.Integer("guard_interval", w.guard_interval_ns, 400, 3200));
+  w.guard_interval_ns =
+      static_cast<int>(r.Integer("guard_interval", w.guard_interval_ns, 400, 3200));
   const bool he = w.standard == "802.11ax";
   const int gi = w.guard_interval_ns;
   if (he ? (gi != 800 && gi != 1600 && gi != 3200) : (gi != 400 && gi != 800)) {
@@ -184,11 +195,12 @@ WifiSpec ReadWifi(const json& v) {
   w.noise_floor_dbm = r.Number("noise_floor", w.noise_floor_dbm, Between(-140, 0));
   const double thermal = ThermalNoiseDbm(w.width_mhz);
   if (w.noise_floor_dbm < thermal) {
-    throw ConfigError(r.PathOf("noise_floor"),
-                      "is below the thermal noise of a " + std::to_string(w.width_mhz) +
-                          " MHz channel (" + std::to_string(thermal).substr(0, 6) + " dBm)");
+    throw ConfigError(r.PathOf("noise_floor"), "is below the thermal noise of a " +
+                                                   std::to_string(w.width_mhz) + " MHz channel (" +
+                                                   std::to_string(thermal).substr(0, 6) + " dBm)");
   }
-  if (const json* rm = r.Child("rate_manager")) w.rate_manager = ReadObjectSpec(*rm, r.PathOf("rate_manager"));
+  if (const json* rm = r.Child("rate_manager"))
+    w.rate_manager = ReadObjectSpec(*rm, r.PathOf("rate_manager"));
   w.mode = r.String("mode", w.mode, {"adhoc", "ap_sta"});
   w.rts_cts = r.Bool("rts_cts", w.rts_cts);
   r.Finish();
@@ -213,15 +225,16 @@ SimulationSpec ReadSimulation(const json& v) {
     throw ConfigError(r.PathOf("warmup"), "must be shorter than the duration");
   }
   s.seed = static_cast<std::uint32_t>(r.Integer("seed", s.seed, 1, 4294967295LL));
-  s.run = static_cast<std::uint64_t>(r.Integer("run", static_cast<long long>(s.run), 0,
-                                               9007199254740991LL));
+  s.run = static_cast<std::uint64_t>(
+      r.Integer("run", static_cast<long long>(s.run), 0, 9007199254740991LL));
   r.Finish();
   return s;
 }
 
 std::vector<std::string> ReadStringList(const json& v, const std::string& path,
                                         const std::vector<std::string>& allowed) {
-  if (!v.is_array() || v.empty()) throw ConfigError(path, "expected a non-empty array of strings");
+  if (!v.is_array() || v.empty())
+    throw ConfigError(path, "expected a non-empty array of strings");
   std::vector<std::string> out;
   for (std::size_t i = 0; i < v.size(); ++i) {
     // Reuse the enum check of ObjectReader through a one-key object.
@@ -316,8 +329,12 @@ json AgentJson(const AgentSpec& a) {
   return agent;
 }
 
-json Vec3Json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
-json SpecJson(const ObjectSpec& s) { return {{"type", s.type}, {"attributes", s.attributes}}; }
+json Vec3Json(const Vec3& v) {
+  return json::array({v.x, v.y, v.z});
+}
+json SpecJson(const ObjectSpec& s) {
+  return {{"type", s.type}, {"attributes", s.attributes}};
+}
 
 }  // namespace
 
@@ -333,13 +350,15 @@ json ParseJsonText(const std::string& text) {
     // A number beyond double, e.g. "[json.exception.out_of_range.406] number overflow ...".
     const std::string what = e.what();
     const auto at = what.find("] ");
-    throw ConfigError("", "malformed JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
+    throw ConfigError("",
+                      "malformed JSON: " + (at == std::string::npos ? what : what.substr(at + 2)));
   }
 }
 
 json ReadJsonFile(const std::string& file) {
   std::ifstream in(file);
-  if (!in) throw ConfigError("", "cannot open file");
+  if (!in)
+    throw ConfigError("", "cannot open file");
   std::stringstream buffer;
   buffer << in.rdbuf();
   return ParseJsonText(buffer.str());
@@ -354,7 +373,8 @@ void ApplyOverrides(json& document, const std::vector<std::string>& overrides) {
     std::string path = item.substr(0, eq);
     const std::string text = item.substr(eq + 1);
     if (path[0] != '/') {
-      for (auto& c : path) c = (c == '.') ? '/' : c;
+      for (auto& c : path)
+        c = (c == '.') ? '/' : c;
       path = "/" + path;
     }
     json value;
@@ -391,25 +411,31 @@ Scenario ParseScenario(const json& document) {
   Scenario s;
   s.name = r.String("name", "scenario");
   s.description = r.String("description", "");
-  if (const json* v = r.Child("venue")) s.venue = ReadVenue(*v);
-  if (const json* v = r.Child("wifi")) s.wifi = ReadWifi(*v);
+  if (const json* v = r.Child("venue"))
+    s.venue = ReadVenue(*v);
+  if (const json* v = r.Child("wifi"))
+    s.wifi = ReadWifi(*v);
   const PhyProfile phy{s.wifi.standard, s.wifi.width_mhz, s.wifi.guard_interval_ns,
                        s.wifi.spatial_streams};
   if (const json* v = r.Child("buildings")) {
-    if (!v->is_array()) throw ConfigError("/buildings", "expected an array, got " + TypeName(*v));
+    if (!v->is_array())
+      throw ConfigError("/buildings", "expected an array, got " + TypeName(*v));
     for (std::size_t i = 0; i < v->size(); ++i) {
       s.buildings.push_back(ReadBuilding((*v)[i], JoinPath("/buildings", i), i));
     }
   }
   const json* ues = r.Child("ues");
-  if (!ues) throw ConfigError("/ues", "is required (at least one UE)");
-  if (!ues->is_array() || ues->empty()) throw ConfigError("/ues", "expected a non-empty array");
+  if (!ues)
+    throw ConfigError("/ues", "is required (at least one UE)");
+  if (!ues->is_array() || ues->empty())
+    throw ConfigError("/ues", "expected a non-empty array");
   for (std::size_t i = 0; i < ues->size(); ++i) {
     s.ues.push_back(ReadUe((*ues)[i], JoinPath("/ues", i), i, phy));
   }
   const json* uav = r.Child("uav");
   const json* uavs = r.Child("uavs");
-  if (uav && uavs) throw ConfigError("/uavs", "give \"uav\" (one UAV) or \"uavs\", not both");
+  if (uav && uavs)
+    throw ConfigError("/uavs", "give \"uav\" (one UAV) or \"uavs\", not both");
   s.uavs.clear();
   if (uavs) {
     if (!uavs->is_array() || uavs->empty()) {
@@ -427,13 +453,18 @@ Scenario ParseScenario(const json& document) {
   } else {
     s.uavs.push_back(ReadUav(uav ? *uav : json::object(), s.venue, "/uav", "uav"));
   }
-  if (const json* v = r.Child("traffic")) s.traffic = ReadTraffic(*v);
+  if (const json* v = r.Child("traffic"))
+    s.traffic = ReadTraffic(*v);
   s.propagation = DefaultPropagation();
-  if (const json* v = r.Child("propagation")) s.propagation = ReadObjectSpec(*v, "/propagation");
-  if (const json* v = r.Child("simulation")) s.simulation = ReadSimulation(*v);
+  if (const json* v = r.Child("propagation"))
+    s.propagation = ReadObjectSpec(*v, "/propagation");
+  if (const json* v = r.Child("simulation"))
+    s.simulation = ReadSimulation(*v);
   s.log_level = r.String("log_level", s.log_level, {"error", "warning", "info", "debug"});
-  if (const json* v = r.Child("env")) s.env = ReadEnv(*v);
-  if (const json* v = r.Child("agent")) s.agent = ReadAgent(*v);
+  if (const json* v = r.Child("env"))
+    s.env = ReadEnv(*v);
+  if (const json* v = r.Child("agent"))
+    s.agent = ReadAgent(*v);
   r.Finish();
   // SAC acts on displacements, DQN and PPO choose among the moves.
   const bool continuous_agent = s.agent.algorithm == "sac";
@@ -446,7 +477,9 @@ Scenario ParseScenario(const json& document) {
   return s;
 }
 
-json ToJson(const Scenario& s) {
+namespace {
+
+json BuildingsJson(const Scenario& s) {
   json buildings = json::array();
   for (const auto& b : s.buildings) {
     buildings.push_back({{"name", b.name},
@@ -458,6 +491,10 @@ json ToJson(const Scenario& s) {
                          {"type", b.type},
                          {"walls", b.walls}});
   }
+  return buildings;
+}
+
+json UesJson(const Scenario& s) {
   json ues = json::array();
   for (const auto& u : s.ues) {
     json demand = u.demand_mcs >= 0 ? json{{"mcs", u.demand_mcs}} : json{{"mbps", u.demand_mbps}};
@@ -468,59 +505,75 @@ json ToJson(const Scenario& s) {
                 {{"model", u.mobility.model},
                  {"speed", u.mobility.speed},
                  {"change_interval", u.mobility.change_interval}}}};
-    if (!u.uav.empty()) ue["uav"] = u.uav;
+    if (!u.uav.empty())
+      ue["uav"] = u.uav;
     ues.push_back(ue);
   }
+  return ues;
+}
+
+json UavsJson(const Scenario& s) {
   json uavs = json::array();
   for (const auto& u : s.uavs) {
     const Box& z = u.zone;
-    json uav = {{"position", Vec3Json(u.initial)},
-                {"zone", {{"x", {z.xmin, z.xmax}}, {"y", {z.ymin, z.ymax}}, {"z", {z.zmin, z.zmax}}}}};
+    json uav = {
+        {"position", Vec3Json(u.initial)},
+        {"zone", {{"x", {z.xmin, z.xmax}}, {"y", {z.ymin, z.ymax}}, {"z", {z.zmin, z.zmax}}}}};
     // A single UAV's document stays as it was before names and channels existed.
-    if (s.uavs_listed || u.name != "uav") uav["name"] = u.name;
-    if (u.channel > 0) uav["channel"] = u.channel;
+    if (s.uavs_listed || u.name != "uav")
+      uav["name"] = u.name;
+    if (u.channel > 0)
+      uav["channel"] = u.channel;
     uavs.push_back(uav);
   }
-  json document = {{"name", s.name},
-          {"description", s.description},
-          {"venue", {{"width", s.venue.width}, {"depth", s.venue.depth}, {"height", s.venue.height}}},
-          {"buildings", buildings},
-          {"ues", ues},
-          {"wifi",
-           {{"standard", s.wifi.standard},
-            {"channel", s.wifi.channel},
-            {"width", s.wifi.width_mhz},
-            {"guard_interval", s.wifi.guard_interval_ns},
-            {"spatial_streams", s.wifi.spatial_streams},
-            {"tx_power", s.wifi.tx_power_dbm},
-            {"antenna_gain", s.wifi.antenna_gain_dbi},
-            {"noise_floor", s.wifi.noise_floor_dbm},
-            {"rate_manager", SpecJson(s.wifi.rate_manager)},
-            {"mode", s.wifi.mode},
-            {"rts_cts", s.wifi.rts_cts}}},
-          {"traffic", {{"protocol", s.traffic.protocol}, {"packet_size", s.traffic.packet_size}}},
-          {"propagation", SpecJson(s.propagation)},
-          {"simulation",
-           {{"duration", s.simulation.duration},
-            {"warmup", s.simulation.warmup},
-            {"seed", s.simulation.seed},
-            {"run", s.simulation.run}}},
-          {"log_level", s.log_level},
-          {"env",
-           {{"fidelity", s.env.fidelity},
-            {"step", s.env.step},
-            {"actions", s.env.actions},
-            {"observations", s.env.observations},
-            {"decision_interval", s.env.decision_interval},
-            {"episode_duration", s.env.episode_duration},
-            {"action_mask", s.env.action_mask},
-            {"action_space", s.env.action_space},
-            {"reward",
-             {{"name", s.env.reward.name},
-              {"w1", s.env.reward.w1},
-              {"w2", s.env.reward.w2},
-              {"w3", s.env.reward.w3}}}}},
-          {"agent", AgentJson(s.agent)}};
+  return uavs;
+}
+
+}  // namespace
+
+json ToJson(const Scenario& s) {
+  const json uavs = UavsJson(s);
+  json document = {
+      {"name", s.name},
+      {"description", s.description},
+      {"venue", {{"width", s.venue.width}, {"depth", s.venue.depth}, {"height", s.venue.height}}},
+      {"buildings", BuildingsJson(s)},
+      {"ues", UesJson(s)},
+      {"wifi",
+       {{"standard", s.wifi.standard},
+        {"channel", s.wifi.channel},
+        {"width", s.wifi.width_mhz},
+        {"guard_interval", s.wifi.guard_interval_ns},
+        {"spatial_streams", s.wifi.spatial_streams},
+        {"tx_power", s.wifi.tx_power_dbm},
+        {"antenna_gain", s.wifi.antenna_gain_dbi},
+        {"noise_floor", s.wifi.noise_floor_dbm},
+        {"rate_manager", SpecJson(s.wifi.rate_manager)},
+        {"mode", s.wifi.mode},
+        {"rts_cts", s.wifi.rts_cts}}},
+      {"traffic", {{"protocol", s.traffic.protocol}, {"packet_size", s.traffic.packet_size}}},
+      {"propagation", SpecJson(s.propagation)},
+      {"simulation",
+       {{"duration", s.simulation.duration},
+        {"warmup", s.simulation.warmup},
+        {"seed", s.simulation.seed},
+        {"run", s.simulation.run}}},
+      {"log_level", s.log_level},
+      {"env",
+       {{"fidelity", s.env.fidelity},
+        {"step", s.env.step},
+        {"actions", s.env.actions},
+        {"observations", s.env.observations},
+        {"decision_interval", s.env.decision_interval},
+        {"episode_duration", s.env.episode_duration},
+        {"action_mask", s.env.action_mask},
+        {"action_space", s.env.action_space},
+        {"reward",
+         {{"name", s.env.reward.name},
+          {"w1", s.env.reward.w1},
+          {"w2", s.env.reward.w2},
+          {"w3", s.env.reward.w3}}}}},
+      {"agent", AgentJson(s.agent)}};
   if (s.env.turn_steps != 1)  // absent before several UAVs existed: documents stay as they were
     document["env"]["turn_steps"] = s.env.turn_steps;
   if (s.uavs_listed) {

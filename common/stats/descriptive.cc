@@ -12,9 +12,11 @@ namespace rlpos {
 namespace {
 
 void CheckSample(const std::vector<double>& sample) {
-  if (sample.empty()) throw std::invalid_argument("empty sample");
+  if (sample.empty())
+    throw std::invalid_argument("empty sample");
   for (const double x : sample) {
-    if (!std::isfinite(x)) throw std::invalid_argument("sample holds a non-finite value");
+    if (!std::isfinite(x))
+      throw std::invalid_argument("sample holds a non-finite value");
   }
 }
 
@@ -30,7 +32,8 @@ double Median(std::vector<double> sample) {
   const std::size_t mid = sample.size() / 2;
   std::nth_element(sample.begin(), sample.begin() + static_cast<std::ptrdiff_t>(mid), sample.end());
   const double upper = sample[mid];
-  if (sample.size() % 2 == 1) return upper;
+  if (sample.size() % 2 == 1)
+    return upper;
   const double lower =
       *std::max_element(sample.begin(), sample.begin() + static_cast<std::ptrdiff_t>(mid));
   return 0.5 * (lower + upper);
@@ -38,14 +41,17 @@ double Median(std::vector<double> sample) {
 
 double SampleStdDev(const std::vector<double>& sample) {
   const double mean = Mean(sample);
-  if (sample.size() < 2) return 0.0;
+  if (sample.size() < 2)
+    return 0.0;
   double sum = 0.0;
-  for (const double x : sample) sum += (x - mean) * (x - mean);
+  for (const double x : sample)
+    sum += (x - mean) * (x - mean);
   return std::sqrt(sum / static_cast<double>(sample.size() - 1));
 }
 
 ConfidenceInterval MeanConfidenceInterval(const std::vector<double>& sample, double level) {
-  if (!(level > 0.0 && level < 1.0)) throw std::invalid_argument("level must be in (0, 1)");
+  if (!(level > 0.0 && level < 1.0))
+    throw std::invalid_argument("level must be in (0, 1)");
   ConfidenceInterval ci;
   ci.mean = Mean(sample);
   ci.n = sample.size();
@@ -62,7 +68,8 @@ ConfidenceInterval MeanConfidenceInterval(const std::vector<double>& sample, dou
 }
 
 double ChangePercent(double value, double baseline) {
-  if (baseline == 0.0) return std::numeric_limits<double>::quiet_NaN();
+  if (baseline == 0.0)
+    return std::numeric_limits<double>::quiet_NaN();
   return 100.0 * (value - baseline) / std::fabs(baseline);
 }
 

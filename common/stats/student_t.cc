@@ -12,56 +12,71 @@ double BetaContinuedFraction(double a, double b, double x) {
   constexpr double kEpsilon = 1e-15;
   double c = 1.0;
   double d = 1.0 - (a + b) * x / (a + 1.0);
-  if (std::fabs(d) < kTiny) d = kTiny;
+  if (std::fabs(d) < kTiny)
+    d = kTiny;
   d = 1.0 / d;
   double h = d;
   for (int m = 1; m <= 1000; ++m) {
     const double m2 = 2.0 * m;
     double aa = m * (b - m) * x / ((a + m2 - 1.0) * (a + m2));
     d = 1.0 + aa * d;
-    if (std::fabs(d) < kTiny) d = kTiny;
+    if (std::fabs(d) < kTiny)
+      d = kTiny;
     c = 1.0 + aa / c;
-    if (std::fabs(c) < kTiny) c = kTiny;
+    if (std::fabs(c) < kTiny)
+      c = kTiny;
     d = 1.0 / d;
     h *= d * c;
     aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1.0));
     d = 1.0 + aa * d;
-    if (std::fabs(d) < kTiny) d = kTiny;
+    if (std::fabs(d) < kTiny)
+      d = kTiny;
     c = 1.0 + aa / c;
-    if (std::fabs(c) < kTiny) c = kTiny;
+    if (std::fabs(c) < kTiny)
+      c = kTiny;
     d = 1.0 / d;
     const double step = d * c;
     h *= step;
-    if (std::fabs(step - 1.0) < kEpsilon) break;
+    if (std::fabs(step - 1.0) < kEpsilon)
+      break;
   }
   return h;
 }
 
 // I_x(a, b), the regularized incomplete beta function.
 double RegularizedBeta(double a, double b, double x) {
-  if (x <= 0.0) return 0.0;
-  if (x >= 1.0) return 1.0;
+  if (x <= 0.0)
+    return 0.0;
+  if (x >= 1.0)
+    return 1.0;
   const double front = std::exp(std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
                                 a * std::log(x) + b * std::log1p(-x));
   // The continued fraction converges fast only on this side; use the symmetry otherwise.
-  if (x < (a + 1.0) / (a + b + 2.0)) return front * BetaContinuedFraction(a, b, x) / a;
+  if (x < (a + 1.0) / (a + b + 2.0))
+    return front * BetaContinuedFraction(a, b, x) / a;
   return 1.0 - front * BetaContinuedFraction(b, a, 1.0 - x) / b;
 }
 
 }  // namespace
 
 double StudentTCdf(double t, double df) {
-  if (!(df > 0.0)) throw std::invalid_argument("degrees of freedom must be positive");
-  if (std::isinf(t)) return t > 0 ? 1.0 : 0.0;
+  if (!(df > 0.0))
+    throw std::invalid_argument("degrees of freedom must be positive");
+  if (std::isinf(t))
+    return t > 0 ? 1.0 : 0.0;
   const double tail = 0.5 * RegularizedBeta(df / 2.0, 0.5, df / (df + t * t));
   return t > 0 ? 1.0 - tail : tail;
 }
 
 double StudentTQuantile(double p, double df) {
-  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("quantile p must be in (0, 1)");
-  if (!(df > 0.0)) throw std::invalid_argument("degrees of freedom must be positive");
-  if (p < 0.5) return -StudentTQuantile(1.0 - p, df);
-  if (p == 0.5) return 0.0;
+  if (!(p > 0.0 && p < 1.0))
+    throw std::invalid_argument("quantile p must be in (0, 1)");
+  if (!(df > 0.0))
+    throw std::invalid_argument("degrees of freedom must be positive");
+  if (p < 0.5)
+    return -StudentTQuantile(1.0 - p, df);
+  if (p == 0.5)
+    return 0.0;
   double lo = 0.0;
   double hi = 1.0;
   while (StudentTCdf(hi, df) < p) {

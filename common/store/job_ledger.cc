@@ -21,20 +21,6 @@ std::string OverridesJson(const std::vector<ScenarioOverride>& overrides) {
   return out.dump();
 }
 
-// The columns ReadRunningJob reads, in order.
-constexpr const char* kRunningJobColumns =
-    "id, campaign_id, COALESCE(worker_id, ''), COALESCE(slot, 0), attempt, started_at, timeout_s";
-
-RunningJob ReadRunningJob(const Statement& row) {
-  return {row.Text(0),
-          row.Text(1),
-          row.Text(2),
-          static_cast<int>(row.Int(3)),
-          static_cast<int>(row.Int(4)),
-          row.Double(5),
-          row.Double(6)};
-}
-
 }  // namespace
 
 const char* ToString(JobUpdate update) {

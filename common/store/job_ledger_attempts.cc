@@ -1,28 +1,12 @@
 // The ledger's attempts: a failed attempt, a lost worker's jobs, a cancelled or retried
 // campaign.
 #include "common/store/job_ledger.h"
+#include "common/store/job_rows.h"
 #include "common/store/result_cache.h"
 #include "common/store/sqlite_db.h"
 #include "common/store/store_db.h"
 
 namespace rlpos {
-namespace {
-
-// The columns ReadRunningJob reads, in order.
-constexpr const char* kRunningJobColumns =
-    "id, campaign_id, COALESCE(worker_id, ''), COALESCE(slot, 0), attempt, started_at, timeout_s";
-
-RunningJob ReadRunningJob(const Statement& row) {
-  return {row.Text(0),
-          row.Text(1),
-          row.Text(2),
-          static_cast<int>(row.Int(3)),
-          static_cast<int>(row.Int(4)),
-          row.Double(5),
-          row.Double(6)};
-}
-
-}  // namespace
 
 JobUpdate JobLedger::RecordFailure(const std::string& job_id, int attempt, const std::string& error,
                                    const std::string& worker_id) {

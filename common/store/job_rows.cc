@@ -59,4 +59,14 @@ JobParams ReadParams(const Statement& row, int first, std::optional<Placement>& 
   return p;
 }
 
+RunningJob ReadRunningJob(const Statement& row) {
+  return {row.Text(0),
+          row.Text(1),
+          row.Text(2),
+          static_cast<int>(row.Int(3)),
+          static_cast<int>(row.Int(4)),
+          row.Double(5),
+          row.Double(6)};
+}
+
 }  // namespace rlpos

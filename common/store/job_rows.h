@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/campaign/expansion.h"
+#include "common/store/store_records.h"
 
 namespace rlpos {
 
@@ -23,6 +24,13 @@ std::optional<Placement> ReadPlacement(const Statement& row, int first);
 // Throws StoreError naming `file` for a malformed row.
 JobParams ReadParams(const Statement& row, int first, std::optional<Placement>& placement,
                      const std::string& file);
+
+// The columns ReadRunningJob reads, in order.
+constexpr const char* kRunningJobColumns =
+    "id, campaign_id, COALESCE(worker_id, ''), COALESCE(slot, 0), attempt, started_at, timeout_s";
+
+// A running job's lease from kRunningJobColumns.
+RunningJob ReadRunningJob(const Statement& row);
 
 // jobs.positions_json: every UAV's position of a placement of several, NULL for one (x, y, z).
 std::optional<std::string> PositionsJson(const Placement& placement);

@@ -38,7 +38,8 @@ nlohmann::json EffectiveScenarioDocument(const nlohmann::json& document, const J
 
 // Checks every field of an order that came over the network, and the scenario it describes
 // (parsed and validated as rlpos-sim would; an eval's placement has a position per UAV, each
-// inside the venue and outside every building). `max_timeout_s` is the worker's cap. Throws std::invalid_argument naming the field.
+// inside the venue and outside every building). `max_timeout_s` is the worker's cap. Throws
+// std::invalid_argument naming the field.
 CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s);
 
 }  // namespace rlpos

@@ -7,13 +7,13 @@
 #include <iostream>
 #include <sstream>
 
-#include "coordinator/cli/campaign_commands.h"
 #include "common/files/atomic_file.h"
 #include "common/hash/sha256.h"
 #include "common/store/artifact_files.h"
 #include "common/store/results_reader.h"
 #include "common/store/store_db.h"
 #include "common/store/store_error.h"
+#include "coordinator/cli/campaign_commands.h"
 
 namespace rlpos {
 namespace {

@@ -6,10 +6,10 @@
 #include <random>
 #include <thread>
 
+#include "common/process/host_name.h"
 #include "idl/dds/message_checks.h"
 #include "idl/dds/topics.h"
 #include "idl/dds/wait_set.h"
-#include "common/process/host_name.h"
 
 namespace rlpos {
 namespace {

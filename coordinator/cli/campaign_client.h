@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/campaign/campaign_request.h"
 #include "idl/dds/messages.h"
 #include "idl/dds/participant.h"
-#include "common/campaign/campaign_request.h"
 
 namespace rlpos {
 

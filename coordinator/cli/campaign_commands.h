@@ -4,8 +4,8 @@
 #include <string>
 
 #include "common/campaign/expansion.h"
-#include "idl/dds/dds_config.h"
 #include "common/store/results_reader.h"
+#include "idl/dds/dds_config.h"
 
 namespace rlpos {
 

@@ -291,8 +291,8 @@ std::string SubmitToCoordinator(const CampaignSubmission& submission, const RunO
 
 // Shows the campaign's progress until it is settled (true) or the user interrupts (false),
 // restarting the daemons that end.
-bool FollowUntilSettled(ResultsReader& store, const std::string& campaign_id, const Daemons& daemons,
-                        ProgressPrinter& printer) {
+bool FollowUntilSettled(ResultsReader& store, const std::string& campaign_id,
+                        const Daemons& daemons, ProgressPrinter& printer) {
   for (;;) {
     if (StopRequested())
       return false;

@@ -3,17 +3,17 @@
 #include <iostream>
 #include <thread>
 
-#include "coordinator/cli/campaign_commands.h"
-#include "coordinator/cli/progress_text.h"
 #include "common/process/executable_path.h"
 #include "common/process/stop_signal.h"
+#include "common/store/results_reader.h"
+#include "common/store/store_db.h"
+#include "common/store/store_error.h"
+#include "coordinator/cli/campaign_commands.h"
+#include "coordinator/cli/progress_text.h"
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/uav_summary.h"
-#include "common/store/results_reader.h"
-#include "common/store/store_db.h"
-#include "common/store/store_error.h"
 
 namespace rlpos {
 namespace {

@@ -4,15 +4,15 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "coordinator/daemon/scenario_documents.h"
-#include "idl/dds/message_checks.h"
-#include "idl/dds/topics.h"
-#include "idl/dds/wait_set.h"
 #include "common/logging/log.h"
 #include "common/process/stop_signal.h"
 #include "common/store/store_error.h"
 #include "common/wire/json_text.h"
 #include "common/wire/limits.h"
+#include "coordinator/daemon/scenario_documents.h"
+#include "idl/dds/message_checks.h"
+#include "idl/dds/topics.h"
+#include "idl/dds/wait_set.h"
 
 namespace rlpos {
 

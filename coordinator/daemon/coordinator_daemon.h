@@ -21,13 +21,13 @@
 #include <set>
 #include <string>
 
-#include "idl/dds/messages.h"
-#include "idl/dds/participant.h"
+#include "common/campaign/campaign_request.h"
 #include "common/logging/drop_log.h"
 #include "common/process/file_lock.h"
 #include "coordinator/scheduling/coordinator_store.h"
 #include "coordinator/scheduling/scheduler.h"
-#include "common/campaign/campaign_request.h"
+#include "idl/dds/messages.h"
+#include "idl/dds/participant.h"
 
 namespace rlpos {
 
@@ -73,8 +73,7 @@ class CoordinatorDaemon {
   TickResult Schedule();
   void PublishTick(const TickResult& tick);
   // Empties the slots of a (re)joining worker that run jobs the store no longer gives it.
-  void WithdrawStale(const std::string& worker_id, int slots,
-                     const std::vector<std::string>& jobs);
+  void WithdrawStale(const std::string& worker_id, int slots, const std::vector<std::string>& jobs);
   void Publish(const ReadyJob& job, const std::string& worker_id, int slot);
   void Republish(const std::string& worker_id);
   // Empties the slot of a job this coordinator published (nothing for one it did not).

@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include "coordinator/reporting/run_groups.h"
 #include "common/stats/descriptive.h"
+#include "coordinator/reporting/run_groups.h"
 
 namespace rlpos {
 namespace {

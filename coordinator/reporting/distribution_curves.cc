@@ -1,8 +1,8 @@
 #include "coordinator/reporting/distribution_curves.h"
 
+#include "common/stats/empirical_distribution.h"
 #include "coordinator/reporting/csv_cells.h"
 #include "coordinator/reporting/run_groups.h"
-#include "common/stats/empirical_distribution.h"
 
 namespace rlpos {
 namespace {

@@ -5,8 +5,8 @@
 #include <map>
 #include <sstream>
 
-#include "coordinator/reporting/csv_cells.h"
 #include "common/store/artifact_files.h"
+#include "coordinator/reporting/csv_cells.h"
 
 namespace rlpos {
 namespace {

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "common/store/results_reader.h"
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/uav_summary.h"
-#include "common/store/results_reader.h"
 
 namespace rlpos {
 

@@ -15,11 +15,11 @@ namespace {
 
 const std::vector<TableColumn>& TableColumns() {
   static const std::vector<TableColumn> columns{
-      {"scenario", true},        {"positioner", true},   {"runs", false},
-      {"median Mbit/s", false},  {"mean Mbit/s", false}, {"ci95 Mbit/s", false},
-      {"delay ms", false},       {"ci95 ms", false},     {"no delay", false},
-      {"nLoS/N", false},         {"demands met", false}, {"worst UE Mbit/s", false},
-      {"Jain", false},           {"thr vs base %", false}, {"delay vs base %", false}};
+      {"scenario", true},       {"positioner", true},     {"runs", false},
+      {"median Mbit/s", false}, {"mean Mbit/s", false},   {"ci95 Mbit/s", false},
+      {"delay ms", false},      {"ci95 ms", false},       {"no delay", false},
+      {"nLoS/N", false},        {"demands met", false},   {"worst UE Mbit/s", false},
+      {"Jain", false},          {"thr vs base %", false}, {"delay vs base %", false}};
   return columns;
 }
 

@@ -32,8 +32,7 @@ const std::vector<std::string>& CanonicalLabels() {
 
 // (rank of the plain label, rank of its algorithm: 0 for none, seed: 0 for the first, the
 // label) for sorting "<plain>[@<algorithm>][@seed<N>]".
-std::tuple<std::size_t, std::size_t, std::uint64_t, std::string> SortKey(
-    const std::string& label) {
+std::tuple<std::size_t, std::size_t, std::uint64_t, std::string> SortKey(const std::string& label) {
   const auto at = label.find('@');
   const std::string plain = label.substr(0, at);
   const auto& canonical = CanonicalLabels();

@@ -6,10 +6,10 @@
 #include <set>
 #include <tuple>
 
+#include "common/stats/descriptive.h"
 #include "coordinator/reporting/csv_cells.h"
 #include "coordinator/reporting/run_groups.h"
 #include "coordinator/reporting/text_table.h"
-#include "common/stats/descriptive.h"
 
 namespace rlpos {
 namespace {

@@ -6,12 +6,12 @@
 // store.ledger.Submit(plan), store.recorder.RecordSuccess(...), store.reader.Progress(id).
 #include <string>
 
-#include "coordinator/scheduling/placement_binding.h"
 #include "common/store/job_ledger.h"
 #include "common/store/result_cache.h"
 #include "common/store/result_recorder.h"
 #include "common/store/results_reader.h"
 #include "common/store/store_db.h"
+#include "coordinator/scheduling/placement_binding.h"
 
 namespace rlpos {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "common/store/job_ledger.h"
 #include "coordinator/scheduling/assignment.h"
 #include "coordinator/scheduling/timeouts.h"
-#include "common/store/job_ledger.h"
 
 namespace rlpos {
 

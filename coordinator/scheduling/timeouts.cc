@@ -11,7 +11,8 @@ std::string TimeoutMessage(double timeout_s) {
 std::vector<TimedOut> FindTimedOut(const std::vector<RunningJob>& running, double now) {
   std::vector<TimedOut> out;
   for (const auto& job : running) {
-    if (now - job.started_at > job.timeout_s) out.push_back({job, TimeoutMessage(job.timeout_s)});
+    if (now - job.started_at > job.timeout_s)
+      out.push_back({job, TimeoutMessage(job.timeout_s)});
   }
   return out;
 }

@@ -6,10 +6,10 @@
 // declares the IDL's numbers. Only message_codec.cc includes this (it needs the generated C).
 #include <array>
 
+#include "common/wire/limits.h"
 #include "idl/dds/field_codec.h"
 #include "idl/dds/messages.h"
 #include "rlpos_messages.h"
-#include "common/wire/limits.h"
 
 namespace rlpos::codec {
 

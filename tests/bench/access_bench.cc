@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "tests/bench/bench_scenario.h"
 #include "common/config/config_error.h"
-#include "worker/environment/uav_network.h"
+#include "tests/bench/bench_scenario.h"
 #include "worker/environment/scenario_loading.h"
+#include "worker/environment/uav_network.h"
 
 namespace {
 

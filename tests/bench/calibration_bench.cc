@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "common/scenario/scenario_checks.h"
 #include "tests/bench/bench_scenario.h"
 #include "worker/environment/uav_network.h"
 #include "worker/uav_env/analytic_evaluator.h"
-#include "common/scenario/scenario_checks.h"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "worker/agent/dqn_agent.h"
-#include "worker/uav_env/uav_positioning_env.h"
 #include "worker/environment/scenario_loading.h"
+#include "worker/uav_env/uav_positioning_env.h"
 
 namespace {
 
@@ -34,7 +34,13 @@ Figures Run(rlpos::Scenario s, const std::string& fidelity, int steps) {
     const auto r = env.Step(action);
     auto next = space.Normalise(r.observation);
     auto next_mask = env.ValidActions();
-    agent.Observe({obs, action, static_cast<float>(r.reward), next, r.terminated, next_mask, {},
+    agent.Observe({obs,
+                   action,
+                   static_cast<float>(r.reward),
+                   next,
+                   r.terminated,
+                   next_mask,
+                   {},
                    r.terminated || r.truncated});
     obs = std::move(next);
     mask = std::move(next_mask);

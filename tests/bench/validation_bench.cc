@@ -9,12 +9,12 @@
 #include <sstream>
 #include <string>
 
-#include "idl/dds/message_checks.h"
-#include "common/store/job_result.h"
 #include "common/campaign/campaign_request.h"
+#include "common/store/job_result.h"
 #include "common/wire/job_order.h"
 #include "common/wire/json_text.h"
 #include "common/wire/limits.h"
+#include "idl/dds/message_checks.h"
 
 namespace {
 

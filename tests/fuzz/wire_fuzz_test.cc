@@ -18,19 +18,19 @@
 #include <sstream>
 #include <vector>
 
+#include "common/campaign/campaign_request.h"
 #include "common/config/config_error.h"
-#include "idl/dds/message_checks.h"
-#include "idl/dds/topics.h"
-#include "tests/fuzz/fuzz_input.h"
 #include "common/hash/sha256.h"
-#include "rlpos_messages.h"
 #include "common/store/job_result.h"
 #include "common/wire/artifacts.h"
-#include "common/campaign/campaign_request.h"
 #include "common/wire/identifiers.h"
 #include "common/wire/job_order.h"
 #include "common/wire/json_text.h"
 #include "common/wire/limits.h"
+#include "idl/dds/message_checks.h"
+#include "idl/dds/topics.h"
+#include "rlpos_messages.h"
+#include "tests/fuzz/fuzz_input.h"
 
 namespace rlpos {
 namespace {

@@ -42,10 +42,11 @@ struct DqnAgent::Impl {
   }
 
   torch::Tensor Batch(const std::vector<std::size_t>& indices, bool next) const {
-    return StackRows(indices.size(), observation_dim, [&](std::size_t r) -> const auto& {
-      const Transition& tr = replay.At(indices[r]);
-      return next ? tr.next_observation : tr.observation;
-    });
+    return StackRows(
+        indices.size(), observation_dim, [&](std::size_t r) -> const auto& {
+          const Transition& tr = replay.At(indices[r]);
+          return next ? tr.next_observation : tr.observation;
+        });
   }
 
   double Learn() {

@@ -4,8 +4,8 @@
 // seed, spaces and transitions give the same network.
 #include <memory>
 
-#include "worker/agent/agent.h"
 #include "common/scenario/scenario.h"
+#include "worker/agent/agent.h"
 
 namespace rlpos {
 

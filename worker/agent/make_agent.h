@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <memory>
 
+#include "common/scenario/scenario.h"
 #include "worker/agent/agent.h"
 #include "worker/gym/env.h"
-#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

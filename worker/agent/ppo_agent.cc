@@ -56,9 +56,10 @@ struct PpoAgent::Impl {
   }
 
   torch::Tensor Observations(bool next) const {
-    return StackRows(rollout.size(), observation_dim, [&](std::size_t r) -> const auto& {
-      return next ? rollout[r].next_observation : rollout[r].observation;
-    });
+    return StackRows(
+        rollout.size(), observation_dim, [&](std::size_t r) -> const auto& {
+          return next ? rollout[r].next_observation : rollout[r].observation;
+        });
   }
 
   // Advantages by GAE(lambda). A truncated episode bootstraps from the value of its last next
@@ -76,8 +77,8 @@ struct PpoAgent::Impl {
     float carried = 0.0f;
     for (long t = n - 1; t >= 0; --t) {
       const Transition& tr = rollout[static_cast<std::size_t>(t)];
-      const float reward = spec.normalise_rewards ? reward_moments.Standardise(tr.reward)
-                                                  : tr.reward;
+      const float reward =
+          spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
       const float bootstrap = tr.terminal ? 0.0f : static_cast<float>(ppo.gamma) * nv[t];
       const float delta = reward + bootstrap - v[t];
       if (tr.episode_end || t == n - 1)
@@ -93,8 +94,8 @@ struct PpoAgent::Impl {
   void AnnealLearningRate() {
     if (planned_updates == 0)
       return;
-    const double left = std::max(0.0, 1.0 - static_cast<double>(done_updates) /
-                                                static_cast<double>(planned_updates));
+    const double left = std::max(
+        0.0, 1.0 - static_cast<double>(done_updates) / static_cast<double>(planned_updates));
     for (auto& group : optimizer->param_groups())
       static_cast<torch::optim::AdamOptions&>(group.options()).lr(ppo.learning_rate * left);
   }
@@ -136,13 +137,13 @@ struct PpoAgent::Impl {
         const torch::Tensor policy_loss =
             torch::max(-adv * ratio, -adv * ratio.clamp(1.0 - ppo.clip, 1.0 + ppo.clip)).mean();
         const torch::Tensor value = critic->forward(obs.index_select(0, index)).squeeze(1);
-        const torch::Tensor value_loss = 0.5 * (value - returns.index_select(0, index)).pow(2).mean();
-        const torch::Tensor loss = policy_loss - ppo.entropy_coefficient * entropy +
-                                   ppo.value_coefficient * value_loss;
+        const torch::Tensor value_loss =
+            0.5 * (value - returns.index_select(0, index)).pow(2).mean();
+        const torch::Tensor loss =
+            policy_loss - ppo.entropy_coefficient * entropy + ppo.value_coefficient * value_loss;
         optimizer->zero_grad();
         loss.backward();
-        torch::nn::utils::clip_grad_norm_(optimizer->param_groups()[0].params(),
-                                          ppo.max_grad_norm);
+        torch::nn::utils::clip_grad_norm_(optimizer->param_groups()[0].params(), ppo.max_grad_norm);
         optimizer->step();
         loss_sum += loss.item<double>();
         ++updates;
@@ -204,8 +205,8 @@ int PpoAgent::Act(const std::vector<float>& observation, const ActionMask& mask,
   } else {
     action = -1;
     for (int a = 0; a < m.action_count; ++a) {
-      if (Allowed(mask, a) && (action < 0 || p[static_cast<std::size_t>(a)] >
-                                                  p[static_cast<std::size_t>(action)]))
+      if (Allowed(mask, a) &&
+          (action < 0 || p[static_cast<std::size_t>(a)] > p[static_cast<std::size_t>(action)]))
         action = a;
     }
   }

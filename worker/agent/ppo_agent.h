@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "worker/agent/agent.h"
 #include "common/scenario/scenario.h"
+#include "worker/agent/agent.h"
 
 namespace rlpos {
 

@@ -5,7 +5,8 @@
 namespace rlpos {
 
 ReplayBuffer::ReplayBuffer(std::size_t capacity) : capacity_(capacity) {
-  if (capacity == 0) throw std::invalid_argument("replay buffer capacity must be positive");
+  if (capacity == 0)
+    throw std::invalid_argument("replay buffer capacity must be positive");
 }
 
 void ReplayBuffer::Add(Transition t) {
@@ -19,10 +20,12 @@ void ReplayBuffer::Add(Transition t) {
 
 std::vector<std::size_t> ReplayBuffer::SampleIndices(std::size_t batch,
                                                      std::mt19937_64& rng) const {
-  if (items_.empty()) throw std::logic_error("sampling an empty replay buffer");
+  if (items_.empty())
+    throw std::logic_error("sampling an empty replay buffer");
   std::uniform_int_distribution<std::size_t> pick(0, items_.size() - 1);
   std::vector<std::size_t> indices(batch);
-  for (auto& i : indices) i = pick(rng);
+  for (auto& i : indices)
+    i = pick(rng);
   return indices;
 }
 

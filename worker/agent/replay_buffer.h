@@ -16,7 +16,7 @@ struct Transition {
   bool terminal = false;  // no bootstrap from next_observation (truncation is not terminal)
   ActionMask next_mask;   // actions allowed after the step (the bootstrap maximises over them)
   std::vector<float> continuous_action;  // continuous agents: the action, in [-1, 1]
-  bool episode_end = false;  // terminal or truncated: returns are not carried across it
+  bool episode_end = false;              // terminal or truncated: returns are not carried across it
 };
 
 class ReplayBuffer {

@@ -84,8 +84,7 @@ struct SacAgent::Impl {
     const torch::Tensor x = mean + std * noise;
     const torch::Tensor y = torch::tanh(x);
     // Gaussian log density, minus the log of tanh's Jacobian.
-    const torch::Tensor gaussian =
-        -0.5 * noise.pow(2) - log_std - 0.5 * std::log(2.0 * M_PI);
+    const torch::Tensor gaussian = -0.5 * noise.pow(2) - log_std - 0.5 * std::log(2.0 * M_PI);
     const torch::Tensor log_prob = (gaussian - torch::log(1.0 - y.pow(2) + 1e-6)).sum(1);
     return {y, log_prob};
   }
@@ -98,8 +97,9 @@ struct SacAgent::Impl {
   // The `field` of the replayed transitions at `indices`, one row each.
   torch::Tensor Stack(const std::vector<std::size_t>& indices, int dim,
                       const std::vector<float> Transition::*field) const {
-    return StackRows(indices.size(), dim,
-                     [&](std::size_t r) -> const auto& { return replay.At(indices[r]).*field; });
+    return StackRows(
+        indices.size(),
+        dim, [&](std::size_t r) -> const auto& { return replay.At(indices[r]).*field; });
   }
 
   double Learn() {
@@ -120,13 +120,13 @@ struct SacAgent::Impl {
     {
       torch::NoGradGuard no_grad;
       const PolicySample next_pi = Sample(next);
-      const torch::Tensor next_q = torch::min(Q(q1_target, next, next_pi.action),
-                                              Q(q2_target, next, next_pi.action));
+      const torch::Tensor next_q =
+          torch::min(Q(q1_target, next, next_pi.action), Q(q2_target, next, next_pi.action));
       target = rewards + static_cast<float>(sac.gamma) * not_terminal *
                              (next_q - static_cast<float>(alpha) * next_pi.log_prob);
     }
-    const torch::Tensor q_loss = torch::mse_loss(Q(q1, obs, actions), target) +
-                                 torch::mse_loss(Q(q2, obs, actions), target);
+    const torch::Tensor q_loss =
+        torch::mse_loss(Q(q1, obs, actions), target) + torch::mse_loss(Q(q2, obs, actions), target);
     q_optimizer->zero_grad();
     q_loss.backward();
     q_optimizer->step();

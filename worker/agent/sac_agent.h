@@ -5,8 +5,8 @@
 // transitions give the same networks.
 #include <memory>
 
-#include "worker/agent/agent.h"
 #include "common/scenario/scenario.h"
+#include "worker/agent/agent.h"
 
 namespace rlpos {
 

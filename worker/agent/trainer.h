@@ -8,9 +8,9 @@
 #include <functional>
 #include <vector>
 
+#include "common/scenario/scenario.h"
 #include "worker/agent/agent.h"
 #include "worker/gym/env.h"
-#include "common/scenario/scenario.h"
 
 namespace rlpos {
 
@@ -30,8 +30,8 @@ struct EpisodeRecord {
 struct TrainResult {
   // One record per episode: training (each followed by its checkpoint, if any), then evaluation.
   std::vector<EpisodeRecord> curve;
-  int policy_episode = 0;            // the training episode after which the kept policy stood
-  StepInfo final_info;               // state at the end of the last evaluation episode
+  int policy_episode = 0;  // the training episode after which the kept policy stood
+  StepInfo final_info;     // state at the end of the last evaluation episode
   double final_reward = 0.0;
 };
 
@@ -50,8 +50,9 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
 // greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's
 // seed after every n-th training episode and after the last; the policy of the highest final
-// reward (the latest of equals) is restored for the evaluation. `on_episode` is called after each episode (progress, learning curve),
-// `on_eval_step` after each step of the evaluation episodes (the flown trajectory).
+// reward (the latest of equals) is restored for the evaluation. `on_episode` is called after each
+// episode (progress, learning curve), `on_eval_step` after each step of the evaluation episodes
+// (the flown trajectory).
 TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
                   const EpisodeCallback& on_episode = nullptr,
                   const StepCallback& on_eval_step = nullptr);

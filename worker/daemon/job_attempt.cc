@@ -7,10 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/scenario/number_text.h"
-#include "worker/daemon/sim_command.h"
 #include "common/hash/sha256.h"
+#include "common/scenario/number_text.h"
 #include "common/wire/limits.h"
+#include "worker/daemon/sim_command.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;

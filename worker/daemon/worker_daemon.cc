@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <chrono>
 
-#include "idl/dds/topics.h"
-#include "idl/dds/wait_set.h"
 #include "common/logging/log.h"
 #include "common/process/host_name.h"
 #include "common/process/stop_signal.h"
 #include "common/wire/identifiers.h"
 #include "common/wire/limits.h"
+#include "idl/dds/topics.h"
+#include "idl/dds/wait_set.h"
 
 namespace rlpos {
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "worker/daemon/job_attempt.h"
+#include "common/logging/drop_log.h"
 #include "idl/dds/messages.h"
 #include "idl/dds/participant.h"
-#include "common/logging/drop_log.h"
+#include "worker/daemon/job_attempt.h"
 
 namespace rlpos {
 

@@ -3,6 +3,7 @@
 #include <ns3/object-factory.h>
 #include <ns3/pointer.h>
 #include <ns3/string.h>
+
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -17,8 +18,10 @@ namespace {
 std::vector<std::string> AttributeNames(ns3::TypeId tid) {
   std::vector<std::string> names;
   for (ns3::TypeId t = tid;; t = t.GetParent()) {
-    for (std::size_t i = 0; i < t.GetAttributeN(); ++i) names.push_back(t.GetAttribute(i).name);
-    if (t == t.GetParent()) break;
+    for (std::size_t i = 0; i < t.GetAttributeN(); ++i)
+      names.push_back(t.GetAttribute(i).name);
+    if (t == t.GetParent())
+      break;
   }
   return names;
 }
@@ -29,11 +32,13 @@ ns3::TypeId LookUpType(const std::string& name, const std::string& path, ns3::Ty
     std::vector<std::string> candidates;
     for (uint16_t i = 0; i < ns3::TypeId::GetRegisteredN(); ++i) {
       ns3::TypeId t = ns3::TypeId::GetRegistered(i);
-      if (t.IsChildOf(base)) candidates.push_back(t.GetName());
+      if (t.IsChildOf(base))
+        candidates.push_back(t.GetName());
     }
     std::string message = "unknown ns-3 TypeId \"" + name + "\"";
     const std::string hint = ClosestMatch(name, candidates);
-    if (!hint.empty()) message += "; did you mean \"" + hint + "\"?";
+    if (!hint.empty())
+      message += "; did you mean \"" + hint + "\"?";
     throw ConfigError(path, message);
   }
   if (tid != base && !tid.IsChildOf(base)) {
@@ -48,9 +53,12 @@ ns3::TypeId LookUpType(const std::string& name, const std::string& path, ns3::Ty
 }  // namespace
 
 std::string AttributeString(const nlohmann::json& value) {
-  if (value.is_string()) return value.get<std::string>();
-  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
-  if (value.is_number_integer()) return std::to_string(value.get<long long>());
+  if (value.is_string())
+    return value.get<std::string>();
+  if (value.is_boolean())
+    return value.get<bool>() ? "true" : "false";
+  if (value.is_number_integer())
+    return std::to_string(value.get<long long>());
   std::ostringstream out;
   out.precision(17);
   out << value.get<double>();
@@ -70,14 +78,16 @@ ns3::Ptr<ns3::Object> CreateFromSpec(const ObjectSpec& spec, const std::string& 
     if (!tid.LookupAttributeByName(it.key(), &info)) {
       std::string message = spec.type + " has no attribute \"" + it.key() + "\"";
       const std::string hint = ClosestMatch(it.key(), AttributeNames(tid));
-      if (!hint.empty()) message += "; did you mean \"" + hint + "\"?";
+      if (!hint.empty())
+        message += "; did you mean \"" + hint + "\"?";
       throw ConfigError(attribute_path, message);
     }
     if (!(info.flags & ns3::TypeId::ATTR_CONSTRUCT)) {
       throw ConfigError(attribute_path, "attribute \"" + it.key() + "\" cannot be set");
     }
     if (it->is_object()) {
-      const auto* pointer = dynamic_cast<const ns3::PointerChecker*>(ns3::PeekPointer(info.checker));
+      const auto* pointer =
+          dynamic_cast<const ns3::PointerChecker*>(ns3::PeekPointer(info.checker));
       if (!pointer) {
         throw ConfigError(attribute_path, "attribute \"" + it.key() +
                                               "\" is not an object pointer; give a scalar value");
@@ -101,14 +111,15 @@ ns3::Ptr<ns3::Object> CreateFromSpec(const ObjectSpec& spec, const std::string& 
     tracked = tracked || it.key() == tracked_attribute;
   }
   ns3::Ptr<ns3::Object> object = factory.Create();
-  if (tracked && explicitly_set) explicitly_set->insert(ns3::PeekPointer(object));
+  if (tracked && explicitly_set)
+    explicitly_set->insert(ns3::PeekPointer(object));
   return object;
 }
 
 int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
-                       const ns3::AttributeValue& value,
-                       const std::set<const ns3::Object*>& skip) {
-  if (!root) return 0;
+                       const ns3::AttributeValue& value, const std::set<const ns3::Object*>& skip) {
+  if (!root)
+    return 0;
   int count = 0;
   const ns3::TypeId tid = root->GetInstanceTypeId();
   ns3::TypeId::AttributeInformation info;
@@ -118,8 +129,10 @@ int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
   }
   for (const auto& name : AttributeNames(tid)) {
     tid.LookupAttributeByName(name, &info);
-    if (!dynamic_cast<const ns3::PointerChecker*>(ns3::PeekPointer(info.checker))) continue;
-    if (!(info.flags & ns3::TypeId::ATTR_GET)) continue;
+    if (!dynamic_cast<const ns3::PointerChecker*>(ns3::PeekPointer(info.checker)))
+      continue;
+    if (!(info.flags & ns3::TypeId::ATTR_GET))
+      continue;
     ns3::PointerValue child;
     root->GetAttribute(name, child);
     count += SetAttributeInTree(child.Get<ns3::Object>(), attribute, value, skip);

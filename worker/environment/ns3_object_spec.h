@@ -4,6 +4,7 @@
 // of an ns-3 fatal error.
 #include <ns3/object.h>
 #include <ns3/type-id.h>
+
 #include <set>
 #include <string>
 
@@ -15,15 +16,13 @@ namespace rlpos {
 // the object must derive from (e.g. PropagationLossModel). `explicitly_set` receives the objects
 // whose spec set `tracked_attribute` (used to tell defaults from user choices).
 ns3::Ptr<ns3::Object> CreateFromSpec(const ObjectSpec& spec, const std::string& path,
-                                     ns3::TypeId base,
-                                     const std::string& tracked_attribute = "",
+                                     ns3::TypeId base, const std::string& tracked_attribute = "",
                                      std::set<const ns3::Object*>* explicitly_set = nullptr);
 
 // Sets `attribute` on `root` and every object reachable from it through pointer attributes,
 // except the objects in `skip`. Returns how many objects were set.
 int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
-                       const ns3::AttributeValue& value,
-                       const std::set<const ns3::Object*>& skip);
+                       const ns3::AttributeValue& value, const std::set<const ns3::Object*>& skip);
 
 // JSON scalar -> the string form ns-3 attribute checkers parse.
 std::string AttributeString(const nlohmann::json& value);

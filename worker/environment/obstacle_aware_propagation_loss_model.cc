@@ -22,21 +22,22 @@ TypeId ObstacleAwarePropagationLossModel::GetTypeId() {
           .SetParent<PropagationLossModel>()
           .SetGroupName("Rlpos")
           .AddConstructor<ObstacleAwarePropagationLossModel>()
-          .AddAttribute("LosModel", "Loss model applied to line-of-sight links (default ItuR1411Los).",
-                        PointerValue(),
-                        MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_losModel),
-                        MakePointerChecker<PropagationLossModel>())
           .AddAttribute(
-              "NlosModel", "Loss model applied to links a building obstructs (default ItuR1411NlosOverRooftop).",
-              PointerValue(),
-              MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_nlosModel),
+              "LosModel", "Loss model applied to line-of-sight links (default ItuR1411Los).",
+              PointerValue(), MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_losModel),
               MakePointerChecker<PropagationLossModel>())
-          .AddAttribute("NlosNeverBelowLos",
-                        "Clamp the NLoS loss to at least the LoS loss of the same link.",
-                        BooleanValue(true),
-                        MakeBooleanAccessor(&ObstacleAwarePropagationLossModel::m_nlosNeverBelowLos),
-                        MakeBooleanChecker())
-          .AddAttribute("ChannelConditionModel", "Decides LoS or NLoS per link (default BuildingsChannelConditionModel).",
+          .AddAttribute(
+              "NlosModel",
+              "Loss model applied to links a building obstructs (default ItuR1411NlosOverRooftop).",
+              PointerValue(), MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_nlosModel),
+              MakePointerChecker<PropagationLossModel>())
+          .AddAttribute(
+              "NlosNeverBelowLos", "Clamp the NLoS loss to at least the LoS loss of the same link.",
+              BooleanValue(true),
+              MakeBooleanAccessor(&ObstacleAwarePropagationLossModel::m_nlosNeverBelowLos),
+              MakeBooleanChecker())
+          .AddAttribute("ChannelConditionModel",
+                        "Decides LoS or NLoS per link (default BuildingsChannelConditionModel).",
                         PointerValue(),
                         MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_conditionModel),
                         MakePointerChecker<ChannelConditionModel>());
@@ -48,9 +49,12 @@ ObstacleAwarePropagationLossModel::ObstacleAwarePropagationLossModel() = default
 void ObstacleAwarePropagationLossModel::NotifyConstructionCompleted() {
   // Defaults are made here, per instance: an attribute's initial value object would be shared
   // by every instance (and so would a Frequency set on it).
-  if (!m_losModel) m_losModel = CreateObject<ItuR1411LosPropagationLossModel>();
-  if (!m_nlosModel) m_nlosModel = CreateObject<ItuR1411NlosOverRooftopPropagationLossModel>();
-  if (!m_conditionModel) m_conditionModel = CreateObject<BuildingsChannelConditionModel>();
+  if (!m_losModel)
+    m_losModel = CreateObject<ItuR1411LosPropagationLossModel>();
+  if (!m_nlosModel)
+    m_nlosModel = CreateObject<ItuR1411NlosOverRooftopPropagationLossModel>();
+  if (!m_conditionModel)
+    m_conditionModel = CreateObject<BuildingsChannelConditionModel>();
   PropagationLossModel::NotifyConstructionCompleted();
 }
 
@@ -72,10 +76,12 @@ double ObstacleAwarePropagationLossModel::DoCalcRxPower(double txPowerDbm, Ptr<M
   // ItuR1411NlosOverRooftop is not: below the rooftops it takes the first node's height where
   // ITU-R P.1411 has the rooftop height (kd = 18 - 15 dhb / hr), and a UE 1.5 m up transmitting
   // to a UAV under the roofs lost ~20 dB less than the UAV transmitting back.
-  if (b->GetPosition().z > a->GetPosition().z) std::swap(a, b);
+  if (b->GetPosition().z > a->GetPosition().z)
+    std::swap(a, b);
   // CalcRxPower (not DoCalcRxPower) so that a chained Next model of the sub-model applies too.
   const double los_rx = m_losModel->CalcRxPower(txPowerDbm, a, b);
-  if (los) return los_rx;
+  if (los)
+    return los_rx;
   const double nlos_rx = m_nlosModel->CalcRxPower(txPowerDbm, a, b);
   // ITU-R P.1411 over-rooftop NLoS is meant for a transmitter above the rooftops; below them,
   // at short range, its loss can fall under the LoS model's. A building in the way never helps.

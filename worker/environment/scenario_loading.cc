@@ -2,13 +2,14 @@
 
 #include <ns3/propagation-loss-model.h>
 #include <ns3/wifi-remote-station-manager.h>
+
 #include <sstream>
 
 #include "common/config/config_error.h"
-#include "worker/environment/ns3_object_spec.h"
-#include "worker/environment/wifi_channel_plan.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
+#include "worker/environment/ns3_object_spec.h"
+#include "worker/environment/wifi_channel_plan.h"
 
 namespace rlpos {
 
@@ -47,8 +48,8 @@ void CheckUavPosition(const Scenario& s, const Vec3& p, const std::string& what)
   }
   const int inside = BuildingContaining(s, p);
   if (inside >= 0) {
-    throw ConfigError(what, where.str() + " is inside building " + std::to_string(inside) +
-                                " (\"" + s.buildings[inside].name + "\")");
+    throw ConfigError(what, where.str() + " is inside building " + std::to_string(inside) + " (\"" +
+                                s.buildings[inside].name + "\")");
   }
 }
 

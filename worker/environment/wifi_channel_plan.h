@@ -3,6 +3,7 @@
 // ns-3's own channel table so a bad combination is a ConfigError, not an ns-3 abort.
 #include <ns3/wifi-phy-band.h>
 #include <ns3/wifi-standards.h>
+
 #include <string>
 #include <vector>
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "worker/gym/spaces.h"
 #include "common/scenario/scenario.h"
+#include "worker/gym/spaces.h"
 
 namespace rlpos {
 

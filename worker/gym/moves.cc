@@ -10,12 +10,18 @@ Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placem
   const std::string& move = s.env.actions.at(static_cast<std::size_t>(action));
   const double d = s.env.step;
   Vec3 delta{0, 0, 0};
-  if (move == "up") delta.z = d;
-  if (move == "down") delta.z = -d;
-  if (move == "forward") delta.y = d;
-  if (move == "backward") delta.y = -d;
-  if (move == "right") delta.x = d;
-  if (move == "left") delta.x = -d;
+  if (move == "up")
+    delta.z = d;
+  if (move == "down")
+    delta.z = -d;
+  if (move == "forward")
+    delta.y = d;
+  if (move == "backward")
+    delta.y = -d;
+  if (move == "right")
+    delta.x = d;
+  if (move == "left")
+    delta.x = -d;
   return ApplyDisplacement(s, uav, delta, from);
 }
 
@@ -43,20 +49,28 @@ BoxSpace ObservationBounds(const Scenario& s) {
   BoxSpace box;
   const double n = static_cast<double>(s.ues.size());
   auto per_uav = [&](double Box::*lo, double Box::*hi) {
-    for (const auto& uav : s.uavs) box.low.push_back(uav.zone.*lo), box.high.push_back(uav.zone.*hi);
+    for (const auto& uav : s.uavs)
+      box.low.push_back(uav.zone.*lo), box.high.push_back(uav.zone.*hi);
   };
   for (const auto& field : s.env.observations) {
-    if (field == "x") per_uav(&Box::xmin, &Box::xmax);
-    if (field == "y") per_uav(&Box::ymin, &Box::ymax);
-    if (field == "z") per_uav(&Box::zmin, &Box::zmax);
-    if (field == "n_los" || field == "demands_met") box.low.push_back(0), box.high.push_back(n);
-    if (field == "throughput") box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
+    if (field == "x")
+      per_uav(&Box::xmin, &Box::xmax);
+    if (field == "y")
+      per_uav(&Box::ymin, &Box::ymax);
+    if (field == "z")
+      per_uav(&Box::zmin, &Box::zmax);
+    if (field == "n_los" || field == "demands_met")
+      box.low.push_back(0), box.high.push_back(n);
+    if (field == "throughput")
+      box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
     if (field == "snr") {
-      for (std::size_t i = 0; i < s.ues.size(); ++i) box.low.push_back(-20), box.high.push_back(60);
+      for (std::size_t i = 0; i < s.ues.size(); ++i)
+        box.low.push_back(-20), box.high.push_back(60);
     }
   }
   if (s.uavs.size() > 1) {
-    for (std::size_t u = 0; u < s.uavs.size(); ++u) box.low.push_back(0), box.high.push_back(1);
+    for (std::size_t u = 0; u < s.uavs.size(); ++u)
+      box.low.push_back(0), box.high.push_back(1);
   }
   return box;
 }
@@ -64,15 +78,25 @@ BoxSpace ObservationBounds(const Scenario& s) {
 std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
   std::vector<double> obs;
   for (const auto& field : s.env.observations) {
-    if (field == "x") for (const auto& p : info.positions) obs.push_back(p.x);
-    if (field == "y") for (const auto& p : info.positions) obs.push_back(p.y);
-    if (field == "z") for (const auto& p : info.positions) obs.push_back(p.z);
-    if (field == "n_los") obs.push_back(info.n_los);
-    if (field == "demands_met") obs.push_back(info.demands_met);
-    if (field == "throughput") obs.push_back(info.throughput_mbps);
+    if (field == "x")
+      for (const auto& p : info.positions)
+        obs.push_back(p.x);
+    if (field == "y")
+      for (const auto& p : info.positions)
+        obs.push_back(p.y);
+    if (field == "z")
+      for (const auto& p : info.positions)
+        obs.push_back(p.z);
+    if (field == "n_los")
+      obs.push_back(info.n_los);
+    if (field == "demands_met")
+      obs.push_back(info.demands_met);
+    if (field == "throughput")
+      obs.push_back(info.throughput_mbps);
     if (field == "snr") {
       // Clipped to the bounds so that the observation always lies in its space.
-      for (double snr : info.snr_db) obs.push_back(std::clamp(snr, -20.0, 60.0));
+      for (double snr : info.snr_db)
+        obs.push_back(std::clamp(snr, -20.0, 60.0));
     }
   }
   if (s.uavs.size() > 1) {

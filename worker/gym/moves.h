@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
 #include "worker/gym/spaces.h"
-#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

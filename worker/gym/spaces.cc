@@ -3,9 +3,11 @@
 namespace rlpos {
 
 bool BoxSpace::Contains(const std::vector<double>& x) const {
-  if (x.size() != low.size()) return false;
+  if (x.size() != low.size())
+    return false;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!(x[i] >= low[i] && x[i] <= high[i])) return false;  // NaN too
+    if (!(x[i] >= low[i] && x[i] <= high[i]))
+      return false;  // NaN too
   }
   return true;
 }

@@ -7,11 +7,11 @@
 #include <numeric>
 #include <random>
 
+#include "common/scenario/scenario_checks.h"
 #include "worker/environment/uav_network.h"
-#include "worker/uav_env/analytic_evaluator.h"
 #include "worker/gym/reward.h"
 #include "worker/positioners/kmeans.h"
-#include "common/scenario/scenario_checks.h"
+#include "worker/uav_env/analytic_evaluator.h"
 
 namespace rlpos {
 namespace {

@@ -11,10 +11,10 @@
 
 #include "common/config/config_error.h"
 #include "common/scenario/number_text.h"
-#include "worker/environment/uav_network.h"
-#include "worker/uav_env/uav_positioning_env.h"
-#include "worker/positioners/positioners.h"
 #include "worker/environment/scenario_loading.h"
+#include "worker/environment/uav_network.h"
+#include "worker/positioners/positioners.h"
+#include "worker/uav_env/uav_positioning_env.h"
 
 namespace py = pybind11;
 
@@ -188,8 +188,7 @@ class PyEnv {
 };
 
 py::list Oracle(const std::string& file, const std::vector<std::string>& overrides,
-                double grid_step, int packet_candidates, double packet_duration,
-                std::size_t top) {
+                double grid_step, int packet_candidates, double packet_duration, std::size_t top) {
   const Scenario s = Load(file, overrides);
   OracleOptions options;
   options.grid_step = grid_step;
@@ -266,8 +265,7 @@ PYBIND11_MODULE(_rlpos, m) {
       .def("reset", &PyEnv::Reset, py::arg("seed"))
       .def("step", &PyEnv::Step, py::arg("action"))
       .def("step_continuous", &PyEnv::StepContinuous, py::arg("displacement"))
-      .def("time_steps", &PyEnv::TimeSteps, py::arg("actions"), py::arg("steps"),
-           py::arg("seed"))
+      .def("time_steps", &PyEnv::TimeSteps, py::arg("actions"), py::arg("steps"), py::arg("seed"))
       .def("close", &PyEnv::Close);
   m.def("oracle", &Oracle, py::arg("scenario"), py::arg("overrides"), py::arg("grid_step"),
         py::arg("packet_candidates"), py::arg("packet_duration"), py::arg("top"));

@@ -1,10 +1,10 @@
+#include "common/config/config_error.h"
+#include "common/scenario/scenario_parser.h"
 #include "worker/agent/make_agent.h"
 #include "worker/agent/trainer.h"
-#include "common/config/config_error.h"
-#include "worker/uav_env/uav_positioning_env.h"
-#include "common/scenario/scenario_parser.h"
 #include "worker/rl_commands/rl_commands.h"
 #include "worker/sim/rl_plugin_api.h"
+#include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos::sim {
 

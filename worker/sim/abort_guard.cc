@@ -1,8 +1,9 @@
 #include "worker/sim/abort_guard.h"
 
+#include <unistd.h>
+
 #include <csignal>
 #include <cstring>
-#include <unistd.h>
 
 namespace rlpos {
 namespace {

@@ -43,8 +43,8 @@ struct EvalOptions {
 struct TrainOptions {
   std::string algorithm;  // empty: the scenario's agent.algorithm
   std::string fidelity;   // empty: the scenario's env.fidelity
-  long long seed = -1;   // -1: the scenario's agent.seed
-  int episodes = -1;     // -1: the scenario's agent.train_episodes
+  long long seed = -1;    // -1: the scenario's agent.seed
+  int episodes = -1;      // -1: the scenario's agent.train_episodes
   std::string out;
   bool json = false;
 };

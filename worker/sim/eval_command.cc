@@ -2,11 +2,11 @@
 #include <cstdio>
 #include <iostream>
 
-#include "worker/environment/uav_network.h"
 #include "common/logging/log.h"
+#include "worker/environment/scenario_loading.h"
+#include "worker/environment/uav_network.h"
 #include "worker/sim/commands.h"
 #include "worker/sim/metrics_report.h"
-#include "worker/environment/scenario_loading.h"
 
 namespace rlpos::sim {
 namespace {
@@ -25,8 +25,10 @@ void ShowProgress(double now, double end) {
 
 int RunEval(const CommonOptions& options, const EvalOptions& eval) {
   std::vector<std::string> extra;
-  if (eval.duration > 0) extra.push_back("simulation.duration=" + std::to_string(eval.duration));
-  if (eval.run >= 0) extra.push_back("simulation.run=" + std::to_string(eval.run));
+  if (eval.duration > 0)
+    extra.push_back("simulation.duration=" + std::to_string(eval.duration));
+  if (eval.run >= 0)
+    extra.push_back("simulation.run=" + std::to_string(eval.run));
   const Scenario scenario = LoadScenarioFor(options, extra);
   const Placement placement = ParsePlacement(scenario, eval.positions, "--position");
   Log(LogLevel::kInfo, "evaluating scenario " + scenario.name);

@@ -2,22 +2,20 @@
 #include <fstream>
 #include <iostream>
 
-#include "common/job/offsets.h"
 #include "common/config/config_error.h"
+#include "common/job/offsets.h"
 #include "common/scenario/number_text.h"
-#include "worker/uav_env/analytic_evaluator.h"
-#include "worker/gym/reward.h"
-#include "worker/positioners/positioners.h"
 #include "common/scenario/placement_json.h"
 #include "common/scenario/scenario_parser.h"
-#include "worker/sim/commands.h"
 #include "worker/environment/scenario_loading.h"
+#include "worker/gym/reward.h"
+#include "worker/positioners/positioners.h"
+#include "worker/sim/commands.h"
+#include "worker/uav_env/analytic_evaluator.h"
 
 namespace rlpos::sim {
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 int RunPosition(const CommonOptions& options, const PositionOptions& p) {
   const Scenario s = LoadScenarioFor(options, {});

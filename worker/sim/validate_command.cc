@@ -2,9 +2,9 @@
 #include <cstdio>
 #include <iostream>
 
-#include "worker/environment/uav_network.h"
 #include "common/phy/mcs_table.h"
 #include "common/scenario/scenario_parser.h"
+#include "worker/environment/uav_network.h"
 #include "worker/sim/commands.h"
 
 namespace rlpos::sim {
@@ -18,7 +18,7 @@ int RunValidate(const CommonOptions& options, bool json) {
   const auto& serving = network.Association();
   const auto channels = network.UavChannels();
   const PhyProfile phy{scenario.wifi.standard, scenario.wifi.width_mhz,
-                              scenario.wifi.guard_interval_ns, scenario.wifi.spatial_streams};
+                       scenario.wifi.guard_interval_ns, scenario.wifi.spatial_streams};
   int n_los = 0;
   nlohmann::json ues = nlohmann::json::array();
   for (std::size_t i = 0; i < links.size(); ++i) {
@@ -35,10 +35,11 @@ int RunValidate(const CommonOptions& options, bool json) {
   nlohmann::json uavs = nlohmann::json::array();
   for (std::size_t u = 0; u < scenario.uavs.size(); ++u) {
     const auto& q = scenario.uavs[u].initial;
-    uavs.push_back({{"name", scenario.uavs[u].name},
-                    {"position", {q.x, q.y, q.z}},
-                    {"channel", channels[u]},
-                    {"ues_served", std::count(serving.begin(), serving.end(), static_cast<int>(u))}});
+    uavs.push_back(
+        {{"name", scenario.uavs[u].name},
+         {"position", {q.x, q.y, q.z}},
+         {"channel", channels[u]},
+         {"ues_served", std::count(serving.begin(), serving.end(), static_cast<int>(u))}});
   }
   const auto& p = scenario.uavs.front().initial;
   if (json) {

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
-#include "worker/environment/association.h"
-#include "worker/environment/uav_network.h"
+#include "common/metrics/run_metrics.h"
 #include "common/phy/airtime_model.h"
 #include "common/phy/mcs_table.h"
-#include "common/metrics/run_metrics.h"
+#include "worker/environment/association.h"
+#include "worker/environment/uav_network.h"
 
 namespace rlpos {
 namespace {

@@ -7,8 +7,8 @@
 // Holds a UavNetwork that is built but never run: only one UavNetwork may exist at a time.
 #include <memory>
 
-#include "worker/gym/env.h"
 #include "common/scenario/scenario.h"
+#include "worker/gym/env.h"
 
 namespace rlpos {
 

@@ -7,8 +7,8 @@
 
 #include "common/scenario/number_text.h"
 #include "worker/environment/uav_network.h"
-#include "worker/uav_env/analytic_evaluator.h"
 #include "worker/gym/moves.h"
+#include "worker/uav_env/analytic_evaluator.h"
 
 namespace rlpos {
 

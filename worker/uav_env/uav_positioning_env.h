@@ -7,9 +7,9 @@
 // in the observation), env.turn_steps steps in a row, so one shared policy flies them all.
 #include <memory>
 
+#include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
 #include "worker/gym/reward.h"
-#include "common/scenario/scenario.h"
 
 namespace rlpos {
 

@@ -324,12 +324,21 @@ const BadCampaign kBadCampaigns[] = {
      "/retries: must be in [0, 100], got -1"},
     {"ZeroTimeout", [](json& d) { d["job_timeout_s"] = 0; },
      "/job_timeout_s: must be positive, got 0"},
-    {"UnknownAlgorithm", [](json& d) { d["train"] = {{"algorithms", {"dqn", "ppo2"}}}; },
+    {"UnknownAlgorithm",
+     [](json& d) {
+       d["train"] = {{"algorithms", {"dqn", "ppo2"}}};
+     },
      "/train/algorithms/1: unknown algorithm \"ppo2\" (one of: dqn, ppo, sac); did you mean "
      "\"ppo\"?"},
-    {"AlgorithmTwice", [](json& d) { d["train"] = {{"algorithms", {"sac", "sac"}}}; },
+    {"AlgorithmTwice",
+     [](json& d) {
+       d["train"] = {{"algorithms", {"sac", "sac"}}};
+     },
      "/train/algorithms/1: \"sac\" is listed twice"},
-    {"NoAlgorithms", [](json& d) { d["train"] = {{"algorithms", json::array()}}; },
+    {"NoAlgorithms",
+     [](json& d) {
+       d["train"] = {{"algorithms", json::array()}};
+     },
      "/train/algorithms: expected a non-empty array"},
     {"AlgorithmSettingsInvalid",
      [](json& d) {

@@ -8,9 +8,9 @@
 #include <set>
 
 #include "common/campaign/campaign_id.h"
+#include "common/campaign/campaign_request.h"
 #include "common/scenario/number_text.h"
 #include "tests/support/campaign_fixtures.h"
-#include "common/campaign/campaign_request.h"
 
 namespace rlpos {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <set>
 
-#include "coordinator/scheduling/coordinator_store.h"
 #include "common/store/schema.h"
 #include "common/store/sqlite_db.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {

@@ -8,12 +8,12 @@
 
 #include "common/metrics/eval_metrics.h"
 #include "common/metrics/run_metrics.h"
-#include "coordinator/reporting/results_format.h"
-#include "coordinator/reporting/uav_summary.h"
 #include "common/store/job_result.h"
 #include "common/store/metric_columns.h"
 #include "common/store/schema.h"
 #include "common/store/sqlite_db.h"
+#include "coordinator/reporting/results_format.h"
+#include "coordinator/reporting/uav_summary.h"
 #include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {
@@ -74,8 +74,9 @@ TEST(MetricTable, SchemaColumnsAreTheTables) {
     uav.insert(c);
   for (const auto& m : kEvalMetrics) {
     EXPECT_EQ(run.count(Column(m.key, m)), 1u) << m.key;
-    if (m.HasUav())
+    if (m.HasUav()) {
       EXPECT_EQ(uav.count(Column(m.uav_key, m)), 1u) << m.uav_key;
+    }
   }
   // Each view has a column of the metric's view name (Prepare throws for an unknown one).
   for (const auto& m : kEvalMetrics) {
@@ -202,8 +203,9 @@ TEST(MetricTable, TheSummariesShowTheMeansTheTableDeclares) {
       continue;
     ++means;
     EXPECT_TRUE(has(SummaryCsvColumns(), m.mean_column)) << m.mean_column;
-    if (m.HasUav())
+    if (m.HasUav()) {
       EXPECT_TRUE(has(UavSummaryCsvColumns(), m.mean_column)) << m.mean_column;
+    }
   }
   EXPECT_EQ(means, 2);
 }

@@ -76,8 +76,9 @@ TEST(Summarize, PerUavSharesAddUpAndFollowTheServingUav) {
   ues[1].uav = 1;
   ues[1].los = true;
   ues[2].uav = 0;
-  const RunMetrics m = Summarize({{"a", {1, 1, 10}, 50}, {"b", {9, 9, 10}, 114}, {"c", {5, 5, 20}, 42}},
-                                 window, 1, flows, ues);
+  const RunMetrics m =
+      Summarize({{"a", {1, 1, 10}, 50}, {"b", {9, 9, 10}, 114}, {"c", {5, 5, 20}, 42}}, window, 1,
+                flows, ues);
   ASSERT_EQ(m.uavs.size(), 3u);
   const UavMetrics& a = m.uavs[0];
   EXPECT_EQ(a.uav.name, "a");
@@ -113,7 +114,7 @@ TEST(Summarize, PerUavSharesAddUpAndFollowTheServingUav) {
 TEST(Summarize, JainIndexSpansOneOverNToOne) {
   EXPECT_DOUBLE_EQ(JainIndex({3, 3, 3}), 1.0);
   EXPECT_DOUBLE_EQ(JainIndex({5, 0, 0, 0}), 0.25);  // one UE of four gets everything
-  EXPECT_TRUE(std::isnan(JainIndex({0, 0})));        // nothing received: undefined
+  EXPECT_TRUE(std::isnan(JainIndex({0, 0})));       // nothing received: undefined
   EXPECT_TRUE(std::isnan(JainIndex({})));
 }
 

@@ -32,7 +32,8 @@ TEST(McsTable, RequiredMcsIsTheLowestThatCarriesTheDemand) {
 }
 
 TEST(McsTable, MinimumSnrGrowsWithMcs) {
-  for (int mcs = 1; mcs <= 11; ++mcs) EXPECT_GT(McsMinSnrDb(mcs), McsMinSnrDb(mcs - 1));
+  for (int mcs = 1; mcs <= 11; ++mcs)
+    EXPECT_GT(McsMinSnrDb(mcs), McsMinSnrDb(mcs - 1));
   EXPECT_DOUBLE_EQ(McsMinSnrDb(0), 9.0);
 }
 

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "common/config/config_error.h"
-#include "tests/common/scenario/scenario_error.h"
 #include "common/scenario/scenario_parser.h"
+#include "tests/common/scenario/scenario_error.h"
 
 namespace rlpos {
 namespace {

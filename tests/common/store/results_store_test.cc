@@ -3,13 +3,13 @@
 #include <fstream>
 #include <iterator>
 
-#include "common/scenario/number_text.h"
 #include "common/hash/sha256.h"
-#include "coordinator/scheduling/coordinator_store.h"
+#include "common/scenario/number_text.h"
 #include "common/store/artifact_files.h"
 #include "common/store/store_error.h"
-#include "tests/support/campaign_fixtures.h"
 #include "common/wire/limits.h"
+#include "coordinator/scheduling/coordinator_store.h"
+#include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {
 namespace {

@@ -2,8 +2,8 @@
 // jobs, running jobs and their progress lines.
 #include <gtest/gtest.h>
 
-#include "coordinator/scheduling/coordinator_store.h"
 #include "common/store/store_error.h"
+#include "coordinator/scheduling/coordinator_store.h"
 #include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {

@@ -14,11 +14,11 @@
 
 #include "common/job/position_rule.h"
 #include "common/scenario/number_text.h"
-#include "coordinator/scheduling/coordinator_store.h"
 #include "common/store/schema.h"
 #include "common/store/store_error.h"
-#include "tests/support/campaign_fixtures.h"
 #include "common/wire/job_order.h"
+#include "coordinator/scheduling/coordinator_store.h"
+#include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {
 namespace {

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "tests/support/campaign_fixtures.h"
 #include "common/wire/job_order.h"
+#include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {
 namespace {

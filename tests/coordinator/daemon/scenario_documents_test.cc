@@ -4,8 +4,8 @@
 
 #include "common/campaign/campaign_spec.h"
 #include "common/campaign/expansion.h"
-#include "tests/support/campaign_fixtures.h"
 #include "common/wire/job_order.h"
+#include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {
 namespace {

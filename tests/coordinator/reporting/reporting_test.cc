@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include "common/store/store_error.h"
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/csv_cells.h"
 #include "coordinator/reporting/distribution_curves.h"
@@ -18,7 +19,6 @@
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/run_groups.h"
 #include "coordinator/scheduling/coordinator_store.h"
-#include "common/store/store_error.h"
 #include "tests/support/campaign_fixtures.h"
 
 namespace rlpos {

@@ -9,9 +9,9 @@
 
 #include "common/campaign/campaign_spec.h"
 #include "common/campaign/expansion.h"
-#include "tests/support/command.h"
 #include "common/hash/sha256.h"
 #include "coordinator/scheduling/coordinator_store.h"
+#include "tests/support/command.h"
 
 namespace rlpos::testing {
 namespace {

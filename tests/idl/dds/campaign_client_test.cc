@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "tests/idl/dds/dds_test_support.h"
 #include "common/process/child_process.h"
+#include "tests/idl/dds/dds_test_support.h"
 #include "tests/support/temp_dir.h"
 
 namespace rlpos {

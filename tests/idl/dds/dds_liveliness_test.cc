@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "common/process/child_process.h"
 #include "idl/dds/topics.h"
 #include "tests/idl/dds/dds_test_support.h"
-#include "common/process/child_process.h"
 
 namespace rlpos {
 namespace {

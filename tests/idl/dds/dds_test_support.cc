@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
-#include "idl/dds/participant.h"
 #include "common/process/stop_signal.h"
+#include "idl/dds/participant.h"
 
 namespace rlpos::testing {
 

@@ -12,9 +12,9 @@
 #include <tuple>
 #include <vector>
 
+#include "common/wire/limits.h"
 #include "idl/dds/topics.h"
 #include "rlpos_messages.h"
-#include "common/wire/limits.h"
 
 namespace rlpos {
 namespace {

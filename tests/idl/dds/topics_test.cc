@@ -429,8 +429,9 @@ TEST_F(TopicsTest, WriteRefusesEveryFieldOverItsIdlBound) {
   ExpectBound(participant_, a, "override value", 4096, [&](auto& m, auto n) {
     m.order.params.overrides = {{"x", text(n)}};
   });
-  ExpectBound(participant_, a, "positions", 8,
-              [&](auto& m, auto n) { m.order.placement = Placement(n, Vec3{1, 2, 3}); });
+  ExpectBound(participant_, a, "positions", 8, [&](auto& m, auto n) {
+    m.order.placement = Placement(n, Vec3{1, 2, 3});
+  });
 
   const msg::WorkerStatus s = Status("w1", 1);
   ExpectBound(participant_, s, "status worker_id", 128,

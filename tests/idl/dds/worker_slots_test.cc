@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "common/process/child_process.h"
 #include "idl/dds/dds_config.h"
 #include "idl/dds/topics.h"
 #include "tests/idl/dds/dds_test_support.h"
-#include "common/process/child_process.h"
 #include "tests/support/temp_dir.h"
 
 namespace rlpos {

@@ -3,11 +3,11 @@
 
 #include <filesystem>
 
+#include "tests/worker/agent/tiny_envs.h"
 #include "worker/agent/dqn_agent.h"
 #include "worker/agent/replay_buffer.h"
 #include "worker/agent/running_moments.h"
 #include "worker/agent/trainer.h"
-#include "tests/worker/agent/tiny_envs.h"
 
 namespace rlpos {
 namespace {

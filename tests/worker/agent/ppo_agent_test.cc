@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "worker/agent/trainer.h"
 #include "tests/worker/agent/tiny_envs.h"
+#include "worker/agent/trainer.h"
 
 namespace rlpos {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <filesystem>
 
-#include "worker/agent/trainer.h"
 #include "tests/worker/agent/tiny_envs.h"
+#include "worker/agent/trainer.h"
 
 namespace rlpos {
 namespace {

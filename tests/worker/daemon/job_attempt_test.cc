@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "worker/daemon/sim_command.h"
-#include "tests/support/process_test_support.h"
 #include "common/wire/job_order.h"
+#include "tests/support/process_test_support.h"
+#include "worker/daemon/sim_command.h"
 
 namespace rlpos {
 namespace {

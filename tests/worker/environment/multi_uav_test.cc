@@ -6,15 +6,15 @@
 #include <cmath>
 
 #include "common/config/config_error.h"
+#include "common/scenario/scenario_parser.h"
 #include "worker/environment/association.h"
+#include "worker/environment/scenario_loading.h"
 #include "worker/environment/uav_network.h"
 #include "worker/environment/wifi_channel_plan.h"
-#include "worker/uav_env/analytic_evaluator.h"
 #include "worker/gym/reward.h"
-#include "worker/uav_env/uav_positioning_env.h"
 #include "worker/positioners/positioners.h"
-#include "common/scenario/scenario_parser.h"
-#include "worker/environment/scenario_loading.h"
+#include "worker/uav_env/analytic_evaluator.h"
+#include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos {
 namespace {

@@ -1,7 +1,8 @@
 // Integration tests of the scenario engine on the shipped scenarios, short durations.
+#include "worker/environment/uav_network.h"
+
 #include <gtest/gtest.h>
 
-#include "worker/environment/uav_network.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/environment/scenario_loading.h"
 
@@ -48,7 +49,7 @@ TEST(UavNetwork, ObstacleAwareSnrDropsBehindABuildingHybridDoesNot) {
   const Scenario ours = Load("b");
   const Scenario hybrid =
       Load("b", {"propagation={\"type\": \"ns3::HybridBuildingsPropagationLossModel\", "
-                  "\"attributes\": {\"ShadowSigmaOutdoor\": 0}}"});
+                 "\"attributes\": {\"ShadowSigmaOutdoor\": 0}}"});
   auto snr = [](const Scenario& s, const Vec3& p) {
     UavNetwork network(s, {p});
     const auto links = network.Links();

@@ -1,10 +1,10 @@
 // Spaces, moves and clamping, observations, rewards: the gym's pure parts.
 #include <gtest/gtest.h>
 
+#include "common/scenario/scenario_parser.h"
 #include "worker/gym/moves.h"
 #include "worker/gym/reward.h"
 #include "worker/gym/spaces.h"
-#include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
 namespace {
@@ -15,7 +15,8 @@ Scenario ScenarioB() {
 
 int ActionIndex(const Scenario& s, const std::string& name) {
   for (std::size_t i = 0; i < s.env.actions.size(); ++i) {
-    if (s.env.actions[i] == name) return static_cast<int>(i);
+    if (s.env.actions[i] == name)
+      return static_cast<int>(i);
   }
   return -1;
 }

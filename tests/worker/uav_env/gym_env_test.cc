@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "worker/uav_env/uav_positioning_env.h"
 #include "worker/environment/scenario_loading.h"
+#include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos {
 namespace {
