@@ -96,13 +96,15 @@ void InsertEvalMetrics(Database& db, const EvalRowKey& key, const EvalResult& ev
   }
 }
 
+// Scenarios in campaign order (their first job), not by name; then positioner and run.
+const std::string kCampaignOrder =
+    "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
+    "AND j.scenario = v.scenario), positioner, rng_run";
+
 std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_id) {
   Statement select =
       db.Prepare("SELECT job_id, scenario, positioner, rng_run, x, y, z" + ColumnList(kRunView) +
-                 " FROM v_eval_runs v WHERE campaign_id = ? "
-                 // Scenarios in campaign order (their first job), not by name.
-                 "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
-                 "AND j.scenario = v.scenario), positioner, rng_run");
+                 " FROM v_eval_runs v WHERE campaign_id = ? " + kCampaignOrder);
   select.Bind(campaign_id);
   std::vector<MetricRow> out;
   while (select.Step()) {
@@ -123,10 +125,8 @@ std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_
 std::vector<UavMetricRow> ReadUavMetricRows(Database& db, const std::string& campaign_id) {
   Statement select =
       db.Prepare("SELECT job_id, scenario, positioner, rng_run, uav, uav_name, x, y, z" +
-                 ColumnList(kUavView) +
-                 " FROM v_eval_uavs v WHERE campaign_id = ? "
-                 "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
-                 "AND j.scenario = v.scenario), positioner, rng_run, uav");
+                 ColumnList(kUavView) + " FROM v_eval_uavs v WHERE campaign_id = ? " +
+                 kCampaignOrder + ", uav");
   select.Bind(campaign_id);
   std::vector<UavMetricRow> out;
   while (select.Step()) {
