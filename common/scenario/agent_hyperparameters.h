@@ -4,6 +4,7 @@
 // Their keys sit in the scenario's "agent" object.
 #include <cstdint>
 
+#include "common/config/config_error.h"
 #include "common/scenario/hyperparameter.h"
 
 namespace rlpos {
@@ -13,8 +14,15 @@ struct AgentCommonSpec {
   int train_episodes = 10;
   int eval_episodes = 1;
   int eval_interval = 0;
+  int early_stop_checkpoints = 0;
   std::uint64_t seed = 1;
 };
+
+inline void CheckAgentCommonSpec(const AgentCommonSpec& a, const ObjectReader& reader) {
+  if (a.early_stop_checkpoints > 0 && a.eval_interval == 0)
+    throw ConfigError(reader.PathOf("early_stop_checkpoints"),
+                      "needs checkpoints: set agent.eval_interval > 0");
+}
 
 inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() {
   static const HyperparameterTable<AgentCommonSpec> table{
@@ -36,8 +44,13 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
         "policy (the latest of equals) is kept, evaluated and saved (as Stable-Baselines3's "
         "EvalCallback keeps best_model). 0: the last policy. Each checkpoint costs one episode "
         "(at packet level, a full simulation)"},
+       {"early_stop_checkpoints", &AgentCommonSpec::early_stop_checkpoints, Integers(0, 1000000),
+        "training stops after this many checkpoints in a row without a greedy reward above the "
+        "kept policy's (needs eval_interval > 0); the kept policy answers, as without it. 0: "
+        "train for all train_episodes"},
        {"seed", &AgentCommonSpec::seed, Integers(0, 9007199254740991LL),
-        "weights, exploration and replay sampling"}}};
+        "weights, exploration and replay sampling"}},
+      CheckAgentCommonSpec};
   return table;
 }
 

@@ -78,22 +78,27 @@ TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t s
   // The evaluation's first seed: checkpoints are scored on the episode the answer comes from.
   const std::uint64_t eval_seed = seed + static_cast<std::uint64_t>(spec.train_episodes);
   std::optional<double> kept;  // the kept policy's checkpoint reward
+  int stale = 0;               // checkpoints in a row that did not beat it
   for (int e = 0; e < spec.train_episodes; ++e) {
     EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true);
     record.episode = e + 1;
     add(std::move(record));
+    result.episodes_trained = e + 1;
     const bool last = e + 1 == spec.train_episodes;
     if (spec.eval_interval <= 0 || ((e + 1) % spec.eval_interval != 0 && !last))
       continue;
     EpisodeRecord check = RunEpisode(env, agent, eval_seed, false);
     check.episode = e + 1;
     check.checkpoint = true;
+    stale = kept && check.final_reward <= *kept ? stale + 1 : 0;
     if (!kept || check.final_reward >= *kept) {
       agent.KeepPolicy();
       kept = check.final_reward;
       result.policy_episode = e + 1;
     }
     add(std::move(check));
+    if (spec.early_stop_checkpoints > 0 && stale >= spec.early_stop_checkpoints)
+      break;
   }
   if (kept) {
     agent.RestoreKeptPolicy();

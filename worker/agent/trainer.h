@@ -30,8 +30,9 @@ struct EpisodeRecord {
 struct TrainResult {
   // One record per episode: training (each followed by its checkpoint, if any), then evaluation.
   std::vector<EpisodeRecord> curve;
-  int policy_episode = 0;  // the training episode after which the kept policy stood
-  StepInfo final_info;     // state at the end of the last evaluation episode
+  int policy_episode = 0;    // the training episode after which the kept policy stood
+  int episodes_trained = 0;  // train_episodes, or fewer when early stopping ended training
+  StepInfo final_info;       // state at the end of the last evaluation episode
   double final_reward = 0.0;
 };
 
@@ -50,7 +51,9 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
 // greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's
 // seed after every n-th training episode and after the last; the policy of the highest final
-// reward (the latest of equals) is restored for the evaluation. `on_episode` is called after each
+// reward (the latest of equals) is restored for the evaluation; with spec.early_stop_checkpoints
+// m > 0, training ends after m checkpoints in a row that do not beat the kept reward (the
+// evaluation keeps its seeds, seed + train_episodes, ...). `on_episode` is called after each
 // episode (progress, learning curve), `on_eval_step` after each step of the evaluation episodes
 // (the flown trajectory).
 TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,

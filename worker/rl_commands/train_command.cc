@@ -33,6 +33,8 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"eval_episodes", s.agent.eval_episodes},
           {"first_episode_run", FirstEpisodeRun(seed)},
           {"eval_interval", s.agent.eval_interval},
+          {"early_stop_checkpoints", s.agent.early_stop_checkpoints},
+          {"episodes_trained", r.episodes_trained},
           {"policy_episode", r.policy_episode},                  // the kept policy's
           {"position", {p.x, p.y, p.z}},                         // the first UAV's
           {"positions", PlacementJson(r.final_info.positions)},  // every UAV's

@@ -85,5 +85,30 @@ TEST(Trainer, OfEqualCheckpointsTheLatestIsKept) {
   EXPECT_DOUBLE_EQ(r.final_reward, 1.0);
 }
 
+TEST(Trainer, EarlyStoppingEndsTrainingAfterCheckpointsThatDoNotBeatTheKeptOne) {
+  ChainEnv env;
+  ScriptedAgent agent({2, 4});  // good after 2 (kept), equal after 4: not an improvement
+  AgentSpec spec = Spec(20, 2);
+  spec.early_stop_checkpoints = 2;
+  std::vector<std::string> seen;
+  const TrainResult r = Train(env, agent, spec, 1, [&](const EpisodeRecord& e) {
+    seen.push_back(std::to_string(e.episode) + (e.checkpoint ? "c" : e.evaluation ? "e" : "t"));
+  });
+  // Checkpoints 4 and 6 do not beat 2's reward: stop after 6; the evaluation keeps its seed.
+  EXPECT_EQ(seen, (std::vector<std::string>{"1t", "2t", "2c", "3t", "4t", "4c", "5t", "6t", "6c",
+                                            "21e"}));
+  EXPECT_EQ(r.episodes_trained, 6);
+  EXPECT_EQ(r.policy_episode, 4);  // of equals, the latest
+  EXPECT_DOUBLE_EQ(r.final_reward, 1.0);
+}
+
+TEST(Trainer, WithoutEarlyStoppingEveryEpisodeTrains) {
+  ChainEnv env;
+  ScriptedAgent agent({2});
+  const TrainResult r = Train(env, agent, Spec(9, 2), 1);
+  EXPECT_EQ(r.episodes_trained, 9);
+  EXPECT_EQ(r.policy_episode, 2);
+}
+
 }  // namespace
 }  // namespace rlpos
