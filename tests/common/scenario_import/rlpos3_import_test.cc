@@ -158,6 +158,42 @@ TEST_F(Rlpos3Import, ValidatesAndIsDeterministic) {
   EXPECT_EQ(ToJson(ImportRlpos3(FullRlpos3Config(), "full").scenario).dump(2), text);
 }
 
+// "fixed": ns-3's ConstantRateWifiManager at entry fixedMCS of the standard's mode list.
+TEST(Rlpos3ImportVariants, FixedRateManager) {
+  nlohmann::json config = FullRlpos3Config();
+  config["ns3Sim"]["configSim"]["RemotStManager"] = "fixed";
+  const ImportResult r = ImportRlpos3(config, "fixed");
+  EXPECT_EQ(r.scenario.wifi.rate_manager.type, "ns3::ConstantRateWifiManager");
+  EXPECT_EQ(r.scenario.wifi.rate_manager.attributes,
+            nlohmann::json({{"DataMode", "VhtMcs2"}, {"ControlMode", "VhtMcs2"}}));
+  const auto warned = [&](const std::string& path) {
+    return std::any_of(r.warnings.begin(), r.warnings.end(),
+                       [&](const ImportWarning& w) { return w.path == path; });
+  };
+  EXPECT_TRUE(warned("/ns3Sim/configSim/htDataRates"));  // 802.11n's list
+  EXPECT_FALSE(warned("/ns3Sim/configSim/vhtDataRates"));
+  EXPECT_FALSE(warned("/ns3Sim/configSim/fixedMCS"));
+}
+
+// Two UAVNodes become uavs[]; a Zmin below the ground starts the zone at the ground.
+TEST(Rlpos3ImportVariants, SeveralUavsAndZminBelowTheGround) {
+  nlohmann::json config = FullRlpos3Config();
+  config["ns3Sim"]["defaultValues"]["UAVNodes"].push_back({{"positionVector", {20, 10, 30}}});
+  config["Gym"]["venueSize"]["Zmin"] = -5;
+  const ImportResult r = ImportRlpos3(config, "two");
+  ASSERT_EQ(r.scenario.uavs.size(), 2u);
+  EXPECT_TRUE(r.scenario.uavs_listed);
+  EXPECT_EQ(r.scenario.uavs[1].name, "uav2");
+  EXPECT_DOUBLE_EQ(r.scenario.uavs[1].initial.x, 80);
+  EXPECT_DOUBLE_EQ(r.scenario.uavs[1].initial.y, 30);
+  EXPECT_DOUBLE_EQ(r.scenario.uavs[1].zone.zmin, 0);
+  std::vector<std::string> paths;
+  for (const auto& w : r.warnings)
+    paths.push_back(w.path);
+  EXPECT_NE(std::find(paths.begin(), paths.end(), "/Gym/venueSize/Zmin"), paths.end());
+  EXPECT_NE(std::find(paths.begin(), paths.end(), "/ns3Sim/defaultValues/UAVNodes"), paths.end());
+}
+
 TEST(Rlpos3SourcePath, NamesTheFieldTheUserWrote) {
   EXPECT_EQ(Rlpos3SourcePath("/ues/3/position/1"),
             "/ns3Sim/defaultValues/UENodes/3/positionVector/1");
