@@ -6,6 +6,7 @@
 //                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
 //   rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]
+//   rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
 #include <unistd.h>
@@ -17,6 +18,7 @@
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
 #include "worker/sim/describe_command.h"
+#include "worker/sim/import_command.h"
 
 namespace {
 
@@ -34,6 +36,7 @@ struct Invocation {
   CLI::App* position = nullptr;
   PositionOptions position_options;
   DescribeCommand describe;
+  ImportCommand import;
 };
 
 void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
@@ -119,6 +122,8 @@ int Run(const Invocation& in) {
       return RunValidate(in.options, in.validate_json);
     if (*in.describe.command)
       return RunDescribe(in.describe);
+    if (*in.import.command)
+      return RunImport(in.import, in.options.scenario_file);
     if (*in.train)
       return RunTrain(in.options, in.train_options);
     if (*in.position)
@@ -147,6 +152,7 @@ int main(int argc, char** argv) {
   AddTrain(app, in);
   AddPosition(app, in);
   AddDescribe(app, in.describe);
+  AddImport(app, in.import, in.options.scenario_file);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
