@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "common/config/config_error.h"
@@ -37,6 +38,33 @@ void Check(cairo_status_t status, const char* what) {
                              "): " + cairo_status_to_string(status));
 }
 
+// Cairo names the SVG's groups after a counter of every surface the process has made
+// ("surface745"): renumbered in order of appearance, the same map is the same bytes however
+// many were drawn before it.
+std::string RenumberSurfaces(const std::string& svg) {
+  static const std::string kPrefix = "surface";
+  std::map<std::string, std::string> renamed;
+  std::string out;
+  out.reserve(svg.size());
+  std::size_t at = 0;
+  for (std::size_t found; (found = svg.find(kPrefix, at)) != std::string::npos;) {
+    std::size_t end = found + kPrefix.size();
+    while (end < svg.size() && std::isdigit(static_cast<unsigned char>(svg[end])))
+      ++end;
+    out.append(svg, at, found - at);
+    const std::string number = svg.substr(found + kPrefix.size(), end - found - kPrefix.size());
+    if (number.empty()) {
+      out += kPrefix;
+    } else {
+      const auto it = renamed.emplace(number, std::to_string(renamed.size() + 1)).first;
+      out += kPrefix + it->second;
+    }
+    at = end;
+  }
+  out.append(svg, at, std::string::npos);
+  return out;
+}
+
 std::string RenderSvg(const MapScene& scene, const MapLayout& layout) {
   std::string bytes;
   cairo_surface_t* surface =
@@ -50,7 +78,7 @@ std::string RenderSvg(const MapScene& scene, const MapLayout& layout) {
   cairo_surface_destroy(surface);
   Check(drawn, "drawing");
   Check(written, "SVG");
-  return bytes;
+  return RenumberSurfaces(bytes);
 }
 
 std::string RenderPng(const MapScene& scene, const MapLayout& layout) {

@@ -148,13 +148,28 @@ void DrawUavs(cairo_t* cr, const MapScene& scene, const View& view) {
     }
     return;
   }
+  // Markers on one spot of the view grow by turns and are drawn largest first: concentric
+  // outlines, every one visible.
+  struct Mark {
+    double x, y, size;
+    PlacementStyle style;
+  };
+  std::vector<Mark> marks;
   for (std::size_t k = 0; k < scene.placements.size(); ++k) {
-    const PlacementStyle style = PlacementStyleOf(static_cast<int>(k));
     for (const Vec3& p : scene.placements[k].positions) {
-      DrawMarker(cr, style.shape, view.CanvasX(p), view.CanvasY(p), kPlacementMarkerSize,
-                 style.colour, false);
+      Mark m{view.CanvasX(p), view.CanvasY(p), kPlacementMarkerSize,
+             PlacementStyleOf(static_cast<int>(k))};
+      for (const Mark& o : marks) {
+        if (std::hypot(o.x - m.x, o.y - m.y) < 4.0)
+          m.size = std::max(m.size, o.size + 8.0);
+      }
+      marks.push_back(m);
     }
   }
+  std::stable_sort(marks.begin(), marks.end(),
+                   [](const Mark& a, const Mark& b) { return a.size > b.size; });
+  for (const Mark& m : marks)
+    DrawMarker(cr, m.style.shape, m.x, m.y, m.size, m.style.colour, false);
 }
 
 void DrawViewTitle(cairo_t* cr, const View& view) {
