@@ -63,8 +63,10 @@ void AddUavEntries(const MapScene& scene, std::vector<Entry>& out) {
   for (std::size_t k = 0; k < scene.placements.size(); ++k) {
     const PlacementStyle style = PlacementStyleOf(static_cast<int>(k));
     const MapPlacement& p = scene.placements[k];
-    out.push_back(
-        {Symbol::kPlacement, p.label + LosText(p, s.ues.size()), style.colour, style.shape});
+    // One UAV: where it is (the top view hides its height). Several: too long for a line.
+    const std::string where = p.positions.size() == 1 ? " " + Point(p.positions.front()) : "";
+    out.push_back({Symbol::kPlacement, p.label + where + LosText(p, s.ues.size()), style.colour,
+                   style.shape});
   }
 }
 
