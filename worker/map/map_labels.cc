@@ -10,9 +10,9 @@ namespace rlpos::map {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kBuildingFont = 9.5;
-constexpr double kUeFont = 9.0;
-constexpr double kUavFont = 9.5;
+constexpr double kBuildingFont = 10;
+constexpr double kUeFont = 10;
+constexpr double kUavFont = 10;
 
 struct BuildingLabel {
   std::vector<std::string> lines;

@@ -96,7 +96,7 @@ void DrawSymbol(cairo_t* cr, const Entry& e, double x, double y) {
       DrawMarker(cr, e.shape, x + 12, y, kPlacementMarkerSize, e.colour, false);
       break;
     case Symbol::kDemand:
-      SelectFont(cr, 9);
+      SelectFont(cr, kFont);
       SetColour(cr, kInk);
       DrawText(cr, "58.5", x + 12, y + 3, Anchor::kCentre);
       break;
@@ -136,7 +136,7 @@ void DrawHeightScale(cairo_t* cr, const Venue& venue, double left, double top, d
   cairo_set_line_width(cr, 0.8);
   cairo_rectangle(cr, left, bar_top, width, bar_height);
   cairo_stroke(cr);
-  SelectFont(cr, 9);
+  SelectFont(cr, kFont);
   for (double f : {0.0, 0.25, 0.5, 0.75, 1.0}) {
     const double x = left + width * f;
     cairo_move_to(cr, x, bar_top + bar_height), cairo_line_to(cr, x, bar_top + bar_height + 3);
@@ -148,7 +148,8 @@ void DrawHeightScale(cairo_t* cr, const Venue& venue, double left, double top, d
 }  // namespace
 
 double LegendHeight(const MapScene& scene) {
-  return 2 * kPad + kRow * static_cast<double>(Entries(scene).size()) + 6 + kHeightBar;
+  const double scale = scene.scenario.buildings.empty() ? 0 : 6 + kHeightBar;
+  return 2 * kPad + kRow * static_cast<double>(Entries(scene).size()) + scale;
 }
 
 void DrawLegend(cairo_t* cr, const MapScene& scene, const Rect& box) {
@@ -166,8 +167,9 @@ void DrawLegend(cairo_t* cr, const MapScene& scene, const Rect& box) {
     DrawText(cr, e.text, box.left + kPad + 34, y + 3.5, Anchor::kLeft);
     y += kRow;
   }
-  DrawHeightScale(cr, scene.scenario.venue, box.left + kPad, y - kRow / 2 + 6,
-                  box.width - 2 * kPad - 8);
+  if (!scene.scenario.buildings.empty())
+    DrawHeightScale(cr, scene.scenario.venue, box.left + kPad, y - kRow / 2 + 6,
+                    box.width - 2 * kPad - 8);
 }
 
 void DrawTitle(cairo_t* cr, const MapScene& scene, const MapLayout& layout) {

@@ -30,7 +30,7 @@ void SelectFont(cairo_t* cr, double size, bool bold = false);
 // The box `text` takes with its baseline at y, anchored at x, in the font selected.
 TextBox MeasureText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor);
 void DrawText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor);
-// Text with a translucent halo of the background behind it: readable over lines.
+// Text on a translucent box of the background: readable over lines.
 void DrawHaloText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor,
                   const Rgb& halo);
 // "58.5", "234", "-3": the shortest form that reads back the same to 0.1.

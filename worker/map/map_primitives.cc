@@ -173,14 +173,12 @@ void DrawText(cairo_t* cr, const std::string& text, double x, double y, Anchor a
 
 void DrawHaloText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor,
                   const Rgb& halo) {
+  // A box rather than an outline of the glyphs: an SVG then holds each glyph once.
   const TextBox box = MeasureText(cr, text, x, y, anchor);
   cairo_save(cr);
-  cairo_move_to(cr, box.left, y);
-  cairo_text_path(cr, text.c_str());
-  SetColour(cr, halo, 0.85);
-  cairo_set_line_width(cr, 3.0);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  cairo_stroke(cr);
+  cairo_rectangle(cr, box.left - 1.5, box.top - 1, box.width + 3, box.height + 2);
+  SetColour(cr, halo, 0.8);
+  cairo_fill(cr);
   cairo_restore(cr);
   DrawText(cr, text, x, y, anchor);
 }

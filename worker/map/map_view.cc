@@ -193,7 +193,10 @@ void DrawView(cairo_t* cr, const MapScene& scene, const View& view) {
   const Scenario& s = scene.scenario;
   DrawViewBackground(cr, view, s.venue);
   cairo_save(cr);
-  cairo_rectangle(cr, view.rect.left, view.rect.top, view.rect.width, view.rect.height);
+  // A UAV on the venue's edge is drawn whole: the clip leaves room for half a glyph around.
+  const double pad = kUavGlyphSize / 2 + 2;
+  cairo_rectangle(cr, view.rect.left - pad, view.rect.top - pad, view.rect.width + 2 * pad,
+                  view.rect.height + 2 * pad);
   cairo_clip(cr);
   DrawZones(cr, s, view);
   DrawBuildings(cr, s, view);
