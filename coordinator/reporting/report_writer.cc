@@ -25,10 +25,16 @@ std::string DrawMaps(ResultsReader& store, const std::string& campaign_id,
     result.warnings.push_back("no maps: " + render_program + " not found");
     return "";
   }
-  const ScenarioMapsOutcome maps = DrawScenarioMaps(store, campaign_id, render_program, out_dir);
-  result.files.insert(result.files.end(), maps.files.begin(), maps.files.end());
-  result.warnings.insert(result.warnings.end(), maps.warnings.begin(), maps.warnings.end());
-  return FormatMapsMarkdown(maps.maps);
+  try {
+    const ScenarioMapsOutcome maps = DrawScenarioMaps(store, campaign_id, render_program, out_dir);
+    result.files.insert(result.files.end(), maps.files.begin(), maps.files.end());
+    result.warnings.insert(result.warnings.end(), maps.warnings.begin(), maps.warnings.end());
+    return FormatMapsMarkdown(maps.maps);
+  } catch (const std::exception& e) {
+    // Maps are best effort, like the plots: the tables are the report.
+    result.warnings.push_back(std::string("no maps: ") + e.what());
+    return "";
+  }
 }
 
 }  // namespace

@@ -62,8 +62,49 @@ TextBox PointBox(double x, double y, double size) {
 }
 
 // Puts `text` near (x, y), clear of `taken` if it can, inside `frame`; returns its box.
+struct Segment {
+  double x0, y0, x1, y1;
+};
+
+// What a label should not cover: markers and other labels (worse), and lines (links, flights).
+struct Obstacles {
+  std::vector<TextBox> boxes;
+  std::vector<Segment> lines;
+};
+
+// Whether the segment crosses the box (clipped against it, Liang-Barsky).
+bool Crosses(const Segment& s, const TextBox& b) {
+  double t0 = 0, t1 = 1;
+  const double dx = s.x1 - s.x0, dy = s.y1 - s.y0;
+  const double p[] = {-dx, dx, -dy, dy};
+  const double q[] = {s.x0 - b.left, b.left + b.width - s.x0, s.y0 - b.top,
+                      b.top + b.height - s.y0};
+  for (int k = 0; k < 4; ++k) {
+    if (p[k] == 0) {
+      if (q[k] < 0)
+        return false;
+      continue;
+    }
+    const double t = q[k] / p[k];
+    if (p[k] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+  }
+  return t0 <= t1;
+}
+
+int Cost(const TextBox& box, const Obstacles& o) {
+  int cost = 0;
+  for (const TextBox& t : o.boxes)
+    cost += box.Overlaps(t) ? 4 : 0;
+  for (const Segment& s : o.lines)
+    cost += Crosses(s, box) ? 1 : 0;
+  return cost;
+}
+
 TextBox PlaceLabel(cairo_t* cr, const std::string& text, double x, double y, double gap,
-                   const std::vector<TextBox>& taken, const Rect& frame) {
+                   const Obstacles& taken, const Rect& frame) {
   struct Spot {
     double dx, dy;
     Anchor anchor;
@@ -84,9 +125,7 @@ TextBox PlaceLabel(cairo_t* cr, const std::string& text, double x, double y, dou
     if (box.left < frame.left + 2 || box.left + box.width > frame.right() - 2 ||
         box.top < frame.top + 2 || box.top + box.height > frame.bottom() - 2)
       continue;
-    int overlaps = 0;
-    for (const TextBox& t : taken)
-      overlaps += box.Overlaps(t) ? 1 : 0;
+    const int overlaps = Cost(box, taken);
     if (best_overlaps < 0 || overlaps < best_overlaps) {
       best = box;
       best_overlaps = overlaps;
@@ -136,6 +175,26 @@ bool Hides(const TextBox& box, const std::vector<TextBox>& markers) {
   return false;
 }
 
+// The links (one placement) and the flight, as drawn in the view.
+std::vector<Segment> Lines(const MapScene& scene, const View& view) {
+  std::vector<Segment> lines;
+  if (!scene.links.empty() && scene.placements.size() == 1) {
+    const Placement& uavs = scene.placements.front().positions;
+    for (std::size_t i = 0; i < scene.links.size(); ++i) {
+      const Vec3& a = scene.scenario.ues[i].position;
+      const Vec3& b = uavs.at(static_cast<std::size_t>(scene.links[i].serving_uav));
+      lines.push_back({view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b)});
+    }
+  }
+  for (const FlightPath& path : scene.flight) {
+    for (std::size_t k = 1; k < path.points.size(); ++k) {
+      const Vec3 &a = path.points[k - 1], &b = path.points[k];
+      lines.push_back({view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b)});
+    }
+  }
+  return lines;
+}
+
 }  // namespace
 
 std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view) {
@@ -156,8 +215,8 @@ std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, cons
     // Too small for its label, or a UAV or UE sits where it would go: the label goes beside the
     // building, with a halo, where it hides nothing.
     const std::string text = b.name + ", " + ShortNumber(b.height) + " m";
-    std::vector<TextBox> taken = markers;
-    taken.insert(taken.end(), boxes.begin(), boxes.end());
+    Obstacles taken{markers, Lines(scene, view)};
+    taken.boxes.insert(taken.boxes.end(), boxes.begin(), boxes.end());
     const TextBox box = PlaceLabel(cr, text, cx, cy, std::max(w, h) / 2 + 6, taken, view.rect);
     DrawPlaced(cr, text, box, kInk);
     boxes.push_back(box);
@@ -166,10 +225,11 @@ std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, cons
 }
 
 void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
-                  std::vector<TextBox> taken) {
+                  std::vector<TextBox> labels) {
   const Scenario& s = scene.scenario;
+  Obstacles taken{std::move(labels), Lines(scene, view)};
   for (const TextBox& box : MarkerBoxes(scene, view))
-    taken.push_back(box);
+    taken.boxes.push_back(box);
   // The UAVs' heights first (a top view hides them), then the demands.
   if (scene.placements.size() == 1) {
     SelectFont(cr, kUavFont, true);
@@ -181,7 +241,7 @@ void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
       const TextBox box = PlaceLabel(cr, text, view.CanvasX(p), view.CanvasY(p),
                                      kUavGlyphSize / 2 + 4, taken, view.rect);
       DrawPlaced(cr, text, box, s.uavs.size() > 1 ? UavColour(static_cast<int>(u)) : kInk);
-      taken.push_back(box);
+      taken.boxes.push_back(box);
     }
   }
   SelectFont(cr, kUeFont);
@@ -190,7 +250,7 @@ void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
     const double x = view.CanvasX(ue.position), y = view.CanvasY(ue.position);
     const TextBox box = PlaceLabel(cr, text, x, y, kUeMarkerSize / 2 + 3, taken, view.rect);
     DrawPlaced(cr, text, box, kInk);
-    taken.push_back(box);
+    taken.boxes.push_back(box);
   }
 }
 
