@@ -32,6 +32,7 @@
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
+#include "coordinator/reporting/scenario_maps.h"
 
 namespace rlpos {
 namespace fs = std::filesystem;
@@ -322,6 +323,7 @@ int PrintOutcome(ResultsReader& store, const std::string& campaign_id, const Run
                                      : options.report_dir;
   ReportOptions report_options;
   report_options.plot_script = DefaultPlotScript(site.bin);
+  report_options.render_program = DefaultRenderProgram(site.bin);
   const ReportResult report = WriteReport(store, campaign_id, report_dir, report_options);
   for (const auto& w : report.warnings)
     printer.Note("warning: " + w);

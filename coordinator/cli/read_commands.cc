@@ -13,6 +13,7 @@
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
+#include "coordinator/reporting/scenario_maps.h"
 #include "coordinator/reporting/uav_summary.h"
 
 namespace rlpos {
@@ -112,6 +113,7 @@ int WriteCampaignReport(const std::string& db, const std::string& campaign_id,
   ResultsReader store(opened);
   ReportOptions options;
   options.plot_script = DefaultPlotScript(ExecutableDir());
+  options.render_program = DefaultRenderProgram(ExecutableDir());
   const ReportResult result = WriteReport(store, campaign_id, out_dir, options);
   for (const auto& w : result.warnings)
     std::cerr << "rlpos-campaign: warning: " << w << "\n";

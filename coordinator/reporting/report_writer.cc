@@ -9,9 +9,35 @@
 #include "coordinator/reporting/plot_script.h"
 #include "coordinator/reporting/report_markdown.h"
 #include "coordinator/reporting/results_format.h"
+#include "coordinator/reporting/scenario_maps.h"
 #include "coordinator/reporting/uav_summary.h"
 
 namespace rlpos {
+namespace {
+
+// The maps of the campaign's scenarios; returns their Markdown section.
+std::string DrawMaps(ResultsReader& store, const std::string& campaign_id,
+                     const std::string& out_dir, const std::string& render_program,
+                     ReportResult& result) {
+  if (render_program.empty())
+    return "";
+  if (!std::filesystem::exists(render_program)) {
+    result.warnings.push_back("no maps: " + render_program + " not found");
+    return "";
+  }
+  try {
+    const ScenarioMapsOutcome maps = DrawScenarioMaps(store, campaign_id, render_program, out_dir);
+    result.files.insert(result.files.end(), maps.files.begin(), maps.files.end());
+    result.warnings.insert(result.warnings.end(), maps.warnings.begin(), maps.warnings.end());
+    return FormatMapsMarkdown(maps.maps);
+  } catch (const std::exception& e) {
+    // Maps are best effort, like the plots: the tables are the report.
+    result.warnings.push_back(std::string("no maps: ") + e.what());
+    return "";
+  }
+}
+
+}  // namespace
 
 ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
                          const std::string& out_dir, const ReportOptions& options) {
@@ -44,6 +70,7 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
     result.warnings.push_back(warning);
     markdown += "\n**Warning:** " + warning + ".\n";
   }
+  markdown += DrawMaps(store, campaign_id, out_dir, options.render_program, result);
   write("summary.md", markdown);
   const std::string throughput_csv =
       write("throughput_ccdf.csv", FormatThroughputCcdfCsv(throughput));

@@ -12,6 +12,8 @@ namespace rlpos {
 struct ReportOptions {
   std::string plot_script;  // plot_campaign.py (see DefaultPlotScript); empty: no plots
   std::string python;       // interpreter for it; empty: "python3", then /usr/bin/python3
+  // rlpos-sim, which draws a map per scenario (see DefaultRenderProgram); empty: no maps
+  std::string render_program;
 };
 
 struct ReportResult {
@@ -21,8 +23,8 @@ struct ReportResult {
 
 // Writes into `out_dir` (created if missing; files replaced atomically): summary.csv,
 // summary.md, throughput_ccdf.csv, delay_cdf.csv, learning_curves.csv (when train jobs sent
-// their curves home), then the PNGs of the plot script. Throws
-// StoreError for an unknown campaign, std::runtime_error naming the path when a file or the
+// their curves home), the maps (map_<k>.png, scenario_maps.h), then the PNGs of the plot script.
+// Throws StoreError for an unknown campaign, std::runtime_error naming the path when a file or the
 // folder cannot be written. A plot failure is a warning, not an error.
 ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
                          const std::string& out_dir, const ReportOptions& options = {});

@@ -37,7 +37,9 @@ expect_eq "metrics of the fixed positions" "$(sql "$DB" "SELECT scenario, positi
   "$(cat "$SRC/tests/e2e/golden/mini_fixed_positions.txt")"
 
 REPORT=$WORK/reports/$ID
-for f in summary.csv summary.md throughput_ccdf.csv delay_cdf.csv learning_curves.csv; do
+# A map per scenario (B, C), each with the rl flight of its train job.
+for f in summary.csv summary.md throughput_ccdf.csv delay_cdf.csv learning_curves.csv map_1.png \
+  map_2.png; do
   [ -s "$REPORT/$f" ] || fail "report file $f missing"
 done
 if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
@@ -46,6 +48,7 @@ if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
   done
 fi
 grep -q '^B  *rl ' "$WORK/out.txt" || fail "summary table has no B rl row"
+expect_eq "maps with the rl flight" "$(grep -c '^The rl flight' "$REPORT/summary.md")" 2
 
 # The read commands on the finished campaign.
 "$CAMPAIGN" status "$ID" --db "$DB" >"$WORK/status.txt"

@@ -7,6 +7,7 @@
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
 //   rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]
 //   rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]
+//   rlpos-sim render SCENARIO [--position x,y,z]... [--result FILE] [--side] --out FILE.png|.svg
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
 #include <unistd.h>
@@ -19,6 +20,7 @@
 #include "worker/sim/commands.h"
 #include "worker/sim/describe_command.h"
 #include "worker/sim/import_command.h"
+#include "worker/sim/render_command.h"
 
 namespace {
 
@@ -37,6 +39,7 @@ struct Invocation {
   PositionOptions position_options;
   DescribeCommand describe;
   ImportCommand import;
+  RenderCommand render;
 };
 
 void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
@@ -128,6 +131,8 @@ int Run(const Invocation& in) {
       return RunTrain(in.options, in.train_options);
     if (*in.position)
       return RunPosition(in.options, in.position_options);
+    if (*in.render.command)
+      return RunRender(in.options, in.render);
     return RunEval(in.options, in.eval_options);
   } catch (const rlpos::ConfigError& e) {
     const bool cli = e.path().rfind("--", 0) == 0;
@@ -153,6 +158,8 @@ int main(int argc, char** argv) {
   AddPosition(app, in);
   AddDescribe(app, in.describe);
   AddImport(app, in.import, in.options.scenario_file);
+  AddRender(app, in.render, in.options);
+  AddScenarioOverrides(in.render.command, in.options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include "common/hash/sha256.h"
 #include "common/store/store_error.h"
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/csv_cells.h"
@@ -18,6 +19,7 @@
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/run_groups.h"
+#include "coordinator/reporting/scenario_maps.h"
 #include "coordinator/scheduling/coordinator_store.h"
 #include "tests/support/campaign_fixtures.h"
 
@@ -489,6 +491,53 @@ TEST_F(ReportingTest, FailingInterpreterOrScriptIsAWarning) {
   EXPECT_NE(result.warnings[0].find("boom"), std::string::npos) << result.warnings[0];
   EXPECT_NE(result.warnings[0].find("exit status 1"), std::string::npos) << result.warnings[0];
   EXPECT_TRUE(fs::is_regular_file(dir_.File("r2/summary.csv")));
+}
+
+// A map per scenario, drawn by the rlpos-sim built beside the tests, with the rl flight of the
+// train job's trajectory.csv.
+TEST_F(ReportingTest, MapPerScenarioWithTheRlFlight) {
+  Produce("position/B/baseline");
+  Produce("position/C/oracle");
+  const std::string trajectory =
+      "episode,step,uav,action,x,y,z,n_los,throughput_mbps,reward\n"
+      "2,1,0,backward,50,45,25,1,10,0.1\n2,2,0,down,50,45,20,1,10,0.1\n"
+      "2,3,0,backward,50,40,20,1,10,0.1\n2,4,0,backward,50,35,10,2,20,0.2\n";
+  ASSERT_TRUE(store_.ledger.MarkRunning(Id("train/B/seed1"), "w1", 0, 1));
+  ASSERT_EQ(store_.recorder.RecordSuccess(
+                Id("train/B/seed1"), 1, testing::PositionResult(50, 35, 10), "", nullptr,
+                {ArtifactFile{"trajectory.csv", Sha256Hex(trajectory), trajectory}}),
+            JobUpdate::kSucceeded);
+  Eval("B", "baseline", 1, 100, 4.0);
+  Eval("B", "rl", 1, 130, 3.0);
+  Eval("B", "offset1", 1, 90, 5.5);
+  Eval("C", "oracle", 1, 80, 1.0);
+  ReportOptions options;
+  options.render_program = DefaultRenderProgram(RLPOS_BIN_DIR);
+  const std::string out = dir_.File("report");
+  const ReportResult result = WriteReport(store_.reader, campaign_.id, out, options);
+  for (const auto& w : result.warnings)
+    ADD_FAILURE() << "warning: " << w;
+  for (const char* map : {"map_1.png", "map_2.png"}) {
+    const std::string png = ReadText((fs::path(out) / map).string());
+    EXPECT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n") << map;
+    EXPECT_NE(std::find(result.files.begin(), result.files.end(), (fs::path(out) / map).string()),
+              result.files.end());
+  }
+  EXPECT_FALSE(fs::exists(fs::path(out) / "map_3.png"));
+  const std::string md = ReadText((fs::path(out) / "summary.md").string());
+  EXPECT_NE(md.find("### Scenario B\n\n![Scenario B](map_1.png)"), std::string::npos) << md;
+  EXPECT_NE(md.find("### Scenario C\n\n![Scenario C](map_2.png)"), std::string::npos) << md;
+  EXPECT_NE(md.find("The rl flight"), std::string::npos) << md;
+}
+
+// Without rlpos-sim the report is written all the same, with a warning for the maps.
+TEST_F(ReportingTest, MissingRenderProgramIsAWarning) {
+  ReportOptions options;
+  options.render_program = dir_.File("no-such-rlpos-sim");
+  const ReportResult result = WriteReport(store_.reader, campaign_.id, dir_.File("r"), options);
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_NE(result.warnings[0].find("no maps"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_.File("r") + "/summary.md"));
 }
 
 TEST(ReportPlots, DefaultPlotScriptIsCopiedBesideTheBinaries) {

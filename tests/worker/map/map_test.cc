@@ -1,0 +1,258 @@
+// A map shows what the scenario holds: rendered to PNG and read back, a building's colour is
+// seen inside each footprint and nowhere else, a UE known to be in LoS (or not) has that colour.
+#include <cairo.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "common/config/config_error.h"
+#include "worker/environment/scenario_loading.h"
+#include "worker/map/map_links.h"
+#include "worker/map/map_render.h"
+#include "worker/map/map_style.h"
+#include "worker/map/trajectory_csv.h"
+
+namespace rlpos::map {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScenarios = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios";
+
+// A PNG read back into pixels.
+class Image {
+ public:
+  explicit Image(const std::string& png) : bytes_(png) {
+    surface_ = cairo_image_surface_create_from_png_stream(&Image::Read, this);
+  }
+  ~Image() { cairo_surface_destroy(surface_); }
+  bool ok() const { return cairo_surface_status(surface_) == CAIRO_STATUS_SUCCESS; }
+  int width() const { return cairo_image_surface_get_width(surface_); }
+  int height() const { return cairo_image_surface_get_height(surface_); }
+  // 0xRRGGBB of the pixel under the canvas point (x, y), in points.
+  std::uint32_t At(double x, double y) const {
+    const int px = static_cast<int>(x * kPngPixelsPerPoint);
+    const int py = static_cast<int>(y * kPngPixelsPerPoint);
+    const unsigned char* row =
+        cairo_image_surface_get_data(surface_) + py * cairo_image_surface_get_stride(surface_);
+    return reinterpret_cast<const std::uint32_t*>(row)[px] & 0xffffff;
+  }
+
+ private:
+  static cairo_status_t Read(void* closure, unsigned char* data, unsigned int length) {
+    Image* self = static_cast<Image*>(closure);
+    if (self->offset_ + length > self->bytes_.size())
+      return CAIRO_STATUS_READ_ERROR;
+    std::copy_n(self->bytes_.data() + self->offset_, length, data);
+    self->offset_ += length;
+    return CAIRO_STATUS_SUCCESS;
+  }
+  std::string bytes_;
+  std::size_t offset_ = 0;
+  cairo_surface_t* surface_ = nullptr;
+};
+
+MapScene BaselineScene(const std::string& file, bool side = false) {
+  MapScene scene;
+  scene.scenario = LoadScenario(file, {});
+  scene.placements = {{"baseline", scene.scenario.InitialPlacement()}};
+  scene.side_views = side;
+  AddLinks(scene);
+  return scene;
+}
+
+std::vector<std::string> ShippedScenarios() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(kScenarios)) {
+    if (entry.path().extension() == ".json")
+      files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+bool InsideAnyFootprint(const Scenario& s, double x, double y, double margin) {
+  for (const auto& b : s.buildings) {
+    if (x >= b.xmin - margin && x <= b.xmax + margin && y >= b.ymin - margin &&
+        y <= b.ymax + margin)
+      return true;
+  }
+  return false;
+}
+
+// Inside each footprint most sampled points (7 x 7, away from its edges) show its colour; the
+// rest may be under a label, a link or a marker.
+void ExpectBuildingsWhereTheScenarioPutsThem(const MapScene& scene, const Image& image,
+                                             const View& view) {
+  const Scenario& s = scene.scenario;
+  for (const auto& b : s.buildings) {
+    const std::uint32_t colour = BuildingColour(b.height, s.venue.height).ToHex();
+    int seen = 0;
+    for (int i = 1; i <= 7; ++i) {
+      for (int j = 1; j <= 7; ++j) {
+        const Vec3 p{b.xmin + (b.xmax - b.xmin) * i / 8.0, b.ymin + (b.ymax - b.ymin) * j / 8.0, 0};
+        seen += image.At(view.CanvasX(p), view.CanvasY(p)) == colour ? 1 : 0;
+      }
+    }
+    EXPECT_GE(seen, 25) << s.name << ": building " << b.name << " shows its colour at " << seen
+                        << " of 49 points";
+  }
+}
+
+// Every 2 m over the venue, away from footprints: no building colour.
+void ExpectNoBuildingElsewhere(const MapScene& scene, const Image& image, const View& view) {
+  const Scenario& s = scene.scenario;
+  std::vector<std::uint32_t> colours;
+  for (const auto& b : s.buildings)
+    colours.push_back(BuildingColour(b.height, s.venue.height).ToHex());
+  int checked = 0;
+  for (double x = 1; x < s.venue.width; x += 2) {
+    for (double y = 1; y < s.venue.depth; y += 2) {
+      if (InsideAnyFootprint(s, x, y, 1.0))
+        continue;
+      const std::uint32_t pixel = image.At(view.CanvasX({x, y, 0}), view.CanvasY({x, y, 0}));
+      ++checked;
+      EXPECT_EQ(std::count(colours.begin(), colours.end(), pixel), 0)
+          << s.name << ": a building's colour at (" << x << ", " << y << ")";
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(Map, EveryShippedScenarioShowsItsBuildings) {
+  const auto files = ShippedScenarios();
+  ASSERT_GE(files.size(), 5u);
+  for (const auto& file : files) {
+    const MapScene scene = BaselineScene(file);
+    const Image image(RenderMap(scene, MapFormat::kPng));
+    ASSERT_TRUE(image.ok()) << file;
+    const MapLayout layout = LayoutOf(scene);
+    EXPECT_EQ(image.width(), static_cast<int>(std::ceil(layout.width * kPngPixelsPerPoint)));
+    ExpectBuildingsWhereTheScenarioPutsThem(scene, image, layout.top);
+    ExpectNoBuildingElsewhere(scene, image, layout.top);
+  }
+}
+
+// Scenario C at its baseline, the UAV 25 m over the tower (45-55 x 45-55, 20 m): ue3 at (5, 15)
+// sees it over the tower's roof (the line crosses x = 45 at 22.4 m); ue0 at (85, 25) does not,
+// the east hall (72-80 x 30-70, 15 m) is in the way (the line enters it at 6.2 m).
+TEST(Map, UeMarkersHaveTheirLinksColour) {
+  const MapScene scene = BaselineScene(kScenarios + "/c.json");
+  const Image image(RenderMap(scene, MapFormat::kPng));
+  ASSERT_TRUE(image.ok());
+  const View& top = LayoutOf(scene).top;
+  const auto colour_of = [&](const std::string& name) {
+    for (const auto& ue : scene.scenario.ues) {
+      if (ue.name == name)
+        return image.At(top.CanvasX(ue.position), top.CanvasY(ue.position));
+    }
+    ADD_FAILURE() << "no UE " << name;
+    return 0u;
+  };
+  EXPECT_EQ(colour_of("ue3"), kLos.ToHex());
+  EXPECT_EQ(colour_of("ue0"), kNlos.ToHex());
+  EXPECT_EQ(colour_of("ue2"), kNlos.ToHex());
+}
+
+// With several UAVs a UE has its serving UAV's colour.
+TEST(Map, SeveralUavsColourTheUesByServingUav) {
+  const MapScene scene = BaselineScene(kScenarios + "/campus2.json");
+  const Image image(RenderMap(scene, MapFormat::kPng));
+  const View& top = LayoutOf(scene).top;
+  ASSERT_EQ(scene.links.size(), scene.scenario.ues.size());
+  for (std::size_t i = 0; i < scene.links.size(); ++i) {
+    const Vec3& p = scene.scenario.ues[i].position;
+    EXPECT_EQ(image.At(top.CanvasX(p), top.CanvasY(p)),
+              UavColour(scene.links[i].serving_uav).ToHex())
+        << scene.scenario.ues[i].name;
+  }
+}
+
+// Seen from the south, the south block (y 18-26, 25 m) stands before the tower (y 45-55, 20 m);
+// seen from the east, the east hall (x 72-80, 15 m) before the tower.
+TEST(Map, ElevationViewsDrawTheNearestBuildingInFront) {
+  const MapScene scene = BaselineScene(kScenarios + "/c.json", true);
+  const Image image(RenderMap(scene, MapFormat::kPng));
+  const MapLayout layout = LayoutOf(scene);
+  ASSERT_TRUE(layout.side);
+  EXPECT_EQ(image.height(), static_cast<int>(std::ceil(layout.height * kPngPixelsPerPoint)));
+  const Vec3 p{50, 50, 12};
+  EXPECT_EQ(image.At(layout.xz.CanvasX(p), layout.xz.CanvasY(p)), BuildingColour(25, 60).ToHex());
+  EXPECT_EQ(image.At(layout.yz.CanvasX(p), layout.yz.CanvasY(p)), BuildingColour(15, 60).ToHex());
+  const Vec3 sky{52, 50, 45};  // off the grid lines
+  EXPECT_EQ(image.At(layout.xz.CanvasX(sky), layout.xz.CanvasY(sky)), kGround.ToHex());
+}
+
+TEST(Map, SvgIsTheSameBytesEachTime) {
+  MapScene scene = BaselineScene(kScenarios + "/urban3.json", true);
+  const std::string first = RenderMap(scene, MapFormat::kSvg);
+  EXPECT_EQ(first.rfind("<?xml", 0), 0u);
+  EXPECT_NE(first.find("<svg"), std::string::npos);
+  // Cairo numbers its surfaces process-wide; the SVG must not show it.
+  EXPECT_TRUE(RenderMap(scene, MapFormat::kSvg) == first);
+  EXPECT_TRUE(RenderMap(scene, MapFormat::kPng) == RenderMap(scene, MapFormat::kPng));
+}
+
+TEST(Map, FormatFromTheExtension) {
+  EXPECT_EQ(MapFormatOf("maps/c.PNG", "--out"), MapFormat::kPng);
+  EXPECT_EQ(MapFormatOf("c.svg", "--out"), MapFormat::kSvg);
+  for (const char* bad : {"c.jpg", "c", "png", "dir.svg/c"}) {
+    EXPECT_THROW(MapFormatOf(bad, "--out"), ConfigError) << bad;
+  }
+}
+
+class TrajectoryCsv : public ::testing::Test {
+ protected:
+  void SetUp() override { scenario_ = LoadScenario(kScenarios + "/c.json", {}); }
+  std::string Write(const std::string& text) {
+    const std::string file = ::testing::TempDir() + "/trajectory.csv";
+    std::ofstream(file) << text;
+    return file;
+  }
+  std::string ErrorOf(const std::string& text) {
+    try {
+      ReadTrajectoryCsv(Write(text), scenario_, "--trajectory");
+    } catch (const ConfigError& e) {
+      return e.describe();
+    }
+    return "no error";
+  }
+  Scenario scenario_;
+};
+
+TEST_F(TrajectoryCsv, ReadsTheLastEpisodeFromTheStart) {
+  const std::string header = "episode,step,uav,action,x,y,z,n_los,throughput_mbps,reward\n";
+  const Flight f = ReadTrajectoryCsv(Write(header + "11,1,0,up,50,50,30,1,10,0.1\n"
+                                                    "12,1,0,right,55,50,25,1,10,0.1\n"
+                                                    "12,2,0,right,60,50,25,2,20,0.2\n"),
+                                     scenario_, "--trajectory");
+  EXPECT_EQ(f.episode, 12);
+  ASSERT_EQ(f.paths.size(), 1u);
+  ASSERT_EQ(f.paths[0].points.size(), 3u);  // the baseline, then the two moves
+  EXPECT_EQ(f.paths[0].points[0].x, 50);
+  EXPECT_EQ(f.paths[0].points[2].x, 60);
+}
+
+TEST_F(TrajectoryCsv, BadFilesAreNamedErrors) {
+  EXPECT_NE(ErrorOf("episode,step,x,y,z\n1,1,5,5,5\n").find("no column \"uav\""),
+            std::string::npos);
+  EXPECT_NE(
+      ErrorOf("episode,uav,x,y,z\n1,0,5,oops,5\n").find("line 2: a cell that is not a number"),
+      std::string::npos);
+  EXPECT_NE(ErrorOf("episode,uav,x,y,z\n1,3,5,5,5\n").find("UAV 3 is not one of the 1"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("episode,uav,x,y,z\n").find("no steps"), std::string::npos);
+  try {
+    ReadTrajectoryCsv("/nonexistent/trajectory.csv", scenario_, "--trajectory");
+    ADD_FAILURE();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.describe(), "--trajectory: /nonexistent/trajectory.csv: cannot open file");
+  }
+}
+
+}  // namespace
+}  // namespace rlpos::map

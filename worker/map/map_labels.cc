@@ -1,0 +1,257 @@
+// The top view's labels: each building's name and height inside it (turned to fit a narrow one),
+// then the UAVs' heights and the UEs' demands, each put where it hides no marker and no other
+// label (the first free spot of a few around its point).
+#include <cmath>
+#include <vector>
+
+#include "worker/map/map_painter.h"
+
+namespace rlpos::map {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kBuildingFont = 10;
+constexpr double kUeFont = 10;
+constexpr double kUavFont = 10;
+
+struct BuildingLabel {
+  std::vector<std::string> lines;
+  bool turned = false;  // written bottom to top, along a footprint taller than wide
+};
+
+// The first of the label's forms that fits the footprint (w x h points), or none.
+bool FitBuildingLabel(cairo_t* cr, const BuildingSpec& b, double w, double h,
+                      BuildingLabel& label) {
+  const std::string height = ShortNumber(b.height) + " m";
+  const std::vector<std::vector<std::string>> forms = {
+      {b.name, height}, {b.name + ", " + height}, {height}};
+  const double line_height = kBuildingFont * 1.25;
+  for (const auto& lines : forms) {
+    double width = 0;
+    for (const auto& line : lines)
+      width = std::max(width, MeasureText(cr, line, 0, 0, Anchor::kLeft).width);
+    const double tall = line_height * static_cast<double>(lines.size());
+    for (bool turned : {false, true}) {
+      const double across = turned ? h : w, along = turned ? w : h;
+      if (width + 6 <= across && tall + 2 <= along) {
+        label = {lines, turned};
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+void DrawBuildingLabel(cairo_t* cr, const BuildingLabel& label, double cx, double cy, bool light) {
+  const double line_height = kBuildingFont * 1.25;
+  const double n = static_cast<double>(label.lines.size());
+  cairo_save(cr);
+  cairo_translate(cr, cx, cy);
+  if (label.turned)
+    cairo_rotate(cr, -kPi / 2);
+  SetColour(cr, light ? kBackground : kInk);
+  for (std::size_t k = 0; k < label.lines.size(); ++k) {
+    const double y = -n * line_height / 2 + line_height * (static_cast<double>(k) + 0.78);
+    DrawText(cr, label.lines[k], 0, y, Anchor::kCentre);
+  }
+  cairo_restore(cr);
+}
+
+TextBox PointBox(double x, double y, double size) {
+  return {x - size / 2, y - size / 2, size, size};
+}
+
+// Puts `text` near (x, y), clear of `taken` if it can, inside `frame`; returns its box.
+struct Segment {
+  double x0, y0, x1, y1;
+};
+
+// What a label should not cover: markers and other labels (worse), and lines (links, flights).
+struct Obstacles {
+  std::vector<TextBox> boxes;
+  std::vector<Segment> lines;
+};
+
+// Whether the segment crosses the box (clipped against it, Liang-Barsky).
+bool Crosses(const Segment& s, const TextBox& b) {
+  double t0 = 0, t1 = 1;
+  const double dx = s.x1 - s.x0, dy = s.y1 - s.y0;
+  const double p[] = {-dx, dx, -dy, dy};
+  const double q[] = {s.x0 - b.left, b.left + b.width - s.x0, s.y0 - b.top,
+                      b.top + b.height - s.y0};
+  for (int k = 0; k < 4; ++k) {
+    if (p[k] == 0) {
+      if (q[k] < 0)
+        return false;
+      continue;
+    }
+    const double t = q[k] / p[k];
+    if (p[k] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+  }
+  return t0 <= t1;
+}
+
+int Cost(const TextBox& box, const Obstacles& o) {
+  int cost = 0;
+  for (const TextBox& t : o.boxes)
+    cost += box.Overlaps(t) ? 4 : 0;
+  for (const Segment& s : o.lines)
+    cost += Crosses(s, box) ? 1 : 0;
+  return cost;
+}
+
+TextBox PlaceLabel(cairo_t* cr, const std::string& text, double x, double y, double gap,
+                   const Obstacles& taken, const Rect& frame) {
+  struct Spot {
+    double dx, dy;
+    Anchor anchor;
+  };
+  const double h = MeasureText(cr, text, 0, 0, Anchor::kLeft).height;
+  const Spot spots[] = {{gap, h / 2 - 1, Anchor::kLeft},
+                        {-gap, h / 2 - 1, Anchor::kRight},
+                        {0, -gap, Anchor::kCentre},
+                        {0, gap + h - 1, Anchor::kCentre},
+                        {gap * 0.8, -gap * 0.8, Anchor::kLeft},
+                        {-gap * 0.8, -gap * 0.8, Anchor::kRight},
+                        {gap * 0.8, gap * 0.8 + h - 2, Anchor::kLeft},
+                        {-gap * 0.8, gap * 0.8 + h - 2, Anchor::kRight}};
+  TextBox best;
+  int best_overlaps = -1;
+  for (const Spot& s : spots) {
+    const TextBox box = MeasureText(cr, text, x + s.dx, y + s.dy, s.anchor);
+    if (box.left < frame.left + 2 || box.left + box.width > frame.right() - 2 ||
+        box.top < frame.top + 2 || box.top + box.height > frame.bottom() - 2)
+      continue;
+    const int overlaps = Cost(box, taken);
+    if (best_overlaps < 0 || overlaps < best_overlaps) {
+      best = box;
+      best_overlaps = overlaps;
+      if (overlaps == 0)
+        break;
+    }
+  }
+  if (best_overlaps < 0)
+    best = MeasureText(cr, text, x + gap, y + h / 2 - 1, Anchor::kLeft);
+  return best;
+}
+
+void DrawPlaced(cairo_t* cr, const std::string& text, const TextBox& box, const Rgb& colour) {
+  cairo_font_extents_t font;
+  cairo_font_extents(cr, &font);
+  SetColour(cr, colour);
+  DrawHaloText(cr, text, box.left, box.top + font.ascent * 0.8, Anchor::kLeft, kBackground);
+}
+
+std::vector<TextBox> MarkerBoxes(const MapScene& scene, const View& view) {
+  std::vector<TextBox> boxes;
+  for (const auto& ue : scene.scenario.ues)
+    boxes.push_back(PointBox(view.CanvasX(ue.position), view.CanvasY(ue.position), kUeMarkerSize));
+  for (const auto& placement : scene.placements) {
+    const double size = scene.placements.size() == 1 ? kUavGlyphSize : kPlacementMarkerSize;
+    for (const Vec3& p : placement.positions)
+      boxes.push_back(PointBox(view.CanvasX(p), view.CanvasY(p), size));
+  }
+  return boxes;
+}
+
+// The box a building label takes centred on (cx, cy), in the font selected.
+TextBox LabelBox(cairo_t* cr, const BuildingLabel& label, double cx, double cy) {
+  double width = 0;
+  for (const auto& line : label.lines)
+    width = std::max(width, MeasureText(cr, line, 0, 0, Anchor::kLeft).width);
+  const double tall = kBuildingFont * 1.25 * static_cast<double>(label.lines.size());
+  const double w = label.turned ? tall : width, h = label.turned ? width : tall;
+  return {cx - w / 2, cy - h / 2, w, h};
+}
+
+bool Hides(const TextBox& box, const std::vector<TextBox>& markers) {
+  for (const TextBox& m : markers) {
+    if (box.Overlaps(m, 0.0))
+      return true;
+  }
+  return false;
+}
+
+// The links (one placement) and the flight, as drawn in the view.
+std::vector<Segment> Lines(const MapScene& scene, const View& view) {
+  std::vector<Segment> lines;
+  if (!scene.links.empty() && scene.placements.size() == 1) {
+    const Placement& uavs = scene.placements.front().positions;
+    for (std::size_t i = 0; i < scene.links.size(); ++i) {
+      const Vec3& a = scene.scenario.ues[i].position;
+      const Vec3& b = uavs.at(static_cast<std::size_t>(scene.links[i].serving_uav));
+      lines.push_back({view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b)});
+    }
+  }
+  for (const FlightPath& path : scene.flight) {
+    for (std::size_t k = 1; k < path.points.size(); ++k) {
+      const Vec3 &a = path.points[k - 1], &b = path.points[k];
+      lines.push_back({view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b)});
+    }
+  }
+  return lines;
+}
+
+}  // namespace
+
+std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view) {
+  const Scenario& s = scene.scenario;
+  const std::vector<TextBox> markers = MarkerBoxes(scene, view);
+  std::vector<TextBox> boxes;
+  SelectFont(cr, kBuildingFont);
+  for (const BuildingSpec& b : s.buildings) {
+    const double w = (b.xmax - b.xmin) * view.scale, h = (b.ymax - b.ymin) * view.scale;
+    const double cx = view.CanvasX({(b.xmin + b.xmax) / 2, 0, 0});
+    const double cy = view.CanvasY({0, (b.ymin + b.ymax) / 2, 0});
+    BuildingLabel label;
+    if (FitBuildingLabel(cr, b, w, h, label) && !Hides(LabelBox(cr, label, cx, cy), markers)) {
+      DrawBuildingLabel(cr, label, cx, cy, BuildingTextIsLight(b.height, s.venue.height));
+      boxes.push_back(LabelBox(cr, label, cx, cy));
+      continue;
+    }
+    // Too small for its label, or a UAV or UE sits where it would go: the label goes beside the
+    // building, with a halo, where it hides nothing.
+    const std::string text = b.name + ", " + ShortNumber(b.height) + " m";
+    Obstacles taken{markers, Lines(scene, view)};
+    taken.boxes.insert(taken.boxes.end(), boxes.begin(), boxes.end());
+    const TextBox box = PlaceLabel(cr, text, cx, cy, std::max(w, h) / 2 + 6, taken, view.rect);
+    DrawPlaced(cr, text, box, kInk);
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
+                  std::vector<TextBox> labels) {
+  const Scenario& s = scene.scenario;
+  Obstacles taken{std::move(labels), Lines(scene, view)};
+  for (const TextBox& box : MarkerBoxes(scene, view))
+    taken.boxes.push_back(box);
+  // The UAVs' heights first (a top view hides them), then the demands.
+  if (scene.placements.size() == 1) {
+    SelectFont(cr, kUavFont, true);
+    const Placement& positions = scene.placements.front().positions;
+    for (std::size_t u = 0; u < positions.size(); ++u) {
+      const Vec3& p = positions[u];
+      const std::string text = (s.uavs.size() > 1 ? s.uavs[u].name + ", " : std::string()) + "z " +
+                               ShortNumber(p.z) + " m";
+      const TextBox box = PlaceLabel(cr, text, view.CanvasX(p), view.CanvasY(p),
+                                     kUavGlyphSize / 2 + 4, taken, view.rect);
+      DrawPlaced(cr, text, box, s.uavs.size() > 1 ? UavColour(static_cast<int>(u)) : kInk);
+      taken.boxes.push_back(box);
+    }
+  }
+  SelectFont(cr, kUeFont);
+  for (const UeSpec& ue : s.ues) {
+    const std::string text = ShortNumber(ue.demand_mbps);
+    const double x = view.CanvasX(ue.position), y = view.CanvasY(ue.position);
+    const TextBox box = PlaceLabel(cr, text, x, y, kUeMarkerSize / 2 + 3, taken, view.rect);
+    DrawPlaced(cr, text, box, kInk);
+    taken.boxes.push_back(box);
+  }
+}
+
+}  // namespace rlpos::map
