@@ -6,6 +6,8 @@
 //                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
 //   rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]
+//   rlpos-sim generate --seed N [--style urban|campus|suburb|open] [--uavs K] [--ues M]
+//                      [--out FILE]
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
 #include <unistd.h>
@@ -17,6 +19,7 @@
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
 #include "worker/sim/describe_command.h"
+#include "worker/sim/generate_command.h"
 
 namespace {
 
@@ -34,6 +37,7 @@ struct Invocation {
   CLI::App* position = nullptr;
   PositionOptions position_options;
   DescribeCommand describe;
+  GenerateCommand generate;
 };
 
 void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
@@ -119,6 +123,8 @@ int Run(const Invocation& in) {
       return RunValidate(in.options, in.validate_json);
     if (*in.describe.command)
       return RunDescribe(in.describe);
+    if (*in.generate.command)
+      return RunGenerate(in.generate);
     if (*in.train)
       return RunTrain(in.options, in.train_options);
     if (*in.position)
@@ -147,6 +153,7 @@ int main(int argc, char** argv) {
   AddTrain(app, in);
   AddPosition(app, in);
   AddDescribe(app, in.describe);
+  AddGenerate(app, in.generate);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
