@@ -56,6 +56,7 @@ std::string GenerateCommandLine(const GeneratorOptions& o) {
 GeneratedScenario GenerateScenario(const GeneratorOptions& options, int max_attempts) {
   GeneratedScenario result;
   result.options = ResolvedOptions(options);
+  const GeneratorOptions& o = result.options;
   const bool has_buildings = *result.options.style != GeneratorStyle::kOpen;
   PortableRandom random(options.seed);
   for (int attempt = 1; attempt <= max_attempts; ++attempt) {
@@ -65,9 +66,11 @@ GeneratedScenario GenerateScenario(const GeneratorOptions& options, int max_atte
     const int hidden = UesHiddenFromAll(*drawn, drawn->InitialPlacement());
     if (has_buildings && hidden == 0)
       continue;  // the baseline would see every UE: nothing for a positioner to find
-    if (has_buildings)
+    if (has_buildings) {
       drawn->description += " At the baseline " + std::to_string(hidden) + " of " +
-                            std::to_string(drawn->ues.size()) + " UEs are NLoS.";
+                            std::to_string(drawn->ues.size()) + " UEs are " +
+                            (o.uavs == 1 ? "NLoS." : "hidden from every UAV.");
+    }
     std::string text = GeneratedJsonText(*drawn);
     Scenario parsed;
     try {
