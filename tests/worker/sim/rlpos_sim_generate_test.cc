@@ -1,9 +1,14 @@
 // rlpos-sim generate as a user runs it: a scenario rlpos-sim validate accepts, the same bytes on
-// stdout, in a file and across processes, one-line errors for bad options and nothing written.
+// stdout, in a file and across processes, one-line errors for bad options and nothing written;
+// and scripts/generate_scenario_set.sh's two sets.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <vector>
 
 #include "tests/support/command.h"
 #include "tests/support/temp_dir.h"
@@ -97,6 +102,61 @@ TEST(RlposSimGenerate, AnUnwritableOutLeavesNothingBehind) {
     ++entries;
   }
   EXPECT_EQ(entries, 2u) << "only taken/ and kept.json";
+}
+
+// index.tsv of a set as rows of its columns (file, seed, style, uavs, ues), header left out.
+std::vector<std::vector<std::string>> IndexRows(const std::string& folder) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(ReadFile(folder + "/index.tsv"));
+  std::string line;
+  std::getline(lines, line);
+  while (std::getline(lines, line)) {
+    std::vector<std::string> row;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, '\t'))
+      row.push_back(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(GenerateScenarioSet, TrainAndHeldOutAreDisjointAndCoverTheStyles) {
+  TempDir dir;
+  const std::string script = std::string(RLPOS_SOURCE_DIR) + "/scripts/generate_scenario_set.sh";
+  const std::string build =
+      std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
+  std::map<std::string, std::set<std::string>> seeds;
+  for (const std::string set : {"train", "heldout"}) {
+    const auto r =
+        RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::map<std::string, int> one_uav, more_uavs;  // per style
+    for (const auto& row : IndexRows(dir.File(set))) {
+      ASSERT_EQ(row.size(), 5u);
+      EXPECT_TRUE(std::filesystem::exists(dir.File(set) + "/" + row[0])) << row[0];
+      seeds[set].insert(row[1]);
+      (row[3] == "1" ? one_uav : more_uavs)[row[2]] += 1;
+    }
+    EXPECT_EQ(one_uav.size(), 4u) << set << ": every style with one UAV";
+    EXPECT_EQ(more_uavs.size(), 4u) << set << ": every style with two or three";
+    if (set == "heldout") {
+      int one = 0, more = 0;
+      for (const auto& [style, n] : one_uav)
+        one += n;
+      for (const auto& [style, n] : more_uavs)
+        more += n;
+      EXPECT_GE(one, 30);
+      EXPECT_GE(more, 15);
+    }
+  }
+  for (const auto& seed : seeds["train"])
+    EXPECT_EQ(seeds["heldout"].count(seed), 0u) << "seed " << seed << " in both sets";
+  // A set is never written over another.
+  const auto again =
+      RunCommand(script + " --set train --out " + dir.File("train") + " --build " + build);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("exists and is not an empty folder"), std::string::npos) << again.err;
 }
 
 }  // namespace
