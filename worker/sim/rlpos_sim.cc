@@ -8,6 +8,8 @@
 //   rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]
 //   rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]
 //   rlpos-sim render SCENARIO [--position x,y,z]... [--result FILE] [--side] --out FILE.png|.svg
+//   rlpos-sim generate --seed N [--style urban|campus|suburb|open] [--uavs K] [--ues M]
+//                      [--out FILE]
 // Exit codes: 0 success, 1 runtime failure, 2 bad input (usage, scenario, position),
 // 3 ns-3 aborted the simulation.
 #include <unistd.h>
@@ -21,6 +23,7 @@
 #include "worker/sim/describe_command.h"
 #include "worker/sim/import_command.h"
 #include "worker/sim/render_command.h"
+#include "worker/sim/generate_command.h"
 
 namespace {
 
@@ -40,6 +43,7 @@ struct Invocation {
   DescribeCommand describe;
   ImportCommand import;
   RenderCommand render;
+  GenerateCommand generate;
 };
 
 void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
@@ -127,6 +131,8 @@ int Run(const Invocation& in) {
       return RunDescribe(in.describe);
     if (*in.import.command)
       return RunImport(in.import, in.options.scenario_file);
+    if (*in.generate.command)
+      return RunGenerate(in.generate);
     if (*in.train)
       return RunTrain(in.options, in.train_options);
     if (*in.position)
@@ -160,6 +166,7 @@ int main(int argc, char** argv) {
   AddImport(app, in.import, in.options.scenario_file);
   AddRender(app, in.render, in.options);
   AddScenarioOverrides(in.render.command, in.options);
+  AddGenerate(app, in.generate);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

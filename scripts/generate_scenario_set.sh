@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Writes a named set of generated scenarios: "train" to tune on, "heldout" to report on. Each
+# scenario is written by rlpos-sim generate and checked by rlpos-sim validate; the set appears
+# whole (written beside DIR, then renamed) or not at all.
+#   scripts/generate_scenario_set.sh --set train|heldout --out DIR [--build BUILD_DIR]
+# Seeds are fixed and the two sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
+#   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
+#   base: train 10000, heldout 90000; style: urban 0, campus 1, suburb 2, open 3.
+# Scenarios per style and UAV count (1, 2, 3): train 5, 2, 1 (32 in all); heldout 8, 2, 2 (48).
+# DIR/index.tsv lists file, seed, style, UAVs and UEs.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+set_name="" out="" build="$here/build"
+usage() { echo "usage: $0 --set train|heldout --out DIR [--build BUILD_DIR]" >&2; exit 2; }
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --set) set_name=${2:-}; shift 2 || usage ;;
+    --out) out=${2:-}; shift 2 || usage ;;
+    --build) build=${2:-}; shift 2 || usage ;;
+    *) usage ;;
+  esac
+done
+case "$set_name" in
+  train) base=10000; counts=(5 2 1) ;;
+  heldout) base=90000; counts=(8 2 2) ;;
+  *) echo "generate_scenario_set: --set must be train or heldout" >&2; exit 2 ;;
+esac
+[ -n "$out" ] || usage
+sim="$build/bin/rlpos-sim"
+[ -x "$sim" ] || { echo "generate_scenario_set: $sim not built (run scripts/bootstrap)" >&2; exit 1; }
+if [ -e "$out" ] && [ -n "$(ls -A "$out" 2>/dev/null || echo file)" ]; then
+  echo "generate_scenario_set: $out exists and is not an empty folder" >&2
+  exit 2
+fi
+mkdir -p "$(dirname "$out")"
+work=$(mktemp -d "$(dirname "$out")/.$(basename "$out").XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+styles=(urban campus suburb open)
+printf 'file\tseed\tstyle\tuavs\tues\n' > "$work/index.tsv"
+for uavs in 1 2 3; do
+  for s in 0 1 2 3; do
+    for ((i = 0; i < counts[uavs - 1]; i++)); do
+      seed=$((base + 1000 * uavs + 100 * s + i))
+      file="${styles[s]}-${uavs}uav-s$seed.json"
+      "$sim" generate --seed "$seed" --style "${styles[s]}" --uavs "$uavs" --out "$work/$file"
+      "$sim" validate "$work/$file" > /dev/null
+      ues=$(/usr/bin/python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["ues"]))' \
+        "$work/$file")
+      printf '%s\t%s\t%s\t%s\t%s\n' "$file" "$seed" "${styles[s]}" "$uavs" "$ues" >> "$work/index.tsv"
+    done
+  done
+done
+rmdir "$out" 2>/dev/null || true
+mv "$work" "$out"
+chmod 755 "$out"
+trap - EXIT
+echo "$set_name: $(($(wc -l < "$out/index.tsv") - 1)) scenarios in $out"

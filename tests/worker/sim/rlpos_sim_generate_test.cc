@@ -1,0 +1,163 @@
+// rlpos-sim generate as a user runs it: a scenario rlpos-sim validate accepts, the same bytes on
+// stdout, in a file and across processes, one-line errors for bad options and nothing written;
+// and scripts/generate_scenario_set.sh's two sets.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include "tests/support/command.h"
+#include "tests/support/temp_dir.h"
+
+namespace rlpos::testing {
+namespace {
+
+std::string Sim(const std::string& args) {
+  return BuiltBinary("rlpos-sim") + " " + args;
+}
+
+void ExpectOneLineError(const CommandResult& r, const std::string& fragment) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "stdout must stay empty on failure: " << r.out;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err;
+  EXPECT_EQ(r.err.find("rlpos-sim: error: "), 0u) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+}
+
+TEST(RlposSimGenerate, WritesAScenarioThatValidates) {
+  TempDir dir;
+  const auto r = RunCommand(Sim("generate --seed 5 --style campus --uavs 2"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  WriteFile(dir.File("campus.json"), r.out);
+  const auto v = RunCommand(Sim("validate --json " + dir.File("campus.json")));
+  ASSERT_EQ(v.exit_code, 0) << v.err;
+  const auto summary = nlohmann::json::parse(v.out);
+  EXPECT_EQ(summary["uavs"].size(), 2u);
+  EXPECT_EQ(summary["ues"], 14);  // campus: 10, and 4 more for the second UAV
+  EXPECT_LT(summary["n_los_at_baseline"].get<int>(), 14) << "a UE is NLoS at the baseline";
+}
+
+TEST(RlposSimGenerate, SameSeedSameBytesInAFileAndAcrossProcesses) {
+  TempDir dir;
+  const auto first = RunCommand(Sim("generate --seed 17 --style urban"));
+  const auto second = RunCommand(Sim("generate --seed 17 --style urban"));
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_EQ(first.out, second.out);
+  const auto to_file =
+      RunCommand(Sim("generate --seed 17 --style urban --out " + dir.File("u.json")));
+  ASSERT_EQ(to_file.exit_code, 0) << to_file.err;
+  EXPECT_TRUE(to_file.out.empty());
+  EXPECT_EQ(ReadFile(dir.File("u.json")), first.out);
+  EXPECT_NE(RunCommand(Sim("generate --seed 18 --style urban")).out, first.out);
+}
+
+TEST(RlposSimGenerate, TheSeedChoosesTheStyleWhenNoneIsGiven) {
+  const auto r = RunCommand(Sim("generate --seed 6"));  // 6 mod 4: suburb
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["name"], "gen-suburb-1uav-s6");
+}
+
+TEST(RlposSimGenerate, BadOptionsAreOneLineErrors) {
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --style downtown")),
+                     "--style: unknown style \"downtown\" (urban, campus, suburb or open)");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --uavs 0")),
+                     "--uavs: 0 is out of range (1 to 3)");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --uavs 4")),
+                     "--uavs: 4 is out of range (1 to 3)");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --ues 0")),
+                     "--ues: 0 is out of range (1 to 100)");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --ues 1000000")),
+                     "--ues: 1000000 is out of range (1 to 100)");
+  ExpectOneLineError(RunCommand(Sim("generate --seed -1")), "--seed: \"-1\" is not a whole number");
+  ExpectOneLineError(RunCommand(Sim("generate --seed=-1")), "--seed: \"-1\" is not a whole number");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 2.5")),
+                     "--seed: \"2.5\" is not a whole number");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 99999999999999999999")),
+                     "--seed: 99999999999999999999 is out of range");
+  const auto missing = RunCommand(Sim("generate --style urban"));
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_TRUE(missing.out.empty());
+}
+
+TEST(RlposSimGenerate, AnUnwritableOutLeavesNothingBehind) {
+  TempDir dir;
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --out " + dir.File("no/such/dir.json"))),
+                     "--out: cannot write " + dir.File("no/such/dir.json"));
+  // A folder where the file should go: the rename fails, and the temporary file goes too.
+  std::filesystem::create_directory(dir.File("taken"));
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --out " + dir.File("taken"))),
+                     "--out: cannot write " + dir.File("taken"));
+  // A bad option leaves an existing file as it was.
+  WriteFile(dir.File("kept.json"), "old");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --uavs 9 --out " + dir.File("kept.json"))),
+                     "--uavs");
+  EXPECT_EQ(ReadFile(dir.File("kept.json")), "old");
+  std::size_t entries = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+    (void)entry;
+    ++entries;
+  }
+  EXPECT_EQ(entries, 2u) << "only taken/ and kept.json";
+}
+
+// index.tsv of a set as rows of its columns (file, seed, style, uavs, ues), header left out.
+std::vector<std::vector<std::string>> IndexRows(const std::string& folder) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(ReadFile(folder + "/index.tsv"));
+  std::string line;
+  std::getline(lines, line);
+  while (std::getline(lines, line)) {
+    std::vector<std::string> row;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, '\t'))
+      row.push_back(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(GenerateScenarioSet, TrainAndHeldOutAreDisjointAndCoverTheStyles) {
+  TempDir dir;
+  const std::string script = std::string(RLPOS_SOURCE_DIR) + "/scripts/generate_scenario_set.sh";
+  const std::string build =
+      std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
+  std::map<std::string, std::set<std::string>> seeds;
+  for (const std::string set : {"train", "heldout"}) {
+    const auto r =
+        RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::map<std::string, int> one_uav, more_uavs;  // per style
+    for (const auto& row : IndexRows(dir.File(set))) {
+      ASSERT_EQ(row.size(), 5u);
+      EXPECT_TRUE(std::filesystem::exists(dir.File(set) + "/" + row[0])) << row[0];
+      seeds[set].insert(row[1]);
+      (row[3] == "1" ? one_uav : more_uavs)[row[2]] += 1;
+    }
+    EXPECT_EQ(one_uav.size(), 4u) << set << ": every style with one UAV";
+    EXPECT_EQ(more_uavs.size(), 4u) << set << ": every style with two or three";
+    if (set == "heldout") {
+      int one = 0, more = 0;
+      for (const auto& [style, n] : one_uav)
+        one += n;
+      for (const auto& [style, n] : more_uavs)
+        more += n;
+      EXPECT_GE(one, 30);
+      EXPECT_GE(more, 15);
+    }
+  }
+  for (const auto& seed : seeds["train"])
+    EXPECT_EQ(seeds["heldout"].count(seed), 0u) << "seed " << seed << " in both sets";
+  // A set is never written over another.
+  const auto again =
+      RunCommand(script + " --set train --out " + dir.File("train") + " --build " + build);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("exists and is not an empty folder"), std::string::npos) << again.err;
+}
+
+}  // namespace
+}  // namespace rlpos::testing
