@@ -8,6 +8,10 @@ one row per run and a summary per algorithm and scenario. Asserts nothing.
 
   scripts/bench_agents.py [--build DIR] [--seeds 1-10] [--algorithms dqn,ppo,sac]
                           [--scenarios a,b,c] [--target 0.95] [--set PATH=VALUE ...]
+
+--scenarios takes shipped names (a, b, c, campus2, ...), scenario files, or a folder of them
+(a set written by scripts/generate_scenario_set.sh). Scenarios of several UAVs are judged
+against the oracle's coordinate descent, as the multi-UAV figures are.
 """
 import argparse
 import json
@@ -31,6 +35,18 @@ def run_json(argv):
     if done.returncode != 0:
         sys.exit("bench_agents: %s failed: %s" % (" ".join(argv[:3]), done.stderr.strip()[-400:]))
     return json.loads(done.stdout)
+
+
+def scenario_files(text):
+    files = []
+    for item in text.split(","):
+        if os.path.isdir(item):
+            files += sorted(os.path.join(item, f) for f in os.listdir(item) if f.endswith(".json"))
+        elif item.endswith(".json"):
+            files.append(item)
+        else:
+            files.append(os.path.join(REPO, "campaigns", "scenarios", item + ".json"))
+    return files
 
 
 def oracle_reward(sim, scenario, algorithm):
@@ -60,14 +76,14 @@ def main():
     sim = os.path.join(args.build, "bin", "rlpos-sim")
     seeds = seeds_of(args.seeds)
     algorithms = args.algorithms.split(",")
-    scenarios = args.scenarios.split(",")
+    scenarios = scenario_files(args.scenarios)
 
     rows = []
-    print("%-4s %-3s %4s %8s %8s %6s %5s %7s %7s" %
+    print("%-4s %-22s %4s %8s %8s %6s %5s %7s %7s" %
           ("alg", "sc", "seed", "reward", "oracle", "ratio", "nLoS", "steps", "wall_s"))
     with tempfile.TemporaryDirectory() as work:
-        for name in scenarios:
-            scenario = os.path.join(REPO, "campaigns", "scenarios", name + ".json")
+        for scenario in scenarios:
+            name = os.path.splitext(os.path.basename(scenario))[0]
             oracles = {}
             for algorithm in algorithms:
                 space = "continuous" if algorithm == "sac" else "discrete"
@@ -87,7 +103,7 @@ def main():
                            "steps": env_steps(out), "wall": wall}
                     row["ratio"] = row["reward"] / row["oracle"]
                     rows.append(row)
-                    print("%-4s %-3s %4d %8.4f %8.4f %6.3f %2d/%-2d %7d %7.1f" %
+                    print("%-4s %-22s %4d %8.4f %8.4f %6.3f %2d/%-2d %7d %7.1f" %
                           (algorithm, name, seed, row["reward"], row["oracle"], row["ratio"],
                            row["n_los"], row["n_ues"], row["steps"], wall), flush=True)
 
@@ -96,13 +112,13 @@ def main():
           "| env steps | mean train wall (s) |")
     print("|---|---|---|---|---|---|---|---|")
     for algorithm in algorithms:
-        for name in scenarios:
+        for name in [os.path.splitext(os.path.basename(f))[0] for f in scenarios]:
             group = [r for r in rows if r["algorithm"] == algorithm and r["scenario"] == name]
             if not group:
                 continue
             n = len(group)
             print("| %s | %s | %d/%d | %.3f | %.3f | %.1f/%d | %d | %.1f |" % (
-                algorithm, name.upper(), sum(r["ratio"] >= args.target for r in group), n,
+                algorithm, name, sum(r["ratio"] >= args.target for r in group), n,
                 sum(r["ratio"] for r in group) / n, min(r["ratio"] for r in group),
                 sum(r["n_los"] for r in group) / n, group[0]["n_ues"], group[0]["steps"],
                 sum(r["wall"] for r in group) / n))
