@@ -59,11 +59,15 @@ struct DqnAgent::Impl {
     torch::Tensor not_terminal = torch::empty({n});
     std::vector<const ActionMask*> next_masks;
     bool masked = false;
+    // Accessors, not tensor[r] = x: each of those is a tensor op, three per row and update.
+    auto action_at = actions.accessor<std::int64_t, 1>();
+    auto reward_at = rewards.accessor<float, 1>();
+    auto not_terminal_at = not_terminal.accessor<float, 1>();
     for (long r = 0; r < n; ++r) {
       const auto& tr = replay.At(indices[r]);
-      actions[r] = tr.action;
-      rewards[r] = spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
-      not_terminal[r] = tr.terminal ? 0.0f : 1.0f;
+      action_at[r] = tr.action;
+      reward_at[r] = spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
+      not_terminal_at[r] = tr.terminal ? 0.0f : 1.0f;
       next_masks.push_back(&tr.next_mask);
       masked = masked || !tr.next_mask.empty();
     }

@@ -108,8 +108,9 @@ struct PpoAgent::Impl {
     const auto [advantages, returns] = AdvantagesAndReturns(obs, Observations(true));
     const long n = static_cast<long>(rollout.size());
     torch::Tensor actions = torch::empty({n}, torch::kLong);
+    auto action_at = actions.accessor<std::int64_t, 1>();  // not tensor[r] = x: a tensor op each
     for (long r = 0; r < n; ++r)
-      actions[r] = rollout[static_cast<std::size_t>(r)].action;
+      action_at[r] = rollout[static_cast<std::size_t>(r)].action;
     const torch::Tensor old_log_probs = torch::tensor(log_probs);
 
     std::vector<long> order(static_cast<std::size_t>(n));

@@ -110,10 +110,12 @@ struct SacAgent::Impl {
     const torch::Tensor actions = Stack(indices, action_dim, &Transition::continuous_action);
     torch::Tensor rewards = torch::empty({n});
     torch::Tensor not_terminal = torch::empty({n});
+    auto reward_at = rewards.accessor<float, 1>();  // not tensor[r] = x: a tensor op each
+    auto not_terminal_at = not_terminal.accessor<float, 1>();
     for (long r = 0; r < n; ++r) {
       const Transition& tr = replay.At(indices[static_cast<std::size_t>(r)]);
-      rewards[r] = spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
-      not_terminal[r] = tr.terminal ? 0.0f : 1.0f;
+      reward_at[r] = spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
+      not_terminal_at[r] = tr.terminal ? 0.0f : 1.0f;
     }
     const double alpha = Alpha();
     torch::Tensor target;

@@ -23,7 +23,9 @@ struct BoxSpace {
   std::vector<double> high;
   std::size_t Dim() const { return low.size(); }
   bool Contains(const std::vector<double>& x) const;
-  // Affine map of [low, high] onto [-1, 1] per dimension (what a network should see).
+  // Affine map of [low, high] onto [-1, 1] per dimension (what a network should see). A dimension
+  // with an infinite bound (a velocity of Gymnasium's CartPole) is passed unscaled: the map
+  // would send every value to one constant (or NaN).
   std::vector<float> Normalise(const std::vector<double>& x) const;
 };
 

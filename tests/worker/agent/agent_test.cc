@@ -196,6 +196,27 @@ TEST(DqnAgent, NormalisedRewardsResolveAOnePercentGap) {
   EXPECT_EQ(agent.Act({0.0f}, {}, false), 1);
 }
 
+// The value of a state whose episodes only run out of time is bootstrapped through the cut;
+// that of a terminal end is not (a bug here caps every value at an episode's rewards).
+float LearnedValueOfOneStepEpisodes(bool truncate) {
+  OneStepEnv env(truncate);
+  AgentSpec spec = SmallSpec(8);
+  spec.normalise_rewards = false;  // a constant reward would standardise to 0
+  spec.gamma = 0.5;
+  spec.batch_size = 8;
+  spec.warmup_steps = 8;
+  spec.target_update_interval = 10;
+  spec.train_episodes = 600;
+  DqnAgent agent(spec, 1, 1);
+  Train(env, agent, spec, 1);
+  return agent.QValues({0.0f})[0];
+}
+
+TEST(DqnAgent, BootstrapsThroughTruncationNotThroughTermination) {
+  EXPECT_NEAR(LearnedValueOfOneStepEpisodes(false), 1.0f, 0.05f);
+  EXPECT_NEAR(LearnedValueOfOneStepEpisodes(true), 2.0f, 0.1f);  // 1 / (1 - 0.5)
+}
+
 TEST(DqnAgent, LearnsTheChain) {
   ChainEnv env;
   const AgentSpec spec = SmallSpec(3);

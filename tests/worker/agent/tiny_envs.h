@@ -74,4 +74,28 @@ class PointEnv : public Env {
   StepInfo info_;
 };
 
+// One state, one action paying 1; every episode is one step, ended by termination or, with
+// `truncate`, by the time limit: the value of the state is 1 if the end is terminal and
+// 1 / (1 - gamma) if the episode was only cut short (the state goes on).
+class OneStepEnv : public Env {
+ public:
+  explicit OneStepEnv(bool truncate) : truncate_(truncate) {}
+  DiscreteSpace ActionSpace() const override { return {1}; }
+  BoxSpace ObservationSpace() const override { return {{0}, {1}}; }
+  std::vector<double> Reset(std::uint64_t) override { return {0.5}; }
+  StepResult Step(int) override {
+    StepResult r;
+    r.observation = {0.5};
+    r.reward = 1.0;
+    r.terminated = !truncate_;
+    r.truncated = truncate_;
+    return r;
+  }
+  const StepInfo& LastInfo() const override { return info_; }
+
+ private:
+  bool truncate_;
+  StepInfo info_;
+};
+
 }  // namespace rlpos

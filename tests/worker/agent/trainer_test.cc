@@ -41,6 +41,40 @@ class ScriptedAgent : public Agent {
   int kept_ = -1;
 };
 
+// An agent that always moves one way and records the end flags of what it is told.
+class RecordingAgent : public Agent {
+ public:
+  explicit RecordingAgent(int action) : action_(action) {}
+  std::string Algorithm() const override { return "recording"; }
+  int Act(const std::vector<float>&, const ActionMask&, bool) override { return action_; }
+  std::optional<double> Observe(Transition t) override {
+    ends.emplace_back(t.terminal, t.episode_end);
+    return std::nullopt;
+  }
+  void KeepPolicy() override {}
+  void RestoreKeptPolicy() override {}
+  void Save(const std::string&) const override {}
+  void Load(const std::string&) override {}
+  std::vector<std::pair<bool, bool>> ends;  // terminal, episode_end per transition
+
+ private:
+  int action_;
+};
+
+TEST(Trainer, TellsTheAgentTerminationFromTruncation) {
+  ChainEnv env;  // the end (state 4) terminates; 20 steps truncate
+  RecordingAgent right(1);
+  RunEpisode(env, right, 1, true);
+  ASSERT_EQ(right.ends.size(), 4u);
+  EXPECT_EQ(right.ends.back(), std::make_pair(true, true));  // no bootstrap from a terminal state
+  RecordingAgent left(0);
+  RunEpisode(env, left, 1, true);
+  ASSERT_EQ(left.ends.size(), 20u);
+  EXPECT_EQ(left.ends.back(), std::make_pair(false, true));  // cut short: bootstrap, but end
+  for (std::size_t i = 0; i + 1 < left.ends.size(); ++i)
+    EXPECT_EQ(left.ends[i], std::make_pair(false, false)) << "step " << i + 1;
+}
+
 AgentSpec Spec(int train_episodes, int eval_interval) {
   AgentSpec spec;
   spec.train_episodes = train_episodes;
