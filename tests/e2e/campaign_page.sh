@@ -15,10 +15,12 @@ done
 mkdir -p "$OUT"
 
 DB=$WORK/rlpos.db
-start_run "$SRC/tests/e2e/campaigns/page_live.json"
-wait_until 60 test -n "$(sed -n 's/^campaign //p' "$WORK/out.txt")" || fail "run printed no campaign id"
-ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
-wait_until 30 test -f "$DB" || fail "no database"
+CAMPAIGN_FILE=$SRC/tests/e2e/campaigns/page_live.json
+ID=$("$CAMPAIGN" run "$CAMPAIGN_FILE" --dry-run | sed -n 's/^campaign \([0-9a-f]*\) .*/\1/p')
+[ -n "$ID" ] || fail "no campaign id from --dry-run"
+start_run "$CAMPAIGN_FILE"
+campaign_stored() { [ "$(sql "$DB" "SELECT COUNT(*) FROM campaigns WHERE id = '$ID'" 2>/dev/null)" = 1 ]; }
+wait_until 60 campaign_stored || fail "the campaign never reached the database"
 
 # A free loopback port: the server picks one and says which.
 "$CAMPAIGN" serve --db "$DB" --listen 127.0.0.1:0 >"$WORK/serve.txt" 2>"$WORK/serve.err" &

@@ -106,7 +106,8 @@ function linePlot(options) {
   const pw = W - M.l - M.r, ph = H - M.t - M.b;
   const root = svg('svg', { class: 'plot', viewBox: `0 0 ${W} ${H}`, 'data-kind': options.kind || '' });
   const all = options.series;
-  const [x0, x1] = extent(all.flatMap(s => s.x));
+  const [xa, xb] = extent(all.flatMap(s => s.x));
+  const pad = (xb - xa) * 0.04, x0 = xa - pad, x1 = xb + pad;
   const [y0, y1] = options.yDomain || extent(all.flatMap(s => s.y));
   const X = v => M.l + (v - x0) / (x1 - x0) * pw;
   const Y = v => M.t + ph - (v - y0) / (y1 - y0) * ph;
@@ -296,7 +297,8 @@ function objectTable(rows, columns) {
       sw.firstChild.style.cssText = `display:inline-block;width:9px;height:9px;border-radius:2px;margin-right:5px;background:${colorOf(v)}`;
       return sw;
     }
-    return typeof v === 'number' ? fmt(v) : (v === null ? '-' : String(v));
+    if (typeof v === 'number') return Number.isInteger(v) && k !== 'ratio' ? String(v) : fmt(v);
+    return v === null ? '-' : String(v);
   })), keys.map(([k]) => typeof (rows[0] || {})[k] === 'number'));
 }
 
@@ -446,6 +448,8 @@ async function refreshPlots(c) {
   renderLearning(learning);
   renderMaps(maps);
   document.body.setAttribute('data-plotted-done', String(c.done));
+  // For the benchmark: when the campaign view was first drawn whole, since navigation start.
+  if (!performance.getEntriesByName('rlpos-plotted').length) performance.mark('rlpos-plotted');
 }
 
 async function refresh() {
