@@ -195,10 +195,8 @@ TEST_F(HttpServerTest, ASlowClientIsCutOffAndOthersAreServedMeanwhile) {
     ExpectStillAnswering();
     closed = !SendAll(slow, "a");
     pollfd p{slow, POLLIN, 0};
-    if (poll(&p, 1, 100) > 0) {
-      char byte;
-      closed = closed || recv(slow, &byte, 1, MSG_PEEK) <= 0 || true;
-    }
+    if (poll(&p, 1, 100) > 0)
+      closed = true;  // the end of the connection, or an error answer just before it
   }
   EXPECT_TRUE(closed) << "the slow client was never cut off";
   close(slow);
