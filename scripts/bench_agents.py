@@ -50,11 +50,15 @@ def scenario_files(text):
 
 
 def oracle_reward(sim, scenario, algorithm):
+    """The best analytic reward on the oracle's grid for the algorithm's action space (no
+    packet-level re-scoring: rl is trained and judged at analytic fidelity)."""
     space = "continuous" if algorithm == "sac" else "discrete"
-    result = run_json([sim, "position", "--scenario", scenario, "--positioner", "oracle",
-                       "--set", "agent.algorithm=" + algorithm,
-                       "--set", "env.action_space=" + space, "--json"])
-    return result["candidates"][0]["analytic_reward"]
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(sim)), "python"))
+    import rlpos  # the build's binding: the oracle without its packet-level re-score
+    best = rlpos.oracle(scenario, overrides={"agent.algorithm": algorithm,
+                                             "env.action_space": space},
+                        packet_candidates=0, top=1)
+    return best[0]["analytic_reward"]
 
 
 def env_steps(folder):

@@ -96,15 +96,17 @@ void InsertEvalMetrics(Database& db, const EvalRowKey& key, const EvalResult& ev
   }
 }
 
-// Scenarios in campaign order (their first job), not by name; then positioner and run.
-const std::string kCampaignOrder =
-    "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = v.campaign_id "
-    "AND j.scenario = v.scenario), positioner, rng_run";
+// The rows of campaign ?1 of a view `v`, scenarios in campaign order (their first job), not by
+// name; then positioner and run. The first jobs are found once, in a join: a subquery in the
+// ORDER BY ran once per row, over the campaign's jobs (minutes at 10k jobs).
+const std::string kOfCampaignInOrder =
+    " v JOIN (SELECT scenario AS order_scenario, MIN(seq) AS order_seq FROM jobs "
+    "WHERE campaign_id = ?1 GROUP BY scenario) o ON o.order_scenario = v.scenario "
+    "WHERE v.campaign_id = ?1 ORDER BY o.order_seq, positioner, rng_run";
 
 std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_id) {
-  Statement select =
-      db.Prepare("SELECT job_id, scenario, positioner, rng_run, x, y, z" + ColumnList(kRunView) +
-                 " FROM v_eval_runs v WHERE campaign_id = ? " + kCampaignOrder);
+  Statement select = db.Prepare("SELECT job_id, scenario, positioner, rng_run, x, y, z" +
+                                ColumnList(kRunView) + " FROM v_eval_runs" + kOfCampaignInOrder);
   select.Bind(campaign_id);
   std::vector<MetricRow> out;
   while (select.Step()) {
@@ -125,8 +127,7 @@ std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_
 std::vector<UavMetricRow> ReadUavMetricRows(Database& db, const std::string& campaign_id) {
   Statement select =
       db.Prepare("SELECT job_id, scenario, positioner, rng_run, uav, uav_name, x, y, z" +
-                 ColumnList(kUavView) + " FROM v_eval_uavs v WHERE campaign_id = ? " +
-                 kCampaignOrder + ", uav");
+                 ColumnList(kUavView) + " FROM v_eval_uavs" + kOfCampaignInOrder + ", uav");
   select.Bind(campaign_id);
   std::vector<UavMetricRow> out;
   while (select.Step()) {

@@ -46,6 +46,8 @@ class ResultsReader {
                                                  const std::string& key);
   // The artifacts of a campaign (or of one job, given its id), by job then name.
   std::vector<ArtifactRecord> Artifacts(const std::string& campaign_or_job_id);
+  // One artifact by its id (ArtifactRecord::id); nullopt when there is none.
+  std::optional<ArtifactRecord> Artifact(std::int64_t id);
 
  private:
   StoreDb& store_;

@@ -84,27 +84,46 @@ std::vector<FailedJob> ResultsReader::FailedJobs(const std::string& campaign_id)
   return out;
 }
 
+namespace {
+
+constexpr const char* kArtifactColumns =
+    "SELECT a.rowid, a.job_id, j.key, a.name, a.path, COALESCE(a.sha256, ''), "
+    "COALESCE(a.bytes, 0), j.cached_from, j.scenario, j.label "
+    "FROM artifacts a JOIN jobs j ON j.id = a.job_id ";
+
+ArtifactRecord ReadArtifact(const Statement& row) {
+  ArtifactRecord a;
+  a.id = row.Int(0);
+  a.job_id = row.Text(1);
+  a.job_key = row.Text(2);
+  a.name = row.Text(3);
+  a.path = row.Text(4);
+  a.sha256 = row.Text(5);
+  a.bytes = row.Int(6);
+  a.cached_from = row.OptionalText(7);
+  a.scenario = row.Text(8);
+  a.label = row.Text(9);
+  return a;
+}
+
+}  // namespace
+
 std::vector<ArtifactRecord> ResultsReader::Artifacts(const std::string& campaign_or_job_id) {
-  Statement select = db_->Prepare(
-      "SELECT a.job_id, j.key, a.name, a.path, COALESCE(a.sha256, ''), COALESCE(a.bytes, 0), "
-      "j.cached_from, j.scenario, j.label FROM artifacts a JOIN jobs j ON j.id = a.job_id "
-      "WHERE j.campaign_id = ? OR j.id = ? ORDER BY j.seq, a.name");
+  Statement select = db_->Prepare(std::string(kArtifactColumns) +
+                                  "WHERE j.campaign_id = ? OR j.id = ? ORDER BY j.seq, a.name");
   select.Bind(campaign_or_job_id).Bind(campaign_or_job_id);
   std::vector<ArtifactRecord> out;
-  while (select.Step()) {
-    ArtifactRecord a;
-    a.job_id = select.Text(0);
-    a.job_key = select.Text(1);
-    a.name = select.Text(2);
-    a.path = select.Text(3);
-    a.sha256 = select.Text(4);
-    a.bytes = select.Int(5);
-    a.cached_from = select.OptionalText(6);
-    a.scenario = select.Text(7);
-    a.label = select.Text(8);
-    out.push_back(std::move(a));
-  }
+  while (select.Step())
+    out.push_back(ReadArtifact(select));
   return out;
+}
+
+std::optional<ArtifactRecord> ResultsReader::Artifact(std::int64_t id) {
+  Statement select = db_->Prepare(std::string(kArtifactColumns) + "WHERE a.rowid = ?");
+  select.Bind(id);
+  if (!select.Step())
+    return std::nullopt;
+  return ReadArtifact(select);
 }
 
 }  // namespace rlpos

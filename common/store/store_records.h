@@ -88,6 +88,7 @@ struct CampaignTiming {
 
 // A row of the artifacts table; `path` is relative to ArtifactsDirOf(the database).
 struct ArtifactRecord {
+  std::int64_t id = 0;  // its rowid: how the campaign page names it (never by its path)
   std::string job_id, job_key, scenario, label, name, path, sha256;
   std::int64_t bytes = 0;
   std::optional<std::string> cached_from;  // the job was served from this one's result

@@ -5,6 +5,7 @@
 //   results ID [--format table|csv|json] [--per-uav] [--db FILE]
 //   report ID --out DIR [--db FILE]
 //   cancel ID | retry ID                          via the coordinator (DDS)
+//   serve [--db FILE] [--listen ADDR:PORT] [--token-file F]   the campaign page (read-only)
 //   security init DIR | add-worker DIR NAME | add-client DIR NAME   DDS Security identities
 // Exit codes: see ExitCode in campaign_commands.h (0 ok, 1 failure, 2 bad input, 3 some jobs
 // failed, 4 no coordinator answered, 130 interrupted).
@@ -17,6 +18,7 @@
 #include "common/store/store_error.h"
 #include "coordinator/cli/campaign_client.h"
 #include "coordinator/cli/campaign_commands.h"
+#include "coordinator/web/serve_command.h"
 #include "idl/dds/dds_cli_options.h"
 #include "idl/dds/participant.h"
 #include "idl/dds/security/security_check.h"
@@ -39,10 +41,11 @@ struct CommandLine {
   double timeout_s = 10;
   std::string security_dir, identity_name;
   int days = 365;
+  web::ServeOptions serve_options;
 
   CLI::App *run = nullptr, *submit = nullptr, *status = nullptr, *results = nullptr,
            *report = nullptr, *artifacts = nullptr, *cancel = nullptr, *retry = nullptr,
-           *security_init = nullptr, *add_worker = nullptr, *add_client = nullptr;
+           *security_init = nullptr, *add_worker = nullptr, *add_client = nullptr, *serve = nullptr;
 };
 
 void AddDbOption(CLI::App* command, std::string& db) {
@@ -83,7 +86,7 @@ void AddSubmitCommand(CLI::App& app, CommandLine& cli) {
   cli.submit = submit;
 }
 
-// status, results, report and artifacts: they read the database.
+// status, results, report, artifacts and serve: they read the database.
 void AddReadCommands(CLI::App& app, CommandLine& cli) {
   auto* status = app.add_subcommand("status", "Jobs by state, workers alive, progress and ETA");
   status->add_option("id", cli.campaign_id, "Campaign id (default: every campaign)");
@@ -111,6 +114,14 @@ void AddReadCommands(CLI::App& app, CommandLine& cli) {
   artifacts->add_option("--out", cli.artifacts_out,
                         "Export them to this new folder, as <job key>/<name>");
   AddDbOption(artifacts, cli.db);
+  auto* serve = app.add_subcommand("serve", "The campaign page in a browser (read-only)");
+  AddDbOption(serve, cli.db);
+  serve->add_option("--listen", cli.serve_options.listen,
+                    "Address and port (default 127.0.0.1:8787; another than the loopback needs "
+                    "--token-file)");
+  serve->add_option("--token-file", cli.serve_options.token_file,
+                    "File whose first line is the token every request must carry");
+  cli.serve = serve;
   cli.status = status;
   cli.results = results;
   cli.report = report;
@@ -172,6 +183,10 @@ int RunCommand(CommandLine& cli) {
     return WriteCampaignReport(cli.db, cli.campaign_id, cli.out_dir);
   if (cli.artifacts->parsed())
     return ListOrExportArtifacts(cli.db, cli.campaign_id, cli.artifacts_out);
+  if (cli.serve->parsed()) {
+    cli.serve_options.db = cli.db;
+    return web::RunServe(cli.serve_options);
+  }
   if (cli.cancel->parsed())
     return CancelCampaign(cli.campaign_id, cli.dds, cli.timeout_s);
   if (cli.retry->parsed())

@@ -184,6 +184,22 @@ TEST_F(RlposCampaignCli, ReadCommandsOnAMissingDatabase) {
   EXPECT_FALSE(fs::exists(dir_ + "/none.db"));
 }
 
+// serve refuses to start, in one line, before it listens anywhere.
+TEST_F(RlposCampaignCli, ServeRefusesBadOptions) {
+  ExpectOneLineError(Campaign("serve --db none.db --listen 127.0.0.1:0"), 2,
+                     "results store none.db: cannot open");
+  ExpectOneLineError(Campaign("serve --db none.db --listen 0.0.0.0:0"), 2,
+                     "--listen 0.0.0.0:0 is not a loopback address: give --token-file too");
+  ExpectOneLineError(Campaign("serve --db none.db --listen example.org:80"), 2,
+                     "the host must be an IP address");
+  ExpectOneLineError(Campaign("serve --db none.db --listen 0.0.0.0:0 --token-file none"), 2,
+                     "--token-file none: cannot read");
+  Write("short", "abc\n");
+  ExpectOneLineError(Campaign("serve --db none.db --listen 0.0.0.0:0 --token-file short"), 2,
+                     "the token must have 16 to 256 characters");
+  EXPECT_FALSE(fs::exists(dir_ + "/none.db"));
+}
+
 TEST_F(RlposCampaignCli, RunWithADatabaseThatCannotBeOpened) {
   fs::create_directories(dir_ + "/results/a-folder");
   const auto r = Campaign("run " + std::string(RLPOS_SOURCE_DIR) +

@@ -1,0 +1,32 @@
+#pragma once
+// The campaign list and one campaign as the page shows them (JSON), from the store's readers
+// and the reporting layer: the same numbers as `rlpos-campaign status` and `results`.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "common/store/results_reader.h"
+#include "coordinator/reporting/campaign_summary.h"
+
+namespace rlpos::web {
+
+// Lists are cut at these lengths (the response says how many there were).
+constexpr std::size_t kMaxCampaigns = 500;
+constexpr std::size_t kMaxListedJobs = 200;
+constexpr std::size_t kMaxListedWorkers = 100;
+constexpr std::size_t kMaxListedArtifacts = 1000;
+constexpr std::size_t kMaxErrorText = 500;
+
+// {"campaigns": [{id, name, state, total, done, jobs: {pending, ...}, eta_s}], "truncated"}.
+nlohmann::json CampaignListJson(ResultsReader& store, double now);
+
+// Progress, workers, ETA, running and failed jobs, the summary, per-UAV and optimality tables,
+// the artifacts. Throws StoreError for an unknown campaign.
+nlohmann::json CampaignDetailJson(ResultsReader& store, const std::string& campaign_id, double now);
+
+// Per scenario, each rl label against the oracle: mean throughput of each and their ratio
+// (rl / oracle; 1 means rl found the oracle's position's throughput). Empty when the campaign has
+// no scenario with both.
+nlohmann::json OptimalityJson(const std::vector<PositionerSummary>& summary);
+
+}  // namespace rlpos::web

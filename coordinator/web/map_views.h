@@ -1,0 +1,18 @@
+#pragma once
+// What the page draws a scenario map from (JSON): each scenario of the campaign as its spec
+// holds it (venue, zones, buildings, UEs, UAVs' initial positions), and where each positioner
+// put the UAVs in its first succeeded eval run.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "common/store/results_reader.h"
+
+namespace rlpos::web {
+
+// {"scenarios": [{"name", "file", "venue", "buildings", "ues", "uavs", "placements":
+// [{"positioner", "rng_run", "uavs": [{"name", "x", "y", "z"}]}]}]}. A scenario whose document no
+// longer parses gets {"file", "error"} instead. nullopt for an unknown campaign.
+std::optional<nlohmann::json> ScenarioMapsJson(ResultsReader& store,
+                                               const std::string& campaign_id);
+
+}  // namespace rlpos::web
