@@ -11,6 +11,7 @@
 #include "coordinator/cli/campaign_commands.h"
 #include "coordinator/cli/progress_text.h"
 #include "coordinator/reporting/campaign_summary.h"
+#include "coordinator/reporting/optimality.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/uav_summary.h"
@@ -103,6 +104,9 @@ std::string ResultsTables(ResultsReader& store, const std::string& campaign_id) 
   const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
   if (!uavs.empty())
     out += "\nper UAV:\n" + FormatUavSummaryText(uavs);
+  const auto optimality = SummarizeOptimality(store.Optimality(campaign_id));
+  if (!optimality.empty())
+    out += "\noptimality (rl reward / oracle reward):\n" + FormatOptimalityText(optimality);
   return out;
 }
 
