@@ -74,10 +74,21 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
 }
 
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
-                bool per_uav) {
+                bool per_uav, bool optimality) {
   StoreDb opened(db, ReadOnly());
   ResultsReader store(opened);
   store.Progress(campaign_id);  // StoreError for an unknown campaign
+  if (optimality) {
+    const auto summary = SummarizeOptimality(store.Optimality(campaign_id));
+    if (format == "csv") {
+      std::cout << FormatOptimalitySummaryCsv(summary);
+    } else if (format == "json") {
+      std::cout << OptimalityToJson(summary).dump(2) << "\n";
+    } else {
+      std::cout << FormatOptimalityText(summary);
+    }
+    return kExitOk;
+  }
   if (per_uav) {
     const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
     if (format == "csv") {
