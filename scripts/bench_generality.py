@@ -20,6 +20,7 @@ import argparse
 import glob
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -69,14 +70,29 @@ def scenario_files(folder):
     return files
 
 
+def scenario_name(path):
+    try:
+        with open(path) as f:
+            document = json.load(f)
+    except (OSError, ValueError) as error:
+        fail(f"{path}: {error}")
+    return document.get("name", "") if isinstance(document, dict) else ""
+
+
 def campaign_of(args, files, campaign_file):
     """The campaign JSON; scenario paths relative to the campaign's folder, as a campaign wants
     them (an absolute path would make the campaign id depend on the checkout's place)."""
     folder = os.path.dirname(os.path.abspath(campaign_file))
-    scenarios = []
+    scenarios, names = [], set()
     for f in files:
         path = os.path.relpath(os.path.abspath(f), folder)
-        scenarios.append({"file": path, "set": args.set} if args.set else path)
+        overrides = list(args.set)
+        name = scenario_name(f)
+        if name in names:  # a campaign's scenario names must differ: the file's stem instead
+            name = re.sub(r"[^A-Za-z0-9._@+-]", "_", os.path.splitext(os.path.basename(f))[0])
+            overrides.append("name=" + name)
+        names.add(name)
+        scenarios.append({"file": path, "set": overrides} if overrides else path)
     train = {"seeds": seeds_of(args.seeds), "fidelity": "analytic",
              "algorithms": algorithms_of(args.algorithms)}
     if args.episodes is not None:
