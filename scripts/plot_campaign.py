@@ -7,7 +7,9 @@ one delay CDF, one step curve per positioner, into the output folder as
 throughput_ccdf_<scenario>.png and delay_cdf_<scenario>.png. With --learning-curves
 (learning_curves.csv: scenario, label, episode, phase, total_reward, mean_loss, epsilon) it also
 draws learning_curve_<scenario>.png: reward and loss per training episode, one line per train
-job.
+job. With --optimality-cdf (optimality_cdf.csv: algorithm, uavs, ratio, p) it draws
+optimality_cdf.png: the CDF of rl's reward over the oracle's, one step curve per algorithm and
+number of UAVs.
 
 Prints "wrote <path>" for every file written. Exit status: 0 done, 1 error, 2 bad arguments,
 3 matplotlib is not available (the caller may try another interpreter).
@@ -50,6 +52,37 @@ def read_learning_curves(path):
             points.append((int(row["episode"]), float(row["total_reward"]),
                            float(row["mean_loss"])))
     return curves
+
+
+def read_optimality(path):
+    """{"<algorithm>, <k> UAV(s)": ([ratio], [p])}, in the order of the file."""
+    curves = {}
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            uavs = int(row["uavs"])
+            name = f"{row['algorithm'] or '-'}, {uavs} UAV{'' if uavs == 1 else 's'}"
+            xs, ps = curves.setdefault(name, ([], []))
+            xs.append(float(row["ratio"]))
+            ps.append(float(row["p"]))
+    return curves
+
+
+def plot_optimality(plt, curves, title, path):
+    """The ratio's CDF per series, with the 0.95 line."""
+    figure, axes = plt.subplots(figsize=(6.4, 4.4))
+    for name, (xs, ps) in curves.items():
+        axes.plot([xs[0]] + xs, [0.0] + ps, drawstyle="steps-post", label=name)
+    axes.axvline(0.95, color="grey", linestyle="--", linewidth=1)
+    axes.set_xlabel("rl reward / oracle reward")
+    axes.set_ylabel("P(ratio \u2264 x)")
+    axes.set_ylim(-0.02, 1.02)
+    axes.set_title(title)
+    axes.grid(True, alpha=0.3)
+    axes.legend(fontsize="small")
+    figure.tight_layout()
+    save_atomically(figure, path)
+    plt.close(figure)
+    print(f"wrote {path}", flush=True)
 
 
 def plot_learning(plt, curves, title, path):
@@ -123,6 +156,7 @@ def main():
     parser.add_argument("--out-dir", required=True, help="folder for the PNGs")
     parser.add_argument("--title", default="", help="figure title prefix (campaign name)")
     parser.add_argument("--learning-curves", help="learning_curves.csv (optional)")
+    parser.add_argument("--optimality-cdf", help="optimality_cdf.csv (optional)")
     args = parser.parse_args()
 
     try:
@@ -154,6 +188,11 @@ def main():
             plot_learning(plt, curves, f"{prefix}scenario {scenario}: learning curve",
                           os.path.join(args.out_dir,
                                        f"learning_curve_{file_stem(scenario, used)}.png"))
+    if args.optimality_cdf:
+        curves = read_optimality(args.optimality_cdf)
+        if curves:
+            plot_optimality(plt, curves, f"{prefix}optimality: rl against the oracle",
+                            os.path.join(args.out_dir, "optimality_cdf.png"))
     return 0
 
 

@@ -29,6 +29,9 @@ struct RunMetricFields {
   int n_los = 0;
   int n_ues = 0;
   int demands_met = 0;
+  // Not measured by the packets: the env's reward at the placement by the analytic model, set
+  // by whoever evaluates (worker/uav_env/analytic_evaluator.h: AnalyticReward).
+  Real reward{};
 };
 
 // One UAV's share: the same definitions over the UEs it serves.
@@ -200,6 +203,15 @@ constexpr auto EvalMetricTable() {
       D("demands_met", &R::demands_met)
           .Describe("demands met", "count",
                     "UEs whose SNR reaches the minimum SNR of the MCS their demand needs"),
+      D("reward", &R::reward)
+          .Nullable()
+          .Range(MetricRange::kUpTo, 1e6)
+          .Since(11)
+          .Describe("reward", "env.reward",
+                    "The env's reward at the placement (the scenario's env.reward) by the "
+                    "analytic model, as the agent and the oracle score it: the same in every "
+                    "RngRun. rl's over the oracle's is a campaign's optimality; null when not "
+                    "computed"),
   };
 }
 

@@ -137,6 +137,7 @@ RunMetrics Summarize(const std::vector<UavIdentity>& uavs, MeasurementWindow win
   m.loss_ratio = all.loss_ratio;
   m.n_los = all.n_los;
   m.demands_met = all.demands_met;
+  m.reward = kNaN;  // the packets do not give it: the evaluator adds it (null until then)
   m.min_snr_db = all.ues == 0 ? std::numeric_limits<double>::infinity() : all.min_snr_db;
   m.worst_ue_throughput_mbps = all.ues == 0 ? 0.0 : all.worst_ue_throughput_mbps;
   m.jain_fairness = all.jain_fairness;

@@ -39,6 +39,17 @@ double Median(std::vector<double> sample) {
   return 0.5 * (lower + upper);
 }
 
+double Quantile(std::vector<double> sample, double q) {
+  CheckSample(sample);
+  if (!(q >= 0 && q <= 1))
+    throw std::invalid_argument("quantile outside [0, 1]");
+  std::sort(sample.begin(), sample.end());
+  const double position = q * static_cast<double>(sample.size() - 1);
+  const auto below = static_cast<std::size_t>(std::floor(position));
+  const std::size_t above = std::min(below + 1, sample.size() - 1);
+  return sample[below] + (position - static_cast<double>(below)) * (sample[above] - sample[below]);
+}
+
 double SampleStdDev(const std::vector<double>& sample) {
   const double mean = Mean(sample);
   if (sample.size() < 2)

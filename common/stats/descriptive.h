@@ -11,6 +11,10 @@ namespace rlpos {
 double Mean(const std::vector<double>& sample);
 // The middle value; the mean of the two middle values for an even count.
 double Median(std::vector<double> sample);
+// The q-quantile, q in [0, 1], interpolated linearly between the order statistics at
+// (n - 1) q (numpy's default, R's type 7): 0 is the minimum, 0.5 the median, 1 the maximum.
+// Throws std::invalid_argument for q outside [0, 1] too.
+double Quantile(std::vector<double> sample, double q);
 // Sample standard deviation (n - 1 in the denominator); 0 for one value.
 double SampleStdDev(const std::vector<double>& sample);
 

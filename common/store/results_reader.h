@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/store/metric_rows.h"
+#include "common/store/optimality_rows.h"
 #include "common/store/store_records.h"
 
 namespace rlpos {
@@ -32,6 +33,8 @@ class ResultsReader {
   std::vector<MetricRow> Metrics(const std::string& campaign_id);
   // One row per UAV of each succeeded eval, in the order of Metrics, then by UAV.
   std::vector<UavMetricRow> UavMetrics(const std::string& campaign_id);
+  // rl's reward against the oracle's, per scenario, algorithm and train seed (optimality_rows.h).
+  std::vector<OptimalityRow> Optimality(const std::string& campaign_id);
 
   // What `status` and `run` show while a campaign runs (results_reader_monitoring.cc).
   std::vector<WorkerRecord> ListWorkers();

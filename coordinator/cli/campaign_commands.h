@@ -42,8 +42,9 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
 // The summary per scenario and positioner; with `per_uav`, per UAV of the scenarios with several
 // instead. The table format shows both (the second when there is any).
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
-                bool per_uav);
-// The summary table, then the per-UAV one when the campaign has scenarios of several UAVs.
+                bool per_uav, bool optimality);
+// The summary table, then the per-UAV one when the campaign has scenarios of several UAVs, then
+// the optimality one when a scenario has rl and oracle rewards (reporting/optimality.h).
 std::string ResultsTables(ResultsReader& store, const std::string& campaign_id);
 // security init DIR; security add-worker|add-client DIR NAME.
 int InitSecurity(const std::string& dir, int days);

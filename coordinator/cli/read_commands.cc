@@ -11,6 +11,7 @@
 #include "coordinator/cli/campaign_commands.h"
 #include "coordinator/cli/progress_text.h"
 #include "coordinator/reporting/campaign_summary.h"
+#include "coordinator/reporting/optimality.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/scenario_maps.h"
@@ -74,10 +75,21 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
 }
 
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
-                bool per_uav) {
+                bool per_uav, bool optimality) {
   StoreDb opened(db, ReadOnly());
   ResultsReader store(opened);
   store.Progress(campaign_id);  // StoreError for an unknown campaign
+  if (optimality) {
+    const auto summary = SummarizeOptimality(store.Optimality(campaign_id));
+    if (format == "csv") {
+      std::cout << FormatOptimalitySummaryCsv(summary);
+    } else if (format == "json") {
+      std::cout << OptimalityToJson(summary).dump(2) << "\n";
+    } else {
+      std::cout << FormatOptimalityText(summary);
+    }
+    return kExitOk;
+  }
   if (per_uav) {
     const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
     if (format == "csv") {
@@ -104,6 +116,9 @@ std::string ResultsTables(ResultsReader& store, const std::string& campaign_id) 
   const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
   if (!uavs.empty())
     out += "\nper UAV:\n" + FormatUavSummaryText(uavs);
+  const auto optimality = SummarizeOptimality(store.Optimality(campaign_id));
+  if (!optimality.empty())
+    out += "\noptimality (rl reward / oracle reward):\n" + FormatOptimalityText(optimality);
   return out;
 }
 

@@ -46,6 +46,10 @@ PlotOutcome DrawPlots(const PlotRequest& request) {
       argv.push_back("--learning-curves");
       argv.push_back(request.learning_csv);
     }
+    if (!request.optimality_csv.empty()) {
+      argv.push_back("--optimality-cdf");
+      argv.push_back(request.optimality_csv);
+    }
     const ProcessResult run = RunProcess(argv);
     std::istringstream lines(run.output);
     std::string line;

@@ -13,6 +13,7 @@ struct PlotRequest {
   std::string throughput_csv;  // FormatThroughputCcdfCsv output
   std::string delay_csv;       // FormatDelayCdfCsv output
   std::string learning_csv;    // FormatLearningCurvesCsv output; empty: none
+  std::string optimality_csv;  // FormatOptimalityCdfCsv output; empty: none
   std::string out_dir;         // where the PNGs go
   std::string title;           // e.g. the campaign name
 };

@@ -1,5 +1,6 @@
 #include "coordinator/reporting/report_markdown.h"
 
+#include "coordinator/reporting/optimality.h"
 #include "coordinator/reporting/results_format.h"
 
 namespace rlpos {
@@ -53,6 +54,28 @@ std::string FormatReportMarkdown(const CampaignProgress& progress,
       "worst UE's throughput and Jain's fairness index over its UEs (over the runs in which it "
       "served any). In the table above, throughput, nLoS, worst UE and Jain are over all UEs "
       "whichever UAV serves them. File: `uav_summary.csv`; per run: the view `v_eval_uavs`.\n";
+  return out;
+}
+
+std::string FormatOptimalitySection(const std::vector<OptimalityRow>& rows) {
+  const std::vector<OptimalitySummary> summary = SummarizeOptimality(rows);
+  if (summary.empty())
+    return "";
+  std::string out = "\n## Optimality: rl against the oracle\n\n";
+  out += FormatOptimalityMarkdown(summary);
+  out +=
+      "\nA run is one rl placement (one scenario, algorithm and train seed); its ratio is its "
+      "reward over the oracle's at the same scenario, both the env's reward (`env.reward`) of "
+      "the placement by the analytic model, the `reward` of their evals. With several UAVs the "
+      "oracle is a coordinate descent, which rl may beat (a ratio above 1). Per algorithm and "
+      "number of UAVs: the median ratio, its 10th percentile (P10), the worst run, and the runs "
+      "at or above 0.95. Files: `optimality.csv` (every run), `optimality_summary.csv`, "
+      "`optimality_cdf.csv` and `optimality_cdf.png` (the ratio's CDF).\n";
+  const std::vector<OptimalityRow> below = RunsBelowNearOptimal(rows);
+  if (!below.empty()) {
+    out += "\n### Runs under 95 % of the oracle, worst first\n\n";
+    out += FormatOptimalityRowsMarkdown(below);
+  }
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/store/optimality_rows.h"
 #include "common/store/results_reader.h"
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/uav_summary.h"
@@ -14,5 +15,9 @@ namespace rlpos {
 std::string FormatReportMarkdown(const CampaignProgress& progress,
                                  const std::vector<PositionerSummary>& summary,
                                  const std::vector<UavSummary>& uavs = {});
+
+// The "Optimality" section: rl's reward against the oracle's, per algorithm and UAV count, and
+// the runs below 95 % of the oracle. "" when no scenario has both rl and oracle rewards.
+std::string FormatOptimalitySection(const std::vector<OptimalityRow>& rows);
 
 }  // namespace rlpos

@@ -6,6 +6,7 @@
 #include "coordinator/reporting/campaign_summary.h"
 #include "coordinator/reporting/distribution_curves.h"
 #include "coordinator/reporting/learning_curves.h"
+#include "coordinator/reporting/optimality.h"
 #include "coordinator/reporting/plot_script.h"
 #include "coordinator/reporting/report_markdown.h"
 #include "coordinator/reporting/results_format.h"
@@ -47,6 +48,8 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
   const std::vector<UavSummary> uavs = SummarizeUavs(store.UavMetrics(campaign_id));
   const std::vector<CurvePoint> throughput = ThroughputCcdf(rows);
   const std::vector<CurvePoint> delay = DelayCdf(rows);
+  const std::vector<OptimalityRow> optimality = store.Optimality(campaign_id);
+  const std::vector<OptimalitySummary> optimality_summary = SummarizeOptimality(optimality);
 
   CreateReportDir(out_dir);
   ReportResult result;
@@ -59,7 +62,8 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
   write("summary.csv", FormatSummaryCsv(summary));
   if (!uavs.empty())
     write("uav_summary.csv", FormatUavSummaryCsv(uavs));
-  std::string markdown = FormatReportMarkdown(progress, summary, uavs);
+  std::string markdown =
+      FormatReportMarkdown(progress, summary, uavs) + FormatOptimalitySection(optimality);
   const auto builds = store.CampaignBuilds(campaign_id);
   if (builds.size() > 1) {
     std::string list;
@@ -79,11 +83,18 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
       ReadLearningCurves(store, campaign_id, result.warnings);
   const std::string learning_csv =
       learning.empty() ? "" : write("learning_curves.csv", FormatLearningCurvesCsv(learning));
+  std::string optimality_csv;
+  if (!optimality_summary.empty()) {
+    write("optimality.csv", FormatOptimalityRowsCsv(optimality));
+    write("optimality_summary.csv", FormatOptimalitySummaryCsv(optimality_summary));
+    optimality_csv = write("optimality_cdf.csv", FormatOptimalityCdfCsv(optimality));
+  }
 
   if (options.plot_script.empty() || (throughput.empty() && delay.empty() && learning.empty()))
     return result;
-  const PlotOutcome plots = DrawPlots({options.plot_script, options.python, throughput_csv,
-                                       delay_csv, learning_csv, out_dir, progress.name});
+  const PlotOutcome plots =
+      DrawPlots({options.plot_script, options.python, throughput_csv, delay_csv, learning_csv,
+                 optimality_csv, out_dir, progress.name});
   result.files.insert(result.files.end(), plots.files.begin(), plots.files.end());
   result.warnings.insert(result.warnings.end(), plots.warnings.begin(), plots.warnings.end());
   return result;

@@ -23,9 +23,10 @@ struct ReportResult {
 
 // Writes into `out_dir` (created if missing; files replaced atomically): summary.csv,
 // summary.md, throughput_ccdf.csv, delay_cdf.csv, learning_curves.csv (when train jobs sent
-// their curves home), the maps (map_<k>.png, scenario_maps.h), then the PNGs of the plot script.
-// Throws StoreError for an unknown campaign, std::runtime_error naming the path when a file or the
-// folder cannot be written. A plot failure is a warning, not an error.
+// their curves home), optimality.csv, optimality_summary.csv and optimality_cdf.csv (when a
+// scenario has rl and oracle rewards), the maps (map_<k>.png, scenario_maps.h), then the PNGs of
+// the plot script. Throws StoreError for an unknown campaign, std::runtime_error naming the path
+// when a file or the folder cannot be written. A plot failure is a warning, not an error.
 ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
                          const std::string& out_dir, const ReportOptions& options = {});
 

@@ -2,7 +2,7 @@
 //   run CAMPAIGN.json [--workers N] [--db FILE]   embedded coordinator + N workers (loopback)
 //   submit CAMPAIGN.json                          to a running rlpos-coordinator (DDS)
 //   status [ID] [--watch] [--db FILE]             jobs by state, workers, progress, ETA
-//   results ID [--format table|csv|json] [--per-uav] [--db FILE]
+//   results ID [--format table|csv|json] [--per-uav|--optimality] [--db FILE]
 //   report ID --out DIR [--db FILE]
 //   cancel ID | retry ID                          via the coordinator (DDS)
 //   serve [--db FILE] [--listen ADDR:PORT] [--token-file F]   the campaign page (read-only)
@@ -35,7 +35,7 @@ struct CommandLine {
   std::string db = "results/rlpos.db";
   RunOptions run_options;
   std::string campaign_file, campaign_id, format = "table", out_dir, artifacts_out;
-  bool use_cache = true, watch = false, per_uav = false;
+  bool use_cache = true, watch = false, per_uav = false, optimality = false;
   double period_s = 2;
   DdsOptions dds;
   double timeout_s = 10;
@@ -101,6 +101,10 @@ void AddReadCommands(CLI::App& app, CommandLine& cli) {
       ->check(CLI::IsMember({"table", "csv", "json"}));
   results->add_flag("--per-uav", cli.per_uav,
                     "Per UAV of the scenarios with several (the table shows both by default)");
+  results
+      ->add_flag("--optimality", cli.optimality,
+                 "rl's reward over the oracle's per algorithm and UAV count (also in the table)")
+      ->excludes("--per-uav");
   AddDbOption(results, cli.db);
 
   auto* report = app.add_subcommand("report", "Write CSV, Markdown and PNG plots of a campaign");
@@ -178,7 +182,7 @@ int RunCommand(CommandLine& cli) {
   if (cli.status->parsed())
     return ShowStatus(cli.db, cli.campaign_id, cli.watch, cli.period_s);
   if (cli.results->parsed())
-    return ShowResults(cli.db, cli.campaign_id, cli.format, cli.per_uav);
+    return ShowResults(cli.db, cli.campaign_id, cli.format, cli.per_uav, cli.optimality);
   if (cli.report->parsed())
     return WriteCampaignReport(cli.db, cli.campaign_id, cli.out_dir);
   if (cli.artifacts->parsed())

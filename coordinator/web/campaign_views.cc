@@ -3,6 +3,7 @@
 #include <map>
 
 #include "coordinator/cli/progress_text.h"
+#include "coordinator/reporting/optimality.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/uav_summary.h"
 
@@ -151,7 +152,7 @@ json CampaignDetailJson(ResultsReader& store, const std::string& campaign_id, do
   const auto summary = SummarizeCampaign(store, campaign_id);
   out["summary"] = SummaryToJson(summary);
   out["per_uav"] = UavSummaryToJson(SummarizeUavs(store.UavMetrics(campaign_id)));
-  out["optimality"] = OptimalityJson(summary);
+  out["optimality"] = OptimalityJson(store, campaign_id);
   out.update(AxesJson(summary));
   const auto artifacts = store.Artifacts(campaign_id);
   out["artifacts"] = ArtifactsJson(artifacts);
@@ -160,25 +161,24 @@ json CampaignDetailJson(ResultsReader& store, const std::string& campaign_id, do
   return out;
 }
 
-json OptimalityJson(const std::vector<PositionerSummary>& summary) {
-  std::map<std::string, const PositionerSummary*> oracle;
-  for (const auto& s : summary) {
-    if (s.positioner == "oracle")
-      oracle[s.scenario] = &s;
+json OptimalityJson(ResultsReader& store, const std::string& campaign_id) {
+  const std::vector<OptimalityRow> rows = store.Optimality(campaign_id);
+  json runs = json::array();
+  for (const OptimalityRow& r : rows) {
+    if (runs.size() == kMaxListedOptimalityRuns)
+      break;
+    runs.push_back({{"scenario", r.scenario},
+                    {"uavs", r.uavs},
+                    {"algorithm", r.algorithm},
+                    {"train_seed", r.train_seed},
+                    {"label", r.label},
+                    {"rl_reward", r.rl_reward},
+                    {"oracle_reward", r.oracle_reward},
+                    {"ratio", OptionalNumber(r.Ratio())}});
   }
-  json rows = json::array();
-  for (const auto& s : summary) {
-    const auto it = oracle.find(s.scenario);
-    if (it == oracle.end() || s.positioner.compare(0, 2, "rl") != 0)
-      continue;
-    const double best = it->second->throughput_mean_mbps;
-    rows.push_back({{"scenario", s.scenario},
-                    {"positioner", s.positioner},
-                    {"throughput_mean_mbps", s.throughput_mean_mbps},
-                    {"oracle_throughput_mean_mbps", best},
-                    {"ratio", best > 0 ? json(s.throughput_mean_mbps / best) : json(nullptr)}});
-  }
-  return rows;
+  return {{"summary", OptimalityToJson(SummarizeOptimality(rows))},
+          {"runs", runs},
+          {"runs_total", rows.size()}};
 }
 
 }  // namespace rlpos::web

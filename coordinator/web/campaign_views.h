@@ -16,6 +16,7 @@ constexpr std::size_t kMaxListedJobs = 200;
 constexpr std::size_t kMaxListedWorkers = 100;
 constexpr std::size_t kMaxListedArtifacts = 1000;
 constexpr std::size_t kMaxErrorText = 500;
+constexpr std::size_t kMaxListedOptimalityRuns = 1000;
 
 // {"campaigns": [{id, name, state, total, done, jobs: {pending, ...}, eta_s}], "truncated"}.
 nlohmann::json CampaignListJson(ResultsReader& store, double now);
@@ -24,9 +25,10 @@ nlohmann::json CampaignListJson(ResultsReader& store, double now);
 // the artifacts. Throws StoreError for an unknown campaign.
 nlohmann::json CampaignDetailJson(ResultsReader& store, const std::string& campaign_id, double now);
 
-// Per scenario, each rl label against the oracle: mean throughput of each and their ratio
-// (rl / oracle; 1 means rl found the oracle's position's throughput). Empty when the campaign has
-// no scenario with both.
-nlohmann::json OptimalityJson(const std::vector<PositionerSummary>& summary);
+// The report's optimality section (coordinator/reporting/optimality.h): {"summary": per
+// algorithm and UAV count, median, P10, worst and share >= 0.95 of rl's reward over the
+// oracle's; "runs": each scenario, algorithm and train seed with both rewards and the ratio;
+// "runs_total"}. Both lists are empty when no scenario has rl and oracle rewards.
+nlohmann::json OptimalityJson(ResultsReader& store, const std::string& campaign_id);
 
 }  // namespace rlpos::web

@@ -14,6 +14,7 @@
 #include "worker/environment/scenario_loading.h"
 #include "worker/environment/uav_network.h"
 #include "worker/positioners/positioners.h"
+#include "worker/uav_env/analytic_evaluator.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
 namespace py = pybind11;
@@ -238,6 +239,7 @@ std::string Evaluate(const std::string& file, const std::vector<std::string>& ov
     Ns3Lease lease("an evaluation");
     py::gil_scoped_release release;
     metrics = EvaluatePosition(s, placement);
+    metrics.reward = AnalyticReward(s, placement);  // as rlpos-sim eval adds it
   }
   nlohmann::json out = ToJson(metrics);
   out["scenario"] = s.name;

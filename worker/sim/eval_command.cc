@@ -7,6 +7,7 @@
 #include "worker/environment/uav_network.h"
 #include "worker/sim/commands.h"
 #include "worker/sim/metrics_report.h"
+#include "worker/uav_env/analytic_evaluator.h"
 
 namespace rlpos::sim {
 namespace {
@@ -33,8 +34,10 @@ int RunEval(const CommonOptions& options, const EvalOptions& eval) {
   const Placement placement = ParsePlacement(scenario, eval.positions, "--position");
   Log(LogLevel::kInfo, "evaluating scenario " + scenario.name);
   g_started = std::chrono::steady_clock::now();
-  const RunMetrics metrics =
+  RunMetrics metrics =
       EvaluatePosition(scenario, placement, eval.progress ? ShowProgress : nullptr);
+  // After the packets, not before: the packet-level run is the same as without it.
+  metrics.reward = AnalyticReward(scenario, placement);
   if (eval.json) {
     nlohmann::json out = ToJson(metrics);
     out["scenario"] = scenario.name;

@@ -7,6 +7,7 @@
 #include "common/phy/mcs_table.h"
 #include "worker/environment/association.h"
 #include "worker/environment/uav_network.h"
+#include "worker/gym/reward.h"
 
 namespace rlpos {
 namespace {
@@ -126,6 +127,13 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
     info.throughput_mbps += estimate.aggregate_mbps;
   }
   return info;
+}
+
+double AnalyticReward(const Scenario& scenario, const Placement& placement) {
+  AnalyticEvaluator analytic(scenario);
+  const StepInfo info = analytic.Evaluate(placement);
+  return (*MakeReward(scenario.env.reward))(
+      RewardInputOf(scenario, info.n_los, info.throughput_mbps, info.demands_met));
 }
 
 }  // namespace rlpos

@@ -44,4 +44,9 @@ class AnalyticEvaluator {
   std::vector<double> ue_throughput_;
 };
 
+// The env's reward (the scenario's env.reward) at `placement` by the analytic model: what the
+// agent and the oracle score a placement with. Builds its own evaluator, so no other UavNetwork
+// may exist meanwhile.
+double AnalyticReward(const Scenario& scenario, const Placement& placement);
+
 }  // namespace rlpos

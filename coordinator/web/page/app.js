@@ -306,10 +306,14 @@ function renderTables(c) {
   const summary = document.getElementById('summary-table');
   summary.replaceChildren(c.summary.length ? objectTable(c.summary, SUMMARY_COLUMNS.filter(([k]) => k in c.summary[0]))
     : el('p', { class: 'empty' }, 'No eval result yet.'));
-  document.getElementById('optimality-section').hidden = !c.optimality.length;
-  document.getElementById('optimality-table').replaceChildren(c.optimality.length ? objectTable(c.optimality, [
-    ['scenario', 'scenario'], ['positioner', 'positioner'], ['throughput_mean_mbps', 'mean Mbit/s'],
-    ['oracle_throughput_mean_mbps', 'oracle mean Mbit/s'], ['ratio', 'rl / oracle']]) : '');
+  const optimality = c.optimality;
+  document.getElementById('optimality-section').hidden = !optimality.summary.length;
+  document.getElementById('optimality-table').replaceChildren(optimality.summary.length ? objectTable(optimality.summary, [
+    ['algorithm', 'algorithm'], ['uavs', 'UAVs'], ['runs', 'runs'], ['median', 'median'], ['p10', 'P10'],
+    ['worst', 'worst'], ['near_optimal_share', 'share >= 0.95']]) : '');
+  document.getElementById('optimality-runs').replaceChildren(optimality.runs.length ? objectTable(optimality.runs, [
+    ['scenario', 'scenario'], ['uavs', 'UAVs'], ['algorithm', 'algorithm'], ['train_seed', 'train seed'],
+    ['rl_reward', 'rl reward'], ['oracle_reward', 'oracle reward'], ['ratio', 'rl / oracle']]) : '');
   document.getElementById('per-uav-section').hidden = !c.per_uav.length;
   document.getElementById('per-uav-table').replaceChildren(c.per_uav.length ? objectTable(c.per_uav) : '');
 }

@@ -89,10 +89,18 @@ TEST(MetricTable, SchemaColumnsAreTheTables) {
   }
 }
 
-TEST(MetricTable, NoMetricIsNewerThanTheHandWrittenSchema) {
-  // The table of today adds nothing: the schema is the one of version 10, byte for byte.
-  EXPECT_TRUE(DerivedMetricMigrations().empty());
-  EXPECT_EQ(LatestSchemaVersion(), kLastHandWrittenSchema);
+TEST(MetricTable, TheRewardIsTheOneMetricNewerThanTheHandWrittenSchema) {
+  // Version 11 adds the reward to metrics and v_eval_runs (a run's only: a UAV has none).
+  const std::vector<Migration> derived = DerivedMetricMigrations();
+  ASSERT_EQ(derived.size(), 1u);
+  EXPECT_EQ(derived[0].version, kLastHandWrittenSchema + 1);
+  EXPECT_EQ(LatestSchemaVersion(), kLastHandWrittenSchema + 1);
+  testing::TempDir dir;
+  Database db(dir.File("reward.db"), false, 1000);
+  MigrateUpTo(db, LatestSchemaVersion());
+  EXPECT_EQ(Columns(db, "metrics").back(), "reward REAL");
+  EXPECT_EQ(Columns(db, "uav_metrics").back(), "z REAL NOT NULL");
+  EXPECT_NE(ViewSql(db, "v_eval_runs").find("m.jain_fairness, m.reward\nFROM"), std::string::npos);
 }
 
 RunMetrics TwoUavRun() {

@@ -46,6 +46,20 @@ TEST(Descriptive, RejectsEmptyAndNonFinite) {
   EXPECT_THROW(MeanConfidenceInterval({1, 2}, 1.0), std::invalid_argument);
 }
 
+TEST(Descriptive, QuantileInterpolatesBetweenOrderStatistics) {
+  // numpy.quantile([1, 2, 3, 4, 10], q): 0.1 -> 1.4, 0.5 -> 3, 0.9 -> 7.6.
+  EXPECT_DOUBLE_EQ(Quantile({10, 1, 3, 2, 4}, 0.0), 1.0);
+  EXPECT_NEAR(Quantile({10, 1, 3, 2, 4}, 0.1), 1.4, 1e-12);
+  EXPECT_DOUBLE_EQ(Quantile({10, 1, 3, 2, 4}, 0.5), 3.0);
+  EXPECT_NEAR(Quantile({10, 1, 3, 2, 4}, 0.9), 7.6, 1e-12);
+  EXPECT_DOUBLE_EQ(Quantile({10, 1, 3, 2, 4}, 1.0), 10.0);
+  EXPECT_DOUBLE_EQ(Quantile({4, 1, 3, 2}, 0.5), Median({4, 1, 3, 2}));
+  EXPECT_DOUBLE_EQ(Quantile({0.7}, 0.1), 0.7);
+  EXPECT_THROW(Quantile({}, 0.5), std::invalid_argument);
+  EXPECT_THROW(Quantile({1, 2}, 1.5), std::invalid_argument);
+  EXPECT_THROW(Quantile({1, 2}, NAN), std::invalid_argument);
+}
+
 TEST(Descriptive, ChangeAgainstBaseline) {
   EXPECT_DOUBLE_EQ(ChangePercent(110, 100), 10.0);
   EXPECT_DOUBLE_EQ(ChangePercent(75, 100), -25.0);

@@ -97,10 +97,16 @@ TEST_F(ApiRouterTest, ShowsOneCampaignWithItsTables) {
   EXPECT_EQ(c["summary"].size(), SummarizeCampaign(Reader(), db_.id()).size());
   EXPECT_EQ(c["scenarios"], json({"B", "C"}));
   EXPECT_EQ(c["positioners"], json({"baseline", "centroid", "oracle", "rl"}));
-  // rl in B: mean 160 against the oracle's 200.
-  ASSERT_EQ(c["optimality"].size(), 1u);
-  EXPECT_EQ(c["optimality"][0]["scenario"], "B");
-  EXPECT_DOUBLE_EQ(c["optimality"][0]["ratio"].get<double>(), 0.8);
+  // rl in B: reward 0.72 against the oracle's 0.9; C has no rl.
+  const json& optimality = c["optimality"];
+  ASSERT_EQ(optimality["runs"].size(), 1u);
+  EXPECT_EQ(optimality["runs_total"], 1);
+  EXPECT_EQ(optimality["runs"][0]["scenario"], "B");
+  EXPECT_EQ(optimality["runs"][0]["train_seed"], 1);
+  EXPECT_DOUBLE_EQ(optimality["runs"][0]["ratio"].get<double>(), 0.8);
+  ASSERT_EQ(optimality["summary"].size(), 1u);
+  EXPECT_DOUBLE_EQ(optimality["summary"][0]["worst"].get<double>(), 0.8);
+  EXPECT_EQ(optimality["summary"][0]["near_optimal_runs"], 0);
   ASSERT_EQ(c["artifacts"].size(), 1u);
   EXPECT_EQ(c["artifacts"][0]["name"], "learning_curve.csv");
   EXPECT_FALSE(c["metrics"].empty());

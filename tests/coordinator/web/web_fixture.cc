@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "common/hash/sha256.h"
@@ -35,11 +36,15 @@ class Recorder {
         << key;
   }
 
-  void Eval(const std::string& scenario, const std::string& label, int run, double mbps) {
+  // `reward`: the placement's analytic reward, which the optimality table compares.
+  void Eval(const std::string& scenario, const std::string& label, int run, double mbps,
+            std::optional<double> reward = std::nullopt) {
     const std::string id =
         campaign_id_ + "/eval/" + scenario + "/" + label + "/run" + std::to_string(run);
-    const auto result = rlpos::testing::AtJobPosition(
-        store_.reader, id, rlpos::testing::EvalResult(run, mbps, 2.0 + run));
+    nlohmann::json eval = rlpos::testing::EvalResult(run, mbps, 2.0 + run);
+    if (reward)
+      eval["reward"] = *reward;
+    const auto result = rlpos::testing::AtJobPosition(store_.reader, id, eval);
     ASSERT_TRUE(store_.ledger.MarkRunning(id, "w1", 0, 1)) << id;
     ASSERT_EQ(store_.recorder.RecordSuccess(id, 1, result), JobUpdate::kSucceeded) << id;
   }
@@ -79,10 +84,10 @@ CampaignDb::CampaignDb() : file_(dir_.File("rlpos.db")), campaign_(rlpos::testin
   r.Eval("B", "baseline", 1, 100);
   r.Eval("B", "baseline", 2, 120);
   r.Eval("B", "centroid", 1, 110);
-  r.Eval("B", "oracle", 1, 200);
-  r.Eval("B", "oracle", 2, 200);
-  r.Eval("B", "rl", 1, 150);
-  r.Eval("B", "rl", 2, 170);
+  r.Eval("B", "oracle", 1, 200, 0.9);
+  r.Eval("B", "oracle", 2, 200, 0.9);
+  r.Eval("B", "rl", 1, 150, 0.72);
+  r.Eval("B", "rl", 2, 170, 0.72);
   r.Eval("C", "oracle", 1, 80);
   r.Fail("eval/B/centroid/run2", "exit code 1: \"boom\"\nsecond line");
 }

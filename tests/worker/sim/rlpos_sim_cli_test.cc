@@ -141,6 +141,19 @@ TEST(RlposSimCli, SameRunSameMetricsOtherRunCloseButDifferent) {
               run1["mean_delay_ms"].get<double>(), t2, run2["mean_delay_ms"].get<double>());
 }
 
+// An eval records the reward the oracle and the agent score its placement with: the analytic
+// model's, whatever the RngRun.
+TEST(RlposSimCli, AnEvalsRewardIsThePositionersAnalyticReward) {
+  const auto baseline =
+      RunCommand(Sim("position --scenario " + kScenarioB + " --positioner baseline --json"));
+  ASSERT_EQ(baseline.exit_code, 0) << baseline.err;
+  const double expected = nlohmann::json::parse(baseline.out).at("reward");
+  const auto run1 = EvalJson("--run 1");
+  const auto run2 = EvalJson("--run 2");
+  EXPECT_DOUBLE_EQ(run1.at("reward").get<double>(), expected) << run1;
+  EXPECT_DOUBLE_EQ(run2.at("reward").get<double>(), expected) << run2;
+}
+
 TEST(RlposSimCli, OracleCandidatesNotRescoredCarryNull) {
   const auto r =
       RunCommand(Sim("position --scenario " + kScenarioB + " --positioner oracle --json"));

@@ -1,0 +1,60 @@
+#include "common/store/optimality_rows.h"
+
+#include "common/store/sqlite_db.h"
+
+namespace rlpos {
+namespace {
+
+// Per scenario: its oracle's reward and its number of UAVs (the oracle evals' uav_metrics rows).
+constexpr const char* kOracle =
+    "SELECT v.scenario, AVG(v.reward) AS reward, "
+    "MAX((SELECT COUNT(*) FROM uav_metrics u WHERE u.job_id = v.job_id)) AS uavs "
+    "FROM v_eval_runs v WHERE v.campaign_id = ? AND v.positioner = 'oracle' "
+    "AND v.reward IS NOT NULL GROUP BY v.scenario";
+
+// rl evals are labelled "rl" or "rl@..." (campaign/expansion.h: EvalLabel); each depends on
+// the train job that found its placement, whose result names the algorithm it trained.
+const std::string kSelect =
+    std::string(
+        "SELECT r.scenario, o.uavs, COALESCE(json_extract(t.result_json, '$.algorithm'), "
+        "''), t.train_seed, r.positioner, COUNT(*), AVG(r.reward), o.reward "
+        "FROM v_eval_runs r "
+        "JOIN jobs e ON e.id = r.job_id "
+        "JOIN jobs t ON t.id = e.depends_on AND t.kind = 'train' "
+        "JOIN (") +
+    kOracle +
+    ") o ON o.scenario = r.scenario "
+    "WHERE r.campaign_id = ? AND (r.positioner = 'rl' OR substr(r.positioner, 1, 3) = 'rl@') "
+    "AND r.reward IS NOT NULL "
+    "GROUP BY r.scenario, r.positioner "
+    "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = r.campaign_id "
+    "AND j.scenario = r.scenario), MIN(t.seq)";
+
+}  // namespace
+
+std::optional<double> OptimalityRow::Ratio() const {
+  if (!(oracle_reward > 0))
+    return std::nullopt;
+  return rl_reward / oracle_reward;
+}
+
+std::vector<OptimalityRow> ReadOptimalityRows(Database& db, const std::string& campaign_id) {
+  Statement select = db.Prepare(kSelect);
+  select.Bind(campaign_id).Bind(campaign_id);
+  std::vector<OptimalityRow> out;
+  while (select.Step()) {
+    OptimalityRow row;
+    row.scenario = select.Text(0);
+    row.uavs = static_cast<int>(select.Int(1));
+    row.algorithm = select.Text(2);
+    row.train_seed = static_cast<std::uint64_t>(select.Int(3));
+    row.label = select.Text(4);
+    row.runs = static_cast<int>(select.Int(5));
+    row.rl_reward = select.Double(6);
+    row.oracle_reward = select.Double(7);
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+}  // namespace rlpos
