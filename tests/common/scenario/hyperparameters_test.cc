@@ -66,7 +66,8 @@ TEST(Hyperparameters, EveryDeclaredOneIsAcceptedAndWrittenBack) {
     for (const auto& row : section.rows) {
       const json value = ValidValue(row);
       json doc = ScenarioB();
-      ApplyOverrides(doc, {row.key + "=" + value.dump()});
+      // With checkpoints on, so that early_stop_checkpoints's cross-key check holds.
+      ApplyOverrides(doc, {"agent.eval_interval=5", row.key + "=" + value.dump()});
       const json written = ToJson(ParseScenario(doc));
       EXPECT_EQ(written.at(json::json_pointer(Pointer(row.key))), value) << row.key;
       ++count;
