@@ -288,6 +288,10 @@ const SUMMARY_COLUMNS = [
   ['demands_met_mean', 'demands met'], ['worst_ue_mean_mbps', 'worst UE Mbit/s'], ['jain_mean', 'Jain'],
 ];
 
+// Real numbers that may happen to be whole (a ratio of 1), shown with 3 decimals.
+const RATIO_COLUMNS = { ratio: 1, rl_reward: 1, oracle_reward: 1, median: 1, p10: 1, worst: 1,
+  near_optimal_share: 1 };
+
 function objectTable(rows, columns) {
   const keys = columns || Object.keys(rows[0] || {}).map(k => [k, k.replace(/_/g, ' ')]);
   return table(keys.map(k => k[1]), rows.map(r => keys.map(([k]) => {
@@ -297,7 +301,10 @@ function objectTable(rows, columns) {
       sw.firstChild.style.cssText = `display:inline-block;width:9px;height:9px;border-radius:2px;margin-right:5px;background:${colorOf(v)}`;
       return sw;
     }
-    if (typeof v === 'number') return Number.isInteger(v) && k !== 'ratio' ? String(v) : fmt(v);
+    if (typeof v === 'number') {
+      if (k in RATIO_COLUMNS) return fmt(v, 3);  // 1 reads as 1.000, like its neighbours
+      return Number.isInteger(v) ? String(v) : fmt(v);
+    }
     return v === null ? '-' : String(v);
   })), keys.map(([k]) => typeof (rows[0] || {})[k] === 'number'));
 }
