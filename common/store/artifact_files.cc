@@ -26,6 +26,36 @@ std::string ArtifactRelativePath(const std::string& job_id, const std::string& n
   return job_id + "/" + name;
 }
 
+namespace {
+
+// True when `path` is `root` or below it (both canonical).
+bool IsInside(const fs::path& path, const fs::path& root) {
+  auto p = path.begin();
+  for (auto r = root.begin(); r != root.end(); ++r, ++p) {
+    if (p == path.end() || *p != *r)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string ResolveArtifactFile(const std::string& root, const std::string& relative) {
+  const fs::path stored(relative);
+  if (stored.empty() || stored.is_absolute())
+    throw std::runtime_error("its stored path is unsafe");
+  std::error_code error;
+  const fs::path folder = fs::canonical(root, error);
+  if (error)
+    throw std::runtime_error("no artifacts folder");
+  const fs::path file = fs::canonical(folder / stored, error);
+  if (error || !IsInside(file, folder) || file == folder)
+    throw std::runtime_error("its file is missing");
+  if (!fs::is_regular_file(file, error))
+    throw std::runtime_error("not a regular file");
+  return file.string();
+}
+
 void WriteArtifactFile(const std::string& root, const std::string& relative,
                        const std::string& data) {
   const fs::path file = fs::path(root) / relative;

@@ -14,6 +14,11 @@ std::string ArtifactsDirOf(const std::string& db_file);
 // outside the folder can be named.
 std::string ArtifactRelativePath(const std::string& job_id, const std::string& name);
 
+// The file an artifact row names: root/relative with links followed. Throws std::runtime_error
+// saying why unless it is a regular file inside `root` (an absolute or escaping stored path, a
+// link out of the folder, a missing file): a database is read, never trusted, as a path.
+std::string ResolveArtifactFile(const std::string& root, const std::string& relative);
+
 // Writes `data` to root/relative (creating its folders) atomically. Throws std::runtime_error
 // naming the file.
 void WriteArtifactFile(const std::string& root, const std::string& relative,

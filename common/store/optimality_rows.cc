@@ -9,7 +9,7 @@ namespace {
 constexpr const char* kOracle =
     "SELECT v.scenario, AVG(v.reward) AS reward, "
     "MAX((SELECT COUNT(*) FROM uav_metrics u WHERE u.job_id = v.job_id)) AS uavs "
-    "FROM v_eval_runs v WHERE v.campaign_id = ? AND v.positioner = 'oracle' "
+    "FROM v_eval_runs v WHERE v.campaign_id = ?1 AND v.positioner = 'oracle' "
     "AND v.reward IS NOT NULL GROUP BY v.scenario";
 
 // rl evals are labelled "rl" or "rl@..." (campaign/expansion.h: EvalLabel); each depends on
@@ -24,11 +24,13 @@ const std::string kSelect =
         "JOIN (") +
     kOracle +
     ") o ON o.scenario = r.scenario "
-    "WHERE r.campaign_id = ? AND (r.positioner = 'rl' OR substr(r.positioner, 1, 3) = 'rl@') "
+    // Scenarios in campaign order (their first job), found once, as the metric readers do.
+    "JOIN (SELECT scenario AS order_scenario, MIN(seq) AS order_seq FROM jobs "
+    "WHERE campaign_id = ?1 GROUP BY scenario) f ON f.order_scenario = r.scenario "
+    "WHERE r.campaign_id = ?1 AND (r.positioner = 'rl' OR substr(r.positioner, 1, 3) = 'rl@') "
     "AND r.reward IS NOT NULL "
     "GROUP BY r.scenario, r.positioner "
-    "ORDER BY (SELECT MIN(seq) FROM jobs j WHERE j.campaign_id = r.campaign_id "
-    "AND j.scenario = r.scenario), MIN(t.seq)";
+    "ORDER BY f.order_seq, MIN(t.seq)";
 
 }  // namespace
 
@@ -40,7 +42,7 @@ std::optional<double> OptimalityRow::Ratio() const {
 
 std::vector<OptimalityRow> ReadOptimalityRows(Database& db, const std::string& campaign_id) {
   Statement select = db.Prepare(kSelect);
-  select.Bind(campaign_id).Bind(campaign_id);
+  select.Bind(campaign_id);
   std::vector<OptimalityRow> out;
   while (select.Step()) {
     OptimalityRow row;

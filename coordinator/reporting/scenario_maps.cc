@@ -74,7 +74,7 @@ std::string ReadWhole(const fs::path& file) {
 }
 
 // The trajectory.csv of the train job behind `label`, checked against its sha256, copied to
-// `target`. The artifact's path must be a safe relative one (no "..", not absolute).
+// `target`. The file must lie inside the artifacts folder (ResolveArtifactFile).
 bool CopyFlight(ResultsReader& store, const std::string& id, const std::string& scenario,
                 const std::string& label, const fs::path& target,
                 std::vector<std::string>& warnings) {
@@ -82,9 +82,7 @@ bool CopyFlight(ResultsReader& store, const std::string& id, const std::string& 
     if (a.name != "trajectory.csv" || a.scenario != scenario || a.label != label)
       continue;
     try {
-      if (!wire::IsSafePath(a.path, 1024))
-        throw std::runtime_error("its path is not a safe relative path");
-      const std::string data = ReadWhole(fs::path(ArtifactsDirOf(store.file())) / a.path);
+      const std::string data = ReadWhole(ResolveArtifactFile(ArtifactsDirOf(store.file()), a.path));
       if (Sha256Hex(data) != a.sha256)
         throw std::runtime_error("it does not match the sha256 the database holds");
       WriteFileAtomically(target.string(), data);
