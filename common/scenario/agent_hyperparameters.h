@@ -12,6 +12,8 @@ namespace rlpos {
 struct AgentCommonSpec {
   bool normalise_rewards = true;
   int train_episodes = 10;
+  int train_episode_steps = 0;
+  bool exploring_starts = false;
   int eval_episodes = 1;
   int eval_interval = 0;
   int early_stop_checkpoints = 0;
@@ -36,6 +38,16 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
         "to resolve 1 % differences (scenario A) on top of a large constant"},
        {"train_episodes", &AgentCommonSpec::train_episodes, Integers(1, 1000000),
         "training episodes"},
+       {"train_episode_steps", &AgentCommonSpec::train_episode_steps, Integers(0, 1000000),
+        "a training episode ends (truncated, as Gymnasium's max_episode_steps) after this many "
+        "steps; checkpoints and the evaluation fly the env's whole episode. 0: the env's "
+        "episode (env.episode_duration / env.decision_interval steps)"},
+       {"exploring_starts", &AgentCommonSpec::exploring_starts, NoRange(),
+        "each training episode starts every UAV at a point of its zone drawn from the episode's "
+        "seed, on the lattice of env.step moves through its baseline; checkpoints and the "
+        "evaluation start from the baseline. The policy then learns the whole zone, not only "
+        "the cells on its way from the baseline, and finds a better region it would not fly "
+        "through (Sutton and Barto's exploring starts)"},
        {"eval_episodes", &AgentCommonSpec::eval_episodes, Integers(1, 1000000),
         "greedy evaluation episodes after training"},
        {"eval_interval", &AgentCommonSpec::eval_interval, Integers(0, 1000000),

@@ -15,12 +15,19 @@ std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& b
   return out;
 }
 
+EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec) {
+  EpisodeOptions options;
+  options.reset.random_start = spec.exploring_starts;
+  options.max_steps = spec.train_episode_steps;
+  return options;
+}
+
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
-                         const StepCallback& on_step) {
+                         const StepCallback& on_step, const EpisodeOptions& options) {
   const BoxSpace space = env.ObservationSpace();
   EpisodeRecord record;
   record.evaluation = !learn;
-  std::vector<float> obs = space.Normalise(env.Reset(seed));
+  std::vector<float> obs = space.Normalise(env.Reset(seed, options.reset));
   ActionMask mask = env.ValidActions();
   double reward = 0.0;
   double loss_sum = 0.0;
@@ -38,6 +45,8 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
     const int action = t.action;
     std::vector<float> next = space.Normalise(step.observation);
     ActionMask next_mask = env.ValidActions();
+    if (options.max_steps > 0 && record.steps + 1 >= options.max_steps)
+      step.truncated = true;  // a time limit: the next state still bootstraps
     if (learn) {
       t.observation = obs;
       t.reward = static_cast<float>(step.reward);
@@ -77,10 +86,11 @@ TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t s
   };
   // The evaluation's first seed: checkpoints are scored on the episode the answer comes from.
   const std::uint64_t eval_seed = seed + static_cast<std::uint64_t>(spec.train_episodes);
+  const EpisodeOptions training = TrainingEpisodeOptions(spec);
   std::optional<double> kept;  // the kept policy's checkpoint reward
   int stale = 0;               // checkpoints in a row that did not beat it
   for (int e = 0; e < spec.train_episodes; ++e) {
-    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true);
+    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true, nullptr, training);
     record.episode = e + 1;
     add(std::move(record));
     result.episodes_trained = e + 1;

@@ -44,9 +44,22 @@ using StepCallback = std::function<void(int step, int action, const StepResult&)
 // A continuous agent's action (each component in [-1, 1]) mapped onto the env's Box.
 std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& box);
 
-// Runs one episode from env.Reset(seed). With `learn`, the agent explores and learns.
+// How one episode differs from the env's own: its reset options, and a step limit (0: none)
+// after which it is truncated.
+struct EpisodeOptions {
+  ResetOptions reset;
+  int max_steps = 0;
+};
+
+// The options of a training episode under `spec` (agent.exploring_starts,
+// agent.train_episode_steps).
+EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec);
+
+// Runs one episode from env.Reset(seed, options.reset). With `learn`, the agent explores and
+// learns.
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
-                         const StepCallback& on_step = nullptr);
+                         const StepCallback& on_step = nullptr,
+                         const EpisodeOptions& options = {});
 
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
 // greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's

@@ -28,6 +28,13 @@ struct StepResult {
   StepInfo info;
 };
 
+// Gymnasium's reset(options=...): what an env may do differently in one episode.
+struct ResetOptions {
+  // Start from a state drawn from the seed instead of the usual initial state (exploring
+  // starts, for training). An env whose initial state is random already ignores it.
+  bool random_start = false;
+};
+
 class Env {
  public:
   virtual ~Env() = default;
@@ -37,6 +44,10 @@ class Env {
   virtual BoxSpace ContinuousActionSpace() const { return {}; }
   virtual BoxSpace ObservationSpace() const = 0;
   virtual std::vector<double> Reset(std::uint64_t seed) = 0;
+  // Reset with options; an env that has none to offer resets as Reset(seed).
+  virtual std::vector<double> Reset(std::uint64_t seed, const ResetOptions& /*options*/) {
+    return Reset(seed);
+  }
   virtual StepResult Step(int action) = 0;
   // A step with an action of ContinuousActionSpace().
   virtual StepResult StepContinuous(const std::vector<double>& /*action*/) {

@@ -1,6 +1,8 @@
 #include "worker/gym/moves.h"
 
 #include <algorithm>
+#include <cmath>
+#include <random>
 
 #include "common/scenario/scenario_checks.h"
 
@@ -37,6 +39,40 @@ Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delt
     return from;
   Placement placement = from;
   placement[uav] = to;
+  return placement;
+}
+
+namespace {
+
+// A lattice coordinate: `from` plus a whole number of `step`s within [lo, hi]. mt19937_64 is
+// specified to the bit and the modulo is integer, so the draw is the same on every platform.
+double LatticePoint(double from, double lo, double hi, double step, std::mt19937_64& engine) {
+  const auto below = static_cast<long long>(std::floor((from - lo) / step + 1e-9));
+  const auto above = static_cast<long long>(std::floor((hi - from) / step + 1e-9));
+  const auto choices = static_cast<unsigned long long>(below + above + 1);
+  const long long k = static_cast<long long>(engine() % choices) - below;
+  return from + static_cast<double>(k) * step;
+}
+
+}  // namespace
+
+Placement RandomStart(const Scenario& s, std::uint64_t seed) {
+  std::mt19937_64 engine(seed ^ 0x5eedc0ffee5717a7ULL);  // not the ns-3 RngRun's stream
+  Placement placement = s.InitialPlacement();
+  const double d = s.env.step;
+  for (std::size_t u = 0; u < placement.size(); ++u) {
+    const Box& zone = s.uavs[u].zone;
+    const Vec3 from = placement[u];
+    for (int attempt = 0; attempt < 64; ++attempt) {
+      const Vec3 to{LatticePoint(from.x, zone.xmin, zone.xmax, d, engine),
+                    LatticePoint(from.y, zone.ymin, zone.ymax, d, engine),
+                    LatticePoint(from.z, zone.zmin, zone.zmax, d, engine)};
+      if (BuildingContaining(s, to) < 0 && !OverlapsAnother(placement, u, to)) {
+        placement[u] = to;
+        break;
+      }
+    }
+  }
   return placement;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // The UAVs' discrete moves and the observation vector, from the scenario's env section.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,12 @@ Placement ApplyMove(const Scenario& scenario, std::size_t uav, int action, const
 // same rules.
 Placement ApplyDisplacement(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
                             const Placement& from);
+// A start for an exploring-starts episode, drawn from `seed`: each UAV in turn at a point of its
+// zone on the lattice of env.step moves through its initial position (so a discrete policy
+// trained from there meets the cells it flies through from the baseline), not inside a
+// building nor too close to an earlier UAV. A UAV that finds no such point in 64 draws keeps its
+// initial position.
+Placement RandomStart(const Scenario& scenario, std::uint64_t seed);
 // The continuous action space: a displacement in metres, each component in [-step, step].
 BoxSpace DisplacementBounds(const Scenario& scenario);
 

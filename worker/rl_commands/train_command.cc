@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -30,6 +31,8 @@ nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t
           {"fidelity", s.env.fidelity},
           {"seed", seed},
           {"train_episodes", s.agent.train_episodes},
+          {"train_episode_steps", s.agent.train_episode_steps},
+          {"exploring_starts", s.agent.exploring_starts},
           {"eval_episodes", s.agent.eval_episodes},
           {"first_episode_run", FirstEpisodeRun(seed)},
           {"eval_interval", s.agent.eval_interval},
@@ -150,12 +153,18 @@ class TrajectoryWriter {
   std::size_t n_uavs_;
 };
 
+// The steps of one training episode: agent.train_episode_steps, or the env's whole episode.
+std::int64_t TrainingEpisodeSteps(const Scenario& s, const UavPositioningEnv& env) {
+  const int limit = s.agent.train_episode_steps;
+  return limit > 0 ? std::min(limit, env.StepsPerEpisode()) : env.StepsPerEpisode();
+}
+
 // Trains the scenario's agent, and writes into `folder` its policy, the learning curve and the
 // evaluation trajectory.
 TrainResult TrainAndRecord(const Scenario& s, const fs::path& folder) {
   UavPositioningEnv env(s);
   const std::unique_ptr<Agent> agent_owner =
-      MakeAgent(s.agent, env, std::int64_t{s.agent.train_episodes} * env.StepsPerEpisode());
+      MakeAgent(s.agent, env, std::int64_t{s.agent.train_episodes} * TrainingEpisodeSteps(s, env));
   Agent& agent = *agent_owner;
   std::ofstream curve = OpenLearningCurve(folder / "learning_curve.csv");
   TrajectoryWriter trajectory(folder / "trajectory.csv", s, agent);

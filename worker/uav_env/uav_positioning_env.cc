@@ -76,7 +76,11 @@ StepInfo UavPositioningEnv::Observe() {
 }
 
 std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
-  placement_ = scenario_.InitialPlacement();
+  return Reset(seed, ResetOptions{});
+}
+
+std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed, const ResetOptions& options) {
+  placement_ = options.random_start ? RandomStart(scenario_, seed) : scenario_.InitialPlacement();
   active_ = 0;
   steps_ = 0;
   if (!analytic_) {

@@ -25,6 +25,8 @@ class UavPositioningEnv : public Env {
   BoxSpace ContinuousActionSpace() const override;
   BoxSpace ObservationSpace() const override;
   std::vector<double> Reset(std::uint64_t seed) override;
+  // options.random_start: every UAV starts at RandomStart(scenario, seed) (exploring starts).
+  std::vector<double> Reset(std::uint64_t seed, const ResetOptions& options) override;
   // Both throw std::out_of_range for an action outside the env's action space.
   StepResult Step(int action) override;
   StepResult StepContinuous(const std::vector<double>& displacement) override;

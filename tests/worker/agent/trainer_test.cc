@@ -144,5 +144,43 @@ TEST(Trainer, WithoutEarlyStoppingEveryEpisodeTrains) {
   EXPECT_EQ(r.policy_episode, 2);
 }
 
+// The chain, recording the reset options of every episode.
+class OptionsChainEnv : public ChainEnv {
+ public:
+  using ChainEnv::Reset;
+  std::vector<double> Reset(std::uint64_t seed, const ResetOptions& options) override {
+    random_starts.push_back(options.random_start);
+    return Reset(seed);
+  }
+  std::vector<bool> random_starts;
+};
+
+TEST(Trainer, ExploringStartsAndTheStepLimitShapeTrainingEpisodesOnly) {
+  OptionsChainEnv env;
+  RecordingAgent left(0);  // never reaches the end: every episode runs to its limit
+  AgentSpec spec = Spec(3, 1);
+  spec.exploring_starts = true;
+  spec.train_episode_steps = 5;
+  const TrainResult r = Train(env, left, spec, 1);
+  // Training, checkpoint, ... evaluation: only training episodes start at random.
+  EXPECT_EQ(env.random_starts, (std::vector<bool>{true, false, true, false, true, false, false}));
+  ASSERT_EQ(r.curve.size(), 7u);
+  for (const EpisodeRecord& e : r.curve)
+    EXPECT_EQ(e.steps, e.evaluation ? 20 : 5) << "episode " << e.episode;
+  // A step limit truncates: the last transition ends the episode but still bootstraps.
+  ASSERT_EQ(left.ends.size(), 15u);
+  for (std::size_t i = 0; i < left.ends.size(); ++i)
+    EXPECT_EQ(left.ends[i], std::make_pair(false, i % 5 == 4)) << "transition " << i;
+}
+
+TEST(Trainer, WithoutTheOptionsEpisodesAreTheEnvs) {
+  OptionsChainEnv env;
+  RecordingAgent left(0);
+  const TrainResult r = Train(env, left, Spec(2, 0), 1);
+  EXPECT_EQ(env.random_starts, (std::vector<bool>{false, false, false}));
+  for (const EpisodeRecord& e : r.curve)
+    EXPECT_EQ(e.steps, 20);
+}
+
 }  // namespace
 }  // namespace rlpos

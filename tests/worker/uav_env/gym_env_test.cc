@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+
+#include "common/scenario/scenario_checks.h"
 
 #include "worker/environment/scenario_loading.h"
 #include "worker/uav_env/uav_positioning_env.h"
@@ -99,6 +102,53 @@ TEST(GymEnv, MovesIntoWallsAndBuildingsAreMaskedStayIsNot) {
   UavPositioningEnv clamped(unmasked);
   clamped.Reset(1);
   EXPECT_TRUE(clamped.ValidActions().empty());
+}
+
+bool OnLattice(double v, double from, double step) {
+  const double k = (v - from) / step;
+  return std::abs(k - std::round(k)) < 1e-9;
+}
+
+TEST(GymEnv, ExploringStartsDrawLatticePointsOfTheZoneOutsideBuildings) {
+  const Scenario s = LoadB({"env.fidelity=analytic"});
+  UavPositioningEnv env(s);
+  const Vec3 baseline = s.InitialPlacement()[0];
+  const Box& zone = s.uavs[0].zone;
+  std::set<std::vector<double>> starts;
+  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+    const std::vector<double> obs = env.Reset(seed, ResetOptions{true});
+    const Vec3 p = env.LastInfo().positions[0];
+    EXPECT_EQ(obs[0], p.x);
+    EXPECT_TRUE(OnLattice(p.x, baseline.x, s.env.step) && OnLattice(p.y, baseline.y, s.env.step) &&
+                OnLattice(p.z, baseline.z, s.env.step))
+        << "seed " << seed;
+    EXPECT_TRUE(p.x >= zone.xmin && p.x <= zone.xmax && p.y >= zone.ymin && p.y <= zone.ymax &&
+                p.z >= zone.zmin && p.z <= zone.zmax)
+        << "seed " << seed;
+    EXPECT_LT(BuildingContaining(s, p), 0) << "seed " << seed;
+    EXPECT_EQ(env.Reset(seed, ResetOptions{true}), obs) << "seed " << seed;  // seeded
+    starts.insert(obs);
+  }
+  // B's lattice has 21 x 21 x 12 points; 300 draws land on many of them, all over the zone.
+  EXPECT_GT(starts.size(), 250u);
+  EXPECT_EQ(env.Reset(7), (std::vector<double>{50, 50, 25, 1}));  // no option: the baseline
+}
+
+TEST(GymEnv, ExploringStartsKeepSeveralUavsApart) {
+  const Scenario s = LoadScenario(
+      std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json", {"env.fidelity=analytic"});
+  UavPositioningEnv env(s);
+  const Placement baseline = s.InitialPlacement();
+  const auto same = [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+  int moved = 0;
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    env.Reset(seed, ResetOptions{true});
+    const Placement& p = env.LastInfo().positions;
+    ASSERT_EQ(p.size(), 2u);
+    EXPECT_FALSE(OverlapsAnother(p, 0, p[0])) << "seed " << seed;
+    moved += !same(p[0], baseline[0]) && !same(p[1], baseline[1]);
+  }
+  EXPECT_GT(moved, 90);  // both UAVs start away from their baselines
 }
 
 TEST(GymEnv, PacketStepsAdvanceNs3AndMeasureTheInterval) {
