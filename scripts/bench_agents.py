@@ -4,16 +4,18 @@
 Per algorithm, scenario and training seed: trains with `rlpos-sim train --algorithm`, and
 compares the final greedy position's analytic reward with the oracle's best (on the grid of the
 algorithm's action space: the move step for dqn and ppo, 1 m for sac's displacements). Prints
-one row per run and a summary per algorithm and scenario. Asserts nothing.
+one row per run, a summary per algorithm and scenario, and one per algorithm and UAV count
+(median, P10, worst, share at the target). Asserts nothing.
 
   scripts/bench_agents.py [--build DIR] [--seeds 1-10] [--algorithms dqn,ppo,sac]
-                          [--scenarios a,b,c] [--target 0.95] [--set PATH=VALUE ...]
+                          [--scenarios a,b,c] [--target 0.95] [--jobs N] [--set PATH=VALUE ...]
 
 --scenarios takes shipped names (a, b, c, campus2, ...), scenario files, or a folder of them
 (a set written by scripts/generate_scenario_set.sh). Scenarios of several UAVs are judged
 against the oracle's coordinate descent, as the multi-UAV figures are.
 """
 import argparse
+import concurrent.futures
 import json
 import os
 import subprocess
@@ -67,6 +69,65 @@ def env_steps(folder):
         return sum(int(row.split(",")[2]) for row in f if row.split(",")[1] == "train")
 
 
+def uav_count(scenario):
+    with open(scenario) as f:
+        document = json.load(f)
+    return len(document["uavs"]) if "uavs" in document else 1
+
+
+def quantile(sorted_values, q):
+    """The q-quantile, linear between order statistics (as the campaign report's optimality
+    section)."""
+    position = q * (len(sorted_values) - 1)
+    low = int(position)
+    high = min(low + 1, len(sorted_values) - 1)
+    return sorted_values[low] + (position - low) * (sorted_values[high] - sorted_values[low])
+
+
+def train_one(sim, scenario, algorithm, seed, overrides, work):
+    name = os.path.splitext(os.path.basename(scenario))[0]
+    out = os.path.join(work, "%s-%s-%d" % (name, algorithm, seed))
+    started = time.monotonic()
+    result = run_json([sim, "train", "--scenario", scenario, "--fidelity", "analytic",
+                       "--algorithm", algorithm, "--seed", str(seed), "--out", out, "--json"]
+                      + overrides)
+    return result, env_steps(out), time.monotonic() - started
+
+
+def print_summaries(rows, algorithms, names, target):
+    print("\nsummary (target: reward >= %.0f %% of the oracle's)" % (target * 100))
+    print("| algorithm | scenario | seeds >= target | mean ratio | min ratio | mean nLoS "
+          "| env steps | mean train wall (s) |")
+    print("|---|---|---|---|---|---|---|---|")
+    for algorithm in algorithms:
+        for name in names:
+            group = [r for r in rows if r["algorithm"] == algorithm and r["scenario"] == name]
+            if not group:
+                continue
+            n = len(group)
+            print("| %s | %s | %d/%d | %.3f | %.3f | %.1f/%d | %d | %.1f |" % (
+                algorithm, name, sum(r["ratio"] >= target for r in group), n,
+                sum(r["ratio"] for r in group) / n, min(r["ratio"] for r in group),
+                sum(r["n_los"] for r in group) / n, group[0]["n_ues"], group[0]["steps"],
+                sum(r["wall"] for r in group) / n))
+    print("\nper algorithm and UAV count")
+    print("| algorithm | UAVs | runs | median | P10 | worst | runs >= %.2f | mean wall (s) "
+          "| max wall (s) |" % target)
+    print("|---|---|---|---|---|---|---|---|---|")
+    for algorithm in algorithms:
+        for uavs in sorted({r["uavs"] for r in rows}):
+            group = [r for r in rows if r["algorithm"] == algorithm and r["uavs"] == uavs]
+            if not group:
+                continue
+            ratios = sorted(r["ratio"] for r in group)
+            walls = [r["wall"] for r in group]
+            print("| %s | %d | %d | %.3f | %.3f | %.3f | %d (%.0f %%) | %.1f | %.1f |" % (
+                algorithm, uavs, len(group), quantile(ratios, 0.5), quantile(ratios, 0.1),
+                ratios[0], sum(v >= target for v in ratios),
+                100.0 * sum(v >= target for v in ratios) / len(ratios),
+                sum(walls) / len(walls), max(walls)))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(REPO, "build"))
@@ -74,6 +135,9 @@ def main():
     parser.add_argument("--algorithms", default="dqn,ppo,sac")
     parser.add_argument("--scenarios", default="a,b,c")
     parser.add_argument("--target", type=float, default=0.95)
+    parser.add_argument("--jobs", type=int, default=1,
+                        help="trainings at a time (each is one process); wall times are per "
+                             "training, so they grow when the jobs share too few cores")
     parser.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
                         help="a scenario override for every training, e.g. agent.ppo.epochs=4")
     args = parser.parse_args()
@@ -81,51 +145,38 @@ def main():
     seeds = seeds_of(args.seeds)
     algorithms = args.algorithms.split(",")
     scenarios = scenario_files(args.scenarios)
+    overrides = [a for o in args.set for a in ("--set", o)]
+
+    runs = []  # (scenario, algorithm, seed, oracle reward, UAV count)
+    for scenario in scenarios:
+        oracles = {}
+        for algorithm in algorithms:
+            space = "continuous" if algorithm == "sac" else "discrete"
+            if space not in oracles:
+                oracles[space] = oracle_reward(sim, scenario, algorithm)
+            runs += [(scenario, algorithm, seed, oracles[space], uav_count(scenario))
+                     for seed in seeds]
 
     rows = []
     print("%-4s %-22s %4s %8s %8s %6s %5s %7s %7s" %
           ("alg", "sc", "seed", "reward", "oracle", "ratio", "nLoS", "steps", "wall_s"))
-    with tempfile.TemporaryDirectory() as work:
-        for scenario in scenarios:
-            name = os.path.splitext(os.path.basename(scenario))[0]
-            oracles = {}
-            for algorithm in algorithms:
-                space = "continuous" if algorithm == "sac" else "discrete"
-                if space not in oracles:
-                    oracles[space] = oracle_reward(sim, scenario, algorithm)
-                for seed in seeds:
-                    out = os.path.join(work, "%s-%s-%d" % (name, algorithm, seed))
-                    started = time.monotonic()
-                    overrides = [a for o in args.set for a in ("--set", o)]
-                    result = run_json([sim, "train", "--scenario", scenario, "--fidelity",
-                                       "analytic", "--algorithm", algorithm, "--seed", str(seed),
-                                       "--out", out, "--json"] + overrides)
-                    wall = time.monotonic() - started
-                    row = {"algorithm": algorithm, "scenario": name, "seed": seed,
-                           "reward": result["reward"], "oracle": oracles[space],
-                           "n_los": result["n_los"], "n_ues": result["n_ues"],
-                           "steps": env_steps(out), "wall": wall}
-                    row["ratio"] = row["reward"] / row["oracle"]
-                    rows.append(row)
-                    print("%-4s %-22s %4d %8.4f %8.4f %6.3f %2d/%-2d %7d %7.1f" %
-                          (algorithm, name, seed, row["reward"], row["oracle"], row["ratio"],
-                           row["n_los"], row["n_ues"], row["steps"], wall), flush=True)
-
-    print("\nsummary (target: reward >= %.0f %% of the oracle's)" % (args.target * 100))
-    print("| algorithm | scenario | seeds >= target | mean ratio | min ratio | mean nLoS "
-          "| env steps | mean train wall (s) |")
-    print("|---|---|---|---|---|---|---|---|")
-    for algorithm in algorithms:
-        for name in [os.path.splitext(os.path.basename(f))[0] for f in scenarios]:
-            group = [r for r in rows if r["algorithm"] == algorithm and r["scenario"] == name]
-            if not group:
-                continue
-            n = len(group)
-            print("| %s | %s | %d/%d | %.3f | %.3f | %.1f/%d | %d | %.1f |" % (
-                algorithm, name, sum(r["ratio"] >= args.target for r in group), n,
-                sum(r["ratio"] for r in group) / n, min(r["ratio"] for r in group),
-                sum(r["n_los"] for r in group) / n, group[0]["n_ues"], group[0]["steps"],
-                sum(r["wall"] for r in group) / n))
+    with tempfile.TemporaryDirectory() as work, \
+            concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = [pool.submit(train_one, sim, scenario, algorithm, seed, overrides, work)
+                   for scenario, algorithm, seed, _, _ in runs]
+        for (scenario, algorithm, seed, oracle, uavs), future in zip(runs, futures):
+            result, steps, wall = future.result()
+            row = {"algorithm": algorithm, "scenario": os.path.splitext(
+                       os.path.basename(scenario))[0], "seed": seed, "uavs": uavs,
+                   "reward": result["reward"], "oracle": oracle, "n_los": result["n_los"],
+                   "n_ues": result["n_ues"], "steps": steps, "wall": wall}
+            row["ratio"] = row["reward"] / row["oracle"]
+            rows.append(row)
+            print("%-4s %-22s %4d %8.4f %8.4f %6.3f %2d/%-2d %7d %7.1f" %
+                  (algorithm, row["scenario"], seed, row["reward"], oracle, row["ratio"],
+                   row["n_los"], row["n_ues"], steps, wall), flush=True)
+    names = [os.path.splitext(os.path.basename(f))[0] for f in scenarios]
+    print_summaries(rows, algorithms, names, args.target)
 
 
 if __name__ == "__main__":

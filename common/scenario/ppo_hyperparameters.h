@@ -19,7 +19,7 @@ struct PpoSpec {
   int rollout_steps = 256;
   int epochs = 10;
   int minibatches = 4;
-  bool anneal_learning_rate = false;
+  bool anneal_learning_rate = true;
 };
 
 inline void CheckPpoSpec(const PpoSpec& p, const ObjectReader& reader) {
@@ -50,8 +50,7 @@ inline const HyperparameterTable<PpoSpec>& PpoHyperparameters() {
        {"anneal_learning_rate", &PpoSpec::anneal_learning_rate, NoRange(),
         "the rate falls linearly to 0 over the training's rollouts (train_episodes x steps per "
         "episode / rollout_steps), the first at the full rate (CleanRL's anneal_lr, on there): "
-        "late updates then refine the policy instead of knocking it off its best. Off by "
-        "default: the single-UAV figures were measured without it; campus2 and urban3 use it"}},
+        "late updates then refine the policy instead of knocking it off its best"}},
       CheckPpoSpec};
   return table;
 }

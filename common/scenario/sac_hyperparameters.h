@@ -11,8 +11,8 @@
 namespace rlpos {
 
 struct SacSpec {
-  double policy_learning_rate = 3e-4;
-  double q_learning_rate = 3e-4;
+  double policy_learning_rate = 1e-3;
+  double q_learning_rate = 1e-3;
   double gamma = 0.99;
   double tau = 0.005;
   int batch_size = 256;
@@ -29,9 +29,9 @@ inline const HyperparameterTable<SacSpec>& SacHyperparameters() {
       "sac_continuous_action.py values where they differ. Its replay holds "
       "agent.replay_capacity transitions.",
       {{"policy_learning_rate", &SacSpec::policy_learning_rate, PositiveAtMost(1.0),
-        "Adam, the policy's"},
+        "Adam, the policy's. CleanRL: 3e-4"},
        {"q_learning_rate", &SacSpec::q_learning_rate, PositiveAtMost(1.0),
-        "Adam, the Q-networks' and the temperature's"},
+        "Adam, the Q-networks' and the temperature's. CleanRL: 1e-3"},
        {"gamma", &SacSpec::gamma, Between(0.0, 1.0), "discount"},
        {"tau", &SacSpec::tau, PositiveAtMost(1.0), "Polyak averaging of the target Q-networks"},
        {"batch_size", &SacSpec::batch_size, Integers(1, 65536), "transitions per update"},

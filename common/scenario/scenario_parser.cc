@@ -304,10 +304,11 @@ std::vector<int> ReadHidden(const json& h, const std::string& path) {
   return hidden;
 }
 
-AgentSpec ReadAgent(const json& v) {
+AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   ObjectReader r(v, "/agent");
   AgentSpec a;
   a.algorithm = r.String("algorithm", a.algorithm, AllAlgorithms());
+  static_cast<AgentCommonSpec&>(a) = AgentCommonDefaults(a.algorithm, uavs);
   if (const json* h = r.Child("hidden"))
     a.hidden = ReadHidden(*h, r.PathOf("hidden"));
   ReadHyperparameters(r, DqnHyperparameters(), static_cast<DqnSpec&>(a));
@@ -463,8 +464,9 @@ Scenario ParseScenario(const json& document) {
   s.log_level = r.String("log_level", s.log_level, {"error", "warning", "info", "debug"});
   if (const json* v = r.Child("env"))
     s.env = ReadEnv(*v);
+  static_cast<AgentCommonSpec&>(s.agent) = AgentCommonDefaults(s.agent.algorithm, s.uavs.size());
   if (const json* v = r.Child("agent"))
-    s.agent = ReadAgent(*v);
+    s.agent = ReadAgent(*v, s.uavs.size());
   r.Finish();
   // SAC acts on displacements, DQN and PPO choose among the moves.
   const bool continuous_agent = s.agent.algorithm == "sac";

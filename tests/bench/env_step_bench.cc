@@ -25,7 +25,7 @@ Figures Run(rlpos::Scenario s, const std::string& fidelity, int steps) {
   rlpos::DqnAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()),
                         env.ActionSpace().n);
   const auto space = env.ObservationSpace();
-  auto obs = space.Normalise(env.Reset(s.agent.seed * 1000 + 1));
+  auto obs = space.Normalise(env.Reset(s.agent.seed * 1000000 + 1));
   const double ns3_before = env.WallSecondsInNs3();  // the reset's warm-up is not a step
   const auto start = Clock::now();
   auto mask = env.ValidActions();

@@ -108,10 +108,10 @@ class PyEnv {
     return {box.low, box.high};
   }
 
-  py::tuple Reset(std::uint64_t seed) {
+  py::tuple Reset(std::uint64_t seed, bool random_start) {
     const Outcome o = Run([&](UavPositioningEnv& env) {
       StepResult r;
-      r.observation = env.Reset(seed);
+      r.observation = env.Reset(seed, ResetOptions{random_start});
       r.info = env.LastInfo();
       return r;
     });
@@ -264,7 +264,7 @@ PYBIND11_MODULE(_rlpos, m) {
       .def_property_readonly("agent_seed", [](const PyEnv& e) { return e.scenario().agent.seed; })
       .def_property_readonly("actions", [](const PyEnv& e) { return e.scenario().env.actions; })
       .def_property_readonly("closed", &PyEnv::closed)
-      .def("reset", &PyEnv::Reset, py::arg("seed"))
+      .def("reset", &PyEnv::Reset, py::arg("seed"), py::arg("random_start") = false)
       .def("step", &PyEnv::Step, py::arg("action"))
       .def("step_continuous", &PyEnv::StepContinuous, py::arg("displacement"))
       .def("time_steps", &PyEnv::TimeSteps, py::arg("actions"), py::arg("steps"), py::arg("seed"))

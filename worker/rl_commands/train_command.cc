@@ -18,9 +18,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Episodes of train seed N run RngRun N*1000+1, N*1000+2, ...: never the evaluation runs.
+// Episodes of train seed N run RngRun N*1000000+1, N*1000000+2, ...: never the evaluation
+// runs, and never another seed's episodes (agent.train_episodes is at most 1000000).
 std::uint64_t FirstEpisodeRun(std::uint64_t seed) {
-  return seed * 1000 + 1;
+  return seed * 1000000 + 1;
 }
 
 nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {

@@ -92,6 +92,19 @@ def test_the_signatures_of_reset_and_step(kind_env):
     assert list(inspect.signature(kind_env.step).parameters) == ["action"]
 
 
+def test_random_start_options_are_seeded_and_checked(kind_env):
+    env = kind_env
+    baseline = env.reset(seed=5)[1]["position"]
+    first = env.reset(seed=5, options={"random_start": True})[1]["position"]
+    again = env.reset(seed=5, options={"random_start": True})[1]["position"]
+    other = env.reset(seed=6, options={"random_start": True})[1]["position"]
+    assert list(first) == list(again)
+    assert list(first) != list(baseline) or list(other) != list(baseline)
+    for bad in ({"random_start": 1}, {"start": True}):
+        with pytest.raises(ValueError, match="options"):
+            env.reset(seed=5, options=bad)
+
+
 def test_a_whole_episode_returns_what_the_api_says(kind_env):
     env = kind_env
     result = env.reset(seed=2, options=None)

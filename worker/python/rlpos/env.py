@@ -41,7 +41,9 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
     displacement (dx, dy, dz) in [-env.step, env.step] metres.
     Episodes end truncated after env.episode_duration; none terminates.
     reset(seed=s) starts the episode with RngRun s; a reset without a seed takes the next run
-    (the first: `seed`, or the scenario's agent.seed * 1000 + 1 as rlpos-sim train does).
+    (the first: `seed`, or the scenario's agent.seed * 1000000 + 1 as rlpos-sim train does).
+    reset(options={"random_start": True}) starts every UAV at a point of its zone drawn from the
+    run (exploring starts, as agent.exploring_starts trains); without it, at the baseline.
     info: position, n_los, throughput_mbps, demands_met, snr_db and, with env.action_mask, an
     action_mask (1: the move changes the position).
     """
@@ -66,7 +68,7 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
         self.observation_space = Box(np.array(low, np.float32), np.array(high, np.float32),
                                      dtype=np.float32)
         if seed is None:
-            self._next_run = self._env.agent_seed * 1000 + 1
+            self._next_run = self._env.agent_seed * 1000000 + 1
         else:
             self._next_run = _check_seed(seed, "seed")
             self.action_space.seed(self._next_run)
@@ -87,13 +89,17 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
     def reset(self, *, seed=None, options=None):
         if GYMNASIUM:
             super().reset(seed=seed)
+        random_start = False
         if options:
-            raise ValueError("options: the env takes none, got %r" % (options,))
+            unknown = sorted(set(options) - {"random_start"})
+            if unknown or not isinstance(options.get("random_start", False), bool):
+                raise ValueError("options: expected {\"random_start\": bool}, got %r" % (options,))
+            random_start = options.get("random_start", False)
         if seed is not None:
             self._next_run = _check_seed(seed, "seed")
         run = self._next_run
         self._next_run = run + 1 if run < _MAX_SEED else 0
-        observation, info = self._env.reset(run)
+        observation, info = self._env.reset(run, random_start)
         return self._observation(observation), self._info(info)
 
     def step(self, action):
