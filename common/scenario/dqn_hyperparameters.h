@@ -36,13 +36,13 @@ inline const HyperparameterTable<DqnSpec>& DqnHyperparameters() {
         "exploration at the first step, falling linearly over epsilon_decay_steps"},
        {"epsilon_end", &DqnSpec::epsilon_end, Between(0.0, 1.0),
         "exploration after epsilon_decay_steps. The paper trains with epsilon 1 throughout "
-        "(epsilon_end 1); decaying to 0.05 over the first 8 of the 10 episodes lets the greedy "
-        "policy correct itself where it goes"},
+        "(epsilon_end 1); decaying to 0.05 over the first 8,000 steps (8 of the paper's 10 "
+        "episodes) lets the greedy policy correct itself where it goes"},
        {"epsilon_decay_steps", &DqnSpec::epsilon_decay_steps, Integers(0, 1000000000),
         "steps over which epsilon falls from epsilon_start to epsilon_end"},
        {"target_update_interval", &DqnSpec::target_update_interval, Integers(1, 1000000000),
-        "steps between target-network refreshes; not in the paper. Once per episode (1,000 "
-        "steps): where rewards differ by 1 % (scenario A) a target refreshed every 100 steps "
+        "steps between target-network refreshes; not in the paper. Once per paper episode "
+        "(1,000 steps): where rewards differ by 1 % (scenario A) a target refreshed every 100 steps "
         "chases its own noise (plain DQN, seeds 1-10: with 100, 10, 10 and 8 seeds meet the "
         "acceptance bar in A, B and C, against 10 in each)"},
        {"warmup_steps", &DqnSpec::warmup_steps, Integers(0, 1000000000),

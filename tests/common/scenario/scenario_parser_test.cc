@@ -199,7 +199,7 @@ INSTANTIATE_TEST_SUITE_P(
                  {"agent.eval_interval=-1"},
                  "/agent/eval_interval: must be in [0, 1000000]"},
         BadInput{"EarlyStopWithoutCheckpoints",
-                 {"agent.early_stop_checkpoints=3"},
+                 {"agent.eval_interval=0", "agent.early_stop_checkpoints=3"},
                  "/agent/early_stop_checkpoints: needs checkpoints: set agent.eval_interval > 0"},
         BadInput{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
         BadInput{

@@ -18,6 +18,10 @@ AgentSpec PpoSpecFor(std::uint64_t seed, int episodes) {
   spec.ppo.rollout_steps = 64;
   spec.train_episodes = episodes;
   spec.eval_episodes = 1;
+  // Plain training, as the tiny envs were tuned for: no checkpoints, the env's episodes.
+  spec.eval_interval = 0;
+  spec.train_episode_steps = 0;
+  spec.exploring_starts = false;
   spec.seed = seed;
   return spec;
 }

@@ -23,14 +23,20 @@ AgentSpec SacSpecFor(std::uint64_t seed, int episodes) {
   spec.sac.gamma = 0.9;
   spec.train_episodes = episodes;
   spec.eval_episodes = 1;
+  // Plain training, as the tiny envs were tuned for: no checkpoints, the env's episodes.
+  spec.eval_interval = 0;
+  spec.train_episode_steps = 0;
+  spec.exploring_starts = false;
   spec.seed = seed;
   return spec;
 }
 
 TEST(SacAgent, DefaultsAreTheReferenceSet) {
   const SacSpec sac;
-  EXPECT_DOUBLE_EQ(sac.policy_learning_rate, 3e-4);
-  EXPECT_DOUBLE_EQ(sac.q_learning_rate, 3e-4);
+  // CleanRL's Q rate for both: 3e-4 for the policy left urban scenarios of the generated
+  // training set short of the oracle (docs/rl.md).
+  EXPECT_DOUBLE_EQ(sac.policy_learning_rate, 1e-3);
+  EXPECT_DOUBLE_EQ(sac.q_learning_rate, 1e-3);
   EXPECT_DOUBLE_EQ(sac.tau, 0.005);
   EXPECT_EQ(sac.batch_size, 256);
   EXPECT_FALSE(sac.alpha.has_value());  // tuned automatically

@@ -80,6 +80,8 @@ AgentSpec Spec(int train_episodes, int eval_interval) {
   spec.train_episodes = train_episodes;
   spec.eval_episodes = 1;
   spec.eval_interval = eval_interval;
+  spec.train_episode_steps = 0;  // the env's episodes, from its own start
+  spec.exploring_starts = false;
   return spec;
 }
 

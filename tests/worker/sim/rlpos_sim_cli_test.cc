@@ -214,7 +214,7 @@ TEST(RlposSimCli, DescribeHyperparametersOfOneAlgorithm) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("## agent\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("## ppo\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("| `agent.ppo.anneal_learning_rate` | boolean | false |"), std::string::npos)
+  EXPECT_NE(r.out.find("| `agent.ppo.anneal_learning_rate` | boolean | true |"), std::string::npos)
       << r.out;
   EXPECT_EQ(r.out.find("## sac"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("## dqn"), std::string::npos) << r.out;
