@@ -80,6 +80,37 @@ TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {
   EXPECT_EQ(ParseScenario(back).env.action_space, "discrete");
 }
 
+TEST(ScenarioParser, TrainingDefaultsFollowTheAlgorithmAndTheUavCount) {
+  const auto agent_of = [](const std::string& file, const std::string& algorithm,
+                           std::vector<std::string> overrides) {
+    json doc = ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/" + file);
+    ApplyOverrides(doc, AlgorithmOverrides(algorithm));
+    ApplyOverrides(doc, overrides);
+    return ParseScenario(doc).agent;
+  };
+  const AgentSpec dqn = agent_of("b.json", "dqn", {});
+  EXPECT_EQ(dqn.train_episodes, 1000);
+  EXPECT_EQ(dqn.train_episode_steps, 25);
+  EXPECT_EQ(dqn.eval_interval, 50);
+  EXPECT_TRUE(dqn.exploring_starts);
+  EXPECT_EQ(ParseScenario(ScenarioB()).agent.train_episodes, 1000);  // no agent section: dqn's
+  const AgentSpec ppo = agent_of("b.json", "ppo", {});
+  EXPECT_EQ(ppo.train_episodes, 4000);
+  EXPECT_EQ(ppo.eval_interval, 100);
+  const AgentSpec sac = agent_of("b.json", "sac", {});
+  EXPECT_EQ(sac.train_episodes, 2500);
+  EXPECT_EQ(sac.train_episode_steps, 10);
+  // Two UAVs: 1.5 times one UAV's episodes; three: twice.
+  EXPECT_EQ(agent_of("campus2.json", "dqn", {}).train_episodes, 1500);
+  EXPECT_EQ(agent_of("urban3.json", "ppo", {}).train_episodes, 8000);
+  // A value the scenario gives is kept as it is, whatever the algorithm and UAV count.
+  const AgentSpec set =
+      agent_of("urban3.json", "sac", {"agent.train_episodes=7", "agent.train_episode_steps=0"});
+  EXPECT_EQ(set.train_episodes, 7);
+  EXPECT_EQ(set.train_episode_steps, 0);
+  EXPECT_EQ(set.eval_interval, 100);
+}
+
 TEST(ScenarioParser, ToJsonRoundTrips) {
   const Scenario s = ParseScenario(ScenarioB());
   const Scenario again = ParseScenario(ToJson(s));
