@@ -60,8 +60,13 @@ void ReadHyperParameters(Rlpos3Object& hyper, AgentSpec& a) {
   if (!layers.empty())
     a.hidden = layers;
   a.eval_episodes = static_cast<int>(hyper.Integer("numEvalEpisodes", a.eval_episodes, 0, INT_MAX));
-  a.train_episodes =
-      static_cast<int>(hyper.Integer("numTrainEpisodes", a.train_episodes, 0, INT_MAX));
+  if (hyper.Has("numTrainEpisodes")) {
+    // RLpos-3's episodes: the whole episode, from the start position, no checkpoints.
+    a.train_episodes = static_cast<int>(hyper.Integer("numTrainEpisodes", 0, 0, INT_MAX));
+    a.train_episode_steps = 0;
+    a.exploring_starts = false;
+    a.eval_interval = 0;
+  }
   a.replay_capacity = hyper.Integer("replayBufferMaxLength", a.replay_capacity, 0, LLONG_MAX);
   a.batch_size = static_cast<int>(hyper.Integer("batchSize", a.batch_size, 0, INT_MAX));
   a.learning_rate = hyper.Number("learningRate", a.learning_rate);

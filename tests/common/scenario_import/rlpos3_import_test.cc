@@ -108,6 +108,10 @@ TEST_F(Rlpos3Import, AgentHyperparameters) {
   EXPECT_EQ(s.agent.hidden, std::vector<int>({128, 64}));
   EXPECT_EQ(s.agent.eval_episodes, 2);
   EXPECT_EQ(s.agent.train_episodes, 5);
+  // RLpos-3's episodes are whole ones from the start, without checkpoints.
+  EXPECT_EQ(s.agent.train_episode_steps, 0);
+  EXPECT_FALSE(s.agent.exploring_starts);
+  EXPECT_EQ(s.agent.eval_interval, 0);
   EXPECT_EQ(s.agent.replay_capacity, 50000);
   EXPECT_EQ(s.agent.batch_size, 32);
   EXPECT_DOUBLE_EQ(s.agent.learning_rate, 0.005);
