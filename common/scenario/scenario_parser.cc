@@ -464,9 +464,9 @@ Scenario ParseScenario(const json& document) {
   s.log_level = r.String("log_level", s.log_level, {"error", "warning", "info", "debug"});
   if (const json* v = r.Child("env"))
     s.env = ReadEnv(*v);
-  static_cast<AgentCommonSpec&>(s.agent) = AgentCommonDefaults(s.agent.algorithm, s.uavs.size());
-  if (const json* v = r.Child("agent"))
-    s.agent = ReadAgent(*v, s.uavs.size());
+  // Without an "agent" section too: the defaults depend on the number of UAVs.
+  const json* agent = r.Child("agent");
+  s.agent = ReadAgent(agent ? *agent : json::object(), s.uavs.size());
   r.Finish();
   // SAC acts on displacements, DQN and PPO choose among the moves.
   const bool continuous_agent = s.agent.algorithm == "sac";
