@@ -51,16 +51,28 @@ def scenario_files(text):
     return files
 
 
+# Run in a process of its own, so that oracles share the pool with the trainings.
+ORACLE_PROGRAM = """
+import json, sys
+sys.path.insert(0, sys.argv[1])
+import rlpos  # the build's binding: the oracle without its packet-level re-score
+best = rlpos.oracle(sys.argv[2], overrides={"agent.algorithm": sys.argv[3],
+                                            "env.action_space": sys.argv[4]},
+                    packet_candidates=0, top=1)
+print(json.dumps({"reward": best[0]["analytic_reward"]}))
+"""
+
+
+def space_of(algorithm):
+    return "continuous" if algorithm == "sac" else "discrete"
+
+
 def oracle_reward(sim, scenario, algorithm):
     """The best analytic reward on the oracle's grid for the algorithm's action space (no
     packet-level re-scoring: rl is trained and judged at analytic fidelity)."""
-    space = "continuous" if algorithm == "sac" else "discrete"
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(sim)), "python"))
-    import rlpos  # the build's binding: the oracle without its packet-level re-score
-    best = rlpos.oracle(scenario, overrides={"agent.algorithm": algorithm,
-                                             "env.action_space": space},
-                        packet_candidates=0, top=1)
-    return best[0]["analytic_reward"]
+    binding = os.path.join(os.path.dirname(os.path.dirname(sim)), "python")
+    return run_json([sys.executable, "-c", ORACLE_PROGRAM, binding, scenario, algorithm,
+                     space_of(algorithm)])["reward"]
 
 
 def env_steps(folder):
@@ -147,29 +159,31 @@ def main():
     scenarios = scenario_files(args.scenarios)
     overrides = [a for o in args.set for a in ("--set", o)]
 
-    runs = []  # (scenario, algorithm, seed, oracle reward, UAV count)
-    for scenario in scenarios:
-        oracles = {}
-        for algorithm in algorithms:
-            space = "continuous" if algorithm == "sac" else "discrete"
-            if space not in oracles:
-                oracles[space] = oracle_reward(sim, scenario, algorithm)
-            runs += [(scenario, algorithm, seed, oracles[space], uav_count(scenario))
-                     for seed in seeds]
-
     rows = []
     print("%-4s %-22s %4s %8s %8s %6s %5s %7s %7s" %
           ("alg", "sc", "seed", "reward", "oracle", "ratio", "nLoS", "steps", "wall_s"))
     with tempfile.TemporaryDirectory() as work, \
             concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        # One oracle per scenario and action space, queued first: the 1 m grid of sac's is
+        # as slow as a training, so it runs in the pool rather than before it.
+        oracles = {}
+        for scenario in scenarios:
+            for algorithm in algorithms:
+                key = (scenario, space_of(algorithm))
+                if key not in oracles:
+                    oracles[key] = pool.submit(oracle_reward, sim, scenario, algorithm)
+        runs = [(scenario, algorithm, seed) for scenario in scenarios
+                for algorithm in algorithms for seed in seeds]
         futures = [pool.submit(train_one, sim, scenario, algorithm, seed, overrides, work)
-                   for scenario, algorithm, seed, _, _ in runs]
-        for (scenario, algorithm, seed, oracle, uavs), future in zip(runs, futures):
+                   for scenario, algorithm, seed in runs]
+        for (scenario, algorithm, seed), future in zip(runs, futures):
             result, steps, wall = future.result()
+            oracle = oracles[(scenario, space_of(algorithm))].result()
             row = {"algorithm": algorithm, "scenario": os.path.splitext(
-                       os.path.basename(scenario))[0], "seed": seed, "uavs": uavs,
-                   "reward": result["reward"], "oracle": oracle, "n_los": result["n_los"],
-                   "n_ues": result["n_ues"], "steps": steps, "wall": wall}
+                       os.path.basename(scenario))[0], "seed": seed,
+                   "uavs": uav_count(scenario), "reward": result["reward"], "oracle": oracle,
+                   "n_los": result["n_los"], "n_ues": result["n_ues"], "steps": steps,
+                   "wall": wall}
             row["ratio"] = row["reward"] / row["oracle"]
             rows.append(row)
             print("%-4s %-22s %4d %8.4f %8.4f %6.3f %2d/%-2d %7d %7.1f" %
