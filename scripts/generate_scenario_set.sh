@@ -6,7 +6,7 @@
 # Seeds are fixed and the two sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
 #   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
 #   base: train 10000, heldout 90000; style: urban 0, campus 1, suburb 2, open 3.
-# Scenarios per style and UAV count (1, 2, 3): train 5, 2, 1 (32 in all); heldout 8, 2, 2 (48).
+# Scenarios per style and UAV count (1, 2, 3): 8, 2, 2 in each set (48).
 # DIR/index.tsv lists file, seed, style, UAVs and UEs.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,7 +21,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 case "$set_name" in
-  train) base=10000; counts=(5 2 1) ;;
+  train) base=10000; counts=(8 2 2) ;;
   heldout) base=90000; counts=(8 2 2) ;;
   *) echo "generate_scenario_set: --set must be train or heldout" >&2; exit 2 ;;
 esac

@@ -20,6 +20,7 @@ struct AgentCommonSpec {
   int train_episodes = 1000;
   int train_episode_steps = 25;
   bool exploring_starts = true;
+  int baseline_start_every = 0;
   int eval_episodes = 1;
   int eval_interval = 50;
   int early_stop_checkpoints = 0;
@@ -27,13 +28,16 @@ struct AgentCommonSpec {
 };
 
 // The shared keys' defaults for `algorithm` with `uavs` UAVs. PPO, on-policy, needs more samples
-// than DQN; SAC (its steps cost most) learns more from shorter episodes from more starts. Several
-// UAVs take turns, so each moves in only 1/uavs of the steps: the training grows to (uavs + 1) / 2
-// times one UAV's (three UAVs: twice), what the time budget allows (docs/rl.md).
+// than DQN, and a share of them from the baseline: from random starts alone its greedy policy
+// missed the way from there where the best cells are close to it; SAC (its steps cost most) learns
+// more from shorter episodes from more starts. Several UAVs take turns, so each moves in only
+// 1/uavs of the steps: the training grows to (uavs + 1) / 2 times one UAV's (three UAVs: twice),
+// what the time budget allows (docs/rl.md).
 inline AgentCommonSpec AgentCommonDefaults(const std::string& algorithm, std::size_t uavs) {
   AgentCommonSpec spec;
   if (algorithm == "ppo") {
     spec.train_episodes = 4000;
+    spec.baseline_start_every = 4;
     spec.eval_interval = 100;
   } else if (algorithm == "sac") {
     spec.train_episodes = 2500;
@@ -62,7 +66,8 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
         "an env that never terminates (ours) is unchanged by it, but the network no longer has "
         "to resolve 1 % differences (scenario A) on top of a large constant"},
        {"train_episodes", &AgentCommonSpec::train_episodes, Integers(1, 1000000),
-        "training episodes. Default per algorithm with one UAV: dqn 1000, ppo 4000, sac 2500; with n UAVs, (n + 1) / 2 times as many"},
+        "training episodes. Default per algorithm with one UAV: dqn 1000, ppo 4000, sac 2500; with "
+        "n UAVs, (n + 1) / 2 times as many"},
        {"train_episode_steps", &AgentCommonSpec::train_episode_steps, Integers(0, 1000000),
         "a training episode ends (truncated, as Gymnasium's max_episode_steps) after this many "
         "steps; checkpoints and the evaluation fly the env's whole episode. 0: the env's "
@@ -75,6 +80,11 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
         "evaluation start from the baseline. The policy then learns the whole zone, not only "
         "the cells on its way from the baseline, and finds a better region it would not fly "
         "through (Sutton and Barto's exploring starts)"},
+       {"baseline_start_every", &AgentCommonSpec::baseline_start_every, Integers(0, 1000000),
+        "with exploring starts, every this many-th training episode starts from the baseline "
+        "instead, as the checkpoints and the evaluation do, so that the policy also learns the "
+        "way from there. 0: none. Default per algorithm: ppo 4 (from random starts alone, its "
+        "greedy policy missed cells a few moves above the baseline), dqn and sac 0"},
        {"eval_episodes", &AgentCommonSpec::eval_episodes, Integers(1, 1000000),
         "greedy evaluation episodes after training"},
        {"eval_interval", &AgentCommonSpec::eval_interval, Integers(0, 1000000),

@@ -8,7 +8,7 @@
 namespace rlpos {
 
 struct DqnSpec {
-  double learning_rate = 1e-2;
+  double learning_rate = 1e-3;
   std::int64_t replay_capacity = 1000000;
   int batch_size = 64;
   double gamma = 0.9;
@@ -25,7 +25,10 @@ inline const HyperparameterTable<DqnSpec>& DqnHyperparameters() {
       "dqn",
       "/agent",
       "DQN, the paper's agent and the default; defaults from the paper's Table II.",
-      {{"learning_rate", &DqnSpec::learning_rate, PositiveAtMost(1.0), "Adam; loss MSE"},
+      {{"learning_rate", &DqnSpec::learning_rate, PositiveAtMost(1.0),
+        "Adam; loss MSE. The paper's 1e-2 left the greedy checkpoints of three UAVs scattered "
+        "(0.93-0.94 of the oracle on the generated training set); 1e-3 reached 0.97-0.98 there "
+        "and did no worse with one or two"},
        {"replay_capacity", &DqnSpec::replay_capacity, Integers(1, 100000000),
         "transitions in the uniform replay (SAC's replay holds as many)"},
        {"batch_size", &DqnSpec::batch_size, Integers(1, 65536), "transitions per update"},
@@ -42,7 +45,8 @@ inline const HyperparameterTable<DqnSpec>& DqnHyperparameters() {
         "steps over which epsilon falls from epsilon_start to epsilon_end"},
        {"target_update_interval", &DqnSpec::target_update_interval, Integers(1, 1000000000),
         "steps between target-network refreshes; not in the paper. Once per paper episode "
-        "(1,000 steps): where rewards differ by 1 % (scenario A) a target refreshed every 100 steps "
+        "(1,000 steps): where rewards differ by 1 % (scenario A) a target refreshed every 100 "
+        "steps "
         "chases its own noise (plain DQN, seeds 1-10: with 100, 10, 10 and 8 seeds meet the "
         "acceptance bar in A, B and C, against 10 in each)"},
        {"warmup_steps", &DqnSpec::warmup_steps, Integers(0, 1000000000),

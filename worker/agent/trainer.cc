@@ -15,9 +15,10 @@ std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& b
   return out;
 }
 
-EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec) {
+EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode) {
   EpisodeOptions options;
-  options.reset.random_start = spec.exploring_starts;
+  const int every = spec.baseline_start_every;
+  options.reset.random_start = spec.exploring_starts && !(every > 0 && (episode + 1) % every == 0);
   options.max_steps = spec.train_episode_steps;
   return options;
 }
@@ -86,11 +87,11 @@ TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t s
   };
   // The evaluation's first seed: checkpoints are scored on the episode the answer comes from.
   const std::uint64_t eval_seed = seed + static_cast<std::uint64_t>(spec.train_episodes);
-  const EpisodeOptions training = TrainingEpisodeOptions(spec);
   std::optional<double> kept;  // the kept policy's checkpoint reward
   int stale = 0;               // checkpoints in a row that did not beat it
   for (int e = 0; e < spec.train_episodes; ++e) {
-    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true, nullptr, training);
+    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true,
+                                      nullptr, TrainingEpisodeOptions(spec, e));
     record.episode = e + 1;
     add(std::move(record));
     result.episodes_trained = e + 1;

@@ -51,9 +51,9 @@ struct EpisodeOptions {
   int max_steps = 0;
 };
 
-// The options of a training episode under `spec` (agent.exploring_starts,
-// agent.train_episode_steps).
-EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec);
+// The options of training episode `episode` (from 0) under `spec` (agent.exploring_starts,
+// agent.baseline_start_every, agent.train_episode_steps).
+EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode);
 
 // Runs one episode from env.Reset(seed, options.reset). With `learn`, the agent explores and
 // learns.

@@ -93,10 +93,12 @@ TEST(ScenarioParser, TrainingDefaultsFollowTheAlgorithmAndTheUavCount) {
   EXPECT_EQ(dqn.train_episode_steps, 25);
   EXPECT_EQ(dqn.eval_interval, 50);
   EXPECT_TRUE(dqn.exploring_starts);
+  EXPECT_EQ(dqn.baseline_start_every, 0);
   EXPECT_EQ(ParseScenario(ScenarioB()).agent.train_episodes, 1000);  // no agent section: dqn's
   const AgentSpec ppo = agent_of("b.json", "ppo", {});
   EXPECT_EQ(ppo.train_episodes, 4000);
   EXPECT_EQ(ppo.eval_interval, 100);
+  EXPECT_EQ(ppo.baseline_start_every, 4);
   const AgentSpec sac = agent_of("b.json", "sac", {});
   EXPECT_EQ(sac.train_episodes, 2500);
   EXPECT_EQ(sac.train_episode_steps, 10);

@@ -82,8 +82,9 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   const AgentSpec spec;
   // Table II of the paper.
   EXPECT_EQ(spec.hidden, (std::vector<int>{32, 32}));
-  EXPECT_DOUBLE_EQ(spec.learning_rate, 1e-2);
   EXPECT_EQ(spec.batch_size, 64);
+  // Not the paper's 1e-2: 1e-3 holds with three UAVs (docs/rl.md).
+  EXPECT_DOUBLE_EQ(spec.learning_rate, 1e-3);
   // Not the paper's 10 episodes of 1,000 steps from the baseline: 1,000 of 25 steps from
   // random starts, a greedy checkpoint every 50 (chosen on generated scenarios, docs/rl.md).
   EXPECT_EQ(spec.train_episodes, 1000);

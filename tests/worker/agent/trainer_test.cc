@@ -175,6 +175,17 @@ TEST(Trainer, ExploringStartsAndTheStepLimitShapeTrainingEpisodesOnly) {
     EXPECT_EQ(left.ends[i], std::make_pair(false, i % 5 == 4)) << "transition " << i;
 }
 
+TEST(Trainer, EveryNthTrainingEpisodeStartsFromTheBaseline) {
+  OptionsChainEnv env;
+  RecordingAgent left(0);
+  AgentSpec spec = Spec(6, 0);
+  spec.exploring_starts = true;
+  spec.baseline_start_every = 3;
+  Train(env, left, spec, 1);
+  // Training episodes 3 and 6 start where the evaluation does; the evaluation never at random.
+  EXPECT_EQ(env.random_starts, (std::vector<bool>{true, true, false, true, true, false, false}));
+}
+
 TEST(Trainer, WithoutTheOptionsEpisodesAreTheEnvs) {
   OptionsChainEnv env;
   RecordingAgent left(0);
