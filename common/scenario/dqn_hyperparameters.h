@@ -46,8 +46,7 @@ inline const HyperparameterTable<DqnSpec>& DqnHyperparameters() {
        {"target_update_interval", &DqnSpec::target_update_interval, Integers(1, 1000000000),
         "steps between target-network refreshes; not in the paper. Once per paper episode "
         "(1,000 steps): where rewards differ by 1 % (scenario A) a target refreshed every 100 "
-        "steps "
-        "chases its own noise (plain DQN, seeds 1-10: with 100, 10, 10 and 8 seeds meet the "
+        "steps chases its own noise (plain DQN, seeds 1-10: with 100, 10, 10 and 8 seeds meet the "
         "acceptance bar in A, B and C, against 10 in each)"},
        {"warmup_steps", &DqnSpec::warmup_steps, Integers(0, 1000000000),
         "transitions before learning starts; not in the paper"},
