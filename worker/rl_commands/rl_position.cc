@@ -1,6 +1,7 @@
 #include "common/config/config_error.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/agent/make_agent.h"
+#include "worker/agent/torch_threads.h"
 #include "worker/agent/trainer.h"
 #include "worker/rl_commands/rl_commands.h"
 #include "worker/sim/rl_plugin_api.h"
@@ -37,6 +38,9 @@ Placement PolicyPlacement(const Scenario& scenario, const std::string& policy) {
 }  // namespace rlpos::sim
 
 extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v2() {
+  // rlpos-sim asks for the commands before it trains or loads a policy: the moment to size
+  // libtorch's pool.
+  rlpos::UseOneTorchThreadUnlessAsked();
   static const rlpos::sim::RlCommands commands{rlpos::sim::TrainCommand,
                                                rlpos::sim::PolicyPlacement};
   return &commands;
