@@ -9,13 +9,21 @@ one row per run, a summary per algorithm and scenario, and one per algorithm and
 
   scripts/bench_agents.py [--build DIR] [--seeds 1-10] [--algorithms dqn,ppo,sac]
                           [--scenarios a,b,c] [--target 0.95] [--jobs N] [--set PATH=VALUE ...]
+                          [--oracle-cache FILE]
 
 --scenarios takes shipped names (a, b, c, campus2, ...), scenario files, or a folder of them
 (a set written by scripts/generate_scenario_set.sh). Scenarios of several UAVs are judged
 against the oracle's coordinate descent, as the multi-UAV figures are.
+
+--oracle-cache FILE keeps the oracles' rewards between runs (sac's 1 m grid costs as much as a
+training), keyed by the scenario file's bytes, the action space and the bytes of the build's
+Python binding and the rlpos libraries it loads: a rebuilt reward model misses the cache. --set
+overrides do not reach the oracle, so they do not enter the key.
 """
 import argparse
 import concurrent.futures
+import glob
+import hashlib
 import json
 import os
 import subprocess
@@ -73,6 +81,56 @@ def oracle_reward(sim, scenario, algorithm):
     binding = os.path.join(os.path.dirname(os.path.dirname(sim)), "python")
     return run_json([sys.executable, "-c", ORACLE_PROGRAM, binding, scenario, algorithm,
                      space_of(algorithm)])["reward"]
+
+
+def file_digest(path, digest):
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+
+
+def binding_identity(sim):
+    """A digest of the Python binding the oracle runs in and of the rlpos libraries it loads."""
+    binding = glob.glob(os.path.join(os.path.dirname(os.path.dirname(sim)), "python", "rlpos",
+                                     "_rlpos*.so"))
+    if len(binding) != 1:
+        sys.exit("bench_agents: no single Python binding next to %s" % sim)
+    loaded = subprocess.run(["ldd", binding[0]], capture_output=True, text=True, check=True)
+    libraries = sorted({line.split("=>")[1].split("(")[0].strip()
+                        for line in loaded.stdout.splitlines()
+                        if "librlpos" in line and "=>" in line})
+    digest = hashlib.sha256()
+    for path in binding + libraries:
+        file_digest(path, digest)
+    return digest.hexdigest()
+
+
+def oracle_key(scenario, algorithm, identity):
+    digest = hashlib.sha256()
+    file_digest(scenario, digest)
+    return "%s %s %s" % (digest.hexdigest(), space_of(algorithm), identity)
+
+
+def load_cache(path):
+    if not path or not os.path.exists(path):
+        return {}
+    try:
+        with open(path) as f:
+            cache = json.load(f)
+    except ValueError as e:
+        sys.exit("bench_agents: --oracle-cache %s: not JSON: %s" % (path, e))
+    if not isinstance(cache, dict) or not all(isinstance(v, (int, float))
+                                              for v in cache.values()):
+        sys.exit("bench_agents: --oracle-cache %s: not an object of rewards" % path)
+    return cache
+
+
+def save_cache(path, cache):
+    """Written whole beside the file, then renamed: never a half-written cache."""
+    partial = path + ".partial"
+    with open(partial, "w") as f:
+        json.dump(cache, f, indent=0, sort_keys=True)
+    os.replace(partial, path)
 
 
 def env_steps(folder):
@@ -152,12 +210,16 @@ def main():
                              "training, so they grow when the jobs share too few cores")
     parser.add_argument("--set", action="append", default=[], metavar="PATH=VALUE",
                         help="a scenario override for every training, e.g. agent.ppo.epochs=4")
+    parser.add_argument("--oracle-cache", metavar="FILE",
+                        help="oracle rewards kept between runs (created if missing)")
     args = parser.parse_args()
     sim = os.path.join(args.build, "bin", "rlpos-sim")
     seeds = seeds_of(args.seeds)
     algorithms = args.algorithms.split(",")
     scenarios = scenario_files(args.scenarios)
     overrides = [a for o in args.set for a in ("--set", o)]
+    cache = load_cache(args.oracle_cache)
+    identity = binding_identity(sim) if args.oracle_cache else ""
 
     rows = []
     print("%-4s %-22s %4s %8s %8s %6s %5s %7s %7s" %
@@ -166,19 +228,28 @@ def main():
             concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         # One oracle per scenario and action space, queued first: the 1 m grid of sac's is
         # as slow as a training, so it runs in the pool rather than before it.
-        oracles = {}
+        oracles = {}  # (scenario, space): a future, or the cached reward
         for scenario in scenarios:
             for algorithm in algorithms:
                 key = (scenario, space_of(algorithm))
-                if key not in oracles:
-                    oracles[key] = pool.submit(oracle_reward, sim, scenario, algorithm)
+                if key in oracles:
+                    continue
+                cached = cache.get(oracle_key(scenario, algorithm, identity))
+                oracles[key] = cached if cached is not None else pool.submit(
+                    oracle_reward, sim, scenario, algorithm)
         runs = [(scenario, algorithm, seed) for scenario in scenarios
                 for algorithm in algorithms for seed in seeds]
         futures = [pool.submit(train_one, sim, scenario, algorithm, seed, overrides, work)
                    for scenario, algorithm, seed in runs]
         for (scenario, algorithm, seed), future in zip(runs, futures):
             result, steps, wall = future.result()
-            oracle = oracles[(scenario, space_of(algorithm))].result()
+            oracle = oracles[(scenario, space_of(algorithm))]
+            if isinstance(oracle, concurrent.futures.Future):
+                oracle = oracle.result()
+                oracles[(scenario, space_of(algorithm))] = oracle
+                if args.oracle_cache:
+                    cache[oracle_key(scenario, algorithm, identity)] = oracle
+                    save_cache(args.oracle_cache, cache)
             row = {"algorithm": algorithm, "scenario": os.path.splitext(
                        os.path.basename(scenario))[0], "seed": seed,
                    "uavs": uav_count(scenario), "reward": result["reward"], "oracle": oracle,
