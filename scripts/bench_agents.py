@@ -105,10 +105,10 @@ def binding_identity(sim):
     return digest.hexdigest()
 
 
-def oracle_key(scenario, algorithm, identity):
+def oracle_key(scenario, space, identity):
     digest = hashlib.sha256()
     file_digest(scenario, digest)
-    return "%s %s %s" % (digest.hexdigest(), space_of(algorithm), identity)
+    return "%s %s %s" % (digest.hexdigest(), space, identity)
 
 
 def load_cache(path):
@@ -234,22 +234,29 @@ def main():
                 key = (scenario, space_of(algorithm))
                 if key in oracles:
                     continue
-                cached = cache.get(oracle_key(scenario, algorithm, identity))
+                cached = cache.get(oracle_key(scenario, key[1], identity))
                 oracles[key] = cached if cached is not None else pool.submit(
                     oracle_reward, sim, scenario, algorithm)
         runs = [(scenario, algorithm, seed) for scenario in scenarios
                 for algorithm in algorithms for seed in seeds]
         futures = [pool.submit(train_one, sim, scenario, algorithm, seed, overrides, work)
                    for scenario, algorithm, seed in runs]
+        def harvest(wait_for=None):
+            """Takes in the oracles done by now (and waits for wait_for's); caches new ones."""
+            new = False
+            for (scenario, space), oracle in oracles.items():
+                if isinstance(oracle, concurrent.futures.Future) and (
+                        oracle.done() or (scenario, space) == wait_for):
+                    oracles[(scenario, space)] = oracle.result()
+                    cache[oracle_key(scenario, space, identity)] = oracles[(scenario, space)]
+                    new = True
+            if new and args.oracle_cache:
+                save_cache(args.oracle_cache, cache)
+
         for (scenario, algorithm, seed), future in zip(runs, futures):
             result, steps, wall = future.result()
+            harvest(wait_for=(scenario, space_of(algorithm)))
             oracle = oracles[(scenario, space_of(algorithm))]
-            if isinstance(oracle, concurrent.futures.Future):
-                oracle = oracle.result()
-                oracles[(scenario, space_of(algorithm))] = oracle
-                if args.oracle_cache:
-                    cache[oracle_key(scenario, algorithm, identity)] = oracle
-                    save_cache(args.oracle_cache, cache)
             row = {"algorithm": algorithm, "scenario": os.path.splitext(
                        os.path.basename(scenario))[0], "seed": seed,
                    "uavs": uav_count(scenario), "reward": result["reward"], "oracle": oracle,
