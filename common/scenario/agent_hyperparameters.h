@@ -28,9 +28,9 @@ struct AgentCommonSpec {
 };
 
 // The shared keys' defaults for `algorithm` with `uavs` UAVs. PPO, on-policy, needs more samples
-// than DQN, and a share of them from the baseline: from random starts alone its greedy policy
-// missed the way from there where the best cells are close to it; SAC (its steps cost most) learns
-// more from shorter episodes from more starts. Several UAVs take turns, so each moves in only
+// than DQN; SAC (its steps cost most) learns more from shorter episodes from more starts. Both
+// need a share of them from the baseline: from random starts alone their greedy policies missed
+// the way from there where the best cells are close to it. Several UAVs take turns, so each moves in only
 // 1/uavs of the steps: the training grows to (uavs + 1) / 2 times one UAV's (three UAVs: twice),
 // what the time budget allows (docs/rl.md).
 inline AgentCommonSpec AgentCommonDefaults(const std::string& algorithm, std::size_t uavs) {
@@ -42,6 +42,7 @@ inline AgentCommonSpec AgentCommonDefaults(const std::string& algorithm, std::si
   } else if (algorithm == "sac") {
     spec.train_episodes = 2500;
     spec.train_episode_steps = 10;
+    spec.baseline_start_every = 4;
     spec.eval_interval = 100;
   }
   const auto n = static_cast<int>(std::max<std::size_t>(uavs, 1));
@@ -83,8 +84,8 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
        {"baseline_start_every", &AgentCommonSpec::baseline_start_every, Integers(0, 1000000),
         "with exploring starts, every this many-th training episode starts from the baseline "
         "instead, as the checkpoints and the evaluation do, so that the policy also learns the "
-        "way from there. 0: none. Default per algorithm: ppo 4 (from random starts alone, its "
-        "greedy policy missed cells a few moves above the baseline), dqn and sac 0"},
+        "way from there. 0: none. Default per algorithm: ppo and sac 4 (from random starts alone, "
+        "their greedy policies missed cells a few moves above the baseline), dqn 0"},
        {"eval_episodes", &AgentCommonSpec::eval_episodes, Integers(1, 1000000),
         "greedy evaluation episodes after training"},
        {"eval_interval", &AgentCommonSpec::eval_interval, Integers(0, 1000000),

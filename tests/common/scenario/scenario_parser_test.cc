@@ -102,6 +102,7 @@ TEST(ScenarioParser, TrainingDefaultsFollowTheAlgorithmAndTheUavCount) {
   const AgentSpec sac = agent_of("b.json", "sac", {});
   EXPECT_EQ(sac.train_episodes, 2500);
   EXPECT_EQ(sac.train_episode_steps, 10);
+  EXPECT_EQ(sac.baseline_start_every, 4);
   // Two UAVs: 1.5 times one UAV's episodes; three: twice.
   EXPECT_EQ(agent_of("campus2.json", "dqn", {}).train_episodes, 1500);
   EXPECT_EQ(agent_of("urban3.json", "ppo", {}).train_episodes, 8000);
