@@ -184,14 +184,16 @@ def print_summaries(rows, algorithms, names, target):
     print("| algorithm | UAVs | runs | median | P10 | worst | runs >= %.2f | mean wall (s) "
           "| max wall (s) |" % target)
     print("|---|---|---|---|---|---|---|---|---|")
+    counts = sorted({r["uavs"] for r in rows})
     for algorithm in algorithms:
-        for uavs in sorted({r["uavs"] for r in rows}):
-            group = [r for r in rows if r["algorithm"] == algorithm and r["uavs"] == uavs]
+        # Each UAV count, then (with several) all of the algorithm's runs: what the target judges.
+        for uavs in counts + (["all"] if len(counts) > 1 else []):
+            group = [r for r in rows if r["algorithm"] == algorithm and uavs in (r["uavs"], "all")]
             if not group:
                 continue
             ratios = sorted(r["ratio"] for r in group)
             walls = [r["wall"] for r in group]
-            print("| %s | %d | %d | %.3f | %.3f | %.3f | %d (%.0f %%) | %.1f | %.1f |" % (
+            print("| %s | %s | %d | %.3f | %.3f | %.3f | %d (%.0f %%) | %.1f | %.1f |" % (
                 algorithm, uavs, len(group), quantile(ratios, 0.5), quantile(ratios, 0.1),
                 ratios[0], sum(v >= target for v in ratios),
                 100.0 * sum(v >= target for v in ratios) / len(ratios),
