@@ -4,9 +4,10 @@
 namespace rlpos {
 
 // One intra-op thread unless the environment names a count (OMP_NUM_THREADS, as Slurm users
-// set it from --cpus-per-task). The networks are small (64-unit layers, batches of at most
-// 256): libtorch's pool costs more in wake-ups than it saves, and a campaign already runs one
-// job per core. Returns the count in force.
+// set it from --cpus-per-task). A worker already runs one job per core, and the networks are
+// small (64-unit layers, batches of at most 256): on a node with many cores, libtorch's default
+// pool of one thread per core in every job would oversubscribe it (docs/benchmarks.md). Returns
+// the count in force.
 int UseOneTorchThreadUnlessAsked();
 
 }  // namespace rlpos
