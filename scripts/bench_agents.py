@@ -243,6 +243,7 @@ def main():
                 for algorithm in algorithms for seed in seeds]
         futures = [pool.submit(train_one, sim, scenario, algorithm, seed, overrides, work)
                    for scenario, algorithm, seed in runs]
+
         def harvest(wait_for=None):
             """Takes in the oracles done by now (and waits for wait_for's); caches new ones."""
             new = False
