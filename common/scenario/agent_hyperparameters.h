@@ -30,9 +30,9 @@ struct AgentCommonSpec {
 // The shared keys' defaults for `algorithm` with `uavs` UAVs. PPO, on-policy, needs more samples
 // than DQN; SAC (its steps cost most) learns more from shorter episodes from more starts. Both
 // need a share of them from the baseline: from random starts alone their greedy policies missed
-// the way from there where the best cells are close to it. Several UAVs take turns, so each moves in only
-// 1/uavs of the steps: the training grows to (uavs + 1) / 2 times one UAV's (three UAVs: twice),
-// what the time budget allows (docs/rl.md).
+// the way from there where the best cells are close to it. Several UAVs take turns, so each moves
+// in only 1/uavs of the steps: the training grows to (uavs + 1) / 2 times one UAV's (three UAVs:
+// twice), what the time budget allows (docs/rl.md).
 inline AgentCommonSpec AgentCommonDefaults(const std::string& algorithm, std::size_t uavs) {
   AgentCommonSpec spec;
   if (algorithm == "ppo") {
