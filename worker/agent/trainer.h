@@ -58,8 +58,7 @@ EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode);
 // Runs one episode from env.Reset(seed, options.reset). With `learn`, the agent explores and
 // learns.
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
-                         const StepCallback& on_step = nullptr,
-                         const EpisodeOptions& options = {});
+                         const StepCallback& on_step = nullptr, const EpisodeOptions& options = {});
 
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
 // greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's

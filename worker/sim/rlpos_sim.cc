@@ -21,9 +21,9 @@
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
 #include "worker/sim/describe_command.h"
+#include "worker/sim/generate_command.h"
 #include "worker/sim/import_command.h"
 #include "worker/sim/render_command.h"
-#include "worker/sim/generate_command.h"
 
 namespace {
 

@@ -35,7 +35,8 @@ TEST_F(TrainCommand, WritesPolicyCurveAndResultThenRlReplaysIt) {
   const auto r =
       RunCommand(Sim("train --scenario " + kScenarioB +
                      " --fidelity analytic --seed 4 --episodes 2 --set agent.eval_interval=0"
-                     " --set agent.train_episode_steps=100 --json --out " + out_.string()));
+                     " --set agent.train_episode_steps=100 --json --out " +
+                     out_.string()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto result = nlohmann::json::parse(r.out);
   EXPECT_EQ(result["fidelity"], "analytic");

@@ -5,7 +5,6 @@
 #include <set>
 
 #include "common/scenario/scenario_checks.h"
-
 #include "worker/environment/scenario_loading.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
@@ -135,11 +134,14 @@ TEST(GymEnv, ExploringStartsDrawLatticePointsOfTheZoneOutsideBuildings) {
 }
 
 TEST(GymEnv, ExploringStartsKeepSeveralUavsApart) {
-  const Scenario s = LoadScenario(
-      std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json", {"env.fidelity=analytic"});
+  const Scenario s =
+      LoadScenario(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json",
+                   {"env.fidelity=analytic"});
   UavPositioningEnv env(s);
   const Placement baseline = s.InitialPlacement();
-  const auto same = [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+  const auto same = [](const Vec3& a, const Vec3& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+  };
   int moved = 0;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
     env.Reset(seed, ResetOptions{true});
