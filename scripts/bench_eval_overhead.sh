@@ -16,14 +16,7 @@ for tool in rlpos-sim rlpos-bare-ns3; do
   [ -x "$bin/$tool" ] || { echo "bench: $bin/$tool not built (run scripts/bootstrap)" >&2; exit 1; }
 done
 
-wall() {  # prints the wall seconds of "$@" (output discarded)
-  local start end
-  start=$(date +%s.%N)
-  "$@" >/dev/null
-  end=$(date +%s.%N)
-  echo "$end - $start" | bc -l
-}
-median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+. "$here/scripts/lib/bench_timing.sh"  # wall, median
 
 if [ "$instructions" -eq 1 ]; then
   command -v valgrind >/dev/null || { echo "bench: valgrind is not installed" >&2; exit 1; }

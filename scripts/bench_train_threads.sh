@@ -15,6 +15,7 @@ repeats=${2:-2}
 cores=$(nproc)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+. "$here/scripts/lib/bench_timing.sh"  # wall, median
 "$sim" generate --seed 11002 --style urban --uavs 1 --out "$work/urban-1uav.json"
 "$sim" generate --seed 13100 --style campus --uavs 3 --out "$work/campus-3uav.json"
 
@@ -25,19 +26,11 @@ train() {  # train SCENARIO ALGORITHM OUT [THREADS]: one training; THREADS empty
     --algorithm "$2" --seed 1 --out "$3" >/dev/null 2>"$3.log" ||
     { echo "bench: training failed: $(tail -1 "$3.log")" >&2; return 1; }
 }
-wall() {  # wall seconds of "$@"
-  local start end
-  start=$(date +%s.%N)
-  "$@"
-  end=$(date +%s.%N)
-  echo "$end - $start" | bc -l
-}
 pair() {  # pair SCENARIO ALGORITHM THREADS: two trainings at once
   train "$1" "$2" "$work/pa" "$3" &
   train "$1" "$2" "$work/pb" "$3" &
   wait
 }
-median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
 outcome() { /usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); print(r["reward"], r["positions"])' "$1"; }
 
 echo "cores: $cores; repeats: $repeats; median wall seconds"
