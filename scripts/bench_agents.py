@@ -112,11 +112,20 @@ def oracle_key(scenario, space, identity):
 
 
 def load_cache(path):
-    if not path or not os.path.exists(path):
+    """The cached rewards. Checked before any training: a bad path would otherwise surface only
+    at the first save, after the first oracle's minutes."""
+    if not path:
+        return {}
+    folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):
+        sys.exit("bench_agents: --oracle-cache %s: folder %s does not exist" % (path, folder))
+    if not os.path.exists(path):
         return {}
     try:
         with open(path) as f:
             cache = json.load(f)
+    except OSError as e:
+        sys.exit("bench_agents: --oracle-cache %s: %s" % (path, e.strerror))
     except ValueError as e:
         sys.exit("bench_agents: --oracle-cache %s: not JSON: %s" % (path, e))
     if not isinstance(cache, dict) or not all(isinstance(v, (int, float))
