@@ -9,7 +9,8 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
 
-# expect NAME CACHE EXPECTED_LINE: the run's stderr must be exactly EXPECTED_LINE, its status 1.
+# expect NAME CACHE PREFIX: the run's stderr must be one line that starts with PREFIX (the
+# rest is Python's or the C library's own wording), its status 1.
 expect() {
   local name=$1 cache=$2 want=$3
   python3 "$repo/scripts/bench_agents.py" --build "$tmp/no-build" --scenarios a --seeds 1 \
@@ -17,17 +18,17 @@ expect() {
   local status=$?
   local got
   got=$(cat "$tmp/err")
-  if [ "$status" -ne 1 ] || [ "$got" != "$want" ]; then
+  if [ "$status" -ne 1 ] || [ "$(wc -l <"$tmp/err")" -ne 1 ] || [ "${got#"$want"}" = "$got" ]; then
     echo "FAIL $name: status $status, stderr:"
     cat "$tmp/err"
-    echo "expected status 1 and: $want"
+    echo "expected status 1 and one line starting: $want"
     failures=$((failures + 1))
   fi
 }
 
 printf '{"k": ' >"$tmp/truncated.json"
 expect truncated "$tmp/truncated.json" \
-  "bench_agents: --oracle-cache $tmp/truncated.json: not JSON: Expecting value: line 1 column 7 (char 6)"
+  "bench_agents: --oracle-cache $tmp/truncated.json: not JSON: "
 [ "$(cat "$tmp/truncated.json")" = '{"k": ' ] || { echo "FAIL truncated: the file changed"; failures=$((failures + 1)); }
 
 printf '{"k": "fast"}' >"$tmp/text.json"
@@ -39,7 +40,7 @@ expect missing_folder "$tmp/nope/oracles.json" \
 [ ! -e "$tmp/nope" ] || { echo "FAIL missing_folder: the folder was created"; failures=$((failures + 1)); }
 
 mkdir "$tmp/a-folder"
-expect a_folder "$tmp/a-folder" "bench_agents: --oracle-cache $tmp/a-folder: Is a directory"
+expect a_folder "$tmp/a-folder" "bench_agents: --oracle-cache $tmp/a-folder: "
 
 [ "$failures" -eq 0 ] && echo "bench_agents --oracle-cache: 4 bad caches refused"
 exit $((failures > 0))
