@@ -365,19 +365,44 @@ json ReadJsonFile(const std::string& file) {
   return ParseJsonText(buffer.str());
 }
 
+std::string OverridePointer(const std::string& override_text) {
+  const auto eq = override_text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    return "";
+  std::string path = override_text.substr(0, eq);
+  if (path[0] != '/') {
+    for (auto& c : path)
+      c = (c == '.') ? '/' : c;
+    path = "/" + path;
+  }
+  return path;
+}
+
+namespace {
+
+// Whether JSON pointer `inner` is `outer` or lies inside it ("/wifi/width" in "/wifi").
+bool AtOrInside(const std::string& inner, const std::string& outer) {
+  return inner.compare(0, outer.size(), outer) == 0 &&
+         (inner.size() == outer.size() || inner[outer.size()] == '/');
+}
+
+}  // namespace
+
+ConfigError BlameOverride(const ConfigError& error, const std::vector<std::string>& overrides) {
+  for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
+    const std::string pointer = OverridePointer(*it);
+    if (!pointer.empty() && AtOrInside(error.path(), pointer))
+      return ConfigError("--set " + *it, error.describe());
+  }
+  return error;
+}
+
 void ApplyOverrides(json& document, const std::vector<std::string>& overrides) {
   for (const auto& item : overrides) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos || eq == 0) {
+    const std::string path = OverridePointer(item);
+    if (path.empty())
       throw ConfigError("--set " + item, "expected path=value");
-    }
-    std::string path = item.substr(0, eq);
-    const std::string text = item.substr(eq + 1);
-    if (path[0] != '/') {
-      for (auto& c : path)
-        c = (c == '.') ? '/' : c;
-      path = "/" + path;
-    }
+    const std::string text = item.substr(item.find('=') + 1);
     json value;
     try {
       value = json::parse(text);

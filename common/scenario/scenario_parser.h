@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/config/config_error.h"
 #include "common/scenario/scenario.h"
 
 namespace rlpos {
@@ -19,6 +20,16 @@ nlohmann::json ReadJsonFile(const std::string& file);
 // Applies "path=value" overrides. Paths are dotted ("wifi.mode", "ues.3.demand.mbps") or JSON
 // pointers ("/wifi/mode"); the value is JSON if it parses as JSON, else a string.
 void ApplyOverrides(nlohmann::json& document, const std::vector<std::string>& overrides);
+
+// The JSON pointer an override's path names ("wifi.width" and "/wifi/width" give "/wifi/width");
+// "" when the text has no "path=".
+std::string OverridePointer(const std::string& override_text);
+
+// A scenario error as the user should read it: when the error's path lies at or inside a path
+// that one of `overrides` set (the last such one), a ConfigError that names that override
+// ("--set wifi.width=77" with "/wifi/width: must be ..."), since the value came from the command
+// line or a campaign's "set", not from the file. Otherwise `error` itself.
+ConfigError BlameOverride(const ConfigError& error, const std::vector<std::string>& overrides);
 
 // The agent algorithms, in report order, and the overrides that select one: its
 // agent.algorithm and the action space it acts on (sac: continuous; dqn, ppo: discrete).

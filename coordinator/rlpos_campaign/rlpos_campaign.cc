@@ -13,6 +13,7 @@
 #include <iostream>
 #include <thread>
 
+#include "common/command_line/parse_error.h"
 #include "common/config/config_error.h"
 #include "common/process/stop_signal.h"
 #include "common/store/store_error.h"
@@ -242,7 +243,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    return ExitOnParseError(app, "rlpos-campaign", e, kExitBadInput);
   }
   return RunCommandReportingErrors(cli);
 }

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "common/command_line/parse_error.h"
 #include "common/logging/log.h"
 #include "idl/dds/dds_cli_options.h"
 #include "idl/dds/participant.h"
@@ -25,7 +26,7 @@ std::optional<int> DaemonCommandLine::Parse(int argc, char** argv) {
   try {
     app_.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app_.exit(e) == 0 ? 0 : 2;
+    return ExitOnParseError(app_, program_, e, 2);
   }
   try {
     SetLogLevel(ParseLogLevel(log_level_));

@@ -23,9 +23,13 @@ void CheckScenarioAgainstNs3(const Scenario& scenario) {
 Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides) {
   nlohmann::json document = ReadJsonFile(file);
   ApplyOverrides(document, overrides);
-  Scenario scenario = ParseScenario(document);
-  CheckScenarioAgainstNs3(scenario);
-  return scenario;
+  try {
+    Scenario scenario = ParseScenario(document);
+    CheckScenarioAgainstNs3(scenario);
+    return scenario;
+  } catch (const ConfigError& e) {
+    throw BlameOverride(e, overrides);
+  }
 }
 
 Vec3 ParsePosition(const std::string& text, const std::string& what) {

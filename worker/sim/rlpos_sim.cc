@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "common/command_line/parse_error.h"
 #include "common/config/config_error.h"
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
@@ -169,11 +170,8 @@ int main(int argc, char** argv) {
   AddGenerate(app, in.generate);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return kExitBadInput;
+    return rlpos::ExitOnParseError(app, "rlpos-sim", e, kExitBadInput);
   }
   return Run(in);
 }

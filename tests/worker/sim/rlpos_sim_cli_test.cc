@@ -102,6 +102,29 @@ TEST(RlposSimCli, BadPositions) {
                      "--position: (50, 150, 10) is outside the venue");
 }
 
+TEST(RlposSimCli, ASetErrorNamesTheOverrideNotTheFile) {
+  const auto r = RunCommand(Sim("validate " + kScenarioB + " --set wifi.width=77"));
+  ExpectOneLineError(r, 2, "rlpos-sim: error: --set wifi.width=77: /wifi/width: must be");
+  EXPECT_EQ(r.err.find("b.json"), std::string::npos) << r.err;
+  // An error in the file, beside an override elsewhere, still names the file.
+  nlohmann::json document = nlohmann::json::parse(std::ifstream(kScenarioB));
+  document["wifi"]["width"] = 77;
+  const std::string file = TempFile(document.dump());
+  const auto file_error = RunCommand(Sim("validate " + file + " --set wifi.mode=adhoc"));
+  ExpectOneLineError(file_error, 2, file + ": /wifi/width: must be");
+  EXPECT_EQ(file_error.err.find("--set"), std::string::npos) << file_error.err;
+}
+
+TEST(RlposSimCli, CommandLineErrorsAreOneLine) {
+  // CLI11's own errors keep the project's format: one line, the program's prefix, exit 2.
+  ExpectOneLineError(RunCommand(Sim("position --scenario " + kScenarioB + " --positioner kmean")),
+                     2, "--positioner: kmean not in");
+  ExpectOneLineError(RunCommand(Sim("validate " + kScenarioB + " --no-such-flag")), 2,
+                     "--no-such-flag");
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB)), 2, "--position");
+  ExpectOneLineError(RunCommand(Sim("")), 2, "subcommand");
+}
+
 TEST(RlposSimCli, UsageErrorsExitTwo) {
   EXPECT_EQ(RunCommand(Sim("")).exit_code, 2);
   EXPECT_EQ(RunCommand(Sim("eval --scenario " + kScenarioB)).exit_code, 2);  // no --position
