@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "worker/sim/portable_kernels.h"
 #include "worker/sim/rl_plugin_api.h"
 
 namespace rlpos::sim {
@@ -24,6 +25,8 @@ std::string ModulePath() {
 const RlCommands& Load() {
   static const RlCommands* commands = [] {
     const std::string path = ModulePath();
+    // Before libtorch and OpenBLAS load with the module: they choose their kernels once.
+    PinPortableKernels();
     void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module)
       throw std::runtime_error("cannot load the RL commands: " + std::string(dlerror()));
