@@ -13,7 +13,7 @@ if [ "${1:-}" = "--instructions" ]; then instructions=1; shift; fi
 bin=${1:-"$here/build"}/bin
 repeats=${2:-3}
 for tool in rlpos-sim rlpos-bare-ns3; do
-  [ -x "$bin/$tool" ] || { echo "bench: $bin/$tool not built (run scripts/bootstrap)" >&2; exit 1; }
+  [ -x "$bin/$tool" ] || { echo "bench: $bin/$tool not built (run scripts/bootstrap --tests)" >&2; exit 1; }
 done
 
 . "$here/scripts/lib/bench_timing.sh"  # wall, median

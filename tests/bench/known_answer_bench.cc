@@ -2,7 +2,7 @@
 // until its greedy policy reaches the solved level, printing each greedy evaluation; exit 0 if
 // solved within the budget, 1 if not, 2 on bad arguments.
 //   rlpos-bench-known-answers ALGORITHM [SEED]
-#include <torch/torch.h>
+#include <ATen/Parallel.h>
 
 #include <cstdio>
 #include <stdexcept>
@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   // One thread: small networks gain nothing from more, and the numbers stay the same bytes.
-  torch::set_num_threads(1);
+  at::set_num_threads(1);
   const std::string algorithm = argv[1];
   std::printf(
       "%s on %s, seed %llu: solved at a mean greedy return >= %g over %d episodes, "

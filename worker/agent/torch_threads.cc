@@ -1,6 +1,6 @@
 #include "worker/agent/torch_threads.h"
 
-#include <torch/torch.h>
+#include <ATen/Parallel.h>
 
 #include <cstdlib>
 
@@ -10,8 +10,8 @@ int UseOneTorchThreadUnlessAsked() {
   // libtorch reads OMP_NUM_THREADS itself when its pool starts; only the default is ours.
   const char* asked = std::getenv("OMP_NUM_THREADS");
   if (asked == nullptr || *asked == '\0')
-    torch::set_num_threads(1);
-  return torch::get_num_threads();
+    at::set_num_threads(1);
+  return at::get_num_threads();
 }
 
 }  // namespace rlpos

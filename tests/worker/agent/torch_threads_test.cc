@@ -1,8 +1,8 @@
 // libtorch's thread count: one by default, the operator's OMP_NUM_THREADS when set.
 #include "worker/agent/torch_threads.h"
 
+#include <ATen/Parallel.h>
 #include <gtest/gtest.h>
-#include <torch/torch.h>
 
 #include <cstdlib>
 #include <optional>
@@ -35,16 +35,16 @@ class OmpNumThreads {
 
 TEST(TorchThreads, OneUnlessTheEnvironmentAsks) {
   const OmpNumThreads unset(nullptr);
-  torch::set_num_threads(2);
+  at::set_num_threads(2);
   EXPECT_EQ(UseOneTorchThreadUnlessAsked(), 1);
-  EXPECT_EQ(torch::get_num_threads(), 1);
+  EXPECT_EQ(at::get_num_threads(), 1);
 }
 
 TEST(TorchThreads, OmpNumThreadsIsLeftInForce) {
   const OmpNumThreads asked("2");
-  torch::set_num_threads(2);  // what libtorch makes of OMP_NUM_THREADS=2 at start
+  at::set_num_threads(2);  // what libtorch makes of OMP_NUM_THREADS=2 at start
   EXPECT_EQ(UseOneTorchThreadUnlessAsked(), 2);
-  EXPECT_EQ(torch::get_num_threads(), 2);
+  EXPECT_EQ(at::get_num_threads(), 2);
 }
 
 }  // namespace
