@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "common/campaign/job_content.h"
+#include "common/job/job_settings.h"
 
 namespace rlpos {
 namespace {
@@ -68,6 +69,44 @@ TEST(JobFields, EachFieldChangesTheKeyOfTheKindsItIsDeclaredFor) {
           << name << " of a " << ToString(kind) << " job";
     }
   }
+}
+
+TEST(JobFields, TheSettingsOfAJobAreItsDeclaredFieldsOfItsKind) {
+  const auto paths = [](const JobParams& p) {
+    std::vector<std::string> out;
+    for (const auto& s : JobSettings(p))
+      out.push_back(ToString(s.setting));
+    return out;
+  };
+  EXPECT_EQ(paths(EveryFieldSet(JobKind::kTrain)),
+            (std::vector<std::string>{"/agent/seed=1", "/env/fidelity=analytic",
+                                      "/agent/train_episodes=10", "/simulation/duration=2",
+                                      "/simulation/warmup=0.5"}));
+  EXPECT_EQ(paths(EveryFieldSet(JobKind::kPosition)),
+            (std::vector<std::string>{"/simulation/duration=2", "/simulation/warmup=0.5"}));
+  EXPECT_EQ(paths(EveryFieldSet(JobKind::kEval)),
+            (std::vector<std::string>{"/simulation/run=3", "/simulation/duration=2",
+                                      "/simulation/warmup=0.5"}));
+  JobParams open = EveryFieldSet(JobKind::kTrain);  // unset: the scenario's own value stands
+  open.train_episodes.reset();
+  open.warmup_s.reset();
+  EXPECT_EQ(paths(open), (std::vector<std::string>{"/agent/seed=1", "/env/fidelity=analytic",
+                                                   "/simulation/duration=2"}));
+}
+
+TEST(JobFields, AContradictionIsAnOverrideThatGivesASettingAnotherValue) {
+  const std::vector<ScenarioOverride> settings{{"/env/fidelity", "analytic"},
+                                               {"/simulation/duration", "2"}};
+  const auto found = [&](const std::vector<ScenarioOverride>& overrides) {
+    const auto c = FindContradiction(overrides, settings);
+    return c ? std::to_string(c->override_index) + "," + std::to_string(c->setting_index) : "none";
+  };
+  EXPECT_EQ(found({{"wifi.mode", "adhoc"}, {"env.fidelity", "analytic"}}), "none");
+  EXPECT_EQ(found({{"simulation.duration", "2.0"}}), "none");  // the same number
+  EXPECT_EQ(found({{"wifi.mode", "adhoc"}, {"env.fidelity", "packet"}}), "1,0");
+  EXPECT_EQ(found({{"/simulation/duration", "3"}}), "0,1");
+  EXPECT_EQ(found({{"simulation", "{\"duration\": 3}"}}), "0,1");  // an object holding it
+  EXPECT_EQ(found({{"simulation", "{\"run\": 3}"}}), "none");      // one not holding it
 }
 
 }  // namespace
