@@ -264,7 +264,7 @@ TEST_F(JobAttemptTest, TrainGetsAnOutFolderInsideItsAttempt) {
   JobOrder order = Order();
   order.params.kind = JobKind::kTrain;
   JobAttempt attempt(order, scenario_, Work(),
-                     Sim("test -d \"$(dirname \"$9\")\" && echo \"{\\\"out\\\": \\\"$9\\\"}\""));
+                     Sim("test -d \"$(dirname \"$5\")\" && echo \"{\\\"out\\\": \\\"$5\\\"}\""));
   const JobOutcome outcome = AwaitOutcome(attempt);
   ASSERT_TRUE(outcome.succeeded) << outcome.error;
   EXPECT_EQ(nlohmann::json::parse(outcome.result_json)["out"], Folder() + "/out");
