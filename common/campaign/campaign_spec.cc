@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <set>
 
+#include "common/campaign/expansion.h"
 #include "common/config/config_error.h"
 #include "common/config/did_you_mean.h"
 #include "common/config/object_reader.h"
@@ -208,13 +209,12 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
 
   entry.document = source(entry.file, file_path, entry.path);
 
-  // Validate what the evals will run: the campaign's eval settings, then the entry's own
-  // overrides (which win, as later --set arguments do on the rlpos-sim command line).
+  // Validate what the evals will run, in the order a job's scenario is made: the entry's own
+  // overrides, then the campaign's eval settings (CheckJobSettings refuses an override that
+  // gives one of those another value).
   json effective = entry.document;
-  try {
-    ApplyOverrides(effective, EvalOverrides(eval));
-  } catch (const ConfigError& e) {
-    throw ConfigError(path, entry.file + ": " + e.describe());  // e.g. not a JSON object
+  if (!effective.is_object()) {
+    throw ConfigError(path, entry.file + ": /: expected an object, got " + TypeName(effective));
   }
   for (std::size_t i = 0; i < entry.overrides.size(); ++i) {
     try {
@@ -228,6 +228,7 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
     }
   }
   try {
+    ApplyOverrides(effective, EvalOverrides(eval));
     entry.scenario = ParseScenario(effective);
   } catch (const ConfigError& e) {
     throw ConfigError(path, entry.file + ": " + e.describe());
@@ -335,6 +336,7 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
   spec.retries = static_cast<int>(r.Integer("retries", spec.retries, 0, 100));
   spec.job_timeout_s = r.Number("job_timeout_s", spec.job_timeout_s, Positive());
   r.Finish();
+  CheckJobSettings(spec);
   return spec;
 }
 

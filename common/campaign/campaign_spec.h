@@ -21,7 +21,7 @@ const std::vector<std::string>& AllPositioners();
 struct CampaignScenario {
   std::string file;                    // as written in the campaign
   std::string path;                    // where it was read from (messages only)
-  std::vector<std::string> overrides;  // "set": handed to rlpos-sim as --set, in order
+  std::vector<std::string> overrides;  // "set": every job's overrides of the document, in order
   nlohmann::json document;             // the scenario file as read (before overrides)
   Scenario scenario;                   // parsed with the eval settings and overrides applied
 };
@@ -29,7 +29,7 @@ struct CampaignScenario {
 struct TrainSettings {
   std::vector<std::uint64_t> seeds{1};  // the first seed gives the plain "rl"/"offsetK" labels
   std::string fidelity = "analytic";    // analytic | packet
-  std::optional<int> episodes;          // passed as --set agent.train_episodes=N when set
+  std::optional<int> episodes;  // agent.train_episodes of the train jobs; unset: the scenario's
   // Each trains its own policies, labelled "rl@<algorithm>" (and "offsetK@<algorithm>"), in
   // AllAlgorithms() order. Empty: the scenario's agent.algorithm, with the plain labels.
   std::vector<std::string> algorithms;
@@ -74,9 +74,8 @@ CampaignSpec ParseCampaign(const nlohmann::json& document, const ScenarioSource&
 // ReadJsonFile, errors about the file itself have an empty path (callers prefix the file name).
 CampaignSpec ReadCampaignFile(const std::string& file);
 
-// The campaign's eval settings as --set overrides ("simulation.duration=D",
-// "simulation.warmup=W"): what every job's scenario is validated with, before the scenario
-// entry's own overrides.
+// The campaign's eval settings as overrides ("simulation.duration=D", "simulation.warmup=W"):
+// what every job's scenario is validated with, after the scenario entry's own overrides.
 std::vector<std::string> EvalOverrides(const EvalSettings& eval);
 
 // The canonical resolved campaign: every default explicit, runs and positioners sorted, each

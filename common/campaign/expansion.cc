@@ -1,8 +1,12 @@
 #include "common/campaign/expansion.h"
 
+#include <map>
+
 #include "common/campaign/campaign_id.h"
 #include "common/campaign/job_content.h"
+#include "common/config/config_error.h"
 #include "common/hash/sha256.h"
+#include "common/job/job_settings.h"
 #include "common/job/offsets.h"
 #include "common/provenance/provenance.h"
 #include "common/scenario/scenario_parser.h"
@@ -29,6 +33,45 @@ JobParams ScenarioParams(const CampaignSpec& spec, const CampaignScenario& s, Jo
   return p;
 }
 
+// A train job's: the campaign's train settings; after the scenario's "set", the algorithm's
+// overrides ("": the scenario's own agent.algorithm).
+JobParams TrainParams(const CampaignSpec& spec, const CampaignScenario& s,
+                      const std::string& algorithm, std::uint64_t seed) {
+  JobParams p = ScenarioParams(spec, s, JobKind::kTrain);
+  p.train_seed = seed;
+  p.fidelity = spec.train.fidelity;
+  p.train_episodes = spec.train.episodes;
+  if (!algorithm.empty()) {
+    for (const auto& text : AlgorithmOverrides(algorithm))
+      p.overrides.push_back(ParseOverride(text));
+  }
+  return p;
+}
+
+JobParams EvalParams(const CampaignSpec& spec, const CampaignScenario& s, std::uint64_t run) {
+  JobParams p = ScenarioParams(spec, s, JobKind::kEval);
+  p.rng_run = run;
+  return p;
+}
+
+// "" trains with the scenario's own agent.algorithm, under the plain labels.
+std::vector<std::string> TrainAlgorithms(const CampaignSpec& spec) {
+  std::vector<std::string> algorithms = spec.train.algorithms;
+  if (algorithms.empty())
+    algorithms.push_back("");
+  return algorithms;
+}
+
+// Where the campaign fixes the setting of a JobParams field.
+std::string CampaignFieldOf(const std::string& field) {
+  static const std::map<std::string, std::string> fields{
+      {"train_seed", "/train/seeds"},        {"fidelity", "/train/fidelity"},
+      {"train_episodes", "/train/episodes"}, {"rng_run", "/rng_runs"},
+      {"duration_s", "/eval/duration"},      {"warmup_s", "/eval/warmup"}};
+  const auto it = fields.find(field);
+  return it == fields.end() ? field : it->second;
+}
+
 // One eval label and where its position comes from.
 struct EvalSource {
   std::string label;
@@ -47,7 +90,53 @@ bool NeedsTraining(const CampaignSpec& spec, const CampaignScenario& s) {
   return spec.Uses("rl") || UsesOffsets(spec, s);
 }
 
+// Position jobs of a scenario, one per selected positioner that gives a position.
+std::size_t PositionJobs(const CampaignSpec& spec) {
+  std::size_t producers = 0;
+  for (const char* positioner : {"baseline", "centroid", "oracle"})
+    producers += spec.Uses(positioner) ? 1 : 0;
+  return producers;
+}
+
 }  // namespace
+
+void CheckJobSettings(const CampaignSpec& spec) {
+  for (std::size_t i = 0; i < spec.scenarios.size(); ++i) {
+    const CampaignScenario& s = spec.scenarios[i];
+    if (s.overrides.empty())
+      continue;
+    // Every setting the campaign fixes for a job of this scenario, and where it fixes it.
+    std::vector<ScenarioOverride> fixed;
+    std::vector<std::string> where;
+    const auto add = [&](const JobParams& p) {
+      for (const auto& setting : JobSettings(p)) {
+        fixed.push_back(setting.setting);
+        where.push_back(CampaignFieldOf(setting.field));
+      }
+      for (std::size_t k = s.overrides.size(); k < p.overrides.size(); ++k) {
+        fixed.push_back(p.overrides[k]);
+        where.push_back("/train/algorithms");
+      }
+    };
+    if (NeedsTraining(spec, s)) {
+      for (const std::string& algorithm : TrainAlgorithms(spec)) {
+        for (const std::uint64_t seed : spec.train.seeds)
+          add(TrainParams(spec, s, algorithm, seed));
+      }
+    }
+    // Position jobs' settings are every eval's too.
+    if (NeedsTraining(spec, s) || PositionJobs(spec) > 0) {
+      for (const std::uint64_t run : spec.rng_runs)
+        add(EvalParams(spec, s, run));
+    }
+    if (const auto c = FindContradiction(Overrides(s), fixed)) {
+      const std::size_t k = c->override_index;
+      throw ConfigError("/scenarios/" + std::to_string(i) + "/set/" + std::to_string(k),
+                        "\"" + s.overrides[k] + "\" contradicts " + where[c->setting_index] + " (" +
+                            ToString(fixed[c->setting_index]) + "); keep one of them");
+    }
+  }
+}
 
 std::string EvalLabel(int k, const std::string& algorithm, std::size_t seed_index,
                       std::uint64_t seed) {
@@ -73,9 +162,7 @@ CampaignPlan PlanCampaign(CampaignSpec spec) {
 
 std::size_t CampaignPlan::JobCount() const {
   const CampaignSpec& spec = parsed;
-  std::size_t producers = 0;  // position jobs of a scenario
-  for (const char* positioner : {"baseline", "centroid", "oracle"})
-    producers += spec.Uses(positioner) ? 1 : 0;
+  const std::size_t producers = PositionJobs(spec);
   const std::size_t seeds =
       spec.train.seeds.size() * std::max<std::size_t>(1, spec.train.algorithms.size());
   std::size_t count = 0;
@@ -117,25 +204,14 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
 
     if (NeedsTraining(spec, s)) {
       const OffsetGeometry geometry = OffsetGeometryOf(s.scenario);
-      // "" trains with the scenario's own agent.algorithm, under the plain labels.
-      std::vector<std::string> algorithms = spec.train.algorithms;
-      if (algorithms.empty())
-        algorithms.push_back("");
-      for (const std::string& algorithm : algorithms) {
+      for (const std::string& algorithm : TrainAlgorithms(spec)) {
         for (std::size_t i = 0; i < spec.train.seeds.size(); ++i) {
           const std::uint64_t seed = spec.train.seeds[i];
           Job job;
           job.key = "train/" + name + "/" + (algorithm.empty() ? "" : algorithm + "/") + "seed" +
                     std::to_string(seed);
           job.label = EvalLabel(0, algorithm, i, seed);
-          job.params = ScenarioParams(spec, s, JobKind::kTrain);
-          job.params.train_seed = seed;
-          job.params.fidelity = spec.train.fidelity;
-          job.params.train_episodes = spec.train.episodes;
-          if (!algorithm.empty()) {
-            for (const auto& text : AlgorithmOverrides(algorithm))
-              job.params.overrides.push_back(ParseOverride(text));
-          }
+          job.params = TrainParams(spec, s, algorithm, seed);
           if (spec.Uses("rl"))
             sources.push_back({EvalLabel(0, algorithm, i, seed), job.key, seed, {}});
           if (UsesOffsets(spec, s)) {
@@ -158,8 +234,7 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
         job.label = source.label;
         job.depends_on = JobId(id, source.depends_on_key);
         job.position_rule = source.rule;
-        job.params = ScenarioParams(spec, s, JobKind::kEval);
-        job.params.rng_run = run;
+        job.params = EvalParams(spec, s, run);
         job.params.train_seed = source.train_seed;
         add(std::move(job));
       }

@@ -54,6 +54,12 @@ struct ExpandedCampaign : CampaignPlan {
 
 ExpandedCampaign ExpandCampaign(const CampaignSpec& spec);
 
+// Refuses a scenario's "set" entry that gives a setting the campaign fixes for one of the
+// scenario's jobs (job/job_settings.h: train seed, fidelity, episodes and algorithm, eval
+// duration and warm-up, RngRun) another value. ParseCampaign calls it. Throws ConfigError at
+// the entry ("/scenarios/0/set/1"), naming the campaign's field.
+void CheckJobSettings(const CampaignSpec& spec);
+
 // The eval label of offset position k (1..5) or of "rl" (k = 0) for the seed at `seed_index`
 // of `algorithm` ("": the scenario's own, no suffix).
 std::string EvalLabel(int k, const std::string& algorithm, std::size_t seed_index,

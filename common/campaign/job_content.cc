@@ -4,38 +4,19 @@
 #include <nlohmann/json.hpp>
 
 #include "common/hash/sha256.h"
+#include "common/job/job_fields.h"
 
 namespace rlpos {
 
 std::string JobContentBase(const JobParams& p, const std::string& scenario_sha256,
                            const std::string& build) {
-  nlohmann::json overrides = nlohmann::json::array();
-  for (const auto& o : p.overrides)
-    overrides.push_back({o.path, o.value});
-  nlohmann::json content = {{"content", 1},
-                            {"build", build},
-                            {"kind", ToString(p.kind)},
-                            {"scenario_sha256", scenario_sha256},
-                            {"overrides", overrides},
-                            {"duration_s", nullptr},
-                            {"warmup_s", nullptr}};
-  if (p.duration_s)
-    content["duration_s"] = *p.duration_s;
-  if (p.warmup_s)
-    content["warmup_s"] = *p.warmup_s;
-  switch (p.kind) {
-    case JobKind::kTrain:
-      content["train_seed"] = p.train_seed.value_or(0);
-      content["fidelity"] = p.fidelity;
-      content["train_episodes"] = p.train_episodes ? nlohmann::json(*p.train_episodes) : nullptr;
-      break;
-    case JobKind::kPosition:
-      content["positioner"] = p.positioner;
-      break;
-    case JobKind::kEval:
-      content["rng_run"] = p.rng_run.value_or(0);
-      break;
-  }
+  // The keys are the fields' declared names (the JSON object sorts them): the same content keeps
+  // the key it had when these fields were listed here by hand.
+  nlohmann::json content = {{"content", 1}, {"build", build}, {"scenario_sha256", scenario_sha256}};
+  ForEachField(p, [&](const auto& field, const auto& value) {
+    if (Includes(field.kinds, p.kind))
+      content[field.name] = FieldJson(value);
+  });
   return Sha256Hex(content.dump());
 }
 

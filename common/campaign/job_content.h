@@ -1,10 +1,11 @@
 #pragma once
 // What a job computes, as a hash, for the result cache: every ns-3 and agent run is seeded, so
 // two jobs with the same content give the same result and one's result can serve the other.
-// The content is the build (rlpos version), the kind, the sha256 of the campaign's scenario
-// document (canonical JSON, before overrides), the typed parameters that change what runs and,
-// for an eval, its placement. Not the campaign, the label or an eval's train seed: those only say
-// where a job comes from, so an rl eval and an offset eval at the same position share content.
+// The content is the build (rlpos version), the sha256 of the campaign's scenario document
+// (canonical JSON, before overrides), every field of JobParams that changes what a job of its
+// kind runs (declared in job/job_fields.h, which the build holds to JobParams) and, for an eval,
+// its placement. Not the campaign, the label or an eval's train seed: those only say where a
+// job comes from, so an rl eval and an offset eval at the same position share content.
 #include <optional>
 #include <string>
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "common/config/config_error.h"
+#include "common/job/job_settings.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
@@ -68,6 +69,17 @@ void CheckParams(const JobParams& p) {
     Bad("overrides", "too many");
   for (const auto& o : p.overrides)
     CheckOverride(o);
+  // The campaign refuses these; an order that has one was not made from a campaign we read.
+  const std::vector<JobSetting> settings = JobSettings(p);
+  std::vector<ScenarioOverride> fixed;
+  for (const auto& s : settings)
+    fixed.push_back(s.setting);
+  if (const auto c = FindContradiction(p.overrides, fixed)) {
+    Bad("overrides[" + std::to_string(c->override_index) + "]",
+        "\"" + wire::Printable(ToString(p.overrides[c->override_index])) +
+            "\" contradicts the job's " + settings[c->setting_index].field + " (" +
+            ToString(fixed[c->setting_index]) + ")");
+  }
 }
 
 }  // namespace
@@ -90,18 +102,10 @@ void CheckOverride(const ScenarioOverride& o) {
 
 json EffectiveScenarioDocument(const json& document, const JobParams& params) {
   std::vector<std::string> settings;
-  if (params.train_episodes) {
-    settings.push_back("agent.train_episodes=" + std::to_string(*params.train_episodes));
-  }
-  if (params.duration_s)
-    settings.push_back("simulation.duration=" + FormatNumber(*params.duration_s));
-  if (params.kind == JobKind::kEval && params.rng_run) {
-    settings.push_back("simulation.run=" + std::to_string(*params.rng_run));
-  }
-  if (params.warmup_s)
-    settings.push_back("simulation.warmup=" + FormatNumber(*params.warmup_s));
   for (const auto& o : params.overrides)
     settings.push_back(ToString(o));
+  for (const auto& s : JobSettings(params))
+    settings.push_back(ToString(s.setting));
   json effective = document;
   ApplyOverrides(effective, settings);
   return effective;

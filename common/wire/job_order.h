@@ -31,15 +31,16 @@ struct CheckedOrder {
 // them), its value is bounded. Throws std::invalid_argument.
 void CheckOverride(const ScenarioOverride& o);
 
-// The scenario document a job runs: the campaign's document, then the job's own settings
-// (agent.train_episodes, simulation.duration, simulation.run, simulation.warmup), then the
-// campaign scenario's overrides in order (the most specific wins). Throws ConfigError.
+// The scenario document a job runs, its settings' one way in (job/job_settings.h): the
+// campaign's document, then the job's overrides in order (the campaign scenario's "set", a train
+// job's algorithm), then the settings of the job's own fields (agent.seed, env.fidelity,
+// agent.train_episodes, simulation.run, .duration, .warmup). Throws ConfigError.
 nlohmann::json EffectiveScenarioDocument(const nlohmann::json& document, const JobParams& params);
 
 // Checks every field of an order that came over the network, and the scenario it describes
 // (parsed and validated as rlpos-sim would; an eval's placement has a position per UAV, each
-// inside the venue and outside every building). `max_timeout_s` is the worker's cap. Throws
-// std::invalid_argument naming the field.
+// inside the venue and outside every building; no override contradicts a setting of the job's
+// fields). `max_timeout_s` is the worker's cap. Throws std::invalid_argument naming the field.
 CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s);
 
 }  // namespace rlpos

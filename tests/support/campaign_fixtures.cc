@@ -2,8 +2,7 @@
 
 #include <sqlite3.h>
 
-#include <sstream>
-
+#include "common/job/job_fields.h"
 #include "common/scenario/number_text.h"
 
 namespace rlpos::testing {
@@ -51,47 +50,18 @@ nlohmann::json EvalResult(std::uint64_t run, double throughput_mbps, double dela
           {"scenario", "B"}};
 }
 
-namespace {
-
-template <typename T>
-std::string Text(const std::optional<T>& v) {
-  if (!v)
-    return "unset";
-  std::ostringstream out;
-  out << *v;
-  return out.str();
-}
-
-// Doubles as text that reads back exactly: equal text, equal number.
-std::string Text(const std::optional<double>& v) {
-  return v ? FormatNumber(*v) : "unset";
-}
-
-std::string Text(const std::vector<ScenarioOverride>& overrides) {
-  std::string out = "[";
-  for (const auto& o : overrides)
-    out += (out.size() > 1 ? ", " : "") + ToString(o);
-  return out + "]";
-}
-
-}  // namespace
-
 ::testing::AssertionResult SameParams(const JobParams& a, const JobParams& b) {
+  std::vector<std::string> texts;  // a's fields, in declaration order
+  ForEachField(a,
+               [&](const auto&, const auto& value) { texts.push_back(FieldJson(value).dump()); });
   std::string diff;
-  const auto field = [&diff](const char* name, const std::string& x, const std::string& y) {
-    if (x != y)
-      diff += std::string(" ") + name + ": " + x + " vs " + y + ";";
-  };
-  field("kind", ToString(a.kind), ToString(b.kind));
-  field("scenario", a.scenario, b.scenario);
-  field("train_seed", Text(a.train_seed), Text(b.train_seed));
-  field("fidelity", a.fidelity, b.fidelity);
-  field("train_episodes", Text(a.train_episodes), Text(b.train_episodes));
-  field("positioner", a.positioner, b.positioner);
-  field("rng_run", Text(a.rng_run), Text(b.rng_run));
-  field("duration_s", Text(a.duration_s), Text(b.duration_s));
-  field("warmup_s", Text(a.warmup_s), Text(b.warmup_s));
-  field("overrides", Text(a.overrides), Text(b.overrides));
+  std::size_t i = 0;
+  ForEachField(b, [&](const auto& field, const auto& value) {
+    const std::string text = FieldJson(value).dump();
+    if (texts[i] != text)
+      diff += std::string(" ") + field.name + ": " + texts[i] + " vs " + text + ";";
+    ++i;
+  });
   if (diff.empty())
     return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "params differ:" << diff;

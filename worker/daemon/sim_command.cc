@@ -13,11 +13,9 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
   const JobParams& p = order.params;
   switch (p.kind) {
     case JobKind::kTrain:
-      return {sim_binary,   "train",
-              "--scenario", scenario,
-              "--seed",     std::to_string(p.train_seed.value_or(0)),
-              "--fidelity", p.fidelity == "packet" ? "packet" : "analytic",
-              "--out",      (fs::path(folder) / kOutFolderName).string(),
+      // The seed, the fidelity and the episodes are in the scenario file, as every setting is.
+      return {sim_binary, "train", "--scenario",
+              scenario,   "--out", (fs::path(folder) / kOutFolderName).string(),
               "--json"};
     case JobKind::kPosition: {
       // One of the three names CheckJobOrder lets through, spelt by us.
@@ -29,7 +27,7 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
     case JobKind::kEval:
       break;
   }
-  // Duration, run and warm-up are in the scenario file already. One --position per UAV.
+  // Duration, run and warm-up are in the scenario file. One --position per UAV.
   std::vector<std::string> command{sim_binary, "eval", "--scenario", scenario};
   for (const Vec3& position : order.placement.value_or(Placement{})) {
     command.push_back("--position");

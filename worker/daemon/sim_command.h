@@ -1,7 +1,7 @@
 #pragma once
 // The only place where a job becomes a command line: the worker's own rlpos-sim, the attempt's
 // own folder, and numbers it formats itself from a validated order. Nothing of the order is
-// copied into the command line as text.
+// copied into the command line as text, and no setting: every setting is in the scenario file.
 #include <string>
 #include <vector>
 

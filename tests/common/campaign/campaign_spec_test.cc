@@ -113,13 +113,16 @@ TEST(CampaignSpec, AlgorithmsTakeTheCanonicalOrder) {
 
 TEST(CampaignSpec, AlgorithmsOverrideTheScenariosOwn) {
   // Every agent section is validated with the scenario itself; each algorithm's training then
-  // sets agent.algorithm and the action space that goes with it.
+  // sets agent.algorithm and the action space that goes with it. A "set" that says the same is
+  // accepted; one that says otherwise is refused (job_settings_test.cc).
   json doc = MinimalCampaign();
   doc["scenarios"] = {
       {{"file", ScenarioB()}, {"set", {"agent.algorithm=sac", "env.action_space=continuous"}}}};
-  doc["train"] = {{"algorithms", {"dqn", "ppo"}}};
+  doc["train"] = {{"algorithms", {"sac"}}};
   const CampaignSpec spec = ParseCampaign(doc, "/");
-  EXPECT_EQ(spec.train.algorithms, (std::vector<std::string>{"dqn", "ppo"}));
+  EXPECT_EQ(spec.train.algorithms, (std::vector<std::string>{"sac"}));
+  doc["train"] = {{"algorithms", {"dqn", "ppo"}}};
+  EXPECT_THROW(ParseCampaign(doc, "/"), ConfigError);
 }
 
 TEST(CampaignSpec, SetOverridesTheScenario) {
@@ -131,7 +134,7 @@ TEST(CampaignSpec, SetOverridesTheScenario) {
             (std::vector<std::string>{"simulation.duration=5", "wifi.mode=adhoc"}));
   EXPECT_DOUBLE_EQ(spec.scenarios[0].scenario.simulation.duration, 5.0);
   EXPECT_EQ(spec.scenarios[0].scenario.wifi.mode, "adhoc");
-  // The document is kept as read: overrides travel separately, as --set.
+  // The document is kept as read: overrides travel separately, as the job's overrides.
   EXPECT_EQ(spec.scenarios[0].document, ReadJsonFile(ScenarioC()));
 }
 

@@ -225,6 +225,37 @@ TEST(JobContent, EveryFieldThatChangesARunChangesTheKey) {
   EXPECT_EQ(JobContentBase(renamed, "aa", "v1"), base);
 }
 
+// Keys of results already cached: the same content keeps its key across releases of the code
+// that computes it, so a store's cached results keep serving.
+TEST(JobContent, TheKeyOfTheSameContentStaysTheSame) {
+  JobParams train;
+  train.kind = JobKind::kTrain;
+  train.scenario = "B";
+  train.train_seed = 3;
+  train.fidelity = "packet";
+  train.train_episodes = 40;
+  train.duration_s = 2;
+  train.warmup_s = 0.5;
+  train.overrides = {{"wifi.mode", "adhoc"}, {"agent.algorithm", "ppo"}};
+  JobParams position;
+  position.kind = JobKind::kPosition;
+  position.scenario = "C";
+  position.positioner = "oracle";
+  position.duration_s = 10;
+  JobParams eval;
+  eval.kind = JobKind::kEval;
+  eval.scenario = "B";
+  eval.train_seed = 2;
+  eval.rng_run = 17;
+  eval.warmup_s = 1;
+  EXPECT_EQ(JobContentBase(train, "aa", "v1"),
+            "deb8bbf5e9fecb028c06b6c954bc606efe0f8cc8593813b78bf80d3c16cecf11");
+  EXPECT_EQ(JobContentBase(position, "aa", "v1"),
+            "798cf272acf547f9dee94478b030289358c6cb136f2361f94a12ad285cdfbbe8");
+  EXPECT_EQ(JobContentBase(eval, "aa", "v1"),
+            "3fa01a8d8a027dd9898ef77e519300c37736be81e89eea66d737235c0da6815c");
+}
+
 TEST(JobContent, AnEvalsKeyNeedsItsPositionButNotItsTrainSeed) {
   JobParams eval;
   eval.kind = JobKind::kEval;

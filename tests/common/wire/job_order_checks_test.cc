@@ -1,5 +1,6 @@
-// What a worker refuses in an order's placement (wire/job_order.h): one position per UAV, each
-// inside the venue and outside every building, and none for a job that is not an eval.
+// What a worker refuses in an order (wire/job_order.h): a placement must have one position per
+// UAV, each inside the venue and outside every building, and none for a job that is not an eval;
+// an override must not contradict a setting the job fixes.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -53,6 +54,43 @@ TEST(JobOrderPlacement, OnePositionPerUavEachFlyable) {
   order.params.train_seed = 1;
   order.params.fidelity = "analytic";
   EXPECT_EQ(ErrorOf(order), "positions: only an eval job has them");
+}
+
+// The same order, as a train job with `overrides`.
+JobOrder Urban3Train(std::vector<ScenarioOverride> overrides) {
+  JobOrder order = Urban3Eval();
+  order.job_id = "c1/train/urban3/seed1";
+  order.placement.reset();
+  order.params.kind = JobKind::kTrain;
+  order.params.rng_run.reset();
+  order.params.train_seed = 1;
+  order.params.fidelity = "analytic";
+  order.params.overrides = std::move(overrides);
+  return order;
+}
+
+TEST(JobOrderSettings, AnOverrideThatContradictsTheJobIsRefused) {
+  EXPECT_EQ(ErrorOf(Urban3Train({{"env.fidelity", "analytic"}, {"agent.seed", "1"}})), "accepted");
+  EXPECT_EQ(ErrorOf(Urban3Train({{"wifi.mode", "adhoc"}, {"env.fidelity", "packet"}})),
+            "overrides[1]: \"env.fidelity=packet\" contradicts the job's fidelity "
+            "(/env/fidelity=analytic)");
+  JobOrder eval = Urban3Eval();
+  eval.params.overrides = {{"/simulation/run", "2"}};
+  EXPECT_EQ(ErrorOf(eval),
+            "overrides[0]: \"/simulation/run=2\" contradicts the job's rng_run "
+            "(/simulation/run=1)");
+}
+
+TEST(JobOrderSettings, TheJobsSettingsAreInItsScenario) {
+  JobOrder order = Urban3Train({{"agent.train_episodes", "7"}});
+  order.params.train_seed = 5;
+  order.params.fidelity = "packet";
+  const CheckedOrder checked = CheckJobOrder(order, 3600);
+  EXPECT_EQ(checked.scenario["agent"]["seed"], 5);
+  EXPECT_EQ(checked.scenario["env"]["fidelity"], "packet");
+  EXPECT_EQ(checked.scenario["agent"]["train_episodes"], 7);  // the job leaves it open
+  EXPECT_EQ(checked.parsed.agent.seed, 5u);
+  EXPECT_EQ(checked.parsed.env.fidelity, "packet");
 }
 
 }  // namespace

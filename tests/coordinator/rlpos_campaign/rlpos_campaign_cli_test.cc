@@ -94,6 +94,21 @@ TEST_F(RlposCampaignCli, BrokenScenarioIsRefusedBeforeAnythingStarts) {
   ExpectNothingWritten();
 }
 
+TEST_F(RlposCampaignCli, ASetThatContradictsTheCampaignIsRefusedBeforeAnythingStarts) {
+  // The campaign trains at analytic fidelity (the default); the scenario's "set" says packet.
+  const auto file =
+      Write("f.json", R"({"name": "t", "scenarios": [{"file": ")" + std::string(RLPOS_SOURCE_DIR) +
+                          R"(/campaigns/scenarios/b.json", "set": ["env.fidelity=packet"]}],
+                    "rng_runs": [1, 1]})");
+  const std::string both =
+      "f.json: /scenarios/0/set/0: \"env.fidelity=packet\" contradicts "
+      "/train/fidelity";
+  ExpectOneLineError(Campaign("run " + file + " --dry-run"), 2, both);
+  ExpectOneLineError(Campaign("run " + file), 2, both);
+  ExpectOneLineError(Campaign("submit " + file + " " + LonelyDds()), 2, both);
+  ExpectNothingWritten();
+}
+
 TEST_F(RlposCampaignCli, SubmitWithNoCoordinator) {
   const auto r =
       Campaign("submit " + std::string(RLPOS_SOURCE_DIR) + "/campaigns/mini.json " + LonelyDds());

@@ -77,10 +77,9 @@ JobOrder OrderOf(JobKind kind) {
 
 TEST(SimCommandLine, OneCommandPerKindFromTypedFieldsOnly) {
   const std::string sim = "/opt/rlpos/bin/rlpos-sim", folder = "/w/c1/x/attempt1";
-  EXPECT_EQ(
-      SimCommandLine(OrderOf(JobKind::kTrain), sim, folder),
-      (std::vector<std::string>{sim, "train", "--scenario", folder + "/scenario.json", "--seed",
-                                "7", "--fidelity", "packet", "--out", folder + "/out", "--json"}));
+  EXPECT_EQ(SimCommandLine(OrderOf(JobKind::kTrain), sim, folder),
+            (std::vector<std::string>{sim, "train", "--scenario", folder + "/scenario.json",
+                                      "--out", folder + "/out", "--json"}));
   EXPECT_EQ(SimCommandLine(OrderOf(JobKind::kPosition), sim, folder),
             (std::vector<std::string>{sim, "position", "--scenario", folder + "/scenario.json",
                                       "--positioner", "oracle", "--json"}));
@@ -206,10 +205,9 @@ JobOrder ShippedOrder(JobKind kind) {
   order.job_id = std::string("c1/") + ToString(kind);
   order.scenario_document = ReadFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json");
   order.params.duration_s = 3;
-  order.params.warmup_s = 0.5;
   if (kind == JobKind::kTrain)
     order.params.train_episodes = 25;
-  // The campaign's "set" comes last: its warm-up wins over the job's.
+  // The job leaves the warm-up to the scenario: the campaign's "set" decides it.
   order.params.overrides = {{"wifi.mode", "adhoc"}, {"simulation.warmup", "0.25"}};
   return order;
 }
@@ -235,7 +233,10 @@ TEST_F(JobAttemptTest, TheScenarioFileIsTheEffectiveDocumentOfEachKind) {
     // Only an eval runs the job's RngRun; the others keep the scenario's.
     EXPECT_EQ(simulation["run"], kind == JobKind::kEval ? 3 : 1);
     if (kind == JobKind::kTrain) {
+      // Every setting of a train job is in the file, the seed and the fidelity too.
       EXPECT_EQ(written["agent"]["train_episodes"], 25);
+      EXPECT_EQ(written["agent"]["seed"], 7);
+      EXPECT_EQ(written["env"]["fidelity"], "packet");
     }
   }
 }
@@ -263,7 +264,7 @@ TEST_F(JobAttemptTest, TrainGetsAnOutFolderInsideItsAttempt) {
   JobOrder order = Order();
   order.params.kind = JobKind::kTrain;
   JobAttempt attempt(order, scenario_, Work(),
-                     Sim("test -d \"$(dirname \"$9\")\" && echo \"{\\\"out\\\": \\\"$9\\\"}\""));
+                     Sim("test -d \"$(dirname \"$5\")\" && echo \"{\\\"out\\\": \\\"$5\\\"}\""));
   const JobOutcome outcome = AwaitOutcome(attempt);
   ASSERT_TRUE(outcome.succeeded) << outcome.error;
   EXPECT_EQ(nlohmann::json::parse(outcome.result_json)["out"], Folder() + "/out");
