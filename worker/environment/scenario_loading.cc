@@ -20,10 +20,15 @@ void CheckScenarioAgainstNs3(const Scenario& scenario) {
                  ns3::WifiRemoteStationManager::GetTypeId());
 }
 
-Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides) {
+nlohmann::json ScenarioDocument(const std::string& file,
+                                const std::vector<std::string>& overrides) {
   nlohmann::json document = ReadJsonFile(file);
   ApplyOverrides(document, overrides);
-  Scenario scenario = ParseScenario(document);
+  return document;
+}
+
+Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides) {
+  Scenario scenario = ParseScenario(ScenarioDocument(file, overrides));
   CheckScenarioAgainstNs3(scenario);
   return scenario;
 }
