@@ -28,8 +28,9 @@ const std::vector<std::string>& ReadingOrder() {
 }
 
 // The scenario's JSON with the same keys whatever form it was written in: every UAV under
-// "uavs" with its name and channel, env.turn_steps written out, the document's own fields
-// dropped.
+// "uavs" with its channel, env.turn_steps written out, the document's own fields dropped. A
+// UAV's name is a label (a listed UAV's default differs from a single one's): the UEs' "uav"
+// fields, compared, say which UAV serves whom.
 json Comparable(const Scenario& s) {
   json d = ToJson(s);
   for (const auto& [object, key] : DocumentsOwn()) {
@@ -38,7 +39,7 @@ json Comparable(const Scenario& s) {
   }
   json uavs = d.contains("uavs") ? d["uavs"] : json::array({d["uav"]});
   for (std::size_t i = 0; i < uavs.size() && i < s.uavs.size(); ++i) {
-    uavs[i]["name"] = s.uavs[i].name;
+    uavs[i].erase("name");
     uavs[i]["channel"] = s.uavs[i].channel;
   }
   d.erase("uav");
