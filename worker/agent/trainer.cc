@@ -77,6 +77,10 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
   return record;
 }
 
+std::uint64_t EvaluationSeed(const AgentSpec& spec, std::uint64_t seed, int k) {
+  return seed + static_cast<std::uint64_t>(spec.train_episodes) + static_cast<std::uint64_t>(k);
+}
+
 TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
                   const EpisodeCallback& on_episode, const StepCallback& on_eval_step) {
   TrainResult result;
@@ -86,7 +90,7 @@ TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t s
     result.curve.push_back(std::move(record));
   };
   // The evaluation's first seed: checkpoints are scored on the episode the answer comes from.
-  const std::uint64_t eval_seed = seed + static_cast<std::uint64_t>(spec.train_episodes);
+  const std::uint64_t eval_seed = EvaluationSeed(spec, seed, 0);
   std::optional<double> kept;  // the kept policy's checkpoint reward
   int stale = 0;               // checkpoints in a row that did not beat it
   for (int e = 0; e < spec.train_episodes; ++e) {
@@ -116,10 +120,10 @@ TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t s
   } else {
     result.policy_episode = spec.train_episodes;
   }
-  for (int e = spec.train_episodes; e < spec.train_episodes + spec.eval_episodes; ++e) {
+  for (int k = 0; k < spec.eval_episodes; ++k) {
     EpisodeRecord record =
-        RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), false, on_eval_step);
-    record.episode = e + 1;
+        RunEpisode(env, agent, EvaluationSeed(spec, seed, k), false, on_eval_step);
+    record.episode = spec.train_episodes + k + 1;
     result.final_info = record.final_info;
     result.final_reward = record.final_reward;
     add(std::move(record));

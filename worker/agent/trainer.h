@@ -60,6 +60,11 @@ EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode);
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
                          const StepCallback& on_step = nullptr, const EpisodeOptions& options = {});
 
+// The seed Train gives evaluation episode k (from 0) of a training from `seed`: the ones after
+// the training episodes'. Checkpoints fly k = 0; the last one's end is TrainResult::final_info,
+// which a replay of the policy reproduces (a policy folder records it).
+std::uint64_t EvaluationSeed(const AgentSpec& spec, std::uint64_t seed, int k);
+
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
 // greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's
 // seed after every n-th training episode and after the last; the policy of the highest final

@@ -20,9 +20,15 @@ void CheckScenarioAgainstNs3(const Scenario& scenario) {
                  ns3::WifiRemoteStationManager::GetTypeId());
 }
 
-Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides) {
+nlohmann::json ScenarioDocument(const std::string& file,
+                                const std::vector<std::string>& overrides) {
   nlohmann::json document = ReadJsonFile(file);
   ApplyOverrides(document, overrides);
+  return document;
+}
+
+Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides) {
+  const nlohmann::json document = ScenarioDocument(file, overrides);
   try {
     Scenario scenario = ParseScenario(document);
     CheckScenarioAgainstNs3(scenario);

@@ -6,6 +6,9 @@
 
 namespace rlpos {
 
+// FILE's document with the --set overrides applied: what its author stated, no defaults.
+nlohmann::json ScenarioDocument(const std::string& file, const std::vector<std::string>& overrides);
+
 // Reads FILE, applies --set overrides, parses and validates (structure, geometry and the ns-3
 // side: TypeIds, attributes, Wi-Fi channel). Throws ConfigError.
 Scenario LoadScenario(const std::string& file, const std::vector<std::string>& overrides);

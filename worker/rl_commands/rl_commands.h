@@ -7,7 +7,9 @@
 namespace rlpos::sim {
 
 int TrainCommand(const CommonOptions& options, const TrainOptions& train);
-// The trained policy's greedy final position, replayed from the policy folder.
-Placement PolicyPlacement(const Scenario& scenario, const std::string& policy);
+// The trained policy's greedy final placement: training's own final evaluation episode, replayed
+// from the policy folder alone. The caller's scenario (options) may restate the policy's, not
+// contradict it (common/scenario/scenario_contradiction.h).
+Placement PolicyPlacement(const CommonOptions& options, const std::string& policy);
 
 }  // namespace rlpos::sim

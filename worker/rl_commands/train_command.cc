@@ -10,6 +10,7 @@
 #include "common/scenario/scenario_parser.h"
 #include "worker/agent/make_agent.h"
 #include "worker/agent/trainer.h"
+#include "worker/rl_commands/policy_folder.h"
 #include "worker/rl_commands/rl_commands.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
@@ -26,27 +27,31 @@ std::uint64_t FirstEpisodeRun(std::uint64_t seed) {
 
 nlohmann::json ResultJson(const Scenario& s, const TrainResult& r, std::uint64_t seed) {
   const Vec3& p = r.final_info.positions.front();
-  return {{"scenario", s.name},
-          {"algorithm", s.agent.algorithm},
-          {"action_space", s.env.action_space},
-          {"fidelity", s.env.fidelity},
-          {"seed", seed},
-          {"train_episodes", s.agent.train_episodes},
-          {"train_episode_steps", s.agent.train_episode_steps},
-          {"exploring_starts", s.agent.exploring_starts},
-          {"eval_episodes", s.agent.eval_episodes},
-          {"first_episode_run", FirstEpisodeRun(seed)},
-          {"eval_interval", s.agent.eval_interval},
-          {"early_stop_checkpoints", s.agent.early_stop_checkpoints},
-          {"episodes_trained", r.episodes_trained},
-          {"policy_episode", r.policy_episode},                  // the kept policy's
-          {"position", {p.x, p.y, p.z}},                         // the first UAV's
-          {"positions", PlacementJson(r.final_info.positions)},  // every UAV's
-          {"n_los", r.final_info.n_los},
-          {"n_ues", s.ues.size()},
-          {"throughput_mbps", r.final_info.throughput_mbps},
-          {"demands_met", r.final_info.demands_met},
-          {"reward", r.final_reward}};
+  const std::uint64_t first_run = FirstEpisodeRun(seed);
+  nlohmann::json result = {{"scenario", s.name},
+                           {"algorithm", s.agent.algorithm},
+                           {"action_space", s.env.action_space},
+                           {"fidelity", s.env.fidelity},
+                           {"seed", seed},
+                           {"train_episodes", s.agent.train_episodes},
+                           {"train_episode_steps", s.agent.train_episode_steps},
+                           {"exploring_starts", s.agent.exploring_starts},
+                           {"eval_episodes", s.agent.eval_episodes},
+                           {"eval_interval", s.agent.eval_interval},
+                           {"early_stop_checkpoints", s.agent.early_stop_checkpoints},
+                           {"episodes_trained", r.episodes_trained},
+                           {"policy_episode", r.policy_episode},  // the kept policy's
+                           {"position", {p.x, p.y, p.z}},         // the first UAV's
+                           {"positions", PlacementJson(r.final_info.positions)},  // every UAV's
+                           {"n_los", r.final_info.n_los},
+                           {"n_ues", s.ues.size()},
+                           {"throughput_mbps", r.final_info.throughput_mbps},
+                           {"demands_met", r.final_info.demands_met},
+                           {"reward", r.final_reward}};
+  // What a replay needs besides scenario.json: the runs, so that it flies the final evaluation.
+  result.update(
+      SeedStreamJson(first_run, EvaluationSeed(s.agent, first_run, s.agent.eval_episodes - 1)));
+  return result;
 }
 
 const char* Phase(const EpisodeRecord& r) {

@@ -61,7 +61,8 @@ int RunValidate(const CommonOptions& options, bool json);
 int RunEval(const CommonOptions& options, const EvalOptions& eval);
 int RunTrain(const CommonOptions& options, const TrainOptions& train);
 int RunPosition(const CommonOptions& options, const PositionOptions& position);
-// The rl positioner: the trained policy's greedy final placement (from the RL module).
-Placement RlPlacement(const Scenario& scenario, const std::string& policy);
+// The rl positioner: the trained policy's greedy final placement (from the RL module), replayed
+// in the scenario it was trained on. A scenario (options) that contradicts it is a ConfigError.
+Placement RlPlacement(const CommonOptions& options, const std::string& policy);
 
 }  // namespace rlpos::sim

@@ -53,10 +53,10 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
       throw ConfigError("--from", "give exactly one of --from x,y,z or --policy DIR (the centre)");
     }
     const Vec3 center =
-        p.from.empty() ? RlPlacement(s, p.policy).front() : ParsePosition(p.from, "--from");
+        p.from.empty() ? RlPlacement(options, p.policy).front() : ParsePosition(p.from, "--from");
     placement = {OffsetPosition(center, p.offset, OffsetGeometryOf(s))};
   } else {
-    placement = RlPlacement(s, p.policy);
+    placement = RlPlacement(options, p.policy);
   }
   // Every positioner is scored the same way: the analytic model at its placement.
   AnalyticEvaluator analytic(s);

@@ -11,10 +11,10 @@ namespace rlpos::sim {
 
 struct RlCommands {
   int (*train)(const CommonOptions& options, const TrainOptions& train);
-  Placement (*policy_placement)(const Scenario& scenario, const std::string& policy);
+  Placement (*policy_placement)(const CommonOptions& options, const std::string& policy);
 };
 
 }  // namespace rlpos::sim
 
 // The module's one entry point (looked up by name with dlsym).
-extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v2();
+extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v3();

@@ -30,9 +30,9 @@ const RlCommands& Load() {
     void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module)
       throw std::runtime_error("cannot load the RL commands: " + std::string(dlerror()));
-    auto entry = reinterpret_cast<const RlCommands* (*)()>(dlsym(module, "rlpos_rl_commands_v2"));
+    auto entry = reinterpret_cast<const RlCommands* (*)()>(dlsym(module, "rlpos_rl_commands_v3"));
     if (!entry)
-      throw std::runtime_error(path + ": no rlpos_rl_commands_v2 entry point");
+      throw std::runtime_error(path + ": no rlpos_rl_commands_v3 entry point");
     return entry();
   }();
   return *commands;
@@ -44,8 +44,8 @@ int RunTrain(const CommonOptions& options, const TrainOptions& train) {
   return Load().train(options, train);
 }
 
-Placement RlPlacement(const Scenario& scenario, const std::string& policy) {
-  return Load().policy_placement(scenario, policy);
+Placement RlPlacement(const CommonOptions& options, const std::string& policy) {
+  return Load().policy_placement(options, policy);
 }
 
 }  // namespace rlpos::sim

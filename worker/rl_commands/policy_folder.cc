@@ -1,0 +1,79 @@
+#include "worker/rl_commands/policy_folder.h"
+
+#include "common/config/config_error.h"
+#include "common/scenario/scenario_parser.h"
+#include "worker/agent/trainer.h"
+
+namespace rlpos::sim {
+namespace {
+
+constexpr const char* kFirstEpisodeRun = "first_episode_run";
+constexpr const char* kEvalRun = "eval_run";
+constexpr const char* kGeneral = "general";
+
+nlohmann::json ReadFolderFile(const std::string& dir, const std::string& name) {
+  try {
+    return ReadJsonFile(dir + "/" + name);
+  } catch (const ConfigError& e) {
+    throw ConfigError("--policy", dir + "/" + name + ": " + e.problem());
+  }
+}
+
+std::uint64_t Run(const nlohmann::json& result, const char* key, const std::string& dir) {
+  const auto it = result.find(key);
+  if (it == result.end() || !it->is_number_unsigned() || it->get<std::uint64_t>() == 0) {
+    throw ConfigError("--policy", dir + "/result.json: /" + std::string(key) +
+                                      ": expected a positive RngRun; retrain the policy");
+  }
+  return it->get<std::uint64_t>();
+}
+
+// result.json's algorithm, action space and fidelity must be scenario.json's: a folder whose
+// two files disagree was not written by one training.
+void CheckAgrees(const nlohmann::json& result, const char* key, const std::string& trained,
+                 const std::string& dir) {
+  const auto it = result.find(key);
+  if (it != result.end() && *it != trained) {
+    throw ConfigError("--policy", dir + "/result.json: /" + std::string(key) + ": " + it->dump() +
+                                      ", but scenario.json says \"" + trained + "\"");
+  }
+}
+
+}  // namespace
+
+nlohmann::json SeedStreamJson(std::uint64_t first_episode_run, std::uint64_t eval_run) {
+  return {{kFirstEpisodeRun, first_episode_run}, {kEvalRun, eval_run}, {kGeneral, false}};
+}
+
+PolicyFolder ReadPolicyFolder(const std::string& dir) {
+  PolicyFolder folder;
+  folder.dir = dir;
+  const nlohmann::json result = ReadFolderFile(dir, "result.json");
+  try {
+    folder.trained = ParseScenario(ReadFolderFile(dir, "scenario.json"));
+  } catch (const ConfigError& e) {
+    if (e.path() == "--policy")
+      throw;
+    throw ConfigError("--policy", dir + "/scenario.json: " + e.describe());
+  }
+  const Scenario& s = folder.trained;
+  CheckAgrees(result, "algorithm", s.agent.algorithm, dir);
+  CheckAgrees(result, "action_space", s.env.action_space, dir);
+  CheckAgrees(result, "fidelity", s.env.fidelity, dir);
+  const auto general = result.find(kGeneral);
+  if (general != result.end() && !general->is_boolean())
+    throw ConfigError("--policy", dir + "/result.json: /general: expected true or false");
+  folder.general = general != result.end() && general->get<bool>();
+  if (folder.general) {
+    throw ConfigError("--policy", dir +
+                                      " declares itself general; this version replays a policy "
+                                      "only in the scenario it was trained on");
+  }
+  folder.first_episode_run = Run(result, kFirstEpisodeRun, dir);
+  folder.eval_run = result.contains(kEvalRun) ? Run(result, kEvalRun, dir)
+                                              : EvaluationSeed(s.agent, folder.first_episode_run,
+                                                               s.agent.eval_episodes - 1);
+  return folder;
+}
+
+}  // namespace rlpos::sim
