@@ -244,8 +244,10 @@ void PpoAgent::Save(const std::string& directory) const {
 void PpoAgent::Load(const std::string& directory) {
   LoadNetwork(directory + "/policy.pt", impl_->actor, impl_->spec.hidden, impl_->observation_dim,
               impl_->action_count);
-  LoadNetwork(directory + "/value.pt", impl_->critic, impl_->spec.hidden, impl_->observation_dim,
-              1);
+  // Acting needs only the actor: a policy exported from a campaign's artifacts has no value.pt.
+  const std::string value = directory + "/value.pt";
+  if (std::filesystem::exists(value))
+    LoadNetwork(value, impl_->critic, impl_->spec.hidden, impl_->observation_dim, 1);
 }
 
 }  // namespace rlpos
