@@ -4,7 +4,7 @@
 #include "worker/agent/torch_threads.h"
 #include "worker/agent/trainer.h"
 #include "worker/rl_commands/rl_commands.h"
-#include "worker/sim/rl_plugin_api.h"
+#include "worker/sim_api/rl_plugin_api.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos::sim {

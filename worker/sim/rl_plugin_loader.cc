@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "worker/sim/rl_plugin_api.h"
+#include "worker/sim_api/rl_plugin_api.h"
 
 namespace rlpos::sim {
 namespace {
