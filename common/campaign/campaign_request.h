@@ -7,13 +7,9 @@
 #include <vector>
 
 #include "common/campaign/expansion.h"
+#include "common/campaign/submitted_scenario.h"
 
 namespace rlpos {
-
-struct SubmittedScenario {
-  std::string file;      // as the campaign writes it
-  std::string document;  // JSON text
-};
 
 struct SubmitLimits {
   std::size_t max_request_bytes = 4u << 20;  // campaign + documents

@@ -1,7 +1,7 @@
 #pragma once
 // The hyperparameters every algorithm shares (training length, checkpoints, seed, reward
-// standardisation): declared once here, read by worker/agent and worker/sim/train_command.cc.
-// Their keys sit in the scenario's "agent" object.
+// standardisation): declared once here, read by worker/agent and
+// worker/rl_commands/train_command.cc. Their keys sit in the scenario's "agent" object.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -12,9 +12,10 @@
 
 namespace rlpos {
 
-// The defaults are DQN's (the default algorithm); AgentCommonDefaults gives each algorithm's.
-// They were chosen on a generated training set and reported on a held-out one (docs/rl.md,
-// "Defaults chosen on scenarios nobody tuned for").
+// Four of them have a default per algorithm, which AgentCommonDefaults gives and the parser
+// starts from; the initialisers below are only the default algorithm's (dqn). They were chosen on
+// a generated training set and reported on a held-out one (docs/rl.md, "Defaults chosen on
+// scenarios nobody tuned for").
 struct AgentCommonSpec {
   bool normalise_rewards = true;
   int train_episodes = 1000;
@@ -32,11 +33,17 @@ struct AgentCommonSpec {
 // need a share of them from the baseline: from random starts alone their greedy policies missed
 // the way from there where the best cells are close to it. Several UAVs take turns, so each moves
 // in only 1/uavs of the steps: the training grows to (uavs + 1) / 2 times one UAV's (three UAVs:
-// twice), what the time budget allows (docs/rl.md).
+// twice), what the time budget allows (docs/rl.md). The docs table shows the one-UAV defaults.
 inline AgentCommonSpec AgentCommonDefaults(const std::string& algorithm, std::size_t uavs) {
   AgentCommonSpec spec;
-  if (algorithm == "ppo") {
+  if (algorithm == "dqn") {
+    spec.train_episodes = 1000;
+    spec.train_episode_steps = 25;
+    spec.baseline_start_every = 0;
+    spec.eval_interval = 50;
+  } else if (algorithm == "ppo") {
     spec.train_episodes = 4000;
+    spec.train_episode_steps = 25;
     spec.baseline_start_every = 4;
     spec.eval_interval = 100;
   } else if (algorithm == "sac") {
@@ -60,21 +67,21 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
   static const HyperparameterTable<AgentCommonSpec> table{
       "agent",
       "/agent",
-      "Every algorithm's: training length, checkpoints, seed.",
+      "Every algorithm's: training length, checkpoints, seed. Where the default differs by "
+      "algorithm, the column gives each one's.",
       {{"normalise_rewards", &AgentCommonSpec::normalise_rewards, NoRange(),
         "TD targets (and PPO's and SAC's) use rewards standardised by the running mean and "
         "standard deviation of the rewards seen so far. Not in the paper. The greedy policy of "
         "an env that never terminates (ours) is unchanged by it, but the network no longer has "
         "to resolve 1 % differences (scenario A) on top of a large constant"},
        {"train_episodes", &AgentCommonSpec::train_episodes, Integers(1, 1000000),
-        "training episodes. Default per algorithm with one UAV: dqn 1000, ppo 4000, sac 2500; with "
-        "n UAVs, (n + 1) / 2 times as many"},
+        "training episodes. The default is one UAV's; with n UAVs, (n + 1) / 2 times as many"},
        {"train_episode_steps", &AgentCommonSpec::train_episode_steps, Integers(0, 1000000),
         "a training episode ends (truncated, as Gymnasium's max_episode_steps) after this many "
         "steps; checkpoints and the evaluation fly the env's whole episode. 0: the env's "
         "episode (env.episode_duration / env.decision_interval steps). With exploring starts, "
         "many short episodes from many starts teach more than a few long ones: 25 steps (125 m "
-        "at 5 m a move) cross the zone. Default per algorithm: dqn 25, ppo 25, sac 10"},
+        "at 5 m a move) cross the zone"},
        {"exploring_starts", &AgentCommonSpec::exploring_starts, NoRange(),
         "each training episode starts every UAV at a point of its zone drawn from the episode's "
         "seed, on the lattice of env.step moves through its baseline; checkpoints and the "
@@ -84,8 +91,8 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
        {"baseline_start_every", &AgentCommonSpec::baseline_start_every, Integers(0, 1000000),
         "with exploring starts, every this many-th training episode starts from the baseline "
         "instead, as the checkpoints and the evaluation do, so that the policy also learns the "
-        "way from there. 0: none. Default per algorithm: ppo and sac 4 (from random starts alone, "
-        "their greedy policies missed cells a few moves above the baseline), dqn 0"},
+        "way from there. 0: none. PPO's and SAC's default has some: from random starts alone, "
+        "their greedy policies missed cells a few moves above the baseline"},
        {"eval_episodes", &AgentCommonSpec::eval_episodes, Integers(1, 1000000),
         "greedy evaluation episodes after training"},
        {"eval_interval", &AgentCommonSpec::eval_interval, Integers(0, 1000000),
@@ -93,8 +100,7 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
         "from the evaluation's seed scores the policy by its final reward; the best-scoring "
         "policy (the latest of equals) is kept, evaluated and saved (as Stable-Baselines3's "
         "EvalCallback keeps best_model). 0: the last policy. Each checkpoint costs one episode "
-        "(at packet level, a full simulation). Default per algorithm: dqn 50, ppo 100, sac "
-        "100"},
+        "(at packet level, a full simulation)"},
        {"early_stop_checkpoints", &AgentCommonSpec::early_stop_checkpoints, Integers(0, 1000000),
         "training stops after this many checkpoints in a row without a greedy reward above the "
         "kept policy's (needs eval_interval > 0); the kept policy answers, as without it. 0: "

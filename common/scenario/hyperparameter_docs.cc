@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "common/scenario/scenario.h"
+#include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
 namespace {
@@ -38,16 +39,42 @@ std::string TypeText() {
   return std::is_integral_v<T> ? "integer" : "real";
 }
 
+// One algorithm's defaults for a table: its name and the spec that holds them.
 template <typename Spec>
-HyperparameterSection DescribeTable(const HyperparameterTable<Spec>& table) {
+using NamedDefaults = std::vector<std::pair<std::string, Spec>>;
+
+// The default cell: the value all `defaults` share, or each algorithm's.
+std::string DefaultText(const std::vector<std::pair<std::string, std::string>>& defaults) {
+  bool same = true;
+  for (const auto& d : defaults)
+    same = same && d.second == defaults.front().second;
+  if (same)
+    return defaults.front().second;
+  std::string text;
+  for (const auto& d : defaults)
+    text += (text.empty() ? "" : ", ") + d.first + " " + d.second;
+  return text;
+}
+
+// `table`'s rows, with the defaults of each algorithm in `defaults` (at least one).
+template <typename Spec>
+HyperparameterSection DescribeTable(const HyperparameterTable<Spec>& table,
+                                    const NamedDefaults<Spec>& defaults) {
   HyperparameterSection out{table.section, table.path, table.summary, {}};
   std::string prefix = std::string(table.path).substr(1);
   for (auto& c : prefix)
     c = (c == '/') ? '.' : c;
-  nlohmann::json defaults;
-  WriteHyperparameters(Spec{}, table, defaults);
+  std::vector<std::pair<std::string, nlohmann::json>> values;
+  for (const auto& [algorithm, spec] : defaults) {
+    values.emplace_back(algorithm, nlohmann::json::object());
+    WriteHyperparameters(spec, table, values.back().second);
+  }
   for (const auto& h : table.entries) {
-    HyperparameterRow row{prefix + "." + h.key, "", defaults.at(h.key).dump(), "", h.doc, h.range};
+    std::vector<std::pair<std::string, std::string>> texts;
+    for (const auto& [algorithm, json] : values)
+      texts.emplace_back(algorithm, json.at(h.key).dump());
+    HyperparameterRow row{
+        prefix + "." + h.key, "", texts.front().second, DefaultText(texts), "", h.doc, h.range};
     std::visit(
         [&](auto member) {
           using T = std::decay_t<decltype(std::declval<Spec&>().*member)>;
@@ -72,19 +99,34 @@ std::string Cell(const std::string& text) {
   return out;
 }
 
+// The shared keys, with the one-UAV defaults of each of `algorithms`.
+HyperparameterSection DescribeShared(const std::vector<std::string>& algorithms) {
+  NamedDefaults<AgentCommonSpec> defaults;
+  for (const auto& algorithm : algorithms)
+    defaults.emplace_back(algorithm, AgentCommonDefaults(algorithm, 1));
+  return DescribeTable(AgentCommonHyperparameters(), defaults);
+}
+
+// An algorithm's own keys, with the defaults its spec declares.
+template <typename Spec>
+HyperparameterSection DescribeOwn(const HyperparameterTable<Spec>& table) {
+  return DescribeTable(table, NamedDefaults<Spec>{{table.section, Spec{}}});
+}
+
 }  // namespace
 
 std::vector<HyperparameterSection> AllHyperparameterSections() {
-  return {DescribeTable(AgentCommonHyperparameters()), DescribeTable(DqnHyperparameters()),
-          DescribeTable(PpoHyperparameters()), DescribeTable(SacHyperparameters())};
+  return {DescribeShared(AllAlgorithms()), DescribeOwn(DqnHyperparameters()),
+          DescribeOwn(PpoHyperparameters()), DescribeOwn(SacHyperparameters())};
 }
 
 std::vector<HyperparameterSection> HyperparameterSectionsFor(const std::string& algorithm) {
-  std::vector<HyperparameterSection> out;
+  if (algorithm.empty())
+    return AllHyperparameterSections();
+  std::vector<HyperparameterSection> out{DescribeShared({algorithm})};
   for (auto& section : AllHyperparameterSections()) {
-    if (algorithm.empty() || section.section == "agent" || section.section == algorithm) {
+    if (section.section == algorithm)
       out.push_back(std::move(section));
-    }
   }
   return out;
 }
@@ -101,7 +143,7 @@ std::string HyperparametersMarkdown(const std::vector<HyperparameterSection>& se
         << "| key | type | default | range | |\n"
         << "|---|---|---|---|---|\n";
     for (const auto& row : section.rows) {
-      out << "| `" << row.key << "` | " << row.type << " | " << Cell(row.default_value) << " | "
+      out << "| `" << row.key << "` | " << row.type << " | " << Cell(row.default_text) << " | "
           << Cell(row.range) << " | " << Cell(row.doc) << " |\n";
     }
   }

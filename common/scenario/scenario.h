@@ -1,6 +1,7 @@
 #pragma once
-// The scenario model: everything one experiment needs, with the paper's Table I and II defaults.
-// Plain data, no ns-3: the worker turns it into ns-3 objects.
+// The scenario model: everything one experiment needs. Defaults follow the paper's Tables I and
+// II where it gives a value; where ours differ, the declaration says so (e.g.
+// dqn_hyperparameters.h). Plain data, no ns-3: the worker turns it into ns-3 objects.
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -141,12 +142,14 @@ struct EnvSpec {
 };
 
 // The agent: its algorithm, network and hyperparameters. Each algorithm declares its own in
-// one file (scenario/dqn_hyperparameters.h, ppo_..., sac_..., agent_... for the shared ones).
-// DQN's and the shared keys sit in "agent" itself (DQN came first): so they are bases, and
-// agent.learning_rate reads the same in C++ as in JSON.
-struct AgentSpec : DqnSpec, AgentCommonSpec {
+// one file (scenario/dqn_hyperparameters.h, ppo_..., sac_...) and reads only its own member;
+// the keys every algorithm shares (agent_hyperparameters.h) are the base, as their keys sit in
+// "agent" itself. DQN's keys sit in "agent" too (DQN came first), but in C++ they are
+// agent.dqn: a PPO or SAC that named DQN's gamma or replay would not compile.
+struct AgentSpec : AgentCommonSpec {
   std::string algorithm = "dqn";  // dqn | ppo | sac (sac needs env.action_space "continuous")
   std::vector<int> hidden = {32, 32};
+  DqnSpec dqn;
   PpoSpec ppo;
   SacSpec sac;
 };

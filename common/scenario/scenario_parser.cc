@@ -311,19 +311,25 @@ AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   static_cast<AgentCommonSpec&>(a) = AgentCommonDefaults(a.algorithm, uavs);
   if (const json* h = r.Child("hidden"))
     a.hidden = ReadHidden(*h, r.PathOf("hidden"));
-  ReadHyperparameters(r, DqnHyperparameters(), static_cast<DqnSpec&>(a));
+  ReadHyperparameters(r, DqnHyperparameters(), a.dqn);
   ReadHyperparameters(r, AgentCommonHyperparameters(), static_cast<AgentCommonSpec&>(a));
   if (const json* p = r.Child("ppo"))
     a.ppo = ReadAlgorithm(*p, PpoHyperparameters());
-  if (const json* p = r.Child("sac"))
-    a.sac = ReadAlgorithm(*p, SacHyperparameters());
+  const json* sac = r.Child("sac");
+  if (sac)
+    a.sac = ReadAlgorithm(*sac, SacHyperparameters());
+  // SAC's replay read DQN's agent.replay_capacity before it had its own: a SAC scenario that
+  // sets only that one keeps its replay.
+  if (a.algorithm == "sac" && r.Has("replay_capacity") &&
+      !(sac && sac->contains("replay_capacity")))
+    a.sac.replay_capacity = a.dqn.replay_capacity;
   r.Finish();
   return a;
 }
 
 json AgentJson(const AgentSpec& a) {
   json agent = {{"algorithm", a.algorithm}, {"hidden", a.hidden}};
-  WriteHyperparameters<DqnSpec>(a, DqnHyperparameters(), agent);
+  WriteHyperparameters(a.dqn, DqnHyperparameters(), agent);
   WriteHyperparameters<AgentCommonSpec>(a, AgentCommonHyperparameters(), agent);
   WriteHyperparameters(a.ppo, PpoHyperparameters(), agent["ppo"]);
   WriteHyperparameters(a.sac, SacHyperparameters(), agent["sac"]);

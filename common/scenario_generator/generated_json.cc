@@ -1,120 +1,134 @@
 #include "common/scenario_generator/generated_json.h"
 
+#include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <iterator>
+
+#include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using nlohmann::json;
+using Ordered = nlohmann::ordered_json;
 
-// 12 -> 12, 12.5 -> 12.5 (nlohmann writes a double 12 as 12.0).
-Json Number(double v) {
-  if (std::floor(v) == v && std::fabs(v) < 1e15)
-    return static_cast<long long>(v);
-  return v;
+// The shipped scenarios' key order, one list for every object of the document: no two of its
+// objects order the same two keys differently (top level; venue; building; UE; UAV and its zone;
+// Wi-Fi; an ns-3 object and the ITU-R models' attributes; traffic; simulation). Keys not listed
+// follow in alphabetical order, so that a field ToJson gains is written, not lost.
+const std::vector<std::string>& KeyOrder() {
+  static const std::vector<std::string> order{"name",
+                                              "description",
+                                              "venue",
+                                              "buildings",
+                                              "ues",
+                                              "uav",
+                                              "uavs",
+                                              "wifi",
+                                              "traffic",
+                                              "propagation",
+                                              "simulation",
+                                              "log_level",
+                                              "position",
+                                              "demand",
+                                              "zone",
+                                              "standard",
+                                              "channel",
+                                              "width",
+                                              "depth",
+                                              "x",
+                                              "y",
+                                              "z",
+                                              "height",
+                                              "floors",
+                                              "rooms",
+                                              "type",
+                                              "attributes",
+                                              "walls",
+                                              "guard_interval",
+                                              "spatial_streams",
+                                              "tx_power",
+                                              "antenna_gain",
+                                              "noise_floor",
+                                              "rate_manager",
+                                              "mode",
+                                              "rts_cts",
+                                              "protocol",
+                                              "packet_size",
+                                              "LosModel",
+                                              "NlosModel",
+                                              "RooftopLevel",
+                                              "StreetsWidth",
+                                              "BuildingSeparation",
+                                              "duration",
+                                              "warmup",
+                                              "seed",
+                                              "run"};
+  return order;
 }
 
-Json Interval(double lo, double hi) {
-  return Json::array({Number(lo), Number(hi)});
-}
-
-Json Position(const Vec3& p) {
-  return Json::array({Number(p.x), Number(p.y), Number(p.z)});
-}
-
-Json Buildings(const Scenario& s) {
-  Json buildings = Json::array();
-  for (const auto& b : s.buildings) {
-    buildings.push_back({{"name", b.name},
-                         {"x", Interval(b.xmin, b.xmax)},
-                         {"y", Interval(b.ymin, b.ymax)},
-                         {"height", Number(b.height)},
-                         {"floors", b.floors},
-                         {"rooms", {b.rooms_x, b.rooms_y}},
-                         {"type", b.type},
-                         {"walls", b.walls}});
+// `value` laid out: objects' keys in KeyOrder, whole numbers as integers (nlohmann writes a
+// double 12 as 12.0), and an ns-3 object's empty "attributes" left out.
+Ordered Laid(const json& value) {
+  if (value.is_object()) {
+    std::vector<std::string> keys;
+    for (const auto& item : value.items())
+      keys.push_back(item.key());
+    const auto& order = KeyOrder();
+    const auto rank = [&](const std::string& key) {
+      return std::distance(order.begin(), std::find(order.begin(), order.end(), key));
+    };
+    std::stable_sort(keys.begin(), keys.end(),
+                     [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+    Ordered out = Ordered::object();
+    for (const auto& key : keys) {
+      const json& v = value.at(key);
+      if (key == "attributes" && v.is_object() && v.empty())
+        continue;
+      out[key] = Laid(v);
+    }
+    return out;
   }
-  return buildings;
-}
-
-Json Ues(const Scenario& s) {
-  Json ues = Json::array();
-  for (const auto& u : s.ues) {
-    ues.push_back({{"name", u.name},
-                   {"position", Position(u.position)},
-                   {"demand", {{"mcs", u.demand_mcs}}}});
+  if (value.is_array()) {
+    Ordered out = Ordered::array();
+    for (const auto& v : value)
+      out.push_back(Laid(v));
+    return out;
   }
-  return ues;
-}
-
-Json Uav(const UavSpec& u, bool listed) {
-  Json uav = Json::object();
-  if (listed)
-    uav["name"] = u.name;
-  uav["position"] = Position(u.initial);
-  const Box& z = u.zone;
-  uav["zone"] = {{"x", Interval(z.xmin, z.xmax)},
-                 {"y", Interval(z.ymin, z.ymax)},
-                 {"z", Interval(z.zmin, z.zmax)}};
-  if (u.channel > 0)
-    uav["channel"] = u.channel;
-  return uav;
-}
-
-// The shipped scenarios' propagation: ITU-R P.1411 with their over-rooftop parameters where
-// there are buildings, its defaults in free space (as scenario A).
-Json Propagation(const Scenario& s) {
-  Json nlos = {{"type", "ns3::ItuR1411NlosOverRooftopPropagationLossModel"}};
-  if (!s.buildings.empty())
-    nlos["attributes"] = {{"RooftopLevel", 12}, {"StreetsWidth", 20}, {"BuildingSeparation", 30}};
-  return {
-      {"type", "ns3::ObstacleAwarePropagationLossModel"},
-      {"attributes",
-       {{"LosModel", {{"type", "ns3::ItuR1411LosPropagationLossModel"}}}, {"NlosModel", nlos}}}};
-}
-
-Json Wifi(const WifiSpec& w) {
-  return {{"standard", w.standard},
-          {"channel", w.channel},
-          {"width", w.width_mhz},
-          {"guard_interval", w.guard_interval_ns},
-          {"spatial_streams", w.spatial_streams},
-          {"tx_power", Number(w.tx_power_dbm)},
-          {"antenna_gain", Number(w.antenna_gain_dbi)},
-          {"noise_floor", Number(w.noise_floor_dbm)},
-          {"rate_manager", {{"type", w.rate_manager.type}}},
-          {"mode", w.mode},
-          {"rts_cts", w.rts_cts}};
+  if (value.is_number_float()) {
+    const double v = value.get<double>();
+    if (std::floor(v) == v && std::fabs(v) < 1e15)
+      return static_cast<long long>(v);
+    return v;
+  }
+  if (value.is_number_unsigned())
+    return value.get<unsigned long long>();
+  if (value.is_number_integer())
+    return value.get<long long>();
+  if (value.is_string())
+    return value.get<std::string>();
+  if (value.is_boolean())
+    return value.get<bool>();
+  return nullptr;
 }
 
 }  // namespace
 
+ObjectSpec GeneratedPropagation(bool has_buildings) {
+  json nlos = {{"type", "ns3::ItuR1411NlosOverRooftopPropagationLossModel"}};
+  if (has_buildings)
+    nlos["attributes"] = {{"RooftopLevel", 12}, {"StreetsWidth", 20}, {"BuildingSeparation", 30}};
+  return {"ns3::ObstacleAwarePropagationLossModel",
+          {{"LosModel", {{"type", "ns3::ItuR1411LosPropagationLossModel"}}}, {"NlosModel", nlos}}};
+}
+
 std::string GeneratedJsonText(const Scenario& s) {
-  Json doc;
-  doc["name"] = s.name;
-  doc["description"] = s.description;
-  doc["venue"] = {{"width", Number(s.venue.width)},
-                  {"depth", Number(s.venue.depth)},
-                  {"height", Number(s.venue.height)}};
-  doc["buildings"] = Buildings(s);
-  doc["ues"] = Ues(s);
-  if (s.uavs_listed) {
-    doc["uavs"] = Json::array();
-    for (const auto& u : s.uavs)
-      doc["uavs"].push_back(Uav(u, true));
-  } else {
-    doc["uav"] = Uav(s.uavs.front(), false);
-  }
-  doc["wifi"] = Wifi(s.wifi);
-  doc["traffic"] = {{"protocol", s.traffic.protocol}, {"packet_size", s.traffic.packet_size}};
-  doc["propagation"] = Propagation(s);
-  doc["simulation"] = {{"duration", Number(s.simulation.duration)},
-                       {"warmup", Number(s.simulation.warmup)},
-                       {"seed", s.simulation.seed},
-                       {"run", s.simulation.run}};
-  doc["log_level"] = s.log_level;
-  return doc.dump(2) + "\n";
+  json doc = ToJson(s);
+  doc.erase("env");
+  doc.erase("agent");
+  for (auto& ue : doc.at("ues"))
+    ue.erase("mobility");
+  return Laid(doc).dump(2) + "\n";
 }
 
 }  // namespace rlpos

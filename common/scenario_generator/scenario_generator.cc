@@ -38,6 +38,7 @@ std::optional<Scenario> DrawScenario(const GeneratorOptions& o, PortableRandom& 
   s.ues = ues->ues;
   s.uavs = BaselineUavs(s.venue, s.buildings, o.uavs);
   s.uavs_listed = o.uavs > 1;
+  s.propagation = GeneratedPropagation(!s.buildings.empty());
   s.description = "Generated " + StyleName(*o.style) + " scenario: " + layout->summary + "; " +
                   ues->summary + "; " + Plural(o.uavs, "UAV") + ", baseline " +
                   BaselineSummary(s.venue, s.buildings) + ". Reproduce: " + GenerateCommandLine(o) +

@@ -43,7 +43,7 @@ std::vector<int> ReadLayers(Rlpos3Object& hyper) {
 }
 
 // TF-Agents' epsilon: a polynomial decay from 1 to finalValue over decaySteps while training.
-void ReadEpsilon(Rlpos3Object& hyper, AgentSpec& a) {
+void ReadEpsilon(Rlpos3Object& hyper, DqnSpec& a) {
   Rlpos3Object epsilon = hyper.OptionalObject("epsilon");
   a.epsilon_start = 1.0;
   a.epsilon_decay_steps =
@@ -67,11 +67,12 @@ void ReadHyperParameters(Rlpos3Object& hyper, AgentSpec& a) {
     a.exploring_starts = false;
     a.eval_interval = 0;
   }
-  a.replay_capacity = hyper.Integer("replayBufferMaxLength", a.replay_capacity, 0, LLONG_MAX);
-  a.batch_size = static_cast<int>(hyper.Integer("batchSize", a.batch_size, 0, INT_MAX));
-  a.learning_rate = hyper.Number("learningRate", a.learning_rate);
-  a.gamma = hyper.Number("discount", a.gamma);
-  ReadEpsilon(hyper, a);
+  DqnSpec& dqn = a.dqn;
+  dqn.replay_capacity = hyper.Integer("replayBufferMaxLength", dqn.replay_capacity, 0, LLONG_MAX);
+  dqn.batch_size = static_cast<int>(hyper.Integer("batchSize", dqn.batch_size, 0, INT_MAX));
+  dqn.learning_rate = hyper.Number("learningRate", dqn.learning_rate);
+  dqn.gamma = hyper.Number("discount", dqn.gamma);
+  ReadEpsilon(hyper, dqn);
   hyper.Finish();
 }
 

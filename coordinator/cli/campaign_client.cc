@@ -26,8 +26,7 @@ msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission, bool us
   request.kind = msg::RequestKind::kSubmit;
   request.no_cache = !use_cache;
   request.campaign_json = submission.campaign_json;
-  for (const auto& s : submission.scenarios)
-    request.scenarios.push_back({s.file, s.document});
+  request.scenarios = submission.scenarios;
   return request;
 }
 

@@ -90,11 +90,8 @@ void CoordinatorDaemon::HandleRequests() {
     try {
       switch (r.data.kind) {
         case msg::RequestKind::kSubmit: {
-          std::vector<SubmittedScenario> scenarios;
-          for (auto& file : r.data.scenarios)
-            scenarios.push_back({std::move(file.file), std::move(file.document)});
           CampaignPlan campaign =
-              PlanSubmittedCampaign(r.data.campaign_json, scenarios, options_.limits);
+              PlanSubmittedCampaign(r.data.campaign_json, r.data.scenarios, options_.limits);
           campaign.use_cache = !r.data.no_cache;
           const SubmitResult result = store_.ledger.Submit(campaign);
           reply.campaign_id = result.campaign_id;

@@ -2,56 +2,41 @@
 
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <sstream>
+#include <stdexcept>
 
+#include "common/csv/csv_table.h"
 #include "common/store/artifact_files.h"
 #include "coordinator/reporting/csv_cells.h"
 
 namespace rlpos {
 namespace {
 
-std::vector<std::string> SplitCsvLine(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream row(line);
-  for (std::string cell; std::getline(row, cell, ',');)
-    cells.push_back(cell);
-  return cells;
-}
-
 // Points of one learning_curve.csv (rlpos-sim train's columns, found by name).
 std::vector<LearningCurvePoint> ReadCurveFile(const std::string& file, const ArtifactRecord& a) {
   std::ifstream in(file);
   if (!in)
     throw std::runtime_error("cannot read");
-  std::string line;
-  if (!std::getline(in, line))
-    throw std::runtime_error("empty");
-  std::map<std::string, std::size_t> column;
-  const auto header = SplitCsvLine(line);
-  for (std::size_t i = 0; i < header.size(); ++i)
-    column[header[i]] = i;
-  for (const char* needed : {"episode", "phase", "total_reward", "epsilon"}) {
-    if (!column.count(needed))
-      throw std::runtime_error(std::string("no column ") + needed);
-  }
+  const CsvTable table = ReadCsvTable(in);
+  const std::size_t episode = table.Column("episode");
+  const std::size_t phase = table.Column("phase");
+  const std::size_t total_reward = table.Column("total_reward");
+  const std::size_t epsilon = table.Column("epsilon");
+  const std::size_t mean_loss = table.Find("mean_loss");
   std::vector<LearningCurvePoint> points;
-  while (std::getline(in, line)) {
-    const auto cells = SplitCsvLine(line);
-    if (cells.size() != header.size())
-      throw std::runtime_error("a row of " + std::to_string(cells.size()) + " cells");
+  for (const CsvRow& row : table.rows) {
     LearningCurvePoint p;
     p.scenario = a.scenario;
     p.label = a.label;
     try {
-      p.episode = std::stoi(cells[column["episode"]]);
-      p.phase = cells[column["phase"]];
-      p.total_reward = std::stod(cells[column["total_reward"]]);
-      p.epsilon = std::stod(cells[column["epsilon"]]);
-      if (column.count("mean_loss"))
-        p.mean_loss = std::stod(cells[column["mean_loss"]]);
+      p.episode = std::stoi(row.cells[episode]);
+      p.phase = row.cells[phase];
+      p.total_reward = std::stod(row.cells[total_reward]);
+      p.epsilon = std::stod(row.cells[epsilon]);
+      if (mean_loss != std::string::npos)
+        p.mean_loss = std::stod(row.cells[mean_loss]);
     } catch (const std::logic_error&) {
-      throw std::runtime_error("a cell that is not a number in: " + line.substr(0, 80));
+      throw std::runtime_error("line " + std::to_string(row.line) +
+                               ": a cell that is not a number");
     }
     points.push_back(std::move(p));
   }

@@ -190,7 +190,8 @@ int RunCommand(CommandLine& cli) {
     return ListOrExportArtifacts(cli.db, cli.campaign_id, cli.artifacts_out);
   if (cli.serve->parsed()) {
     cli.serve_options.db = cli.db;
-    return web::RunServe(cli.serve_options);
+    web::RunServe(cli.serve_options);
+    return kExitOk;
   }
   if (cli.cancel->parsed())
     return CancelCampaign(cli.campaign_id, cli.dds, cli.timeout_s);

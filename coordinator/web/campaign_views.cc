@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include "coordinator/cli/progress_text.h"
 #include "coordinator/reporting/optimality.h"
+#include "coordinator/reporting/progress_text.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/uav_summary.h"
 

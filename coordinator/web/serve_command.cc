@@ -8,7 +8,6 @@
 #include "common/process/stop_signal.h"
 #include "common/store/results_reader.h"
 #include "common/store/store_db.h"
-#include "coordinator/cli/campaign_commands.h"
 #include "coordinator/web/http_server.h"
 
 namespace rlpos::web {
@@ -30,7 +29,7 @@ std::string UrlOf(const ListenAddress& address, int port) {
 
 }  // namespace
 
-int RunServe(const ServeOptions& options) {
+void RunServe(const ServeOptions& options) {
   const ListenAddress address = ParseListenAddress(options.listen);
   if (!IsLoopback(address.host) && options.token_file.empty()) {
     throw std::invalid_argument("--listen " + options.listen +
@@ -50,7 +49,6 @@ int RunServe(const ServeOptions& options) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   server.Stop();
   serving.join();
-  return kExitOk;
 }
 
 }  // namespace rlpos::web

@@ -10,8 +10,8 @@ struct ServeOptions {
   std::string token_file;                 // required for an address other than the loopback
 };
 
-// Serves until SIGINT/SIGTERM; returns the exit code. Bad options, an unreadable database or an
-// address in use throw (std::invalid_argument, StoreError, std::runtime_error).
-int RunServe(const ServeOptions& options);
+// Serves until SIGINT/SIGTERM, then returns. Bad options, an unreadable database or an address
+// in use throw (std::invalid_argument, StoreError, std::runtime_error).
+void RunServe(const ServeOptions& options);
 
 }  // namespace rlpos::web

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/campaign/submitted_scenario.h"
 #include "common/provenance/provenance.h"
 #include "common/wire/artifacts.h"
 #include "common/wire/job_order.h"
@@ -40,18 +41,13 @@ struct JobEvent {
 
 enum class RequestKind { kSubmit, kCancel, kRetry };
 
-struct ScenarioFile {
-  std::string file;      // as the campaign writes it
-  std::string document;  // the JSON text the client read
-};
-
 struct CampaignRequest {
   std::string request_id;
   RequestKind kind = RequestKind::kSubmit;
   std::string campaign_id;
-  std::string campaign_json;  // submit: the campaign file as written
-  std::vector<ScenarioFile> scenarios;
-  bool no_cache = false;  // submit: every job runs, none takes a cached result
+  std::string campaign_json;                 // submit: the campaign file as written
+  std::vector<SubmittedScenario> scenarios;  // submit: the scenario files, as the client read them
+  bool no_cache = false;                     // submit: every job runs, none takes a cached result
 };
 
 struct CampaignReply {

@@ -310,11 +310,8 @@ TEST(WireFuzz, CampaignRequestDecoderCheckAndExpansion) {
     if (ok && r.data.kind == msg::RequestKind::kSubmit) {
       ok = Accepts(
           [&] {
-            std::vector<SubmittedScenario> scenarios;
-            for (const auto& s : r.data.scenarios)
-              scenarios.push_back({s.file, s.document});
             const CampaignPlan plan =
-                PlanSubmittedCampaign(r.data.campaign_json, scenarios, limits);
+                PlanSubmittedCampaign(r.data.campaign_json, r.data.scenarios, limits);
             EXPECT_LE(plan.JobCount(), limits.max_jobs) << i;
             EXPECT_GT(plan.JobCount(), 0u) << i;
             return true;

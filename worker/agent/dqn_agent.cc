@@ -14,6 +14,7 @@ namespace rlpos {
 
 struct DqnAgent::Impl {
   AgentSpec spec;
+  DqnSpec dqn;
   int observation_dim;
   int action_count;
   torch::nn::Sequential online{nullptr};
@@ -28,17 +29,18 @@ struct DqnAgent::Impl {
 
   Impl(const AgentSpec& s, int obs_dim, int actions)
       : spec(s),
+        dqn(s.dqn),
         observation_dim(obs_dim),
         action_count(actions),
-        replay(static_cast<std::size_t>(s.replay_capacity)),
-        epsilon{s.epsilon_start, s.epsilon_end, s.epsilon_decay_steps},
+        replay(static_cast<std::size_t>(s.dqn.replay_capacity)),
+        epsilon{s.dqn.epsilon_start, s.dqn.epsilon_end, s.dqn.epsilon_decay_steps},
         rng(s.seed) {
     torch::manual_seed(s.seed);  // weight initialisation
     online = MakeMlp(s.hidden, obs_dim, actions);
     target = MakeMlp(s.hidden, obs_dim, actions);
     CopyParameters(online, target);
-    optimizer = std::make_unique<torch::optim::Adam>(online->parameters(),
-                                                     torch::optim::AdamOptions(s.learning_rate));
+    optimizer = std::make_unique<torch::optim::Adam>(
+        online->parameters(), torch::optim::AdamOptions(s.dqn.learning_rate));
   }
 
   torch::Tensor Batch(const std::vector<std::size_t>& indices, bool next) const {
@@ -50,7 +52,7 @@ struct DqnAgent::Impl {
   }
 
   double Learn() {
-    const auto indices = replay.SampleIndices(static_cast<std::size_t>(spec.batch_size), rng);
+    const auto indices = replay.SampleIndices(static_cast<std::size_t>(dqn.batch_size), rng);
     const long n = static_cast<long>(indices.size());
     torch::Tensor obs = Batch(indices, false);
     torch::Tensor next = Batch(indices, true);
@@ -79,14 +81,14 @@ struct DqnAgent::Impl {
           masked ? MaskPenalty(next_masks, action_count, -INFINITY) : torch::Tensor();
       const auto allowed_only = [&](const torch::Tensor& q) { return masked ? q + penalty : q; };
       torch::Tensor best;
-      if (spec.double_dqn) {
+      if (dqn.double_dqn) {
         // The online network picks the action, the target network values it.
         const torch::Tensor pick = allowed_only(online->forward(next)).argmax(1, true);
         best = next_q.gather(1, pick).squeeze(1);
       } else {
         best = std::get<0>(allowed_only(next_q).max(1));
       }
-      target_q = rewards + static_cast<float>(spec.gamma) * not_terminal * best;
+      target_q = rewards + static_cast<float>(dqn.gamma) * not_terminal * best;
     }
     torch::Tensor q = online->forward(obs).gather(1, actions.unsqueeze(1)).squeeze(1);
     torch::Tensor loss = torch::mse_loss(q, target_q);
@@ -142,11 +144,11 @@ std::optional<double> DqnAgent::Observe(Transition transition) {
   m.replay.Add(std::move(transition));
   ++m.steps;
   std::optional<double> loss;
-  if (m.steps >= m.spec.warmup_steps &&
-      m.replay.Size() >= static_cast<std::size_t>(std::max<std::int64_t>(m.spec.batch_size, 1))) {
+  if (m.steps >= m.dqn.warmup_steps &&
+      m.replay.Size() >= static_cast<std::size_t>(std::max<std::int64_t>(m.dqn.batch_size, 1))) {
     loss = m.Learn();
   }
-  if (m.steps % m.spec.target_update_interval == 0)
+  if (m.steps % m.dqn.target_update_interval == 0)
     CopyParameters(m.online, m.target);
   return loss;
 }

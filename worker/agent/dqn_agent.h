@@ -1,7 +1,8 @@
 #pragma once
 // Deep Q-Network (libtorch): an MLP Q-function, experience replay, a target network, epsilon-
-// greedy behaviour; Double DQN as an option. Defaults are the paper's Table II. Seeded: the same
-// seed, spaces and transitions give the same network.
+// greedy behaviour; Double DQN as an option. It reads only its own settings (AgentSpec::dqn,
+// common/scenario/dqn_hyperparameters.h, which says which are the paper's Table II) and the
+// shared ones. Seeded: the same seed, spaces and transitions give the same network.
 #include <memory>
 
 #include "common/scenario/scenario.h"

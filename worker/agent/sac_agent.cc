@@ -45,7 +45,7 @@ struct SacAgent::Impl {
         observation_dim(obs_dim),
         action_dim(act_dim),
         target_entropy(-static_cast<double>(act_dim)),
-        replay(static_cast<std::size_t>(s.replay_capacity)),
+        replay(static_cast<std::size_t>(s.sac.replay_capacity)),
         rng(s.seed) {
     torch::manual_seed(s.seed);  // weight initialisation and the policy's noise
     actor = MakeMlp(s.hidden, obs_dim, 2 * act_dim);

@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <fstream>
-#include <map>
-#include <sstream>
+#include <stdexcept>
 
 #include "common/config/config_error.h"
+#include "common/csv/csv_table.h"
 
 namespace rlpos::map {
 namespace {
@@ -15,14 +15,6 @@ struct Row {
   std::size_t uav = 0;
   Vec3 position;
 };
-
-std::vector<std::string> Cells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  for (std::string cell; std::getline(in, cell, ',');)
-    cells.push_back(cell);
-  return cells;
-}
 
 double Number(const std::string& cell, bool& ok) {
   std::size_t used = 0;
@@ -36,18 +28,24 @@ double Number(const std::string& cell, bool& ok) {
   }
 }
 
-Row ParseRow(const std::vector<std::string>& cells, std::map<std::string, std::size_t>& column,
-             std::size_t n_uavs, const std::string& where) {
+// The columns a trajectory needs.
+struct Columns {
+  std::size_t episode, uav, x, y, z;
+};
+
+Row ParseRow(const CsvRow& csv, const Columns& column, std::size_t n_uavs,
+             const std::string& where) {
+  const auto& cells = csv.cells;
   bool ok = true;
   Row row;
-  const double episode = Number(cells[column["episode"]], ok);
-  const double uav = Number(cells[column["uav"]], ok);
-  row.position = {Number(cells[column["x"]], ok), Number(cells[column["y"]], ok),
-                  Number(cells[column["z"]], ok)};
+  const double episode = Number(cells[column.episode], ok);
+  const double uav = Number(cells[column.uav], ok);
+  row.position = {Number(cells[column.x], ok), Number(cells[column.y], ok),
+                  Number(cells[column.z], ok)};
   if (!ok)
     throw std::runtime_error(where + ": a cell that is not a number");
   if (uav < 0 || uav >= static_cast<double>(n_uavs) || uav != std::floor(uav))
-    throw std::runtime_error(where + ": UAV " + cells[column["uav"]] + " is not one of the " +
+    throw std::runtime_error(where + ": UAV " + cells[column.uav] + " is not one of the " +
                              std::to_string(n_uavs) + " of the scenario");
   row.episode = static_cast<int>(episode);
   row.uav = static_cast<std::size_t>(uav);
@@ -58,26 +56,18 @@ std::vector<Row> ReadRows(const std::string& file, std::size_t n_uavs) {
   std::ifstream in(file);
   if (!in)
     throw std::runtime_error(file + ": cannot open file");
-  std::string line;
-  if (!std::getline(in, line))
-    throw std::runtime_error(file + ": empty file");
-  std::map<std::string, std::size_t> column;
-  const auto header = Cells(line);
-  for (std::size_t i = 0; i < header.size(); ++i)
-    column[header[i]] = i;
-  for (const char* needed : {"episode", "uav", "x", "y", "z"}) {
-    if (!column.count(needed))
-      throw std::runtime_error(file + ": line 1: no column \"" + needed + "\"");
+  CsvTable table;
+  Columns column{};
+  try {
+    table = ReadCsvTable(in);
+    column = {table.Column("episode"), table.Column("uav"), table.Column("x"), table.Column("y"),
+              table.Column("z")};
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(file + ": " + e.what());
   }
   std::vector<Row> rows;
-  for (int number = 2; std::getline(in, line); ++number) {
-    const auto cells = Cells(line);
-    const std::string where = file + ": line " + std::to_string(number);
-    if (cells.size() != header.size())
-      throw std::runtime_error(where + ": " + std::to_string(cells.size()) + " cells, not " +
-                               std::to_string(header.size()));
-    rows.push_back(ParseRow(cells, column, n_uavs, where));
-  }
+  for (const CsvRow& csv : table.rows)
+    rows.push_back(ParseRow(csv, column, n_uavs, file + ": line " + std::to_string(csv.line)));
   if (rows.empty())
     throw std::runtime_error(file + ": no steps");
   return rows;

@@ -2,7 +2,8 @@
 // Inside the RL module: the implementations behind RlCommands.
 #include <string>
 
-#include "worker/sim/commands.h"
+#include "common/scenario/scenario.h"
+#include "worker/sim_api/sim_options.h"
 
 namespace rlpos::sim {
 

@@ -6,7 +6,7 @@
 #include "worker/environment/scenario_loading.h"
 #include "worker/rl_commands/policy_folder.h"
 #include "worker/rl_commands/rl_commands.h"
-#include "worker/sim/rl_plugin_api.h"
+#include "worker/sim_api/rl_plugin_api.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos::sim {

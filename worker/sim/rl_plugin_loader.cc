@@ -7,7 +7,7 @@
 #include <string>
 
 #include "worker/sim/portable_kernels.h"
-#include "worker/sim/rl_plugin_api.h"
+#include "worker/sim_api/rl_plugin_api.h"
 
 namespace rlpos::sim {
 namespace {

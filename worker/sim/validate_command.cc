@@ -70,7 +70,7 @@ int RunValidate(const CommonOptions& options, bool json) {
               scenario.wifi.rate_manager.type.c_str());
   std::printf("  propagation %s\n", scenario.propagation.type.c_str());
   if (uavs.size() == 1) {
-    std::printf("  baseline    (%g, %g, %g): nLoS %d/%zu\n", p.x, p.y, p.z, n_los, links.size());
+    std::printf("  baseline    (%g, %g, %g): in LoS %d/%zu\n", p.x, p.y, p.z, n_los, links.size());
   } else {
     for (const auto& uav : uavs) {
       std::printf("  UAV %-7s (%g, %g, %g), channel %d, serves %d UE(s)\n",
@@ -78,7 +78,7 @@ int RunValidate(const CommonOptions& options, bool json) {
                   uav["position"][1].get<double>(), uav["position"][2].get<double>(),
                   uav["channel"].get<int>(), uav["ues_served"].get<int>());
     }
-    std::printf("  baseline    nLoS %d/%zu\n", n_los, links.size());
+    std::printf("  baseline    in LoS %d/%zu\n", n_los, links.size());
   }
   for (const auto& ue : ues) {
     std::printf("    %-10s %-5s SNR %6.1f dB, demand %6.1f Mbit/s (MCS %d) %s%s\n",

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 #include "common/scenario/hyperparameter_docs.h"
 #include "common/scenario/scenario_parser.h"
@@ -106,6 +107,57 @@ TEST(Hyperparameters, TheDocsPageIsTheDeclarationsRendering) {
   page << in.rdbuf();
   EXPECT_EQ(page.str(), HyperparametersMarkdown(AllHyperparameterSections()))
       << "regenerate it: rlpos-sim describe hyperparameters > docs/hyperparameters.md";
+}
+
+// The row of `key` in `section`; fails the test when there is none.
+const HyperparameterRow& RowOf(const HyperparameterSection& section, const std::string& key) {
+  for (const auto& row : section.rows) {
+    if (row.key == key)
+      return row;
+  }
+  ADD_FAILURE() << key << " is not in " << section.section;
+  static const HyperparameterRow none{};
+  return none;
+}
+
+TEST(Hyperparameters, TheSharedKeysShowEachAlgorithmsOwnDefaults) {
+  const auto ppo = HyperparameterSectionsFor("ppo");
+  ASSERT_EQ(ppo.at(0).section, "agent");
+  EXPECT_EQ(RowOf(ppo[0], "agent.train_episodes").default_text, "4000");
+  EXPECT_EQ(RowOf(ppo[0], "agent.train_episodes").default_value, "4000");
+  EXPECT_EQ(RowOf(ppo[0], "agent.eval_interval").default_text, "100");
+  EXPECT_EQ(RowOf(ppo[0], "agent.baseline_start_every").default_text, "4");
+  const auto sac = HyperparameterSectionsFor("sac");
+  EXPECT_EQ(RowOf(sac.at(0), "agent.train_episodes").default_text, "2500");
+  EXPECT_EQ(RowOf(sac.at(0), "agent.train_episode_steps").default_text, "10");
+  EXPECT_EQ(RowOf(HyperparameterSectionsFor("dqn").at(0), "agent.train_episodes").default_text,
+            "1000");
+  // The whole page: each algorithm's where they differ, one value where they agree.
+  const auto all = AllHyperparameterSections();
+  EXPECT_EQ(RowOf(all.at(0), "agent.train_episodes").default_text, "dqn 1000, ppo 4000, sac 2500");
+  EXPECT_EQ(RowOf(all.at(0), "agent.seed").default_text, "1");
+  const std::string page = HyperparametersMarkdown(ppo);
+  EXPECT_NE(page.find("| `agent.train_episodes` | integer | 4000 |"), std::string::npos) << page;
+}
+
+// Whether AgentSpec has a member named like DQN's settings.
+template <typename T, typename = void>
+struct HasGamma : std::false_type {};
+template <typename T>
+struct HasGamma<T, std::void_t<decltype(std::declval<T&>().gamma)>> : std::true_type {};
+template <typename T, typename = void>
+struct HasReplayCapacity : std::false_type {};
+template <typename T>
+struct HasReplayCapacity<T, std::void_t<decltype(std::declval<T&>().replay_capacity)>>
+    : std::true_type {};
+
+TEST(Hyperparameters, NoAlgorithmReadsAnothersThroughTheAgent) {
+  // PPO's and SAC's code sees the whole AgentSpec: a DQN setting there would read as its own.
+  EXPECT_FALSE((std::is_base_of_v<DqnSpec, AgentSpec>));
+  EXPECT_FALSE(HasGamma<AgentSpec>::value);
+  EXPECT_FALSE(HasReplayCapacity<AgentSpec>::value);
+  EXPECT_TRUE(HasGamma<PpoSpec>::value);
+  EXPECT_TRUE(HasReplayCapacity<SacSpec>::value);
 }
 
 TEST(Hyperparameters, AnAlgorithmsTablesAreTheSharedOneAndItsOwn) {

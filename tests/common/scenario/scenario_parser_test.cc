@@ -114,6 +114,35 @@ TEST(ScenarioParser, TrainingDefaultsFollowTheAlgorithmAndTheUavCount) {
   EXPECT_EQ(set.eval_interval, 100);
 }
 
+TEST(ScenarioParser, SacHasItsOwnReplayAndStillReadsTheOneItUsedToShareWithDqn) {
+  const auto agent_of = [](const std::string& algorithm, std::vector<std::string> overrides) {
+    json doc = ScenarioB();
+    ApplyOverrides(doc, AlgorithmOverrides(algorithm));
+    ApplyOverrides(doc, overrides);
+    return ParseScenario(doc).agent;
+  };
+  EXPECT_EQ(agent_of("sac", {}).sac.replay_capacity, 1000000);
+  EXPECT_EQ(agent_of("sac", {"agent.sac.replay_capacity=7000"}).sac.replay_capacity, 7000);
+  // SAC's replay read agent.replay_capacity before it had its own: such a scenario keeps it.
+  const AgentSpec old_key = agent_of("sac", {"agent.replay_capacity=5000"});
+  EXPECT_EQ(old_key.sac.replay_capacity, 5000);
+  EXPECT_EQ(agent_of("sac", {"agent.replay_capacity=5000", "agent.sac.replay_capacity=7000"})
+                .sac.replay_capacity,
+            7000);
+  // DQN's is DQN's: another algorithm's replay does not move with it.
+  const AgentSpec dqn = agent_of("dqn", {"agent.replay_capacity=5000"});
+  EXPECT_EQ(dqn.dqn.replay_capacity, 5000);
+  EXPECT_EQ(dqn.sac.replay_capacity, 1000000);
+  EXPECT_EQ(agent_of("dqn", {"agent.sac.replay_capacity=7000"}).dqn.replay_capacity, 1000000);
+  // The effective scenario names SAC's own, and reads back the same.
+  json doc = ScenarioB();
+  ApplyOverrides(doc, AlgorithmOverrides("sac"));
+  ApplyOverrides(doc, {"agent.replay_capacity=5000"});
+  const json written = ToJson(ParseScenario(doc));
+  EXPECT_EQ(written.at("agent").at("sac").at("replay_capacity"), 5000);
+  EXPECT_EQ(ParseScenario(written).agent.sac.replay_capacity, 5000);
+}
+
 TEST(ScenarioParser, ToJsonRoundTrips) {
   const Scenario s = ParseScenario(ScenarioB());
   const Scenario again = ParseScenario(ToJson(s));

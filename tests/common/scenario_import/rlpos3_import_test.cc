@@ -112,13 +112,13 @@ TEST_F(Rlpos3Import, AgentHyperparameters) {
   EXPECT_EQ(s.agent.train_episode_steps, 0);
   EXPECT_FALSE(s.agent.exploring_starts);
   EXPECT_EQ(s.agent.eval_interval, 0);
-  EXPECT_EQ(s.agent.replay_capacity, 50000);
-  EXPECT_EQ(s.agent.batch_size, 32);
-  EXPECT_DOUBLE_EQ(s.agent.learning_rate, 0.005);
-  EXPECT_DOUBLE_EQ(s.agent.gamma, 0.8);
-  EXPECT_DOUBLE_EQ(s.agent.epsilon_start, 1.0);
-  EXPECT_EQ(s.agent.epsilon_decay_steps, 4000);
-  EXPECT_DOUBLE_EQ(s.agent.epsilon_end, 0.1);
+  EXPECT_EQ(s.agent.dqn.replay_capacity, 50000);
+  EXPECT_EQ(s.agent.dqn.batch_size, 32);
+  EXPECT_DOUBLE_EQ(s.agent.dqn.learning_rate, 0.005);
+  EXPECT_DOUBLE_EQ(s.agent.dqn.gamma, 0.8);
+  EXPECT_DOUBLE_EQ(s.agent.dqn.epsilon_start, 1.0);
+  EXPECT_EQ(s.agent.dqn.epsilon_decay_steps, 4000);
+  EXPECT_DOUBLE_EQ(s.agent.dqn.epsilon_end, 0.1);
 }
 
 // One warning per field not carried as it was, in a fixed order.

@@ -207,7 +207,7 @@ TEST(MessageCodec, JobEventRoundTrips) {
 TEST(MessageCodec, CampaignRequestRoundTrips) {
   ExpectRoundTrip(Request());
   msg::CampaignRequest r = Request();
-  r.scenarios.assign(wire::kMaxCampaignScenarios + 1, msg::ScenarioFile{"b.json", "{}"});
+  r.scenarios.assign(wire::kMaxCampaignScenarios + 1, SubmittedScenario{"b.json", "{}"});
   EXPECT_EQ(RefusedField(r), "scenarios");
 }
 

@@ -457,7 +457,7 @@ TEST_F(TopicsTest, WriteRefusesEveryFieldOverItsIdlBound) {
   ExpectBound(participant_, r, "campaign_json", 65536,
               [&](auto& m, auto n) { m.campaign_json = text(n); });
   ExpectBound(participant_, r, "scenarios", 32, [&](auto& m, auto n) {
-    m.scenarios.assign(n, msg::ScenarioFile{"b.json", "{}"});
+    m.scenarios.assign(n, SubmittedScenario{"b.json", "{}"});
   });
   ExpectBound(participant_, r, "scenario file", 512, [&](auto& m, auto n) {
     m.scenarios = {{text(n), "{}"}};

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "tests/worker/agent/plain_training.h"
 #include "tests/worker/agent/tiny_envs.h"
 #include "worker/agent/dqn_agent.h"
 #include "worker/agent/replay_buffer.h"
@@ -60,31 +61,26 @@ TEST(RunningMoments, MeanSpreadAndStandardise) {
 }
 
 AgentSpec SmallSpec(std::uint64_t seed) {
-  AgentSpec spec;
-  spec.learning_rate = 1e-2;
-  spec.replay_capacity = 10000;
-  spec.batch_size = 32;
-  spec.gamma = 0.9;
-  spec.warmup_steps = 32;
-  spec.target_update_interval = 50;
-  spec.epsilon_end = 1.0;  // random exploration throughout, as in the paper
-  spec.train_episodes = 60;
-  spec.eval_episodes = 1;
-  // Plain training, as the tiny envs were tuned for: no checkpoints, the env's episodes.
-  spec.eval_interval = 0;
-  spec.train_episode_steps = 0;
-  spec.exploring_starts = false;
-  spec.seed = seed;
+  AgentSpec spec = PlainTrainingSpec("dqn", seed, 60);
+  DqnSpec& dqn = spec.dqn;
+  dqn.learning_rate = 1e-2;
+  dqn.replay_capacity = 10000;
+  dqn.batch_size = 32;
+  dqn.gamma = 0.9;
+  dqn.warmup_steps = 32;
+  dqn.target_update_interval = 50;
+  dqn.epsilon_end = 1.0;  // random exploration throughout, as in the paper
   return spec;
 }
 
 TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   const AgentSpec spec;
-  // Table II of the paper.
+  // Table II of the paper: two layers of 32, a replay of 10^6 and batches of 64.
   EXPECT_EQ(spec.hidden, (std::vector<int>{32, 32}));
-  EXPECT_EQ(spec.batch_size, 64);
+  EXPECT_EQ(spec.dqn.replay_capacity, 1000000);
+  EXPECT_EQ(spec.dqn.batch_size, 64);
   // Not the paper's 1e-2: 1e-3 holds with three UAVs (docs/rl.md).
-  EXPECT_DOUBLE_EQ(spec.learning_rate, 1e-3);
+  EXPECT_DOUBLE_EQ(spec.dqn.learning_rate, 1e-3);
   // Not the paper's 10 episodes of 1,000 steps from the baseline: 1,000 of 25 steps from
   // random starts, a greedy checkpoint every 50 (chosen on generated scenarios, docs/rl.md).
   EXPECT_EQ(spec.train_episodes, 1000);
@@ -92,21 +88,21 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   EXPECT_TRUE(spec.exploring_starts);
   EXPECT_EQ(spec.eval_interval, 50);
   // Not the paper's (epsilon 1 throughout): from 1 to 0.05 over the first 8,000 steps.
-  EXPECT_DOUBLE_EQ(spec.epsilon_start, 1.0);
-  EXPECT_DOUBLE_EQ(spec.epsilon_end, 0.05);
-  EXPECT_EQ(spec.epsilon_decay_steps, 8000);
+  EXPECT_DOUBLE_EQ(spec.dqn.epsilon_start, 1.0);
+  EXPECT_DOUBLE_EQ(spec.dqn.epsilon_end, 0.05);
+  EXPECT_EQ(spec.dqn.epsilon_decay_steps, 8000);
   // Not the paper's: the target network is refreshed once per paper episode (100 s / 0.1 s),
   // which is what let scenario A's greedy policy beat the baseline (docs/rl.md).
-  EXPECT_EQ(spec.target_update_interval, 1000);
+  EXPECT_EQ(spec.dqn.target_update_interval, 1000);
   // Not the paper's either: Double DQN and standardised rewards (docs/rl.md).
-  EXPECT_TRUE(spec.double_dqn);
+  EXPECT_TRUE(spec.dqn.double_dqn);
   EXPECT_TRUE(spec.normalise_rewards);
 }
 
 TEST(DqnAgent, LearnsOnlyOnceTheBufferHoldsABatch) {
   AgentSpec spec = SmallSpec(1);
-  spec.warmup_steps = 0;  // a scenario may ask for none: the batch alone holds learning back
-  spec.batch_size = 8;
+  spec.dqn.warmup_steps = 0;  // a scenario may ask for none: the batch alone holds learning back
+  spec.dqn.batch_size = 8;
   DqnAgent agent(spec, 1, 2);
   for (int i = 1; i <= 8; ++i) {
     Transition t;
@@ -154,7 +150,7 @@ TEST(DqnAgent, ActsOnlyAmongAllowedActions) {
 float LearnedValueBehindAMaskedAction(bool mask_the_jackpot) {
   AgentSpec spec = SmallSpec(2);
   spec.normalise_rewards = false;
-  spec.target_update_interval = 20;
+  spec.dqn.target_update_interval = 20;
   DqnAgent agent(spec, 1, 2);
   const ActionMask only_a0 = mask_the_jackpot ? ActionMask{1, 0} : ActionMask{};
   for (int i = 0; i < 700; ++i) {
@@ -212,10 +208,10 @@ float LearnedValueOfOneStepEpisodes(bool truncate) {
   OneStepEnv env(truncate);
   AgentSpec spec = SmallSpec(8);
   spec.normalise_rewards = false;  // a constant reward would standardise to 0
-  spec.gamma = 0.5;
-  spec.batch_size = 8;
-  spec.warmup_steps = 8;
-  spec.target_update_interval = 10;
+  spec.dqn.gamma = 0.5;
+  spec.dqn.batch_size = 8;
+  spec.dqn.warmup_steps = 8;
+  spec.dqn.target_update_interval = 10;
   spec.train_episodes = 600;
   DqnAgent agent(spec, 1, 1);
   Train(env, agent, spec, 1);

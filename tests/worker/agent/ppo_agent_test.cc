@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "tests/worker/agent/plain_training.h"
 #include "tests/worker/agent/tiny_envs.h"
 #include "worker/agent/trainer.h"
 
@@ -12,17 +13,9 @@ namespace rlpos {
 namespace {
 
 AgentSpec PpoSpecFor(std::uint64_t seed, int episodes) {
-  AgentSpec spec;
-  spec.algorithm = "ppo";
+  AgentSpec spec = PlainTrainingSpec("ppo", seed, episodes);
   spec.ppo.learning_rate = 3e-3;
   spec.ppo.rollout_steps = 64;
-  spec.train_episodes = episodes;
-  spec.eval_episodes = 1;
-  // Plain training, as the tiny envs were tuned for: no checkpoints, the env's episodes.
-  spec.eval_interval = 0;
-  spec.train_episode_steps = 0;
-  spec.exploring_starts = false;
-  spec.seed = seed;
   return spec;
 }
 

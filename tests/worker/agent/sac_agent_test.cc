@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "tests/worker/agent/plain_training.h"
 #include "tests/worker/agent/tiny_envs.h"
 #include "worker/agent/trainer.h"
 
@@ -13,21 +14,13 @@ namespace rlpos {
 namespace {
 
 AgentSpec SacSpecFor(std::uint64_t seed, int episodes) {
-  AgentSpec spec;
-  spec.algorithm = "sac";
-  spec.replay_capacity = 10000;
+  AgentSpec spec = PlainTrainingSpec("sac", seed, episodes);
+  spec.sac.replay_capacity = 10000;
   spec.sac.batch_size = 64;
   spec.sac.warmup_steps = 100;
   spec.sac.policy_learning_rate = 3e-3;
   spec.sac.q_learning_rate = 3e-3;
   spec.sac.gamma = 0.9;
-  spec.train_episodes = episodes;
-  spec.eval_episodes = 1;
-  // Plain training, as the tiny envs were tuned for: no checkpoints, the env's episodes.
-  spec.eval_interval = 0;
-  spec.train_episode_steps = 0;
-  spec.exploring_starts = false;
-  spec.seed = seed;
   return spec;
 }
 

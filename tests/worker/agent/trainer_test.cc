@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "tests/worker/agent/plain_training.h"
 #include "tests/worker/agent/tiny_envs.h"
 
 namespace rlpos {
@@ -76,12 +77,8 @@ TEST(Trainer, TellsTheAgentTerminationFromTruncation) {
 }
 
 AgentSpec Spec(int train_episodes, int eval_interval) {
-  AgentSpec spec;
-  spec.train_episodes = train_episodes;
-  spec.eval_episodes = 1;
+  AgentSpec spec = PlainTrainingSpec("dqn", 1, train_episodes);
   spec.eval_interval = eval_interval;
-  spec.train_episode_steps = 0;  // the env's episodes, from its own start
-  spec.exploring_starts = false;
   return spec;
 }
 

@@ -37,7 +37,16 @@ void ExpectOneLineError(const CommandResult& r, int exit_code, const std::string
 TEST(RlposSimCli, ValidatePrintsASummary) {
   const auto r = RunCommand(Sim("validate " + kScenarioB));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("baseline    (50, 50, 25): nLoS 1/4"), std::string::npos) << r.out;
+  // In LoS, said as such: "nLoS 1/4" read as one UE out of sight.
+  EXPECT_NE(r.out.find("baseline    (50, 50, 25): in LoS 1/4"), std::string::npos) << r.out;
+}
+
+TEST(RlposSimCli, ValidateCountsTheUesInLoSOfSeveralUavs) {
+  const auto r = RunCommand(
+      Sim("validate " + std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("  baseline    in LoS "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nLoS"), std::string::npos) << r.out;
 }
 
 TEST(RlposSimCli, MissingFile) {
@@ -241,6 +250,8 @@ TEST(RlposSimCli, DescribeHyperparametersOfOneAlgorithm) {
       << r.out;
   EXPECT_EQ(r.out.find("## sac"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("## dqn"), std::string::npos) << r.out;
+  // The shared keys with PPO's own defaults, not DQN's 1000 episodes.
+  EXPECT_NE(r.out.find("| `agent.train_episodes` | integer | 4000 |"), std::string::npos) << r.out;
 }
 
 TEST(RlposSimCli, DescribeHyperparametersOfEveryAlgorithmIsTheDocsPage) {

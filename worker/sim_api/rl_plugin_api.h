@@ -5,7 +5,7 @@
 #include <string>
 
 #include "common/scenario/scenario.h"
-#include "worker/sim/commands.h"
+#include "worker/sim_api/sim_options.h"
 
 namespace rlpos::sim {
 

@@ -1,4 +1,4 @@
-#include "coordinator/cli/progress_text.h"
+#include "coordinator/reporting/progress_text.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,7 @@
 #pragma once
-// How `run` and `status` show a campaign's progress: a bar, counts, and an ETA from the rate at
-// which jobs have finished so far (rough: jobs differ in length, train jobs come first).
+// How `run`, `status` and the campaign page show a campaign's progress: a bar, counts, and an ETA
+// from the rate at which jobs have finished so far (rough: jobs differ in length, train jobs
+// first).
 #include <optional>
 #include <string>
 #include <vector>

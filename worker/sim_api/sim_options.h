@@ -1,0 +1,52 @@
+#pragma once
+// What rlpos-sim and the RL module it loads (worker/rl_commands) share: the subcommands' options,
+// the exit codes and how a command loads its scenario. The module's entry point is
+// rl_plugin_api.h.
+#include <string>
+#include <vector>
+
+#include "common/scenario/scenario.h"
+
+namespace rlpos::sim {
+
+constexpr int kExitOk = 0;
+constexpr int kExitRuntime = 1;
+constexpr int kExitBadInput = 2;
+constexpr int kExitNs3Abort = 3;
+
+struct CommonOptions {
+  std::string scenario_file;
+  std::vector<std::string> overrides;  // --set path=value
+  std::string log_level;
+};
+
+// Loads the scenario with `extra` overrides first, then the user's --set ones, and sets the log
+// level (the option's, else the scenario's).
+Scenario LoadScenarioFor(const CommonOptions& options, std::vector<std::string> extra);
+
+struct EvalOptions {
+  std::vector<std::string> positions;  // x,y,z per UAV
+  double duration = -1;
+  long long run = -1;
+  bool json = false;
+  bool progress = false;
+};
+
+struct TrainOptions {
+  std::string algorithm;  // empty: the scenario's agent.algorithm
+  std::string fidelity;   // empty: the scenario's env.fidelity
+  long long seed = -1;    // -1: the scenario's agent.seed
+  int episodes = -1;      // -1: the scenario's agent.train_episodes
+  std::string out;
+  bool json = false;
+};
+
+struct PositionOptions {
+  std::string positioner;
+  std::string policy;  // rl, or offsets around the rl position
+  std::string from;    // offsets: around this x,y,z instead
+  int offset = 0;      // offsets: which of positions 1-5
+  bool json = false;
+};
+
+}  // namespace rlpos::sim
