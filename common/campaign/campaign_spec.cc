@@ -8,6 +8,7 @@
 #include "common/config/config_error.h"
 #include "common/config/did_you_mean.h"
 #include "common/config/object_reader.h"
+#include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/scenario_parser.h"
 #include "common/wire/identifiers.h"
@@ -150,7 +151,7 @@ TrainSettings ReadTrain(const json& v) {
     // Not sorted: the first seed is the one whose evals get the plain "rl" labels.
     train.seeds = ReadUniqueList(*seeds, r.PathOf("seeds"), UINT32_MAX, false);
   }
-  train.fidelity = r.String("fidelity", train.fidelity, {"analytic", "packet"});
+  train.fidelity = r.String("fidelity", train.fidelity, NameList(kFidelities));
   if (r.Has("episodes"))
     train.episodes = static_cast<int>(r.Integer("episodes", 0, 1, 1000000));
   if (const json* algorithms = r.Child("algorithms")) {
@@ -244,7 +245,7 @@ CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
 }  // namespace
 
 const std::vector<std::string>& AllPositioners() {
-  static const std::vector<std::string> all{"baseline", "offsets", "centroid", "oracle", "rl"};
+  static const std::vector<std::string> all = NameList(kPositioners);
   return all;
 }
 

@@ -9,6 +9,7 @@
 #include "common/job/job_settings.h"
 #include "common/job/offsets.h"
 #include "common/provenance/provenance.h"
+#include "common/scenario/names.h"
 #include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
@@ -93,8 +94,8 @@ bool NeedsTraining(const CampaignSpec& spec, const CampaignScenario& s) {
 // Position jobs of a scenario, one per selected positioner that gives a position.
 std::size_t PositionJobs(const CampaignSpec& spec) {
   std::size_t producers = 0;
-  for (const char* positioner : {"baseline", "centroid", "oracle"})
-    producers += spec.Uses(positioner) ? 1 : 0;
+  for (std::string_view positioner : kPlacingPositioners)
+    producers += spec.Uses(std::string(positioner)) ? 1 : 0;
   return producers;
 }
 
@@ -190,7 +191,8 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
     scenario_sha256 = Sha256Hex(s.document.dump());
     std::vector<EvalSource> sources;
 
-    for (const char* positioner : {"baseline", "centroid", "oracle"}) {
+    for (std::string_view placing : kPlacingPositioners) {
+      const std::string positioner(placing);
       if (!spec.Uses(positioner))
         continue;
       Job job;

@@ -6,6 +6,7 @@
 #include "common/config/config_error.h"
 #include "common/config/object_reader.h"
 #include "common/phy/mcs_table.h"
+#include "common/scenario/names.h"
 #include "common/scenario/scenario_checks.h"
 
 namespace rlpos {
@@ -252,7 +253,7 @@ std::vector<std::string> ReadStringList(const json& v, const std::string& path,
 EnvSpec ReadEnv(const json& v) {
   ObjectReader r(v, "/env");
   EnvSpec e;
-  e.fidelity = r.String("fidelity", e.fidelity, {"packet", "analytic"});
+  e.fidelity = r.String("fidelity", e.fidelity, NameList(kFidelities));
   e.step = r.Number("step", e.step, Positive());
   if (const json* a = r.Child("actions")) {
     e.actions = ReadStringList(*a, r.PathOf("actions"),
@@ -618,7 +619,7 @@ json ToJson(const Scenario& s) {
 }
 
 const std::vector<std::string>& AllAlgorithms() {
-  static const std::vector<std::string> all{"dqn", "ppo", "sac"};
+  static const std::vector<std::string> all = NameList(kAlgorithms);
   return all;
 }
 

@@ -5,6 +5,7 @@
 
 #include "common/config/config_error.h"
 #include "common/job/job_settings.h"
+#include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
@@ -42,17 +43,18 @@ void CheckParams(const JobParams& p) {
     case JobKind::kTrain:
       if (!p.train_seed)
         Bad("train_seed", "a train job needs one");
-      if (p.fidelity != "analytic" && p.fidelity != "packet") {
-        Bad("fidelity", "must be analytic or packet, got \"" + wire::Printable(p.fidelity) + "\"");
+      if (!IsOneOf(p.fidelity, kFidelities)) {
+        Bad("fidelity", "must be " + Alternatives(kFidelities) + ", got \"" +
+                            wire::Printable(p.fidelity) + "\"");
       }
       if (p.train_episodes && (*p.train_episodes < 1 || *p.train_episodes > 1000000)) {
         Bad("train_episodes", "must be in 1..1000000");
       }
       break;
     case JobKind::kPosition:
-      if (p.positioner != "baseline" && p.positioner != "centroid" && p.positioner != "oracle") {
-        Bad("positioner",
-            "must be baseline, centroid or oracle, got \"" + wire::Printable(p.positioner) + "\"");
+      if (!IsOneOf(p.positioner, kPlacingPositioners)) {
+        Bad("positioner", "must be " + Alternatives(kPlacingPositioners) + ", got \"" +
+                              wire::Printable(p.positioner) + "\"");
       }
       break;
     case JobKind::kEval:

@@ -6,6 +6,7 @@
 // declares the IDL's numbers. Only message_codec.cc includes this (it needs the generated C).
 #include <array>
 
+#include "common/scenario/names.h"
 #include "common/wire/limits.h"
 #include "idl/dds/field_codec.h"
 #include "idl/dds/messages.h"
@@ -25,10 +26,17 @@ static_assert(static_cast<int>(msg::RequestKind::kSubmit) == rlpos_msg_REQUEST_S
               static_cast<int>(msg::RequestKind::kCancel) == rlpos_msg_REQUEST_CANCEL &&
               static_cast<int>(msg::RequestKind::kRetry) == rlpos_msg_REQUEST_RETRY);
 
-// JobParams' texts that travel as enums, indexed by the IDL's values.
+// JobParams' texts that travel as enums, indexed by the IDL's values: the names of
+// common/scenario/names.h, in the IDL's order.
 constexpr std::array<const char*, 2> kFidelities{"analytic", "packet"};
 constexpr std::array<const char*, 4> kPositioners{"", "baseline", "centroid", "oracle"};
 static_assert(rlpos_msg_FIDELITY_PACKET == 1 && rlpos_msg_POSITIONER_ORACLE == 3);
+static_assert(kFidelities.size() == rlpos::kFidelities.size() &&
+              kFidelities[0] == rlpos::kFidelities[0] && kFidelities[1] == rlpos::kFidelities[1]);
+static_assert(kPositioners.size() == rlpos::kPlacingPositioners.size() + 1 &&
+              kPositioners[1] == rlpos::kPlacingPositioners[0] &&
+              kPositioners[2] == rlpos::kPlacingPositioners[1] &&
+              kPositioners[3] == rlpos::kPlacingPositioners[2]);
 
 template <typename M>
 struct Message;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 
 namespace rlpos {
@@ -18,10 +19,12 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
               scenario,   "--out", (fs::path(folder) / kOutFolderName).string(),
               "--json"};
     case JobKind::kPosition: {
-      // One of the three names CheckJobOrder lets through, spelt by us.
-      const char* positioner = p.positioner == "oracle"     ? "oracle"
-                               : p.positioner == "centroid" ? "centroid"
-                                                            : "baseline";
+      // One of the names CheckJobOrder lets through, spelt by us, not copied from the wire.
+      std::string positioner(kPlacingPositioners.front());
+      for (std::string_view name : kPlacingPositioners) {
+        if (name == p.positioner)
+          positioner = name;
+      }
       return {sim_binary, "position", "--scenario", scenario, "--positioner", positioner, "--json"};
     }
     case JobKind::kEval:

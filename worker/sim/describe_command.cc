@@ -4,6 +4,7 @@
 
 #include "common/metrics/eval_metrics.h"
 #include "common/scenario/hyperparameter_docs.h"
+#include "common/scenario/names.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/sim/commands.h"
 
@@ -17,8 +18,9 @@ void AddDescribe(CLI::App& app, DescribeCommand& describe) {
   describe.hyperparameters = describe.command->add_subcommand(
       "hyperparameters", "Print the agents' hyperparameters (key, type, default, range, doc)");
   describe.hyperparameters
-      ->add_option("--algorithm", describe.algorithm,
-                   "dqn|ppo|sac: its own and the shared ones (default: every algorithm)")
+      ->add_option(
+          "--algorithm", describe.algorithm,
+          Choices(kAlgorithms) + ": its own and the shared ones (default: every algorithm)")
       ->check(CLI::IsMember(AllAlgorithms()));
 }
 

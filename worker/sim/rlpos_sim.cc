@@ -19,6 +19,7 @@
 
 #include "common/command_line/parse_error.h"
 #include "common/config/config_error.h"
+#include "common/scenario/names.h"
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
 #include "worker/sim/describe_command.h"
@@ -90,13 +91,13 @@ void AddTrain(CLI::App& app, Invocation& in) {
   in.train->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
   in.train
       ->add_option("--algorithm", in.train_options.algorithm,
-                   "dqn|ppo|sac (default: agent.algorithm); sac acts on the continuous action "
-                   "space")
-      ->check(CLI::IsMember({"dqn", "ppo", "sac"}));
+                   rlpos::Choices(rlpos::kAlgorithms) +
+                       " (default: agent.algorithm); sac acts on the continuous action space")
+      ->check(CLI::IsMember(rlpos::NameList(rlpos::kAlgorithms)));
   in.train
       ->add_option("--fidelity", in.train_options.fidelity,
-                   "packet|analytic (default: env.fidelity)")
-      ->check(CLI::IsMember({"packet", "analytic"}));
+                   rlpos::Choices(rlpos::kFidelities) + " (default: env.fidelity)")
+      ->check(CLI::IsMember(rlpos::NameList(rlpos::kFidelities)));
   in.train->add_option("--seed", in.train_options.seed, "Agent seed (default: agent.seed)")
       ->check(CLI::NonNegativeNumber);
   in.train->add_option("--episodes", in.train_options.episodes, "Training episodes")
@@ -111,9 +112,9 @@ void AddPosition(CLI::App& app, Invocation& in) {
   in.position->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
   in.position
       ->add_option("--positioner", in.position_options.positioner,
-                   "baseline|centroid|oracle|rl|offsets")
+                   rlpos::Choices(rlpos::kPositioners))
       ->required()
-      ->check(CLI::IsMember({"baseline", "centroid", "oracle", "rl", "offsets"}));
+      ->check(CLI::IsMember(rlpos::NameList(rlpos::kPositioners)));
   in.position->add_option("--policy", in.position_options.policy,
                           "Folder written by train (rl; offsets around the rl position)");
   in.position->add_option("--from", in.position_options.from, "offsets: around this x,y,z");

@@ -1,0 +1,63 @@
+#pragma once
+// The names users, campaigns and the wire spell, declared once: command-line checks and help,
+// campaign and scenario validation, the worker's order checks and the wire's enum tables take
+// their lists from here.
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rlpos {
+
+// env.fidelity and a campaign's train.fidelity: the model alone, or full ns-3.
+inline constexpr std::array<std::string_view, 2> kFidelities{"analytic", "packet"};
+
+// agent.algorithm, in the order reports list them.
+inline constexpr std::array<std::string_view, 3> kAlgorithms{"dqn", "ppo", "sac"};
+
+// Every positioner, in the order reports list them: offsets are the paper's positions 1-5 around
+// rl's, rl a trained policy's greedy flight.
+inline constexpr std::array<std::string_view, 5> kPositioners{"baseline", "offsets", "centroid",
+                                                              "oracle", "rl"};
+
+// The positioners that place UAVs with no trained policy: a campaign's position jobs.
+inline constexpr std::array<std::string_view, 3> kPlacingPositioners{"baseline", "centroid",
+                                                                     "oracle"};
+
+template <std::size_t N>
+constexpr bool IsOneOf(std::string_view name, const std::array<std::string_view, N>& names) {
+  for (std::string_view n : names) {
+    if (n == name)
+      return true;
+  }
+  return false;
+}
+
+template <std::size_t N>
+std::vector<std::string> NameList(const std::array<std::string_view, N>& names) {
+  return {names.begin(), names.end()};
+}
+
+// "a, b or c"
+template <std::size_t N>
+std::string Alternatives(const std::array<std::string_view, N>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (i > 0)
+      text += i + 1 == N ? " or " : ", ";
+    text += names[i];
+  }
+  return text;
+}
+
+// "a|b|c", as a command line's help shows choices.
+template <std::size_t N>
+std::string Choices(const std::array<std::string_view, N>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < N; ++i)
+    text += (i > 0 ? "|" : "") + std::string(names[i]);
+  return text;
+}
+
+}  // namespace rlpos
