@@ -12,12 +12,16 @@ const char* const kPortableKernelSettings[4] = {
     "ATEN_CPU_CAPABILITY=default", "OPENBLAS_CORETYPE=Prescott", "ONEDNN_MAX_CPU_ISA=SSE41",
     "DNNL_MAX_CPU_ISA=SSE41"};
 
-void PinPortableKernels() {
+bool PinPortableKernels() {
+  const char* native = std::getenv("RLPOS_NATIVE_KERNELS");
+  if (native != nullptr && std::string(native) == "1")
+    return false;
   for (const char* setting : kPortableKernelSettings) {
     const std::string text(setting);
     const std::size_t eq = text.find('=');
     setenv(text.substr(0, eq).c_str(), text.substr(eq + 1).c_str(), 1);
   }
+  return true;
 }
 
 }  // namespace rlpos::sim
