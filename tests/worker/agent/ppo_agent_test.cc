@@ -128,6 +128,11 @@ TEST(PpoAgent, SaveLoadRoundTrip) {
   EXPECT_EQ(loaded.Probabilities({0.5f}, {}), trained.Probabilities({0.5f}, {}));
   PpoAgent other_shape(spec, 3, 2);
   EXPECT_THROW(other_shape.Load(dir.string()), std::runtime_error);
+  // A campaign's artifacts carry policy.pt, not the critic: acting needs only the actor.
+  ASSERT_TRUE(std::filesystem::remove(dir / "value.pt"));
+  PpoAgent actor_only(PpoSpecFor(99, 5), 1, 2);
+  actor_only.Load(dir.string());
+  EXPECT_EQ(actor_only.Probabilities({0.5f}, {}), trained.Probabilities({0.5f}, {}));
   std::filesystem::remove_all(dir);
 }
 

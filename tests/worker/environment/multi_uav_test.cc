@@ -66,7 +66,9 @@ TEST(UavChannels, DistinctUnlessGivenAndRefusedWhenTheBandRunsOut) {
     Load("campus2", {"uavs.1.channel=52"});
     ADD_FAILURE() << "channel 52 (not a 160 MHz channel) was accepted";
   } catch (const ConfigError& e) {
-    EXPECT_EQ(e.path(), "/uavs/1/channel");
+    // The value came from the override: the error names it, then the path.
+    EXPECT_EQ(e.path(), "--set uavs.1.channel=52");
+    EXPECT_EQ(e.problem().rfind("/uavs/1/channel: ", 0), 0u) << e.problem();
   }
 }
 
