@@ -110,7 +110,7 @@ std::ofstream OpenLearningCurve(const fs::path& file) {
 void PrintEpisode(const EpisodeRecord& r, int total) {
   std::fprintf(stderr,
                "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
-               "final %s nLoS %d\n",
+               "final %s in LoS %d\n",
                r.episode, total, Phase(r), r.steps, r.epsilon, r.total_reward,
                r.total_reward / std::max(1, r.steps),
                DescribePlacement(r.final_info.positions).c_str(), r.final_info.n_los);
@@ -190,7 +190,7 @@ TrainResult TrainAndRecord(const Scenario& s, const fs::path& folder) {
 
 void PrintTrained(const Scenario& s, const TrainResult& result, const std::string& out) {
   std::printf(
-      "trained %s (%s, %s, seed %llu): final position %s, nLoS %d/%zu, reward %.4f\n"
+      "trained %s (%s, %s, seed %llu): final position %s, in LoS %d/%zu, reward %.4f\n"
       "policy, learning curve and result in %s\n",
       s.name.c_str(), s.agent.algorithm.c_str(), s.env.fidelity.c_str(),
       static_cast<unsigned long long>(s.agent.seed),

@@ -81,7 +81,7 @@ int RunPosition(const CommonOptions& options, const PositionOptions& p) {
   if (p.json) {
     std::cout << out.dump(2) << std::endl;
   } else {
-    std::printf("%s in %s: %s, nLoS %d/%zu, analytic throughput %.1f Mbit/s, reward %.4f\n",
+    std::printf("%s in %s: %s, in LoS %d/%zu, analytic throughput %.1f Mbit/s, reward %.4f\n",
                 p.positioner.c_str(), s.name.c_str(), DescribePlacement(placement).c_str(),
                 info.n_los, s.ues.size(), info.throughput_mbps, reward);
   }

@@ -154,7 +154,7 @@ TEST_F(TrainCommand, TheProgressLineOfSeveralUavsShowsEachOne) {
   }
   const std::size_t eval = r.err.find("episode 2/2 (eval)");
   ASSERT_NE(eval, std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(both.str() + " nLoS", eval), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(both.str() + " in LoS", eval), std::string::npos) << r.err;
 }
 
 TEST_F(TrainCommand, EachAlgorithmsPolicySaysWhatItIs) {
