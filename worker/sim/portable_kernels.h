@@ -7,14 +7,11 @@
 
 namespace rlpos::sim {
 
-// The environment variables the pin sets, as NAME=VALUE: libtorch's ATEN_CPU_CAPABILITY, OpenBLAS'
-// OPENBLAS_CORETYPE and oneDNN's ONEDNN_MAX_CPU_ISA / DNNL_MAX_CPU_ISA.
-extern const char* const kPortableKernelSettings[4];
-
-// Sets them, overriding the environment's own values, and returns true; unless
-// RLPOS_NATIVE_KERNELS=1, which keeps the CPU's own kernels (faster on some CPUs, but a policy
-// is then reproducible only on CPUs of the same kind) and returns false. Must run before libtorch
-// and OpenBLAS are loaded: they read these once, when they start.
-bool PinPortableKernels();
+// Sets libtorch's ATEN_CPU_CAPABILITY, OpenBLAS' OPENBLAS_CORETYPE and oneDNN's
+// ONEDNN_MAX_CPU_ISA / DNNL_MAX_CPU_ISA, overriding the environment's own values; unless
+// RLPOS_NATIVE_KERNELS=1, which keeps the CPU's own kernels (a policy is then reproducible only
+// on CPUs of the same kind). Must run before libtorch and OpenBLAS are loaded: they read these
+// once, when they start.
+void PinPortableKernels();
 
 }  // namespace rlpos::sim
