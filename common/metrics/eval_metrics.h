@@ -217,6 +217,8 @@ constexpr auto EvalMetricTable() {
 
 // The table for the simulator's values (double), where the docs and schema read it.
 inline constexpr auto kEvalMetrics = EvalMetricTable<double>();
+// The table for the store's values (null: undefined, or recorded before the metric existed).
+inline constexpr auto kStoredMetrics = EvalMetricTable<std::optional<double>>();
 
 // The table as a Markdown table (metric, unit, JSON key, SQL column, doc), for the docs.
 std::string EvalMetricsMarkdown();

@@ -58,7 +58,6 @@ const json& UavList(const json& result, const char* key) {
 }
 
 using StoredMetric = MetricDef<std::optional<double>>;
-constexpr auto kStoredMetrics = EvalMetricTable<std::optional<double>>();
 // A result's structure before any metric was added to it: a run's is schema 1, a UAV's 10.
 constexpr int kRunKeysSince = 1, kUavKeysSince = 10;
 

@@ -5,8 +5,6 @@
 namespace rlpos {
 namespace {
 
-constexpr auto kStoredMetrics = EvalMetricTable<std::optional<double>>();
-
 // "a, b, c" from the metrics' `column` (the run's or a UAV's).
 template <typename Column>
 std::string ColumnList(Column column) {

@@ -22,6 +22,7 @@
 #include "common/process/executable_path.h"
 #include "common/process/file_lock.h"
 #include "common/process/stop_signal.h"
+#include "common/process/wall_clock.h"
 #include "common/scenario/number_text.h"
 #include "common/store/results_reader.h"
 #include "common/store/store_db.h"
@@ -48,10 +49,6 @@ std::string TailOfFile(const std::string& file) {
       last = line;
   }
   return last.empty() ? "see " + file : last;
-}
-
-double WallNow() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 std::string NewTag() {
@@ -304,7 +301,8 @@ bool FollowUntilSettled(ResultsReader& store, const std::string& campaign_id,
     }
     const CampaignProgress progress = store.Progress(campaign_id);
     const bool settled = IsSettled(progress);
-    const auto eta = EstimateRemainingSeconds(progress, store.Timing(campaign_id), WallNow());
+    const auto eta =
+        EstimateRemainingSeconds(progress, store.Timing(campaign_id), WallClockSeconds());
     printer.Show(ProgressLine(progress, settled ? std::nullopt : eta), settled);
     if (settled)
       return true;

@@ -5,6 +5,7 @@
 
 #include "common/process/executable_path.h"
 #include "common/process/stop_signal.h"
+#include "common/process/wall_clock.h"
 #include "common/store/results_reader.h"
 #include "common/store/store_db.h"
 #include "common/store/store_error.h"
@@ -19,10 +20,6 @@
 
 namespace rlpos {
 namespace {
-
-double WallNow() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
 
 StoreOptions ReadOnly() {
   StoreOptions options;
@@ -45,11 +42,11 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
     std::vector<CampaignTiming> timings;
     for (const auto& c : campaigns)
       timings.push_back(store.Timing(c.campaign_id));
-    std::cout << FormatStatus(campaigns, timings, store.ListWorkers(), WallNow());
+    std::cout << FormatStatus(campaigns, timings, store.ListWorkers(), WallClockSeconds());
     for (const auto& c : campaigns) {
       for (const auto& j : store.RunningJobs(c.campaign_id)) {
         std::cout << "  running: " << j.key << " #" << j.attempt << " on " << j.worker_id << " for "
-                  << FormatDuration(WallNow() - j.started_at)
+                  << FormatDuration(WallClockSeconds() - j.started_at)
                   << (j.progress.empty() ? "" : ": " + j.progress) << "\n";
       }
       for (const auto& f : store.FailedJobs(c.campaign_id)) {

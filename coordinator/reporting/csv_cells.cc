@@ -39,4 +39,12 @@ std::string CsvLine(const std::vector<std::string>& cells) {
   return line + "\n";
 }
 
+std::optional<double> Finite(double value) {
+  return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
+}
+
+std::optional<double> Finite(const std::optional<double>& value) {
+  return value ? Finite(*value) : std::nullopt;
+}
+
 }  // namespace rlpos

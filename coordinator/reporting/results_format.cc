@@ -13,7 +13,7 @@ namespace {
 
 // --- Tables (text, Markdown): rounded, "-" for absent ---
 
-const std::vector<TableColumn>& TableColumns() {
+const std::vector<TableColumn>& ResultsTableColumns() {
   static const std::vector<TableColumn> columns{
       {"scenario", true},       {"positioner", true},     {"runs", false},
       {"median Mbit/s", false}, {"mean Mbit/s", false},   {"ci95 Mbit/s", false},
@@ -56,13 +56,6 @@ struct Field {
   bool count = false;                                         // an integer in JSON
 };
 
-std::optional<double> Finite(double value) {
-  return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
-}
-std::optional<double> Finite(const std::optional<double>& value) {
-  return value ? Finite(*value) : std::nullopt;
-}
-
 const std::vector<Field>& Fields() {
   using S = PositionerSummary;
   static const std::vector<Field> fields{
@@ -97,11 +90,11 @@ std::vector<std::vector<std::string>> TableRows(const std::vector<PositionerSumm
 }  // namespace
 
 std::string FormatSummaryText(const std::vector<PositionerSummary>& summary) {
-  return FormatTextTable(TableColumns(), TableRows(summary));
+  return FormatTextTable(ResultsTableColumns(), TableRows(summary));
 }
 
 std::string FormatSummaryMarkdown(const std::vector<PositionerSummary>& summary) {
-  return FormatMarkdownTable(TableColumns(), TableRows(summary));
+  return FormatMarkdownTable(ResultsTableColumns(), TableRows(summary));
 }
 
 const std::vector<std::string>& SummaryCsvColumns() {

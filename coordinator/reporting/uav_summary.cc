@@ -47,7 +47,7 @@ UavSummary Summarize(const std::vector<const UavMetricRow*>& runs) {
   return s;
 }
 
-const std::vector<TableColumn>& TableColumns() {
+const std::vector<TableColumn>& UavTableColumns() {
   static const std::vector<TableColumn> columns{{"scenario", true},     {"positioner", true},
                                                 {"uav", true},          {"runs", false},
                                                 {"UEs served", false},  {"mean Mbit/s", false},
@@ -67,10 +67,6 @@ std::vector<std::vector<std::string>> TableRows(const std::vector<UavSummary>& s
                     TableNumber(s.jain_mean, 3)});
   }
   return rows;
-}
-
-std::optional<double> Finite(double value) {
-  return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
 }
 
 // The numeric fields of CSV and JSON, after scenario, positioner, uav, uav_name and runs.
@@ -117,11 +113,11 @@ std::vector<UavSummary> SummarizeUavs(const std::vector<UavMetricRow>& rows) {
 }
 
 std::string FormatUavSummaryText(const std::vector<UavSummary>& summary) {
-  return FormatTextTable(TableColumns(), TableRows(summary));
+  return FormatTextTable(UavTableColumns(), TableRows(summary));
 }
 
 std::string FormatUavSummaryMarkdown(const std::vector<UavSummary>& summary) {
-  return FormatMarkdownTable(TableColumns(), TableRows(summary));
+  return FormatMarkdownTable(UavTableColumns(), TableRows(summary));
 }
 
 const std::vector<std::string>& UavSummaryCsvColumns() {

@@ -127,7 +127,10 @@ class DeadlineStream : public httplib::Stream {
   std::size_t buffered_ = 0, filled_ = 0;
 };
 
-// httplib's request parsing and response writing, over a stream we give it.
+}  // namespace
+
+// httplib's request parsing and response writing, over a stream we give it. Not in the anonymous
+// namespace: HttpServer::Impl holds one.
 class RequestProcessor : public httplib::Server {
  public:
   bool Process(httplib::Stream& stream) {
@@ -135,6 +138,8 @@ class RequestProcessor : public httplib::Server {
     return process_request(stream, true, closed, nullptr);
   }
 };
+
+namespace {
 
 const char* ReasonOf(int status) {
   switch (status) {

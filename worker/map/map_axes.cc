@@ -5,8 +5,6 @@
 namespace rlpos::map {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 double Extent(const Venue& venue, Axis axis) {
   return axis == Axis::kX ? venue.width : axis == Axis::kY ? venue.depth : venue.height;
 }
@@ -74,7 +72,7 @@ void DrawViewAxes(cairo_t* cr, const View& view, const Venue& venue) {
   DrawText(cr, AxisTitle(view.horizontal), r.left + r.width / 2, r.bottom() + 32, Anchor::kCentre);
   cairo_save(cr);
   cairo_translate(cr, r.left - 36, r.top + r.height / 2);
-  cairo_rotate(cr, -kPi / 2);
+  cairo_rotate(cr, -M_PI / 2);
   DrawText(cr, AxisTitle(view.vertical), 0, 0, Anchor::kCentre);
   cairo_restore(cr);
 }

@@ -9,7 +9,6 @@
 namespace rlpos::map {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kBuildingFont = 10;
 constexpr double kUeFont = 10;
 constexpr double kUavFont = 10;
@@ -48,7 +47,7 @@ void DrawBuildingLabel(cairo_t* cr, const BuildingLabel& label, double cx, doubl
   cairo_save(cr);
   cairo_translate(cr, cx, cy);
   if (label.turned)
-    cairo_rotate(cr, -kPi / 2);
+    cairo_rotate(cr, -M_PI / 2);
   SetColour(cr, light ? kBackground : kInk);
   for (std::size_t k = 0; k < label.lines.size(); ++k) {
     const double y = -n * line_height / 2 + line_height * (static_cast<double>(k) + 0.78);

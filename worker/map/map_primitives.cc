@@ -6,12 +6,10 @@
 namespace rlpos::map {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The path of a regular polygon of `n` corners, one at angle `start` (radians, y down).
 void PolygonPath(cairo_t* cr, double x, double y, double radius, int n, double start) {
   for (int k = 0; k < n; ++k) {
-    const double a = start + 2 * kPi * k / n;
+    const double a = start + 2 * M_PI * k / n;
     const double px = x + radius * std::cos(a), py = y + radius * std::sin(a);
     k == 0 ? cairo_move_to(cr, px, py) : cairo_line_to(cr, px, py);
   }
@@ -20,7 +18,7 @@ void PolygonPath(cairo_t* cr, double x, double y, double radius, int n, double s
 
 void StarPath(cairo_t* cr, double x, double y, double radius) {
   for (int k = 0; k < 10; ++k) {
-    const double a = -kPi / 2 + kPi * k / 5;
+    const double a = -M_PI / 2 + M_PI * k / 5;
     const double r = k % 2 == 0 ? radius : radius * 0.45;
     const double px = x + r * std::cos(a), py = y + r * std::sin(a);
     k == 0 ? cairo_move_to(cr, px, py) : cairo_line_to(cr, px, py);
@@ -43,22 +41,22 @@ void BarsPath(cairo_t* cr, double x, double y, double r, bool diagonal) {
 void ShapePath(cairo_t* cr, MarkerShape shape, double x, double y, double r) {
   switch (shape) {
     case MarkerShape::kCircle:
-      cairo_new_sub_path(cr), cairo_arc(cr, x, y, r, 0, 2 * kPi);
+      cairo_new_sub_path(cr), cairo_arc(cr, x, y, r, 0, 2 * M_PI);
       break;
     case MarkerShape::kSquare:
       cairo_rectangle(cr, x - r * 0.85, y - r * 0.85, r * 1.7, r * 1.7);
       break;
     case MarkerShape::kTriangleUp:
-      PolygonPath(cr, x, y + r * 0.15, r * 1.1, 3, -kPi / 2);
+      PolygonPath(cr, x, y + r * 0.15, r * 1.1, 3, -M_PI / 2);
       break;
     case MarkerShape::kDiamond:
-      PolygonPath(cr, x, y, r * 1.1, 4, -kPi / 2);
+      PolygonPath(cr, x, y, r * 1.1, 4, -M_PI / 2);
       break;
     case MarkerShape::kTriangleDown:
-      PolygonPath(cr, x, y - r * 0.15, r * 1.1, 3, kPi / 2);
+      PolygonPath(cr, x, y - r * 0.15, r * 1.1, 3, M_PI / 2);
       break;
     case MarkerShape::kPentagon:
-      PolygonPath(cr, x, y, r * 1.05, 5, -kPi / 2);
+      PolygonPath(cr, x, y, r * 1.05, 5, -M_PI / 2);
       break;
     case MarkerShape::kStar:
       StarPath(cr, x, y, r * 1.25);
@@ -129,7 +127,7 @@ void DrawUavGlyph(cairo_t* cr, double x, double y, double size, const Rgb& colou
     for (int dx = -1; dx <= 1; dx += 2) {
       for (int dy = -1; dy <= 1; dy += 2) {
         cairo_new_sub_path(cr);
-        cairo_arc(cr, x + dx * arm, y + dy * arm, rotor, 0, 2 * kPi);
+        cairo_arc(cr, x + dx * arm, y + dy * arm, rotor, 0, 2 * M_PI);
       }
     }
     cairo_set_line_width(cr, pass == 0 ? 4.0 : 1.6);

@@ -16,10 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-json ScenarioB() {
-  return ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json");
-}
-
 std::string Pointer(const std::string& dotted_key) {
   std::string path = "/" + dotted_key;
   for (auto& c : path)
@@ -66,7 +62,7 @@ TEST(Hyperparameters, EveryDeclaredOneIsAcceptedAndWrittenBack) {
   for (const auto& section : AllHyperparameterSections()) {
     for (const auto& row : section.rows) {
       const json value = ValidValue(row);
-      json doc = ScenarioB();
+      json doc = ShippedScenarioDocument("b");
       // With checkpoints on, so that early_stop_checkpoints's cross-key check holds.
       ApplyOverrides(doc, {"agent.eval_interval=5", row.key + "=" + value.dump()});
       const json written = ToJson(ParseScenario(doc));
@@ -81,7 +77,8 @@ TEST(Hyperparameters, ValuesBeyondTheDeclaredRangeAreRefused) {
   for (const auto& section : AllHyperparameterSections()) {
     for (const auto& row : section.rows) {
       for (const json& value : OutOfRangeValues(row)) {
-        const std::string error = ErrorOf(ScenarioB(), {row.key + "=" + value.dump()});
+        const std::string error =
+            ErrorOf(ShippedScenarioDocument("b"), {row.key + "=" + value.dump()});
         EXPECT_EQ(error.rfind(Pointer(row.key) + ": ", 0), 0u)
             << row.key << "=" << value.dump() << " gave \"" << error << "\"";
       }
@@ -90,12 +87,12 @@ TEST(Hyperparameters, ValuesBeyondTheDeclaredRangeAreRefused) {
 }
 
 TEST(Hyperparameters, UnknownKeysSuggestADeclaredOne) {
-  EXPECT_EQ(ErrorOf(ScenarioB(), {"agent.ppo.entropy_coeficient=0.1"}),
+  EXPECT_EQ(ErrorOf(ShippedScenarioDocument("b"), {"agent.ppo.entropy_coeficient=0.1"}),
             "/agent/ppo/entropy_coeficient: unknown key \"entropy_coeficient\"; did you mean "
             "\"entropy_coefficient\"?");
-  EXPECT_EQ(ErrorOf(ScenarioB(), {"agent.sac.alfa=0.1"}),
+  EXPECT_EQ(ErrorOf(ShippedScenarioDocument("b"), {"agent.sac.alfa=0.1"}),
             "/agent/sac/alfa: unknown key \"alfa\"; did you mean \"alpha\"?");
-  EXPECT_EQ(ErrorOf(ScenarioB(), {"agent.eval_intervall=2"}),
+  EXPECT_EQ(ErrorOf(ShippedScenarioDocument("b"), {"agent.eval_intervall=2"}),
             "/agent/eval_intervall: unknown key \"eval_intervall\"; did you mean "
             "\"eval_interval\"?");
 }

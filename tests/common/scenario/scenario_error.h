@@ -1,5 +1,5 @@
 #pragma once
-// For the scenario parser's tests: what a document fails with.
+// For the scenario parser's tests: a shipped scenario's document, and what a document fails with.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -8,6 +8,11 @@
 #include "common/scenario/scenario_parser.h"
 
 namespace rlpos {
+
+// The document of a scenario shipped in campaigns/scenarios ("b": b.json).
+inline nlohmann::json ShippedScenarioDocument(const std::string& name) {
+  return ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/" + name + ".json");
+}
 
 // Parses `doc` after applying `overrides`; returns the error ("<path>: <problem>") or "".
 inline std::string ErrorOf(nlohmann::json doc, const std::vector<std::string>& overrides) {

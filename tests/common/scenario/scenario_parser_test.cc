@@ -10,10 +10,6 @@ namespace {
 
 using nlohmann::json;
 
-json ScenarioB() {
-  return ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json");
-}
-
 TEST(ScenarioParser, ShippedScenariosParse) {
   for (const char* name : {"a", "b", "c"}) {
     const Scenario s = ParseScenario(
@@ -52,7 +48,7 @@ TEST(ScenarioParser, DemandsOfScenarioC) {
 }
 
 TEST(ScenarioParser, OverridesSetAnyField) {
-  json doc = ScenarioB();
+  json doc = ShippedScenarioDocument("b");
   ApplyOverrides(doc, {"wifi.mode=adhoc", "/simulation/run=7", "ues.1.demand={\"mbps\": 10}",
                        "uav.position=[50, 35, 10]"});
   const Scenario s = ParseScenario(doc);
@@ -63,7 +59,7 @@ TEST(ScenarioParser, OverridesSetAnyField) {
 }
 
 TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {
-  json doc = ScenarioB();
+  json doc = ShippedScenarioDocument("b");
   ApplyOverrides(doc, AlgorithmOverrides("sac"));
   ApplyOverrides(doc, {"agent.sac.alpha=0.1", "agent.ppo.epochs=3", "agent.eval_interval=10",
                        "agent.ppo.anneal_learning_rate=true"});
@@ -94,7 +90,8 @@ TEST(ScenarioParser, TrainingDefaultsFollowTheAlgorithmAndTheUavCount) {
   EXPECT_EQ(dqn.eval_interval, 50);
   EXPECT_TRUE(dqn.exploring_starts);
   EXPECT_EQ(dqn.baseline_start_every, 0);
-  EXPECT_EQ(ParseScenario(ScenarioB()).agent.train_episodes, 1000);  // no agent section: dqn's
+  EXPECT_EQ(ParseScenario(ShippedScenarioDocument("b")).agent.train_episodes,
+            1000);  // no agent section: dqn's
   const AgentSpec ppo = agent_of("b.json", "ppo", {});
   EXPECT_EQ(ppo.train_episodes, 4000);
   EXPECT_EQ(ppo.eval_interval, 100);
@@ -116,7 +113,7 @@ TEST(ScenarioParser, TrainingDefaultsFollowTheAlgorithmAndTheUavCount) {
 
 TEST(ScenarioParser, SacHasItsOwnReplayAndStillReadsTheOneItUsedToShareWithDqn) {
   const auto agent_of = [](const std::string& algorithm, std::vector<std::string> overrides) {
-    json doc = ScenarioB();
+    json doc = ShippedScenarioDocument("b");
     ApplyOverrides(doc, AlgorithmOverrides(algorithm));
     ApplyOverrides(doc, overrides);
     return ParseScenario(doc).agent;
@@ -135,7 +132,7 @@ TEST(ScenarioParser, SacHasItsOwnReplayAndStillReadsTheOneItUsedToShareWithDqn) 
   EXPECT_EQ(dqn.sac.replay_capacity, 1000000);
   EXPECT_EQ(agent_of("dqn", {"agent.sac.replay_capacity=7000"}).dqn.replay_capacity, 1000000);
   // The effective scenario names SAC's own, and reads back the same.
-  json doc = ScenarioB();
+  json doc = ShippedScenarioDocument("b");
   ApplyOverrides(doc, AlgorithmOverrides("sac"));
   ApplyOverrides(doc, {"agent.replay_capacity=5000"});
   const json written = ToJson(ParseScenario(doc));
@@ -144,7 +141,7 @@ TEST(ScenarioParser, SacHasItsOwnReplayAndStillReadsTheOneItUsedToShareWithDqn) 
 }
 
 TEST(ScenarioParser, ToJsonRoundTrips) {
-  const Scenario s = ParseScenario(ScenarioB());
+  const Scenario s = ParseScenario(ShippedScenarioDocument("b"));
   const Scenario again = ParseScenario(ToJson(s));
   EXPECT_EQ(ToJson(again), ToJson(s));
 }
@@ -162,16 +159,16 @@ TEST(ScenarioParser, MissingFileIsAConfigError) {
   EXPECT_THROW(ReadJsonFile("/nonexistent/scenario.json"), ConfigError);
 }
 
-struct BadInput {
+struct BadOverride {
   const char* name;
   std::vector<std::string> overrides;
   const char* expected;  // "<path>: <start of problem>"
 };
 
-class ScenarioParserBadInput : public ::testing::TestWithParam<BadInput> {};
+class ScenarioParserBadInput : public ::testing::TestWithParam<BadOverride> {};
 
 TEST_P(ScenarioParserBadInput, NamesPathAndProblem) {
-  const std::string error = ErrorOf(ScenarioB(), GetParam().overrides);
+  const std::string error = ErrorOf(ShippedScenarioDocument("b"), GetParam().overrides);
   EXPECT_NE(error.find(GetParam().expected), std::string::npos)
       << "got: \"" << error << "\", expected to contain: \"" << GetParam().expected << "\"";
 }
@@ -179,105 +176,110 @@ TEST_P(ScenarioParserBadInput, NamesPathAndProblem) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, ScenarioParserBadInput,
     ::testing::Values(
-        BadInput{
+        BadOverride{
             "UnknownTopLevelKey", {"wfi={}"}, "/wfi: unknown key \"wfi\"; did you mean \"wifi\"?"},
-        BadInput{"UnknownNestedKey",
-                 {"venue.widht=3"},
-                 "/venue/widht: unknown key \"widht\"; did you mean \"width\"?"},
-        BadInput{
+        BadOverride{"UnknownNestedKey",
+                    {"venue.widht=3"},
+                    "/venue/widht: unknown key \"widht\"; did you mean \"width\"?"},
+        BadOverride{
             "WrongType", {"venue.width=\"wide\""}, "/venue/width: expected a number, got a string"},
-        BadInput{"NegativeNumber", {"wifi.tx_power=-100"}, "/wifi/tx_power: must be >= -30"},
-        BadInput{"NegativeDuration",
-                 {"simulation.duration=-1"},
-                 "/simulation/duration: must be positive"},
-        BadInput{"FractionalInteger", {"wifi.channel=50.5"}, "/wifi/channel: expected an integer"},
-        BadInput{
+        BadOverride{"NegativeNumber", {"wifi.tx_power=-100"}, "/wifi/tx_power: must be >= -30"},
+        BadOverride{"NegativeDuration",
+                    {"simulation.duration=-1"},
+                    "/simulation/duration: must be positive"},
+        BadOverride{
+            "FractionalInteger", {"wifi.channel=50.5"}, "/wifi/channel: expected an integer"},
+        BadOverride{
             "UnknownEnum",
             {"wifi.mode=adhok"},
             "/wifi/mode: unknown value \"adhok\" (one of: adhoc, ap_sta); did you mean \"adhoc\"?"},
-        BadInput{"BadWidth", {"wifi.width=100"}, "/wifi/width: must be 20, 40, 80 or 160 MHz"},
-        BadInput{"BadGuardInterval",
-                 {"wifi.guard_interval=1600"},
-                 "/wifi/guard_interval: 802.11ac guard interval must be 400 or 800 ns"},
-        BadInput{"NoiseBelowThermal",
-                 {"wifi.noise_floor=-100"},
-                 "/wifi/noise_floor: is below the thermal noise"},
-        BadInput{"UeOutsideVenue",
-                 {"ues.2.position=[130, 50, 1.5]"},
-                 "/ues/2/position: UE at (130, 50, 1.5) is outside the venue"},
-        BadInput{"UeInsideBuilding",
-                 {"ues.0.position=[50, 50, 1.5]"},
-                 "/ues/0/position: UE at (50, 50, 1.5) is inside building 0 (\"tower\")"},
-        BadInput{
+        BadOverride{"BadWidth", {"wifi.width=100"}, "/wifi/width: must be 20, 40, 80 or 160 MHz"},
+        BadOverride{"BadGuardInterval",
+                    {"wifi.guard_interval=1600"},
+                    "/wifi/guard_interval: 802.11ac guard interval must be 400 or 800 ns"},
+        BadOverride{"NoiseBelowThermal",
+                    {"wifi.noise_floor=-100"},
+                    "/wifi/noise_floor: is below the thermal noise"},
+        BadOverride{"UeOutsideVenue",
+                    {"ues.2.position=[130, 50, 1.5]"},
+                    "/ues/2/position: UE at (130, 50, 1.5) is outside the venue"},
+        BadOverride{"UeInsideBuilding",
+                    {"ues.0.position=[50, 50, 1.5]"},
+                    "/ues/0/position: UE at (50, 50, 1.5) is inside building 0 (\"tower\")"},
+        BadOverride{
             "PositionNotTriple", {"ues.0.position=[1, 2]"}, "/ues/0/position: expected [x, y, z]"},
-        BadInput{"DemandBothForms",
-                 {"ues.0.demand={\"mbps\": 1, \"mcs\": 0}"},
-                 "/ues/0/demand: give exactly one of"},
-        BadInput{"DemandMcsTooHigh",
-                 {"ues.0.demand={\"mcs\": 10}"},
-                 "/ues/0/demand/mcs: must be in [0, 9]"},
-        BadInput{"BuildingOutsideVenue",
-                 {"buildings.1.x=[90, 110]"},
-                 "/buildings/1: building \"north-block\" [90, 110]"},
-        BadInput{"BuildingTooTall", {"buildings.0.height=80"}, "/buildings/0: building \"tower\""},
-        BadInput{"OverlappingBuildings",
-                 {"buildings.4.x=[40, 50]", "buildings.4.y=[40, 50]"},
-                 "/buildings/4: building \"west-house\" overlaps building 0 (\"tower\")"},
-        BadInput{
+        BadOverride{"DemandBothForms",
+                    {"ues.0.demand={\"mbps\": 1, \"mcs\": 0}"},
+                    "/ues/0/demand: give exactly one of"},
+        BadOverride{"DemandMcsTooHigh",
+                    {"ues.0.demand={\"mcs\": 10}"},
+                    "/ues/0/demand/mcs: must be in [0, 9]"},
+        BadOverride{"BuildingOutsideVenue",
+                    {"buildings.1.x=[90, 110]"},
+                    "/buildings/1: building \"north-block\" [90, 110]"},
+        BadOverride{
+            "BuildingTooTall", {"buildings.0.height=80"}, "/buildings/0: building \"tower\""},
+        BadOverride{"OverlappingBuildings",
+                    {"buildings.4.x=[40, 50]", "buildings.4.y=[40, 50]"},
+                    "/buildings/4: building \"west-house\" overlaps building 0 (\"tower\")"},
+        BadOverride{
             "EmptyInterval", {"buildings.0.x=[55, 45]"}, "/buildings/0/x: min must be below max"},
-        BadInput{"ZoneExcludesInitial",
-                 {"uav.zone.z=[30, 60]"},
-                 "/uav/zone: the zone [0, 100] x [0, 100] x [30, 60] excludes the initial position "
-                 "(50, 50, 25)"},
-        BadInput{"UavInsideBuilding",
-                 {"uav.position=[50, 50, 10]"},
-                 "/uav/position: UAV at (50, 50, 10) is inside building 0"},
-        BadInput{"ZoneOutsideVenue",
-                 {"uav.zone.x=[-10, 100]"},
-                 "/uav/zone: the zone reaches outside the venue"},
-        BadInput{"WarmupTooLong",
-                 {"simulation.warmup=20"},
-                 "/simulation/warmup: must be shorter than the duration"},
-        BadInput{"NoUes", {"ues=[]"}, "/ues: expected a non-empty array"},
-        BadInput{"SpecWithoutType",
-                 {"propagation={\"attributes\": {}}"},
-                 "/propagation/type: is required"},
-        BadInput{"SpecBadAttributeValue",
-                 {"propagation.attributes.Frequency=[1]"},
-                 "/propagation/attributes/Frequency: expected a number, string, boolean"},
-        BadInput{"BadOverride", {"novalue"}, "--set novalue: expected path=value"},
-        BadInput{"UnknownAlgorithm",
-                 {"agent.algorithm=a2c"},
-                 "/agent/algorithm: unknown value \"a2c\" (one of: dqn, ppo, sac)"},
-        BadInput{"SacOnDiscreteMoves",
-                 {"agent.algorithm=sac"},
-                 "/agent/algorithm: sac needs env.action_space \"continuous\", not \"discrete\""},
-        BadInput{"DqnOnDisplacements",
-                 {"env.action_space=continuous"},
-                 "/agent/algorithm: dqn needs env.action_space \"discrete\""},
-        BadInput{"UnknownActionSpace",
-                 {"env.action_space=box"},
-                 "/env/action_space: unknown value \"box\""},
-        BadInput{"NegativeEvalInterval",
-                 {"agent.eval_interval=-1"},
-                 "/agent/eval_interval: must be in [0, 1000000]"},
-        BadInput{"EarlyStopWithoutCheckpoints",
-                 {"agent.eval_interval=0", "agent.early_stop_checkpoints=3"},
-                 "/agent/early_stop_checkpoints: needs checkpoints: set agent.eval_interval > 0"},
-        BadInput{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
-        BadInput{
+        BadOverride{
+            "ZoneExcludesInitial",
+            {"uav.zone.z=[30, 60]"},
+            "/uav/zone: the zone [0, 100] x [0, 100] x [30, 60] excludes the initial position "
+            "(50, 50, 25)"},
+        BadOverride{"UavInsideBuilding",
+                    {"uav.position=[50, 50, 10]"},
+                    "/uav/position: UAV at (50, 50, 10) is inside building 0"},
+        BadOverride{"ZoneOutsideVenue",
+                    {"uav.zone.x=[-10, 100]"},
+                    "/uav/zone: the zone reaches outside the venue"},
+        BadOverride{"WarmupTooLong",
+                    {"simulation.warmup=20"},
+                    "/simulation/warmup: must be shorter than the duration"},
+        BadOverride{"NoUes", {"ues=[]"}, "/ues: expected a non-empty array"},
+        BadOverride{"SpecWithoutType",
+                    {"propagation={\"attributes\": {}}"},
+                    "/propagation/type: is required"},
+        BadOverride{"SpecBadAttributeValue",
+                    {"propagation.attributes.Frequency=[1]"},
+                    "/propagation/attributes/Frequency: expected a number, string, boolean"},
+        BadOverride{"BadOverride", {"novalue"}, "--set novalue: expected path=value"},
+        BadOverride{"UnknownAlgorithm",
+                    {"agent.algorithm=a2c"},
+                    "/agent/algorithm: unknown value \"a2c\" (one of: dqn, ppo, sac)"},
+        BadOverride{
+            "SacOnDiscreteMoves",
+            {"agent.algorithm=sac"},
+            "/agent/algorithm: sac needs env.action_space \"continuous\", not \"discrete\""},
+        BadOverride{"DqnOnDisplacements",
+                    {"env.action_space=continuous"},
+                    "/agent/algorithm: dqn needs env.action_space \"discrete\""},
+        BadOverride{"UnknownActionSpace",
+                    {"env.action_space=box"},
+                    "/env/action_space: unknown value \"box\""},
+        BadOverride{"NegativeEvalInterval",
+                    {"agent.eval_interval=-1"},
+                    "/agent/eval_interval: must be in [0, 1000000]"},
+        BadOverride{
+            "EarlyStopWithoutCheckpoints",
+            {"agent.eval_interval=0", "agent.early_stop_checkpoints=3"},
+            "/agent/early_stop_checkpoints: needs checkpoints: set agent.eval_interval > 0"},
+        BadOverride{"PpoClipOutOfRange", {"agent.ppo.clip=1.5"}, "/agent/ppo/clip: must be <= 1"},
+        BadOverride{
             "PpoUnknownKey", {"agent.ppo.lamda=0.9"}, "/agent/ppo/lamda: unknown key \"lamda\""},
-        BadInput{"PpoAnnealNotABoolean",
-                 {"agent.ppo.anneal_learning_rate=1"},
-                 "/agent/ppo/anneal_learning_rate: expected a boolean, got a number"},
-        BadInput{"PpoMoreMinibatchesThanSteps",
-                 {"agent.ppo.minibatches=300"},
-                 "/agent/ppo/minibatches: must not exceed rollout_steps"},
-        BadInput{"SacNegativeAlpha",
-                 {"agent.algorithm=sac", "env.action_space=continuous", "agent.sac.alpha=-1"},
-                 "/agent/sac/alpha: must not be negative, got -1"},
-        BadInput{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"}),
-    [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
+        BadOverride{"PpoAnnealNotABoolean",
+                    {"agent.ppo.anneal_learning_rate=1"},
+                    "/agent/ppo/anneal_learning_rate: expected a boolean, got a number"},
+        BadOverride{"PpoMoreMinibatchesThanSteps",
+                    {"agent.ppo.minibatches=300"},
+                    "/agent/ppo/minibatches: must not exceed rollout_steps"},
+        BadOverride{"SacNegativeAlpha",
+                    {"agent.algorithm=sac", "env.action_space=continuous", "agent.sac.alpha=-1"},
+                    "/agent/sac/alpha: must not be negative, got -1"},
+        BadOverride{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"}),
+    [](const ::testing::TestParamInfo<BadOverride>& param) { return param.param.name; });
 
 }  // namespace
 }  // namespace rlpos

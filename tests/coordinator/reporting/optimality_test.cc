@@ -14,6 +14,7 @@
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/scheduling/coordinator_store.h"
 #include "tests/support/campaign_fixtures.h"
+#include "tests/support/temp_dir.h"
 
 namespace rlpos {
 namespace {
@@ -38,7 +39,7 @@ OptimalityRow Row(const std::string& scenario, int uavs, const std::string& algo
 // dqn, 1 UAV: ratios 1.0, 0.99, 0.9, 0.5, 0.97 (sorted 0.5 0.9 0.97 0.99 1.0);
 // ppo, 2 UAVs: 1.02 (rl beats the coordinate descent) and 0.94; ppo, 1 UAV: 0.95 exactly;
 // sac, 1 UAV: an oracle reward of 0, which gives no ratio; an unrecorded algorithm: 0.8.
-std::vector<OptimalityRow> Rows() {
+std::vector<OptimalityRow> OptimalityRows() {
   return {Row("S2", 2, "ppo", 1, 1.02, 1.0), Row("A", 1, "dqn", 1, 0.5, 0.5),
           Row("B", 1, "dqn", 1, 0.495, 0.5), Row("C", 1, "dqn", 1, 0.45, 0.5),
           Row("C", 1, "", 1, 0.4, 0.5),      Row("D", 1, "dqn", 1, 0.25, 0.5),
@@ -54,7 +55,7 @@ TEST(Optimality, TheRatioIsRlsRewardOverTheOracles) {
 }
 
 TEST(Optimality, MedianP10WorstAndShareAtOrAbove95PerAlgorithmAndUavCount) {
-  const std::vector<OptimalitySummary> summary = SummarizeOptimality(Rows());
+  const std::vector<OptimalitySummary> summary = SummarizeOptimality(OptimalityRows());
   ASSERT_EQ(summary.size(), 4u);  // sac has no ratio
   // dqn first (AllAlgorithms() order), then ppo by UAV count, then the unrecorded algorithm.
   EXPECT_EQ(summary[0].algorithm, "dqn");
@@ -87,7 +88,7 @@ TEST(Optimality, MedianP10WorstAndShareAtOrAbove95PerAlgorithmAndUavCount) {
 }
 
 TEST(Optimality, RunsBelow95AreListedWorstFirst) {
-  const std::vector<OptimalityRow> below = RunsBelowNearOptimal(Rows());
+  const std::vector<OptimalityRow> below = RunsBelowNearOptimal(OptimalityRows());
   ASSERT_EQ(below.size(), 4u);
   EXPECT_EQ(below[0].scenario, "D");   // 0.5
   EXPECT_EQ(below[1].algorithm, "");   // 0.8
@@ -96,7 +97,7 @@ TEST(Optimality, RunsBelow95AreListedWorstFirst) {
 }
 
 TEST(Optimality, TablesCsvJsonAndCdf) {
-  const std::vector<OptimalityRow> rows = Rows();
+  const std::vector<OptimalityRow> rows = OptimalityRows();
   const std::vector<OptimalitySummary> summary = SummarizeOptimality(rows);
   const std::string text = FormatOptimalityText(summary);
   EXPECT_NE(text.find("algorithm  UAVs  runs  scenarios  median    P10  worst      >= 0.95"),
@@ -127,7 +128,7 @@ TEST(Optimality, TablesCsvJsonAndCdf) {
 TEST(Optimality, TheReportSectionIsAbsentWithoutRatios) {
   EXPECT_EQ(FormatOptimalitySection({}), "");
   EXPECT_EQ(FormatOptimalitySection({Row("A", 1, "sac", 1, 0.0, 0.0)}), "");
-  const std::string section = FormatOptimalitySection(Rows());
+  const std::string section = FormatOptimalitySection(OptimalityRows());
   EXPECT_NE(section.find("## Optimality: rl against the oracle"), std::string::npos);
   EXPECT_NE(section.find("### Runs under 95 % of the oracle, worst first"), std::string::npos);
   EXPECT_NE(section.find("| D | 1 | dqn | 1 | rl@dqn | 0.2500 | 0.5000 | 0.500 |"),
@@ -226,13 +227,6 @@ TEST_F(OptimalityStoreTest, OneRowPerRlLabelOfAScenarioWithAnOracleReward) {
   }
 }
 
-std::string ReadText(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST_F(OptimalityStoreTest, TheReportHasTheSectionItsFilesAndItsPlot) {
   RecordResults();
   const std::string out = dir_.File("report");
@@ -240,11 +234,11 @@ TEST_F(OptimalityStoreTest, TheReportHasTheSectionItsFilesAndItsPlot) {
   options.plot_script = testing::SourcePath("scripts/plot_campaign.py");
   const ReportResult result = WriteReport(store_.reader, campaign_.id, out, options);
   const auto rows = store_.reader.Optimality(campaign_.id);
-  EXPECT_EQ(ReadText(out + "/optimality.csv"), FormatOptimalityRowsCsv(rows));
-  EXPECT_EQ(ReadText(out + "/optimality_summary.csv"),
+  EXPECT_EQ(testing::ReadFile(out + "/optimality.csv"), FormatOptimalityRowsCsv(rows));
+  EXPECT_EQ(testing::ReadFile(out + "/optimality_summary.csv"),
             FormatOptimalitySummaryCsv(SummarizeOptimality(rows)));
-  EXPECT_EQ(ReadText(out + "/optimality_cdf.csv"), FormatOptimalityCdfCsv(rows));
-  const std::string md = ReadText(out + "/summary.md");
+  EXPECT_EQ(testing::ReadFile(out + "/optimality_cdf.csv"), FormatOptimalityCdfCsv(rows));
+  const std::string md = testing::ReadFile(out + "/summary.md");
   EXPECT_NE(md.find(FormatOptimalitySection(rows)), std::string::npos) << md;
   EXPECT_NE(md.find("| dqn | 1 | 2 | 1 | 0.750 | 0.550 | 0.500 | 1/2 (50 %) |"), std::string::npos)
       << md;

@@ -22,6 +22,7 @@
 #include "coordinator/reporting/scenario_maps.h"
 #include "coordinator/scheduling/coordinator_store.h"
 #include "tests/support/campaign_fixtures.h"
+#include "tests/support/temp_dir.h"
 
 namespace rlpos {
 namespace {
@@ -31,13 +32,6 @@ using nlohmann::json;
 
 // t(0.975, 1): the 95 % CI of the mean of two runs is t * s / sqrt(2).
 constexpr double kT1 = 12.706204736174698;
-
-std::string ReadText(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> lines;
@@ -418,10 +412,11 @@ TEST_F(ReportingTest, WriteReportWritesEveryFile) {
   EXPECT_TRUE(result.warnings.empty());  // no plot script asked for: no plots, no warning
   const auto rows = store_.reader.Metrics(campaign_.id);
   const auto summary = SummarizeRuns(rows);
-  EXPECT_EQ(ReadText(out + "/summary.csv"), FormatSummaryCsv(summary));
-  EXPECT_EQ(ReadText(out + "/throughput_ccdf.csv"), FormatThroughputCcdfCsv(ThroughputCcdf(rows)));
-  EXPECT_EQ(ReadText(out + "/delay_cdf.csv"), FormatDelayCdfCsv(DelayCdf(rows)));
-  const std::string md = ReadText(out + "/summary.md");
+  EXPECT_EQ(testing::ReadFile(out + "/summary.csv"), FormatSummaryCsv(summary));
+  EXPECT_EQ(testing::ReadFile(out + "/throughput_ccdf.csv"),
+            FormatThroughputCcdfCsv(ThroughputCcdf(rows)));
+  EXPECT_EQ(testing::ReadFile(out + "/delay_cdf.csv"), FormatDelayCdfCsv(DelayCdf(rows)));
+  const std::string md = testing::ReadFile(out + "/summary.md");
   EXPECT_NE(md.find("# Campaign report: mini"), std::string::npos);
   EXPECT_NE(md.find("`" + campaign_.id + "`"), std::string::npos);
   EXPECT_NE(md.find("44 in all: 13 succeeded, 1 failed"), std::string::npos) << md;
@@ -432,7 +427,7 @@ TEST_F(ReportingTest, WriteReportWritesEveryFile) {
 
   // Again over the existing files: replaced, not appended to.
   WriteReport(store_.reader, campaign_.id, out);
-  EXPECT_EQ(ReadText(out + "/summary.csv"), FormatSummaryCsv(summary));
+  EXPECT_EQ(testing::ReadFile(out + "/summary.csv"), FormatSummaryCsv(summary));
 }
 
 TEST_F(ReportingTest, EmptyCampaignWritesHeadersOnly) {
@@ -441,11 +436,11 @@ TEST_F(ReportingTest, EmptyCampaignWritesHeadersOnly) {
       store_.reader, campaign_.id, out, PlotWith(testing::SourcePath("scripts/plot_campaign.py")));
   EXPECT_EQ(result.files.size(), 4u);  // no curve: the plot script is not even run
   EXPECT_TRUE(result.warnings.empty());
-  EXPECT_EQ(Lines(ReadText(out + "/summary.csv")).size(), 1u);
-  EXPECT_EQ(ReadText(out + "/throughput_ccdf.csv"),
+  EXPECT_EQ(Lines(testing::ReadFile(out + "/summary.csv")).size(), 1u);
+  EXPECT_EQ(testing::ReadFile(out + "/throughput_ccdf.csv"),
             "scenario,positioner,throughput_mbps,p_above\n");
-  EXPECT_EQ(ReadText(out + "/delay_cdf.csv"), "scenario,positioner,delay_ms,p_at_most\n");
-  const std::string md = ReadText(out + "/summary.md");
+  EXPECT_EQ(testing::ReadFile(out + "/delay_cdf.csv"), "scenario,positioner,delay_ms,p_at_most\n");
+  const std::string md = testing::ReadFile(out + "/summary.md");
   EXPECT_NE(md.find("No eval run has succeeded yet."), std::string::npos);
   EXPECT_EQ(md.find("failed (see"), std::string::npos);  // no failure note
 }
@@ -518,13 +513,13 @@ TEST_F(ReportingTest, MapPerScenarioWithTheRlFlight) {
   for (const auto& w : result.warnings)
     ADD_FAILURE() << "warning: " << w;
   for (const char* map : {"map_1.png", "map_2.png"}) {
-    const std::string png = ReadText((fs::path(out) / map).string());
+    const std::string png = testing::ReadFile((fs::path(out) / map).string());
     EXPECT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n") << map;
     EXPECT_NE(std::find(result.files.begin(), result.files.end(), (fs::path(out) / map).string()),
               result.files.end());
   }
   EXPECT_FALSE(fs::exists(fs::path(out) / "map_3.png"));
-  const std::string md = ReadText((fs::path(out) / "summary.md").string());
+  const std::string md = testing::ReadFile((fs::path(out) / "summary.md").string());
   EXPECT_NE(md.find("### Scenario B\n\n![Scenario B](map_1.png)"), std::string::npos) << md;
   EXPECT_NE(md.find("### Scenario C\n\n![Scenario C](map_2.png)"), std::string::npos) << md;
   EXPECT_NE(md.find("The rl flight"), std::string::npos) << md;
@@ -544,7 +539,8 @@ TEST(ReportPlots, DefaultPlotScriptIsCopiedBesideTheBinaries) {
   EXPECT_EQ(DefaultPlotScript("/opt/rlpos/bin"), "/opt/rlpos/bin/../share/rlpos/plot_campaign.py");
   const std::string script = DefaultPlotScript(ExeDir());
   ASSERT_TRUE(fs::is_regular_file(script)) << script;
-  EXPECT_EQ(ReadText(script), ReadText(testing::SourcePath("scripts/plot_campaign.py")));
+  EXPECT_EQ(testing::ReadFile(script),
+            testing::ReadFile(testing::SourcePath("scripts/plot_campaign.py")));
 }
 
 TEST_F(ReportingTest, PlotsArePngsWhenMatplotlibIsThere) {
@@ -564,7 +560,7 @@ TEST_F(ReportingTest, PlotsArePngsWhenMatplotlibIsThere) {
     EXPECT_EQ(result.files[4 + i], file);
     ASSERT_TRUE(fs::is_regular_file(file)) << file;
     EXPECT_GT(fs::file_size(file), 1000u) << file;
-    EXPECT_EQ(ReadText(file).substr(1, 3), "PNG") << file;
+    EXPECT_EQ(testing::ReadFile(file).substr(1, 3), "PNG") << file;
   }
   EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 8);
 }

@@ -27,7 +27,7 @@ UavMetricRow Row(const std::string& scenario, const std::string& label, std::int
   return r;
 }
 
-std::vector<UavMetricRow> Rows() {
+std::vector<UavMetricRow> UavRows() {
   return {
       Row("one", "baseline", 1, 0, 4, 100, 5, 10, 0.9),  // a single-UAV scenario: left out
       Row("two", "rl", 1, 0, 6, 300, 10, 40, 0.8),
@@ -40,7 +40,7 @@ std::vector<UavMetricRow> Rows() {
 }
 
 TEST(UavSummary, MeansPerUavOverItsRuns) {
-  const std::vector<UavSummary> s = SummarizeUavs(Rows());
+  const std::vector<UavSummary> s = SummarizeUavs(UavRows());
   ASSERT_EQ(s.size(), 4u);
   // Report order: baseline before rl, UAVs in scenario order.
   EXPECT_EQ(s[0].positioner, "baseline");
@@ -70,7 +70,7 @@ TEST(UavSummary, MeansPerUavOverItsRuns) {
 }
 
 TEST(UavSummary, Renderings) {
-  const std::vector<UavSummary> s = SummarizeUavs(Rows());
+  const std::vector<UavSummary> s = SummarizeUavs(UavRows());
   const std::string csv = FormatUavSummaryCsv(s);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "scenario,positioner,uav,uav_name,runs,ues_served_mean,throughput_mean_mbps,"
@@ -88,7 +88,7 @@ TEST(UavSummary, Renderings) {
       << text;
   EXPECT_NE(FormatUavSummaryMarkdown(s).find("| two | rl | north | 2 | 5.0 | 250.00 |"),
             std::string::npos);
-  EXPECT_TRUE(SummarizeUavs({Rows()[0]}).empty());  // one UAV only: no table
+  EXPECT_TRUE(SummarizeUavs({UavRows()[0]}).empty());  // one UAV only: no table
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ std::string ReadToEnd(int fd) {
 }
 
 // The status of the response, 0 when the server closed without one.
-int StatusOf(const std::string& response) {
+int ResponseStatus(const std::string& response) {
   if (response.compare(0, 9, "HTTP/1.1 ") != 0)
     return 0;
   return std::stoi(response.substr(9, 3));
@@ -110,7 +110,7 @@ class HttpServerTest : public ::testing::Test {
 
   void ExpectStillAnswering() {
     const std::string response = Get("/api/campaigns");
-    EXPECT_EQ(StatusOf(response), 200) << response;
+    EXPECT_EQ(ResponseStatus(response), 200) << response;
     EXPECT_NE(BodyOf(response).find(db_.id()), std::string::npos);
   }
 
@@ -123,7 +123,7 @@ class HttpServerTest : public ::testing::Test {
 TEST_F(HttpServerTest, AnswersThePageAndTheApi) {
   Start();
   const std::string page = Get("/");
-  EXPECT_EQ(StatusOf(page), 200);
+  EXPECT_EQ(ResponseStatus(page), 200);
   EXPECT_NE(page.find("Content-Security-Policy: default-src 'none'"), std::string::npos);
   EXPECT_NE(page.find("X-Content-Type-Options: nosniff"), std::string::npos);
   ExpectStillAnswering();
@@ -157,7 +157,7 @@ TEST_F(HttpServerTest, HostileRequestsGet4xxAndChangeNothing) {
   };
   for (const auto& request : hostile) {
     const std::string response = Exchange(request);
-    const int status = StatusOf(response);
+    const int status = ResponseStatus(response);
     EXPECT_TRUE(status >= 400 && status < 500) << request.substr(0, 80) << " -> " << response;
     if (status != 0 && !BodyOf(response).empty()) {
       EXPECT_EQ(BodyOf(response).rfind("{\"error\":", 0), 0u) << response;
@@ -169,19 +169,22 @@ TEST_F(HttpServerTest, HostileRequestsGet4xxAndChangeNothing) {
   for (int i = 0; i < 2000; ++i)
     many += "X-" + std::to_string(i) + ": " + std::string(40, 'h') + "\r\n";
   const std::string response = Exchange(many + "\r\n");
-  EXPECT_NE(StatusOf(response), 200) << response.substr(0, 200);
+  EXPECT_NE(ResponseStatus(response), 200) << response.substr(0, 200);
   ExpectStillAnswering();
   EXPECT_EQ(db_.Hash(), before);
 }
 
 TEST_F(HttpServerTest, ATokenGuardsEveryRequest) {
   Start("0123456789abcdef0123");
-  EXPECT_EQ(StatusOf(Get("/api/campaigns")), 401);
-  EXPECT_EQ(StatusOf(Get("/")), 401);
-  EXPECT_EQ(StatusOf(Get("/api/campaigns", "Authorization: Bearer 0123456789abcdef0124\r\n")), 401);
-  EXPECT_EQ(StatusOf(Get("/api/campaigns", "Authorization: Bearer 0123456789abcdef012\r\n")), 401);
-  EXPECT_EQ(StatusOf(Get("/api/campaigns", "Authorization: Bearer 0123456789abcdef0123\r\n")), 200);
-  EXPECT_EQ(StatusOf(Get("/?token=0123456789abcdef0123")), 200);
+  EXPECT_EQ(ResponseStatus(Get("/api/campaigns")), 401);
+  EXPECT_EQ(ResponseStatus(Get("/")), 401);
+  EXPECT_EQ(ResponseStatus(Get("/api/campaigns", "Authorization: Bearer 0123456789abcdef0124\r\n")),
+            401);
+  EXPECT_EQ(ResponseStatus(Get("/api/campaigns", "Authorization: Bearer 0123456789abcdef012\r\n")),
+            401);
+  EXPECT_EQ(ResponseStatus(Get("/api/campaigns", "Authorization: Bearer 0123456789abcdef0123\r\n")),
+            200);
+  EXPECT_EQ(ResponseStatus(Get("/?token=0123456789abcdef0123")), 200);
 }
 
 TEST_F(HttpServerTest, ASlowClientIsCutOffAndOthersAreServedMeanwhile) {
@@ -210,7 +213,7 @@ TEST_F(HttpServerTest, IdleConnectionsDoNotHoldTheServer) {
   for (int i = 0; i < 10; ++i)
     idle.push_back(Connect(port_));
   // Refused while the queue is full, answered once the deadline has freed it.
-  EXPECT_TRUE(rlpos::testing::WaitFor([&] { return StatusOf(Get("/api/campaigns")) == 200; },
+  EXPECT_TRUE(rlpos::testing::WaitFor([&] { return ResponseStatus(Get("/api/campaigns")) == 200; },
                                       kPatienceS, 100));
   for (int fd : idle)
     close(fd);

@@ -7,6 +7,7 @@
 
 #include "common/config/config_error.h"
 #include "common/scenario/scenario_parser.h"
+#include "tests/worker/environment/shipped_scenario.h"
 #include "worker/environment/association.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/environment/uav_network.h"
@@ -19,16 +20,11 @@
 namespace rlpos {
 namespace {
 
-Scenario Load(const std::string& name, std::vector<std::string> overrides = {}) {
-  return LoadScenario(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/" + name + ".json",
-                      overrides);
-}
-
 // One UAV low beside each cluster, with a clear view of most of it (the oracle's region).
 const Placement kBesideClusters{{45, 100, 12}, {115, 0, 12}};
 
 TEST(Association, BestSnrTiesToTheFirstAndAFixedUavWins) {
-  Scenario s = Load("campus2");
+  Scenario s = LoadShipped("campus2");
   s.ues.resize(3);
   s.ues[2].uav = "north";
   // snr[u][i]
@@ -43,8 +39,8 @@ TEST(UavChannels, DistinctUnlessGivenAndRefusedWhenTheBandRunsOut) {
       out.push_back(plan.channel);
     return out;
   };
-  EXPECT_EQ(channels(Load("campus2")), (std::vector<int>{50, 114}));
-  EXPECT_EQ(channels(Load("urban3")), (std::vector<int>{42, 58, 106}));
+  EXPECT_EQ(channels(LoadShipped("campus2")), (std::vector<int>{50, 114}));
+  EXPECT_EQ(channels(LoadShipped("urban3")), (std::vector<int>{42, 58, 106}));
   // ns-3 knows three 160 MHz channels in 5 GHz (50, 114, 163): a fourth UAV has none left.
   nlohmann::json four =
       ReadJsonFile(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json");
@@ -63,7 +59,7 @@ TEST(UavChannels, DistinctUnlessGivenAndRefusedWhenTheBandRunsOut) {
   four["uavs"][3]["channel"] = 50;
   EXPECT_EQ(channels(ParseScenario(four)), (std::vector<int>{114, 163, 50, 50}));
   try {
-    Load("campus2", {"uavs.1.channel=52"});
+    LoadShipped("campus2", {"uavs.1.channel=52"});
     ADD_FAILURE() << "channel 52 (not a 160 MHz channel) was accepted";
   } catch (const ConfigError& e) {
     // The value came from the override: the error names it, then the path.
@@ -80,7 +76,7 @@ std::vector<std::string> Saturated(std::vector<std::string> overrides) {
 }
 
 TEST(AnalyticMultiUav, UesFollowTheBestUav) {
-  AnalyticEvaluator analytic(Load("campus2", {"env.fidelity=analytic"}));
+  AnalyticEvaluator analytic(LoadShipped("campus2", {"env.fidelity=analytic"}));
   const StepInfo beside = analytic.Evaluate(kBesideClusters);
   // North, on the west side, serves most of the west cluster w0-w5; south most of the east.
   EXPECT_GE(std::count(beside.serving.begin(), beside.serving.begin() + 6, 0), 4);
@@ -94,11 +90,11 @@ TEST(AnalyticMultiUav, UesFollowTheBestUav) {
 TEST(AnalyticMultiUav, UavsOnOneChannelShareItsAirtime) {
   StepInfo apart, shared;
   {
-    AnalyticEvaluator analytic(Load("campus2", Saturated({"env.fidelity=analytic"})));
+    AnalyticEvaluator analytic(LoadShipped("campus2", Saturated({"env.fidelity=analytic"})));
     apart = analytic.Evaluate(kBesideClusters);
   }
   {
-    AnalyticEvaluator analytic(Load(
+    AnalyticEvaluator analytic(LoadShipped(
         "campus2", Saturated({"env.fidelity=analytic", "uavs.0.channel=50", "uavs.1.channel=50"})));
     shared = analytic.Evaluate(kBesideClusters);
   }
@@ -111,11 +107,12 @@ TEST(AnalyticMultiUav, UavsOnOneChannelShareItsAirtime) {
 
 TEST(PacketMultiUav, PerUavMetricsAddUpAndACommonChannelInterferes) {
   const auto short_run = Saturated({"simulation.duration=1", "simulation.warmup=0.5"});
-  const RunMetrics apart = EvaluatePosition(Load("campus2", short_run), kBesideClusters);
+  const RunMetrics apart = EvaluatePosition(LoadShipped("campus2", short_run), kBesideClusters);
   auto shared_overrides = short_run;
   shared_overrides.push_back("uavs.0.channel=50");
   shared_overrides.push_back("uavs.1.channel=50");
-  const RunMetrics shared = EvaluatePosition(Load("campus2", shared_overrides), kBesideClusters);
+  const RunMetrics shared =
+      EvaluatePosition(LoadShipped("campus2", shared_overrides), kBesideClusters);
   for (const RunMetrics* m : {&apart, &shared}) {
     ASSERT_EQ(m->uavs.size(), 2u);
     EXPECT_EQ(m->uavs[0].ues_served + m->uavs[1].ues_served, 12);
@@ -137,7 +134,7 @@ TEST(PacketMultiUav, AFixedAssignmentHoldsAgainstTheSnr) {
   std::vector<std::string> overrides{"simulation.duration=1", "simulation.warmup=0.5"};
   for (int i = 0; i < 12; ++i)
     overrides.push_back("ues." + std::to_string(i) + ".uav=\"south\"");
-  const RunMetrics m = EvaluatePosition(Load("campus2", overrides), kBesideClusters);
+  const RunMetrics m = EvaluatePosition(LoadShipped("campus2", overrides), kBesideClusters);
   EXPECT_EQ(m.uavs[0].ues_served, 0);
   EXPECT_EQ(m.uavs[1].ues_served, 12);
   EXPECT_DOUBLE_EQ(m.uavs[0].throughput_mbps, 0.0);
@@ -149,7 +146,7 @@ TEST(PacketMultiUav, AFixedAssignmentHoldsAgainstTheSnr) {
 // before (0.5-1 s) and after (`resumed_from` + 1 s) the handover at 1 s.
 std::pair<RunMetrics, RunMetrics> SwapTheUavs(const std::vector<std::string>& overrides,
                                               double resumed_from = 2.0) {
-  const Scenario s = Load("campus2", Saturated(overrides));
+  const Scenario s = LoadShipped("campus2", Saturated(overrides));
   UavNetwork network(s, kBesideClusters, Handover::kOn);
   network.BeginMeasurement({0.5, 1.0});
   network.RunUntil(1.0);
@@ -220,7 +217,7 @@ TEST(PacketMultiUav, AFixedAssignmentIsNeverHandedOver) {
   std::vector<std::string> overrides;
   for (int i = 0; i < 12; ++i)
     overrides.push_back("ues." + std::to_string(i) + ".uav=\"south\"");
-  UavNetwork network(Load("campus2", overrides), kBesideClusters, Handover::kOn);
+  UavNetwork network(LoadShipped("campus2", overrides), kBesideClusters, Handover::kOn);
   network.RunUntil(0.5);
   network.SetUavPositions({kBesideClusters[1], kBesideClusters[0]});
   EXPECT_EQ(network.Reassociate(), 0);
@@ -228,12 +225,12 @@ TEST(PacketMultiUav, AFixedAssignmentIsNeverHandedOver) {
 }
 
 TEST(PacketMultiUav, OnlyANetworkBuiltForHandoverReassociates) {
-  UavNetwork network(Load("campus2"), kBesideClusters);
+  UavNetwork network(LoadShipped("campus2"), kBesideClusters);
   EXPECT_THROW(network.Reassociate(), std::logic_error);
 }
 
 TEST(Positioners, CentroidsOfTwoClustersAboveTheirTowers) {
-  const Scenario s = Load("campus2");
+  const Scenario s = LoadShipped("campus2");
   const Placement p = CentroidPlacement(s);
   ASSERT_EQ(p.size(), 2u);
   std::vector<double> xs{p[0].x, p[1].x};
@@ -250,7 +247,7 @@ TEST(Positioners, CentroidsOfTwoClustersAboveTheirTowers) {
 }
 
 TEST(Positioners, OracleEndsWhereNoSingleUavCanImprove) {
-  const Scenario s = Load("campus2", {"env.fidelity=analytic"});
+  const Scenario s = LoadShipped("campus2", {"env.fidelity=analytic"});
   OracleOptions options;
   options.grid_step = 20;
   options.packet_candidates = 0;
@@ -285,9 +282,10 @@ TEST(Positioners, OracleEndsWhereNoSingleUavCanImprove) {
 
 TEST(TurnTakingEnv, UavsMoveInTurnAndNeverOntoEachOther) {
   // The two UAVs 5 m apart on x: north's "right" would land on south.
-  const Scenario s = Load("campus2", {"env.fidelity=analytic", "uavs.0.position=[100, 50, 40]",
-                                      "uavs.1.position=[105, 50, 40]",
-                                      "env.observations=[\"x\", \"y\", \"z\", \"n_los\"]"});
+  const Scenario s =
+      LoadShipped("campus2", {"env.fidelity=analytic", "uavs.0.position=[100, 50, 40]",
+                              "uavs.1.position=[105, 50, 40]",
+                              "env.observations=[\"x\", \"y\", \"z\", \"n_los\"]"});
   UavPositioningEnv env(s);
   const auto action = [&](const std::string& name) {
     return static_cast<int>(std::find(s.env.actions.begin(), s.env.actions.end(), name) -
@@ -322,7 +320,7 @@ TEST(TurnTakingEnv, PacketEpisodesReassociateAsTheAnalyticModelDoes) {
                                        "uavs.1.position=[105, 50, 40]"};
   auto analytic_overrides = start;
   analytic_overrides.push_back("env.fidelity=analytic");
-  const Scenario analytic_scenario = Load("campus2", analytic_overrides);
+  const Scenario analytic_scenario = LoadShipped("campus2", analytic_overrides);
   const auto action = [&](const std::string& name) {
     const auto& actions = analytic_scenario.env.actions;
     return static_cast<int>(std::find(actions.begin(), actions.end(), name) - actions.begin());
@@ -342,7 +340,7 @@ TEST(TurnTakingEnv, PacketEpisodesReassociateAsTheAnalyticModelDoes) {
 
   auto packet_overrides = start;
   packet_overrides.push_back("env.fidelity=packet");
-  UavPositioningEnv packet(Load("campus2", packet_overrides));
+  UavPositioningEnv packet(LoadShipped("campus2", packet_overrides));
   packet.Reset(1);
   EXPECT_EQ(packet.LastInfo().serving, serving[0]);
   for (std::size_t k = 0; k < moves.size(); ++k)
@@ -350,7 +348,7 @@ TEST(TurnTakingEnv, PacketEpisodesReassociateAsTheAnalyticModelDoes) {
 }
 
 TEST(TurnTakingEnv, TurnsOfSeveralSteps) {
-  const Scenario s = Load("campus2", {"env.fidelity=analytic", "env.turn_steps=2"});
+  const Scenario s = LoadShipped("campus2", {"env.fidelity=analytic", "env.turn_steps=2"});
   UavPositioningEnv env(s);
   const int up = static_cast<int>(std::find(s.env.actions.begin(), s.env.actions.end(), "up") -
                                   s.env.actions.begin());

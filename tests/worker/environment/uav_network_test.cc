@@ -4,21 +4,17 @@
 #include <gtest/gtest.h>
 
 #include "common/scenario/scenario_parser.h"
+#include "tests/worker/environment/shipped_scenario.h"
 #include "worker/environment/scenario_loading.h"
 
 namespace rlpos {
 namespace {
 
-Scenario Load(const std::string& name, std::vector<std::string> overrides = {}) {
-  return LoadScenario(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/" + name + ".json",
-                      overrides);
-}
-
 // A position of scenario B that sees all four UEs (see docs/scenarios.md, "Scenarios A, B and C").
 const Vec3 kAllLosB{50, 35, 10};
 
 TEST(UavNetwork, ScenarioBAllLosBeatsTheBaseline) {
-  const Scenario s = Load("b", {"simulation.duration=3"});
+  const Scenario s = LoadShipped("b", {"simulation.duration=3"});
   const RunMetrics baseline = EvaluatePosition(s, s.InitialPlacement());
   const RunMetrics all_los = EvaluatePosition(s, {kAllLosB});
   EXPECT_LT(baseline.n_los, 4);
@@ -35,7 +31,7 @@ TEST(UavNetwork, ScenarioBAllLosBeatsTheBaseline) {
 TEST(UavNetwork, RebuildingInOneProcessGivesTheSameRun) {
   // The gym rebuilds the network every episode: the same seed and RngRun must give the same
   // events however many networks the process built before.
-  const Scenario s = Load("b", {"simulation.duration=1.5", "simulation.warmup=0.5"});
+  const Scenario s = LoadShipped("b", {"simulation.duration=1.5", "simulation.warmup=0.5"});
   const RunMetrics first = EvaluatePosition(s, s.InitialPlacement());
   const RunMetrics second = EvaluatePosition(s, s.InitialPlacement());
   EXPECT_EQ(ToJson(first), ToJson(second));
@@ -46,10 +42,10 @@ TEST(UavNetwork, ObstacleAwareSnrDropsBehindABuildingHybridDoesNot) {
   // behind the east hall (x 72-80, 15 m tall).
   const Vec3 open{45, 60, 25};
   const Vec3 hidden{95, 60, 25};
-  const Scenario ours = Load("b");
+  const Scenario ours = LoadShipped("b");
   const Scenario hybrid =
-      Load("b", {"propagation={\"type\": \"ns3::HybridBuildingsPropagationLossModel\", "
-                 "\"attributes\": {\"ShadowSigmaOutdoor\": 0}}"});
+      LoadShipped("b", {"propagation={\"type\": \"ns3::HybridBuildingsPropagationLossModel\", "
+                        "\"attributes\": {\"ShadowSigmaOutdoor\": 0}}"});
   auto snr = [](const Scenario& s, const Vec3& p) {
     UavNetwork network(s, {p});
     const auto links = network.Links();

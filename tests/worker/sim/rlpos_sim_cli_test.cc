@@ -7,15 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/command.h"
+#include "tests/worker/sim/sim_test_support.h"
 
 namespace rlpos::testing {
 namespace {
-
-const std::string kScenarioB = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json";
-
-std::string Sim(const std::string& args) {
-  return BuiltBinary("rlpos-sim") + " " + args;
-}
 
 // Writes `text` to a fresh file and returns its path.
 std::string TempFile(const std::string& text) {

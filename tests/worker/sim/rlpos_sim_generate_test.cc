@@ -12,13 +12,10 @@
 
 #include "tests/support/command.h"
 #include "tests/support/temp_dir.h"
+#include "tests/worker/sim/sim_test_support.h"
 
 namespace rlpos::testing {
 namespace {
-
-std::string Sim(const std::string& args) {
-  return BuiltBinary("rlpos-sim") + " " + args;
-}
 
 void ExpectOneLineError(const CommandResult& r, const std::string& fragment) {
   EXPECT_EQ(r.exit_code, 2) << r.err;

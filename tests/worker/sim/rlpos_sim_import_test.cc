@@ -9,6 +9,7 @@
 
 #include "tests/support/command.h"
 #include "tests/support/temp_dir.h"
+#include "tests/worker/sim/sim_test_support.h"
 
 namespace rlpos::testing {
 namespace {
@@ -16,10 +17,6 @@ namespace {
 const std::string kSource = RLPOS_SOURCE_DIR;
 const std::string kFull = kSource + "/tests/common/scenario_import/data/rlpos3_full.json";
 const std::string kExample = kSource + "/docs/examples/rlpos3-input.json";
-
-std::string Sim(const std::string& args) {
-  return BuiltBinary("rlpos-sim") + " " + args;
-}
 
 std::size_t Lines(const std::string& text) {
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));

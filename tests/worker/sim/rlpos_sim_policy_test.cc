@@ -9,17 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/command.h"
+#include "tests/worker/sim/sim_test_support.h"
 
 namespace rlpos::testing {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kScenarios = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/";
-const std::string kScenarioB = kScenarios + "b.json";
-
-std::string Sim(const std::string& args) {
-  return BuiltBinary("rlpos-sim") + " " + args;
-}
 
 class PolicyFolder : public ::testing::Test {
  protected:
@@ -99,8 +94,9 @@ TEST_F(PolicyFolder, TheReplayIsTrainingsOwnEvaluationForEachAlgorithm) {
                               " --episodes 20 --set agent.hidden=[16] --set agent.eval_episodes=2");
     const auto p = Position(kScenarioB);
     EXPECT_EQ(p.exit_code, 0) << p.err;
-    if (p.exit_code == 0)
+    if (p.exit_code == 0) {
       EXPECT_EQ(nlohmann::json::parse(p.out)["position"], result["position"]);
+    }
     // The final evaluation is the second of two after 20 training episodes.
     EXPECT_EQ(result.value("eval_run", std::uint64_t{0}),
               result["first_episode_run"].get<std::uint64_t>() + 21);

@@ -9,13 +9,12 @@
 
 #include "tests/support/command.h"
 #include "tests/support/temp_dir.h"
+#include "tests/worker/sim/sim_test_support.h"
 
 namespace rlpos::testing {
 namespace {
 
 namespace fs = std::filesystem;
-
-const std::string kScenarios = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios";
 
 std::string Render(const std::string& args) {
   return BuiltBinary("rlpos-sim") + " render " + args;
@@ -46,18 +45,18 @@ class RenderCli : public ::testing::Test {
 
 TEST_F(RenderCli, PngAndSvgOfTheBaseline) {
   const std::string png = dir_.File("c.png"), svg = dir_.File("c.svg");
-  const CommandResult r = RunCommand(Render(kScenarios + "/c.json --side --out " + png));
+  const CommandResult r = RunCommand(Render(kScenarios + "c.json --side --out " + png));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, png + "\n");
   EXPECT_EQ(ReadBytes(png).substr(0, 8), "\x89PNG\r\n\x1a\n");
-  ASSERT_EQ(RunCommand(Render(kScenarios + "/c.json --out " + svg)).exit_code, 0);
+  ASSERT_EQ(RunCommand(Render(kScenarios + "c.json --out " + svg)).exit_code, 0);
   EXPECT_EQ(ReadBytes(svg).rfind("<?xml", 0), 0u);
 }
 
 TEST_F(RenderCli, SameInputsSameBytes) {
   for (const char* ext : {".svg", ".png"}) {
     const std::string a = dir_.File(std::string("a") + ext), b = dir_.File(std::string("b") + ext);
-    const std::string args = kScenarios + "/urban3.json --side --out ";
+    const std::string args = kScenarios + "urban3.json --side --out ";
     ASSERT_EQ(RunCommand(Render(args + a)).exit_code, 0);
     ASSERT_EQ(RunCommand(Render(args + b)).exit_code, 0);
     EXPECT_TRUE(ReadBytes(a) == ReadBytes(b)) << ext;
@@ -66,20 +65,20 @@ TEST_F(RenderCli, SameInputsSameBytes) {
 
 TEST_F(RenderCli, PlacementFromThePositionCommandsJson) {
   const std::string result = dir_.File("centroid.json");
-  ASSERT_EQ(RunCommand(BuiltBinary("rlpos-sim") + " position --scenario " + kScenarios +
-                       "/campus2.json --positioner centroid --json > " + result)
+  ASSERT_EQ(RunCommand(Sim("position --scenario " + kScenarios +
+                           "campus2.json --positioner centroid --json > " + result))
                 .exit_code,
             0);
   const std::string out = dir_.File("m.svg");
   const CommandResult r =
-      RunCommand(Render(kScenarios + "/campus2.json --result " + result + " --out " + out));
+      RunCommand(Render(kScenarios + "campus2.json --result " + result + " --out " + out));
   EXPECT_EQ(r.exit_code, 0) << r.err;
   // Another scenario's result is refused.
   fs::remove(out);
   fs::rename(result, dir_.File("centroid.json.keep"));
   const std::string moved = dir_.File("centroid.json.keep");
   const CommandResult other =
-      RunCommand(Render(kScenarios + "/c.json --result " + moved + " --out " + out));
+      RunCommand(Render(kScenarios + "c.json --result " + moved + " --out " + out));
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("is a result of scenario campus2, not C"), std::string::npos)
       << other.err;
@@ -93,7 +92,7 @@ TEST_F(RenderCli, SeveralPlacementsAndAFlight) {
   const std::string out = dir_.File("m.png");
   const CommandResult r =
       RunCommand(Render(kScenarios +
-                        "/b.json --placement baseline=50,50,25 --placement 'rl@seed2=55,45,25' "
+                        "b.json --placement baseline=50,50,25 --placement 'rl@seed2=55,45,25' "
                         "--trajectory " +
                         trajectory + " --out " + out));
   EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -102,7 +101,7 @@ TEST_F(RenderCli, SeveralPlacementsAndAFlight) {
 }
 
 TEST_F(RenderCli, BadInputsAreOneLineErrorsAndLeaveNoFile) {
-  const std::string c = kScenarios + "/c.json";
+  const std::string c = kScenarios + "c.json";
   const std::string out = " --out " + dir_.File("m.png");
   ExpectRefused(dir_.File("none.json") + out, 2, "none.json: /: cannot open file");
   ExpectRefused(

@@ -10,16 +10,12 @@
 #include <vector>
 
 #include "tests/support/command.h"
+#include "tests/worker/sim/sim_test_support.h"
 
 namespace rlpos::testing {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kScenarioB = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json";
-
-std::string Sim(const std::string& args) {
-  return BuiltBinary("rlpos-sim") + " " + args;
-}
 
 class TrainCommand : public ::testing::Test {
  protected:
