@@ -4,7 +4,7 @@
 // UE from ns-3's own rate thresholds; throughput from the airtime-share model. With several
 // UAVs each UE associates with its UAV at the placement evaluated (environment/association.h),
 // and the UEs of UAVs on one channel share that channel's airtime (their BSSs contend).
-// Holds a UavNetwork that is built but never run: only one UavNetwork may exist at a time.
+// A value (worker/analytic_channel): any number may live in one process, one per thread at once.
 #include <memory>
 
 #include "common/scenario/scenario.h"
@@ -12,7 +12,7 @@
 
 namespace rlpos {
 
-class UavNetwork;
+class AnalyticChannel;
 
 // One UE's link to a UAV at some position, with what the airtime model needs of it.
 struct UeLink {
@@ -38,15 +38,13 @@ class AnalyticEvaluator {
 
  private:
   Scenario scenario_;
-  std::unique_ptr<UavNetwork> network_;
-  std::vector<double> thresholds_db_;
+  std::unique_ptr<AnalyticChannel> channel_;
   std::vector<int> channels_;  // per UAV
   std::vector<double> ue_throughput_;
 };
 
 // The env's reward (the scenario's env.reward) at `placement` by the analytic model: what the
-// agent and the oracle score a placement with. Builds its own evaluator, so no other UavNetwork
-// may exist meanwhile.
+// agent and the oracle score a placement with. Builds its own evaluator.
 double AnalyticReward(const Scenario& scenario, const Placement& placement);
 
 }  // namespace rlpos
