@@ -12,18 +12,12 @@
 
 #include "common/config/config_error.h"
 #include "worker/environment/loss_model_spec.h"
+#include "worker/environment/ns3_object_spec.h"
 #include "worker/environment/obstacle_aware_propagation_loss_model.h"
 #include "worker/environment/wifi_channel_plan.h"
 
 namespace rlpos {
 namespace {
-
-// Creating ns-3 objects registers TypeIds and wifi modes in process-wide tables on first use:
-// constructions (and destructions) take turns.
-std::mutex& Ns3ObjectsMutex() {
-  static std::mutex mutex;
-  return mutex;
-}
 
 ns3::Ptr<ns3::PropagationLossModel> SubModel(const ns3::Ptr<ns3::Object>& owner,
                                              const char* attribute) {

@@ -1,10 +1,11 @@
 #pragma once
 // The "analytic" fidelity: the state at a UAV position without packets. LoS from the building
-// geometry and SNR from the very loss-model objects the packet-level channel uses; the MCS per
-// UE from ns-3's own rate thresholds; throughput from the airtime-share model. With several
-// UAVs each UE associates with its UAV at the placement evaluated (environment/association.h),
-// and the UEs of UAVs on one channel share that channel's airtime (their BSSs contend).
-// A value (worker/analytic_channel): any number may live in one process, one per thread at once.
+// geometry and SNR from the scenario's loss models (worker/analytic_channel: the packet-level
+// channel's numbers); the MCS per UE from ns-3's own rate thresholds; throughput from the
+// airtime-share model. With several UAVs each UE associates with its UAV at the placement
+// evaluated (environment/association.h), and the UEs of UAVs on one channel share that
+// channel's airtime (their BSSs contend). Owns all it uses: any number may live in one process,
+// and each may be used by one thread at a time.
 #include <memory>
 
 #include "common/scenario/scenario.h"

@@ -245,7 +245,8 @@ TEST(AnalyticChannel, TwoEnvsAtOnceGiveEachOnesTrajectory) {
   EXPECT_TRUE(on_a.trajectory() == a_alone);
 }
 
-// Four threads, an env of B each, at once: each trajectory as one thread alone gives it.
+// Four threads, each loading B and stepping an env of its own, at once: each trajectory as one
+// thread alone gives it.
 TEST(AnalyticChannel, FourThreadsGiveOneThreadsNumbers) {
   const Scenario b = Shipped("b.json", {"env.fidelity=analytic"});
   std::vector<Trajectory> alone;
@@ -253,8 +254,11 @@ TEST(AnalyticChannel, FourThreadsGiveOneThreadsNumbers) {
     alone.push_back(Alone(b, seed));
   std::vector<Trajectory> threaded(4);
   std::vector<std::thread> threads;
-  for (std::uint64_t seed = 1; seed <= 4; ++seed)
-    threads.emplace_back([&, seed] { threaded[seed - 1] = Alone(b, seed); });
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    threads.emplace_back([&threaded, seed] {
+      threaded[seed - 1] = Alone(Shipped("b.json", {"env.fidelity=analytic"}), seed);
+    });
+  }
   for (auto& t : threads)
     t.join();
   for (std::size_t k = 0; k < 4; ++k)
