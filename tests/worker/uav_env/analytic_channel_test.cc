@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/config/config_error.h"
 #include "common/phy/airtime_model.h"
 #include "common/phy/mcs_table.h"
 #include "common/scenario/scenario_checks.h"
@@ -263,6 +264,38 @@ TEST(AnalyticChannel, FourThreadsGiveOneThreadsNumbers) {
     t.join();
   for (std::size_t k = 0; k < 4; ++k)
     EXPECT_TRUE(threaded[k] == alone[k]) << "thread " << k;
+}
+
+// Loss models the analytic model cannot follow are refused at construction, one line each:
+// the packet level drew a new loss per call from a random one (today's analytic path did too).
+TEST(AnalyticChannel, RefusesLossModelsItCannotFollow) {
+  const Scenario b = Shipped("b.json");
+  const auto refusal = [&](ObjectSpec propagation) -> std::string {
+    Scenario s = b;
+    s.propagation = std::move(propagation);
+    try {
+      AnalyticChannel channel(s);
+    } catch (const ConfigError& e) {
+      return e.describe();
+    }
+    return "accepted";
+  };
+  const ObjectSpec aware = b.propagation;
+  ObjectSpec random{"ns3::ObstacleAwarePropagationLossModel", aware.attributes};
+  random.attributes["LosModel"] = {{"type", "ns3::NakagamiPropagationLossModel"}};
+  EXPECT_EQ(refusal(random),
+            "/propagation: ns3::ObstacleAwarePropagationLossModel draws random numbers: the "
+            "analytic fidelity needs one loss per link and position; use packet fidelity");
+  EXPECT_EQ(refusal({"ns3::HybridBuildingsPropagationLossModel", nlohmann::json::object()}),
+            "/propagation: ns3::HybridBuildingsPropagationLossModel reads ns-3's process-wide "
+            "building list, which the analytic fidelity does not build; use packet fidelity");
+  ObjectSpec condition{"ns3::ObstacleAwarePropagationLossModel", aware.attributes};
+  condition.attributes["ChannelConditionModel"] = {
+      {"type", "ns3::ThreeGppUmaChannelConditionModel"}};
+  EXPECT_EQ(refusal(condition),
+            "/propagation/attributes/ChannelConditionModel: the analytic fidelity decides LoS "
+            "from the buildings: ns3::BuildingsChannelConditionModel only; use packet fidelity");
+  EXPECT_EQ(refusal({"ns3::FriisPropagationLossModel", nlohmann::json::object()}), "accepted");
 }
 
 // Packet fidelity keeps one network per process, and says so.
