@@ -36,7 +36,7 @@ def main():
     lr, gamma, lam, clip, ent_coef, vf_coef = 1e-3, 0.9, 0.95, 0.2, 0.01, 0.5
     rollout, epochs, minibatches = 256, 10, 4
 
-    # The oracle first: one user of ns-3 at a time per process.
+    # The oracle's best analytic placement, the target the policy is scored against.
     best = rlpos.oracle(args.scenario, overrides={"env.fidelity": "analytic"},
                         packet_candidates=0, top=1)[0]
     env = rlpos.make(args.scenario, fidelity="analytic", seed=args.seed * 1000 + 1)

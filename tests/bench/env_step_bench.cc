@@ -2,7 +2,9 @@
 // the share of a packet-level step spent outside ns-3 (agent + monitors + env bookkeeping).
 //   rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS]
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <random>
 #include <string>
 
 #include "worker/agent/dqn_agent.h"
@@ -50,16 +52,36 @@ Figures Run(rlpos::Scenario s, const std::string& fidelity, int steps) {
   return {steps / wall, fidelity == "packet" ? 1.0 - in_ns3 / wall : 1.0};
 }
 
+double AnalyticEnvAloneStepsPerSecond(rlpos::Scenario s, int steps) {
+  s.env.fidelity = "analytic";
+  rlpos::UavPositioningEnv env(s);
+  std::mt19937 rng(1);
+  std::uniform_int_distribution<int> action(0, env.ActionSpace().n - 1);
+  std::uint64_t episode = 1;
+  env.Reset(episode);
+  const auto start = Clock::now();
+  for (int i = 0; i < steps; ++i) {
+    const auto r = env.Step(action(rng));
+    if (r.terminated || r.truncated)
+      env.Reset(++episode);
+  }
+  return steps / std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS]\n");
+    std::fprintf(stderr,
+                 "usage: rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS] "
+                 "[ENV_ALONE_STEPS]\n");
     return 2;
   }
   const rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
   const int analytic_steps = argc > 2 ? std::stoi(argv[2]) : 2000;
   const int packet_steps = argc > 3 ? std::stoi(argv[3]) : 50;
+  const int alone_steps = argc > 4 ? std::stoi(argv[4]) : 200000;
+  const double alone = AnalyticEnvAloneStepsPerSecond(s, alone_steps);
   const Figures analytic = Run(s, "analytic", analytic_steps);
   const Figures packet = Run(s, "packet", packet_steps);
   std::printf(
@@ -67,5 +89,7 @@ int main(int argc, char** argv) {
       "%.2f %% of a packet step outside ns-3 | analytic/packet %.0fx\n",
       s.name.c_str(), analytic.steps_per_s, packet.steps_per_s, s.env.decision_interval * 1e3,
       100.0 * packet.outside_ns3_share, analytic.steps_per_s / packet.steps_per_s);
+  std::printf("%-8s analytic env alone (random actions, no agent) %9.0f steps/s\n", s.name.c_str(),
+              alone);
   return 0;
 }

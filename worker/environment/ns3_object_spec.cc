@@ -140,4 +140,9 @@ int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
   return count;
 }
 
+std::mutex& Ns3ObjectsMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 }  // namespace rlpos

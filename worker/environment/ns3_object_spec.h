@@ -5,6 +5,7 @@
 #include <ns3/object.h>
 #include <ns3/type-id.h>
 
+#include <mutex>
 #include <set>
 #include <string>
 
@@ -23,6 +24,11 @@ ns3::Ptr<ns3::Object> CreateFromSpec(const ObjectSpec& spec, const std::string& 
 // except the objects in `skip`. Returns how many objects were set.
 int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
                        const ns3::AttributeValue& value, const std::set<const ns3::Object*>& skip);
+
+// Creating ns-3 objects registers TypeIds, attributes and Wi-Fi modes in process-wide tables on
+// first use: code that creates ns-3 objects outside the one packet-level network (the analytic
+// model, the scenario checks) holds this lock meanwhile, so that threads take turns.
+std::mutex& Ns3ObjectsMutex();
 
 // JSON scalar -> the string form ns-3 attribute checkers parse.
 std::string AttributeString(const nlohmann::json& value);

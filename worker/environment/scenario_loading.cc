@@ -14,6 +14,7 @@
 namespace rlpos {
 
 void CheckScenarioAgainstNs3(const Scenario& scenario) {
+  std::lock_guard<std::mutex> lock(Ns3ObjectsMutex());
   PlanUavChannels(scenario);
   CreateFromSpec(scenario.propagation, "/propagation", ns3::PropagationLossModel::GetTypeId());
   CreateFromSpec(scenario.wifi.rate_manager, "/wifi/rate_manager",

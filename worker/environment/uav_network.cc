@@ -17,11 +17,12 @@
 #include <ns3/wifi-phy.h>
 #include <ns3/wifi-remote-station-manager.h>
 
+#include <atomic>
 #include <cmath>
-#include <set>
 #include <stdexcept>
 
 #include "worker/environment/association.h"
+#include "worker/environment/loss_model_spec.h"
 #include "worker/environment/ns3_object_spec.h"
 #include "worker/environment/uav_network_impl.h"
 
@@ -78,18 +79,30 @@ void InstallUeMobility(const Scenario& s, ns3::NodeContainer& ues) {
   }
 }
 
+std::atomic<bool>& NetworkAlive() {
+  static std::atomic<bool> alive{false};
+  return alive;
+}
+
 }  // namespace
 
+OneNetworkPerProcess::OneNetworkPerProcess() {
+  if (NetworkAlive().exchange(true)) {
+    throw std::runtime_error(
+        "a second packet-level ns-3 network in this process: ns-3's simulator and building list "
+        "are process-wide, so a process holds one packet-level env or evaluation at a time; run "
+        "each in a process of its own (the analytic fidelity has no such limit)");
+  }
+}
+
+OneNetworkPerProcess::~OneNetworkPerProcess() {
+  NetworkAlive() = false;
+}
+
 void UavNetwork::Impl::BuildChannelModels() {
-  std::set<const ns3::Object*> user_frequency;
-  loss = CreateFromSpec(scenario.propagation, "/propagation",
-                        ns3::PropagationLossModel::GetTypeId(), "Frequency", &user_frequency)
-             ->GetObject<ns3::PropagationLossModel>();
-  // Loss models default to their own frequency (ITU-R P.1411: 2.4 GHz): align them with the
-  // channel unless the scenario chose one. One model serves every UAV's channel: the first UAV's
-  // frequency (two 5 GHz channels differ by well under 1 dB of path loss).
-  SetAttributeInTree(loss, "Frequency", ns3::DoubleValue(plans[0].center_frequency_hz),
-                     user_frequency);
+  // One model serves every UAV's channel: the first UAV's frequency (two 5 GHz channels differ
+  // by well under 1 dB of path loss).
+  loss = CreateLossModel(scenario, plans[0].center_frequency_hz);
   geometry = ns3::CreateObject<ns3::BuildingsChannelConditionModel>();
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // The scenario built in ns-3: buildings, UEs sending to a sink on the UAV over Wi-Fi, the
 // obstacle-aware channel, and the monitors. One instance owns the ns-3 simulation: it calls
-// Simulator::Destroy when it goes away, so only one may exist at a time.
+// Simulator::Destroy when it goes away, so only one may exist at a time per process (a second
+// construction throws std::runtime_error saying so). The analytic fidelity does not use it
+// (worker/analytic_channel).
 #include <memory>
 #include <vector>
 

@@ -35,8 +35,6 @@ constexpr uint16_t kFirstPort = 9000;
 constexpr int64_t kStartTimesStream = 1000000;
 // The senders that flows restarted after a handover get, two streams each, in handover order.
 constexpr int64_t kHandoverStreams = 2000000;
-// ns-3.37's default for HT/VHT/HE, named so that the analytic fidelity can build the same one.
-constexpr char kErrorRateModel[] = "ns3::TableBasedErrorRateModel";
 
 inline ns3::Vector ToNs3(const Vec3& v) {
   return {v.x, v.y, v.z};
@@ -45,7 +43,19 @@ inline Vec3 FromNs3(const ns3::Vector& v) {
   return {v.x, v.y, v.z};
 }
 
+// Held by every UavNetwork: ns-3's simulator, node list and building list are process-wide, so
+// a second network alive at once would tear down the first (Simulator::Destroy). Throws
+// std::runtime_error when one is alive already.
+class OneNetworkPerProcess {
+ public:
+  OneNetworkPerProcess();
+  ~OneNetworkPerProcess();
+  OneNetworkPerProcess(const OneNetworkPerProcess&) = delete;
+  OneNetworkPerProcess& operator=(const OneNetworkPerProcess&) = delete;
+};
+
 struct UavNetwork::Impl {
+  OneNetworkPerProcess token;  // first: released last, and before anything is built
   Scenario scenario;
   std::vector<WifiChannelPlan> plans;  // per UAV
   std::vector<int> channels;           // per UAV: its channel number

@@ -3,12 +3,9 @@
 // serving UAV, and the rate managers' attributes.
 #include <ns3/boolean.h>
 #include <ns3/double.h>
-#include <ns3/he-phy.h>
-#include <ns3/ht-phy.h>
 #include <ns3/propagation-delay-model.h>
 #include <ns3/string.h>
 #include <ns3/uinteger.h>
-#include <ns3/vht-phy.h>
 #include <ns3/wifi-remote-station-manager.h>
 #include <ns3/yans-wifi-channel.h>
 
@@ -81,22 +78,7 @@ void ConfigureRateManagers(const ns3::NetDeviceContainer& devices, const WifiSpe
 }  // namespace
 
 ns3::WifiTxVector UavNetwork::Impl::TxVector(int mcs) const {
-  const WifiSpec& w = scenario.wifi;
-  ns3::WifiMode mode;
-  ns3::WifiPreamble preamble;
-  if (plans[0].standard == ns3::WIFI_STANDARD_80211n) {
-    mode = ns3::HtPhy::GetHtMcs(static_cast<uint8_t>(mcs + 8 * (w.spatial_streams - 1)));
-    preamble = ns3::WIFI_PREAMBLE_HT_MF;
-  } else if (plans[0].standard == ns3::WIFI_STANDARD_80211ac) {
-    mode = ns3::VhtPhy::GetVhtMcs(static_cast<uint8_t>(mcs));
-    preamble = ns3::WIFI_PREAMBLE_VHT_SU;
-  } else {
-    mode = ns3::HePhy::GetHeMcs(static_cast<uint8_t>(mcs));
-    preamble = ns3::WIFI_PREAMBLE_HE_SU;
-  }
-  const auto nss = static_cast<uint8_t>(w.spatial_streams);
-  return ns3::WifiTxVector(mode, 0, preamble, static_cast<uint16_t>(w.guard_interval_ns), nss, nss,
-                           0, static_cast<uint16_t>(w.width_mhz), true);
+  return SingleUserTxVector(plans[0], scenario.wifi, mcs);
 }
 
 ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {

@@ -1,5 +1,8 @@
 #include "worker/environment/wifi_channel_plan.h"
 
+#include <ns3/he-phy.h>
+#include <ns3/ht-phy.h>
+#include <ns3/vht-phy.h>
 #include <ns3/wifi-phy-operating-channel.h>
 
 #include <algorithm>
@@ -106,6 +109,24 @@ std::vector<WifiChannelPlan> PlanUavChannels(const Scenario& s) {
     plans.push_back(PlanChannel(wifi, s.UavPath(i) + "/channel"));
   }
   return plans;
+}
+
+ns3::WifiTxVector SingleUserTxVector(const WifiChannelPlan& plan, const WifiSpec& w, int mcs) {
+  ns3::WifiMode mode;
+  ns3::WifiPreamble preamble;
+  if (plan.standard == ns3::WIFI_STANDARD_80211n) {
+    mode = ns3::HtPhy::GetHtMcs(static_cast<uint8_t>(mcs + 8 * (w.spatial_streams - 1)));
+    preamble = ns3::WIFI_PREAMBLE_HT_MF;
+  } else if (plan.standard == ns3::WIFI_STANDARD_80211ac) {
+    mode = ns3::VhtPhy::GetVhtMcs(static_cast<uint8_t>(mcs));
+    preamble = ns3::WIFI_PREAMBLE_VHT_SU;
+  } else {
+    mode = ns3::HePhy::GetHeMcs(static_cast<uint8_t>(mcs));
+    preamble = ns3::WIFI_PREAMBLE_HE_SU;
+  }
+  const auto nss = static_cast<uint8_t>(w.spatial_streams);
+  return ns3::WifiTxVector(mode, 0, preamble, static_cast<uint16_t>(w.guard_interval_ns), nss, nss,
+                           0, static_cast<uint16_t>(w.width_mhz), true);
 }
 
 }  // namespace rlpos

@@ -3,6 +3,7 @@
 // ns-3's own channel table so a bad combination is a ConfigError, not an ns-3 abort.
 #include <ns3/wifi-phy-band.h>
 #include <ns3/wifi-standards.h>
+#include <ns3/wifi-tx-vector.h>
 
 #include <string>
 #include <vector>
@@ -26,5 +27,13 @@ WifiChannelPlan PlanWifiChannel(const WifiSpec& wifi);
 // wifi.channel's band that no UAV uses yet, starting with wifi.channel. Throws ConfigError
 // naming the UAV when a channel is invalid or the band has no channel left for it.
 std::vector<WifiChannelPlan> PlanUavChannels(const Scenario& scenario);
+
+// ns-3.37's default error rate model for HT/VHT/HE: the PHYs' own, and the twin the links'
+// MCS thresholds and MPDU success rates are computed with.
+constexpr char kErrorRateModel[] = "ns3::TableBasedErrorRateModel";
+
+// A single-user transmission at `mcs` of the configured PHY (standard of `plan`, width, guard
+// interval, spatial streams of `wifi`).
+ns3::WifiTxVector SingleUserTxVector(const WifiChannelPlan& plan, const WifiSpec& wifi, int mcs);
 
 }  // namespace rlpos

@@ -22,16 +22,19 @@ namespace py = pybind11;
 namespace rlpos::python {
 namespace {
 
-// ns-3's simulator, node list and building list are process-wide, and each UavNetwork starts
-// from Simulator::Destroy: one user of them at a time (an env, an oracle search, an evaluation).
+// The packet level holds ns-3's simulator, node list and building list, which are process-wide,
+// and each UavNetwork starts from Simulator::Destroy: one packet-level user at a time (an env,
+// an oracle search that re-scores at packet level, an evaluation). The analytic fidelity owns
+// what it uses (worker/analytic_channel): any number at once, and no lease.
 class Ns3Lease {
  public:
   explicit Ns3Lease(const char* user) {
     std::lock_guard<std::mutex> lock(Mutex());
     if (Holder()) {
       throw std::runtime_error(std::string("rlpos: cannot start ") + user + ": " + Holder() +
-                               " holds ns-3 (one per process: its simulator and building list "
-                               "are global); close() it first, or use another process");
+                               " holds ns-3 (packet level: one per process, its simulator and "
+                               "building list are global); close() it first, or run each in a "
+                               "process of its own (analytic envs have no such limit)");
     }
     Holder() = user;
   }
@@ -91,9 +94,11 @@ py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
 
 class PyEnv {
  public:
-  PyEnv(const std::string& file, const std::vector<std::string>& overrides)
-      : lease_(std::make_unique<Ns3Lease>("an env")) {
-    env_ = std::make_unique<UavPositioningEnv>(Load(file, overrides));
+  PyEnv(const std::string& file, const std::vector<std::string>& overrides) {
+    Scenario s = Load(file, overrides);
+    if (s.env.fidelity == "packet")
+      lease_ = std::make_unique<Ns3Lease>("a packet-level env");
+    env_ = std::make_unique<UavPositioningEnv>(std::move(s));
   }
 
   const Scenario& scenario() const { return Open().scenario(); }
@@ -197,7 +202,9 @@ py::list Oracle(const std::string& file, const std::vector<std::string>& overrid
   options.packet_duration = packet_duration;
   std::vector<ScoredPlacement> ranked;
   {
-    Ns3Lease lease("an oracle search");
+    std::optional<Ns3Lease> lease;
+    if (packet_candidates > 0)
+      lease.emplace("an oracle search with packet-level candidates");
     py::gil_scoped_release release;
     ranked = OracleSearch(s, options);
   }
@@ -236,7 +243,7 @@ std::string Evaluate(const std::string& file, const std::vector<std::string>& ov
   }
   RunMetrics metrics;
   {
-    Ns3Lease lease("an evaluation");
+    Ns3Lease lease("a packet-level evaluation");
     py::gil_scoped_release release;
     metrics = EvaluatePosition(s, placement);
     metrics.reward = AnalyticReward(s, placement);  // as rlpos-sim eval adds it

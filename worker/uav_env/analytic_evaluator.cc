@@ -1,12 +1,14 @@
 #include "worker/uav_env/analytic_evaluator.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "common/metrics/run_metrics.h"
 #include "common/phy/airtime_model.h"
 #include "common/phy/mcs_table.h"
+#include "worker/analytic_channel/analytic_channel.h"
 #include "worker/environment/association.h"
-#include "worker/environment/uav_network.h"
 #include "worker/gym/reward.h"
 
 namespace rlpos {
@@ -22,34 +24,35 @@ constexpr double kCaptureProbability = 0.2;
 
 AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario)
     : scenario_(scenario),
-      network_(std::make_unique<UavNetwork>(scenario, scenario.InitialPlacement())),
-      thresholds_db_(network_->McsSnrThresholdsDb()),
-      channels_(network_->UavChannels()) {}
+      channel_(std::make_unique<AnalyticChannel>(scenario)),
+      channels_(channel_->UavChannels()) {}
 
 AnalyticEvaluator::~AnalyticEvaluator() = default;
 
 std::vector<UeLink> AnalyticEvaluator::LinksAt(std::size_t uav, const Vec3& position) {
-  network_->SetUavPosition(uav, position);
+  if (uav >= scenario_.uavs.size())
+    throw std::out_of_range("no UAV " + std::to_string(uav));
   const WifiSpec& w = scenario_.wifi;
   const PhyProfile phy{w.standard, w.width_mhz, w.guard_interval_ns, w.spatial_streams};
-  const int mpdu_bytes = MpduBytes(scenario_.traffic.packet_size);
+  const std::vector<double>& thresholds_db = channel_->McsSnrThresholdsDb();
   std::vector<UeLink> links;
-  const auto states = network_->LinksTo(uav);
-  for (std::size_t i = 0; i < states.size(); ++i) {
+  links.reserve(scenario_.ues.size());
+  for (std::size_t i = 0; i < scenario_.ues.size(); ++i) {
+    const UplinkState state = channel_->Uplink(i, position);
     UeLink link;
-    link.los = states[i].los;
-    link.snr_db = states[i].snr_db;
+    link.los = state.los;
+    link.snr_db = state.snr_db;
     link.demand_met = CheckDemand(phy, scenario_.ues[i].demand_mbps, link.snr_db).met;
     int mcs = -1;
-    while (mcs + 1 < static_cast<int>(thresholds_db_.size()) &&
-           link.snr_db >= thresholds_db_[mcs + 1]) {
+    while (mcs + 1 < static_cast<int>(thresholds_db.size()) &&
+           link.snr_db >= thresholds_db[mcs + 1]) {
       ++mcs;
     }
     if (mcs >= 0) {
       // IdealWifiManager's thresholds only bound the bit error rate: near a threshold a
       // 1.4 kB MPDU still fails often enough that retransmissions eat a visible share.
       link.phy_rate_mbps = McsDataRateMbps(phy, mcs);
-      link.mpdu_success = network_->MpduSuccessRate(mcs, link.snr_db, mpdu_bytes);
+      link.mpdu_success = channel_->MpduSuccessRate(mcs, link.snr_db);
     }
     links.push_back(link);
   }

@@ -1,10 +1,11 @@
 #pragma once
 // The "analytic" fidelity: the state at a UAV position without packets. LoS from the building
-// geometry and SNR from the very loss-model objects the packet-level channel uses; the MCS per
-// UE from ns-3's own rate thresholds; throughput from the airtime-share model. With several
-// UAVs each UE associates with its UAV at the placement evaluated (environment/association.h),
-// and the UEs of UAVs on one channel share that channel's airtime (their BSSs contend).
-// Holds a UavNetwork that is built but never run: only one UavNetwork may exist at a time.
+// geometry and SNR from the scenario's loss models (worker/analytic_channel: the packet-level
+// channel's numbers); the MCS per UE from ns-3's own rate thresholds; throughput from the
+// airtime-share model. With several UAVs each UE associates with its UAV at the placement
+// evaluated (environment/association.h), and the UEs of UAVs on one channel share that
+// channel's airtime (their BSSs contend). Owns all it uses: any number may live in one process,
+// and each may be used by one thread at a time.
 #include <memory>
 
 #include "common/scenario/scenario.h"
@@ -12,7 +13,7 @@
 
 namespace rlpos {
 
-class UavNetwork;
+class AnalyticChannel;
 
 // One UE's link to a UAV at some position, with what the airtime model needs of it.
 struct UeLink {
@@ -38,15 +39,13 @@ class AnalyticEvaluator {
 
  private:
   Scenario scenario_;
-  std::unique_ptr<UavNetwork> network_;
-  std::vector<double> thresholds_db_;
+  std::unique_ptr<AnalyticChannel> channel_;
   std::vector<int> channels_;  // per UAV
   std::vector<double> ue_throughput_;
 };
 
 // The env's reward (the scenario's env.reward) at `placement` by the analytic model: what the
-// agent and the oracle score a placement with. Builds its own evaluator, so no other UavNetwork
-// may exist meanwhile.
+// agent and the oracle score a placement with. Builds its own evaluator.
 double AnalyticReward(const Scenario& scenario, const Placement& placement);
 
 }  // namespace rlpos

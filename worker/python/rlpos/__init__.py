@@ -7,7 +7,8 @@
     observation, reward, terminated, truncated, info = env.step(env.action_space.sample())
 
 With gymnasium importable the env is a gymnasium.Env, registered as "rlpos/UavPositioning-v0".
-One env (or oracle search, or evaluation) at a time per process: ns-3's simulator is global.
+Any number of analytic envs at once. One packet-level user (env, evaluation, or oracle search with
+packet-level candidates) at a time per process: ns-3's simulator is global.
 """
 import json
 
