@@ -1,13 +1,11 @@
 #include "worker/analytic_channel/analytic_channel.h"
 
-#include <ns3/boolean.h>
 #include <ns3/buildings-channel-condition-model.h>
 #include <ns3/buildings-propagation-loss-model.h>
 #include <ns3/constant-position-mobility-model.h>
 #include <ns3/pointer.h>
 #include <ns3/propagation-loss-model.h>
 
-#include <algorithm>
 #include <mutex>
 
 #include "common/config/config_error.h"
@@ -46,14 +44,11 @@ void CheckCallable(const ns3::Ptr<ns3::PropagationLossModel>& model, const std::
 
 }  // namespace
 
-// The scenario's loss model, and the two ends of a link. With the obstacle-aware model at the
-// top its two sub-models are called directly, with LoS from the value's own geometry (its
-// condition model would ask ns-3's building list).
+// The scenario's loss model, and the two ends of a link. The obstacle-aware model is given the
+// LoS from the value's own geometry (its condition model would ask ns-3's building list).
 struct AnalyticChannel::LossModels {
   ns3::Ptr<ns3::PropagationLossModel> top;
-  ns3::Ptr<ns3::PropagationLossModel> los;   // set when top is obstacle-aware
-  ns3::Ptr<ns3::PropagationLossModel> nlos;  // idem
-  bool nlos_never_below_los = true;
+  ns3::Ptr<ns3::ObstacleAwarePropagationLossModel> aware;  // top, when it is obstacle-aware
   ns3::Ptr<ns3::MobilityModel> ue;
   ns3::Ptr<ns3::MobilityModel> uav;
 };
@@ -81,13 +76,9 @@ AnalyticChannel::AnalyticChannel(const Scenario& scenario)
                         "the analytic fidelity decides LoS from the buildings: "
                         "ns3::BuildingsChannelConditionModel only; use packet fidelity");
     }
-    loss->los = SubModel(aware, "LosModel");
-    loss->nlos = SubModel(aware, "NlosModel");
-    ns3::BooleanValue clamp;
-    aware->GetAttribute("NlosNeverBelowLos", clamp);
-    loss->nlos_never_below_los = clamp.Get();
-    CheckCallable(loss->los, path + "/attributes/LosModel");
-    CheckCallable(loss->nlos, path + "/attributes/NlosModel");
+    loss->aware = aware;
+    CheckCallable(SubModel(aware, "LosModel"), path + "/attributes/LosModel");
+    CheckCallable(SubModel(aware, "NlosModel"), path + "/attributes/NlosModel");
   } else {
     CheckCallable(loss->top, path);
   }
@@ -122,23 +113,8 @@ double AnalyticChannel::SnrDb(const Vec3& ue, const Vec3& uav, bool los) {
   LossModels& m = *loss_;
   m.ue->SetPosition({ue.x, ue.y, ue.z});
   m.uav->SetPosition({uav.x, uav.y, uav.z});
-  double rx_dbm = 0.0;
-  if (!m.los) {
-    rx_dbm = m.top->CalcRxPower(tx_dbm_, m.ue, m.uav);
-  } else {
-    // ObstacleAwarePropagationLossModel's rule, with its LoS decision already made: the higher
-    // end first, the NLoS loss never below the LoS loss if so configured.
-    ns3::Ptr<ns3::MobilityModel> a = m.ue, b = m.uav;
-    if (uav.z > ue.z)
-      std::swap(a, b);
-    const double los_rx = m.los->CalcRxPower(tx_dbm_, a, b);
-    if (los) {
-      rx_dbm = los_rx;
-    } else {
-      const double nlos_rx = m.nlos->CalcRxPower(tx_dbm_, a, b);
-      rx_dbm = m.nlos_never_below_los ? std::min(los_rx, nlos_rx) : nlos_rx;
-    }
-  }
+  const double rx_dbm = m.aware ? m.aware->CalcRxPowerGivenLos(tx_dbm_, m.ue, m.uav, los)
+                                : m.top->CalcRxPower(tx_dbm_, m.ue, m.uav);
   return rx_dbm + rx_gain_db_ - noise_floor_dbm_;
 }
 

@@ -72,6 +72,13 @@ double ObstacleAwarePropagationLossModel::DoCalcRxPower(double txPowerDbm, Ptr<M
   const bool los = IsLos(a, b);
   NS_LOG_DEBUG("link " << a->GetPosition() << " -> " << b->GetPosition() << ": "
                        << (los ? "LoS" : "NLoS"));
+  return CalcRxPowerGivenLos(txPowerDbm, a, b, los);
+}
+
+double ObstacleAwarePropagationLossModel::CalcRxPowerGivenLos(double txPowerDbm,
+                                                              Ptr<MobilityModel> a,
+                                                              Ptr<MobilityModel> b,
+                                                              bool los) const {
   // The sub-models always see the higher end first, so that the link is reciprocal. ns-3.37's
   // ItuR1411NlosOverRooftop is not: below the rooftops it takes the first node's height where
   // ITU-R P.1411 has the rooftop height (kd = 18 - 15 dhb / hr), and a UE 1.5 m up transmitting

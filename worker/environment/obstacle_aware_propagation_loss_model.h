@@ -20,6 +20,10 @@ class ObstacleAwarePropagationLossModel : public PropagationLossModel {
   bool IsLos(Ptr<MobilityModel> a, Ptr<MobilityModel> b) const;
   // The loss (dB) this model applies to the link.
   double GetLossDb(Ptr<MobilityModel> a, Ptr<MobilityModel> b) const;
+  // The received power with the link's LoS state given, not asked of the condition model: what
+  // the analytic fidelity calls with the LoS its own building geometry decides.
+  double CalcRxPowerGivenLos(double txPowerDbm, Ptr<MobilityModel> a, Ptr<MobilityModel> b,
+                             bool los) const;
 
  private:
   void NotifyConstructionCompleted() override;

@@ -10,8 +10,10 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
+#include "common/job/job_fields.h"
 #include "common/wire/limits.h"
 #include "idl/dds/topics.h"
 #include "rlpos_messages.h"
@@ -128,6 +130,9 @@ msg::JobAssignment Train() {
   a.order.params.train_seed = 11;
   a.order.params.fidelity = "packet";
   a.order.params.train_episodes = 25;
+  a.order.params.duration_s = 2;
+  a.order.params.warmup_s = 0.25;
+  a.order.params.overrides = {{"agent.hidden", "[16]"}};
   a.order.placement.reset();
   return a;
 }
@@ -139,6 +144,8 @@ msg::JobAssignment Position() {
   a.order.params.scenario = "C";
   a.order.params.positioner = "oracle";
   a.order.params.duration_s = 0.25;
+  a.order.params.warmup_s = 0.125;
+  a.order.params.overrides = {{"uav.step", "10"}};
   a.order.placement.reset();
   return a;
 }
@@ -195,6 +202,33 @@ TEST(MessageCodec, JobAssignmentOfEachKindRoundTrips) {
   msg::JobAssignment a = Eval();
   a.order.params.overrides[1].value = std::string(4097, 'v');
   EXPECT_EQ(RefusedField(a), "override value");
+}
+
+// A field of JobParams declared to change a job's run (job/job_fields.h) travels with the job:
+// the codec and Fields() above name JobParams' fields one by one, so this walks the declaration.
+template <typename Field>
+void ExpectTravels(const Field& field, const JobParams& sent, const JobParams& got) {
+  if (!Includes(field.kinds, sent.kind))
+    return;
+  using Value = std::decay_t<decltype(sent.*field.member)>;
+  if constexpr (!std::is_same_v<Value, JobKind>) {  // every kind is a value of its own
+    EXPECT_FALSE(sent.*field.member == JobParams{}.*field.member)
+        << field.name << ": the " << ToString(sent.kind) << " job above must set it";
+  }
+  EXPECT_TRUE(got.*field.member == sent.*field.member)
+      << field.name << " is lost on the wire (" << ToString(sent.kind) << " job)";
+}
+
+TEST(MessageCodec, EveryDeclaredJobFieldOfItsKindTravels) {
+  for (const auto& a : {Eval(), Train(), Position()}) {
+    const Received<msg::JobAssignment> got = RoundTrip(a);
+    ASSERT_EQ(got.decode_error, "");
+    std::apply(
+        [&](const auto&... field) {
+          (ExpectTravels(field, a.order.params, got.data.order.params), ...);
+        },
+        kJobFields);
+  }
 }
 
 TEST(MessageCodec, JobEventRoundTrips) {
