@@ -6,6 +6,7 @@
 
 #include "common/logging/log.h"
 #include "common/process/stop_signal.h"
+#include "common/process/wall_clock.h"
 #include "common/store/store_error.h"
 #include "common/wire/json_text.h"
 #include "common/wire/limits.h"
@@ -72,7 +73,7 @@ CoordinatorDaemon::CoordinatorDaemon(CoordinatorOptions options, const DdsOption
 CoordinatorDaemon::~CoordinatorDaemon() = default;
 
 double CoordinatorDaemon::Now() const {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  return WallClockSeconds();
 }
 
 void CoordinatorDaemon::HandleRequests() {

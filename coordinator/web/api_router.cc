@@ -1,9 +1,9 @@
 #include "coordinator/web/api_router.h"
 
-#include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "common/process/wall_clock.h"
 #include "common/store/results_reader.h"
 #include "common/store/sqlite_db.h"
 #include "common/store/store_db.h"
@@ -20,10 +20,6 @@ namespace rlpos::web {
 namespace {
 
 using nlohmann::json;
-
-double SystemNow() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
 
 // The database as the page reads it: opened read-only by SQLite, and query_only besides, so no
 // statement of any request can write.
@@ -77,7 +73,7 @@ void RequireCampaign(ResultsReader& store, const std::string& campaign_id) {
 ApiResponse Answer(const ApiRequest& request, const ServeContext& context) {
   ReadOnlyStore store(context.db_file);
   ResultsReader& reader = store.reader;
-  const double now = context.clock ? context.clock() : SystemNow();
+  const double now = context.clock ? context.clock() : WallClockSeconds();
   switch (request.endpoint) {
     case Endpoint::kCampaigns:
       return JsonResponse(CampaignListJson(reader, now));

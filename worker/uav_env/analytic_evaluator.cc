@@ -23,9 +23,7 @@ constexpr double kCaptureProbability = 0.2;
 }  // namespace
 
 AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario)
-    : scenario_(scenario),
-      channel_(std::make_unique<AnalyticChannel>(scenario)),
-      channels_(channel_->UavChannels()) {}
+    : scenario_(scenario), channel_(std::make_unique<AnalyticChannel>(scenario)) {}
 
 AnalyticEvaluator::~AnalyticEvaluator() = default;
 
@@ -107,16 +105,17 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
     return info;
   }
   // One airtime share per channel: the UEs of every UAV on it contend with each other.
+  const std::vector<int>& channels = channel_->UavChannels();
   std::vector<int> done;
   for (std::size_t u = 0; u < n_uavs; ++u) {
-    const int channel = channels_[u];
+    const int channel = channels[u];
     if (std::find(done.begin(), done.end(), channel) != done.end())
       continue;
     done.push_back(channel);
     std::vector<std::size_t> members;
     std::vector<AirtimeLink> domain;
     for (std::size_t i = 0; i < n_ues; ++i) {
-      if (channels_[static_cast<std::size_t>(info.serving[i])] == channel) {
+      if (channels[static_cast<std::size_t>(info.serving[i])] == channel) {
         members.push_back(i);
         domain.push_back(airtime[i]);
       }

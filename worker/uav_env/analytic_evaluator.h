@@ -40,7 +40,6 @@ class AnalyticEvaluator {
  private:
   Scenario scenario_;
   std::unique_ptr<AnalyticChannel> channel_;
-  std::vector<int> channels_;  // per UAV
   std::vector<double> ue_throughput_;
 };
 
