@@ -21,6 +21,12 @@ constexpr int kBlockAckWindow = 64;
 // Channel time of an access besides the data: a collision costs the same (the colliders wait
 // for a BlockAck timeout of about a BlockAck's length, the others defer as long).
 constexpr double kAccessOverheadUs = kAifsUs + kPreambleUs + kSifsUs + kBlockAckUs;
+
+// The mean backoff of a station alone on the channel, in us: a constant, computed once.
+double LoneBackoffUs() {
+  static const double us = SaturatedDcf(1, kCwMin, kCwMax).idle_slots_per_success * kSlotUs;
+  return us;
+}
 }  // namespace
 
 int MpduBytes(int packet_size) {
@@ -46,7 +52,7 @@ double MacEfficiency(double phy_rate_mbps, int packet_size) {
   if (phy_rate_mbps <= 0)
     return 0.0;
   const Access a = FullAccess(phy_rate_mbps, packet_size);
-  const double lone_backoff_us = SaturatedDcf(1, kCwMin, kCwMax).idle_slots_per_success * kSlotUs;
+  const double lone_backoff_us = LoneBackoffUs();
   return a.delivered_mbit / phy_rate_mbps * 1e6 / (a.busy_us + lone_backoff_us);
 }
 
@@ -80,7 +86,7 @@ AirtimeEstimate EstimateAirtimeThroughput(const std::vector<AirtimeLink>& links,
     return e;
   // Who contends: every active station once the channel is full; at lighter load a station
   // finds the others idle in proportion to the load, so contention grows with it.
-  const double lone_backoff_us = SaturatedDcf(1, kCwMin, kCwMax).idle_slots_per_success * kSlotUs;
+  const double lone_backoff_us = LoneBackoffUs();
   double load = 0.0;
   for (std::size_t i : active)
     load += wanted[i] * (access[i].busy_us + lone_backoff_us);
@@ -127,7 +133,10 @@ AirtimeEstimate EstimateAirtimeThroughput(const std::vector<AirtimeLink>& links,
     double lo = 0.0, hi = max_share;
     for (int k = 0; k < 100; ++k) {
       const double mid = 0.5 * (lo + hi);
-      (airtime_at(mid) > 1.0 ? hi : lo) = mid;
+      double& end = airtime_at(mid) > 1.0 ? hi : lo;
+      if (end == mid)
+        break;  // no later step would move either end: the bits of all 100 steps
+      end = mid;
     }
     share = lo;
   }

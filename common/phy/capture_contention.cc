@@ -12,12 +12,13 @@ CaptureShares ContendWithCapture(const std::vector<double>& snr_db, double activ
   const std::size_t n = snr_db.size();
   const double rho = std::clamp(activity, 0.0, 1.0);
   const double kappa = std::clamp(params.probability, 0.0, 1.0);
+  const int stages = BackoffStages(params.cw_min, params.cw_max);
   std::vector<double> p(n, 0.0), tau(n), none(n), capture(n);
   // Damped fixed-point iteration: the map is a contraction for the loads of a Wi-Fi cell, and
   // damping keeps strong and weak stations from oscillating against each other.
   for (int iteration = 0; iteration < 500; ++iteration) {
     for (std::size_t i = 0; i < n; ++i)
-      tau[i] = rho * BackoffTau(p[i], params.cw_min, params.cw_max);
+      tau[i] = rho * BackoffTauAtStages(p[i], params.cw_min, stages);
     double all_quiet = 1.0;
     for (double t : tau)
       all_quiet *= 1.0 - t;
@@ -43,7 +44,7 @@ CaptureShares ContendWithCapture(const std::vector<double>& snr_db, double activ
   double mean_success = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     // Own attempts are not scaled by the activity: the weights compare backlogged stations.
-    shares.access_weight[i] = BackoffTau(p[i], params.cw_min, params.cw_max) * (1.0 - p[i]);
+    shares.access_weight[i] = BackoffTauAtStages(p[i], params.cw_min, stages) * (1.0 - p[i]);
     shares.capture_share[i] = p[i] < 1.0 ? capture[i] / (1.0 - p[i]) : 0.0;
     mean_success += shares.access_weight[i] / static_cast<double>(n);
   }

@@ -6,10 +6,6 @@
 namespace rlpos {
 namespace {
 
-int BackoffStages(int cw_min, int cw_max) {
-  return std::max(0, static_cast<int>(std::lround(std::log2((cw_max + 1.0) / (cw_min + 1.0)))));
-}
-
 // Bianchi's tau for a conditional collision probability p, in the form without the 0/0 at
 // p = 1/2: tau = 2 / (1 + W + p W sum_{k<m} (2p)^k), W = CWmin + 1, m backoff stages.
 double Tau(double p, double w, int stages) {
@@ -21,8 +17,16 @@ double Tau(double p, double w, int stages) {
 
 }  // namespace
 
+int BackoffStages(int cw_min, int cw_max) {
+  return std::max(0, static_cast<int>(std::lround(std::log2((cw_max + 1.0) / (cw_min + 1.0)))));
+}
+
 double BackoffTau(double p, int cw_min, int cw_max) {
   return Tau(p, cw_min + 1.0, BackoffStages(cw_min, cw_max));
+}
+
+double BackoffTauAtStages(double p, int cw_min, int stages) {
+  return Tau(p, cw_min + 1.0, stages);
 }
 
 DcfContention SaturatedDcf(double stations, int cw_min, int cw_max) {
@@ -30,12 +34,16 @@ DcfContention SaturatedDcf(double stations, int cw_min, int cw_max) {
   const double w = cw_min + 1.0;
   const int stages = BackoffStages(cw_min, cw_max);
   // p = 1 - (1 - tau(p))^(n-1): the left side grows and the right side falls with p, so the
-  // fixed point is unique; bisection finds it.
+  // fixed point is unique; bisection finds it. Once a step leaves both ends as they were,
+  // every later step would too: stopping there gives the bits of all 100 steps.
   double lo = 0.0, hi = 1.0;
   for (int k = 0; k < 100; ++k) {
     const double p = 0.5 * (lo + hi);
     const double rhs = 1.0 - std::pow(1.0 - Tau(p, w, stages), n - 1.0);
-    (rhs > p ? lo : hi) = p;
+    double& end = rhs > p ? lo : hi;
+    if (end == p)
+      break;
+    end = p;
   }
   DcfContention c;
   c.collision_probability = 0.5 * (lo + hi);

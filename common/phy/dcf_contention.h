@@ -19,6 +19,11 @@ struct DcfContention {
 // probability `p`, under binary exponential backoff from cw_min to cw_max.
 double BackoffTau(double p, int cw_min = 15, int cw_max = 1023);
 
+// The backoff stages from cw_min to cw_max (log2 of their ratio), and BackoffTau with them
+// counted once: for loops that ask tau of many p under one contention window.
+int BackoffStages(int cw_min, int cw_max);
+double BackoffTauAtStages(double p, int cw_min, int stages);
+
 // `stations` may be fractional (an effective number of contenders); below 1 it counts as 1.
 // cw_min and cw_max: the access category's contention window bounds (AC_BE: 15, 1023).
 DcfContention SaturatedDcf(double stations, int cw_min = 15, int cw_max = 1023);

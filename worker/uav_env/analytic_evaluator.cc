@@ -23,7 +23,9 @@ constexpr double kCaptureProbability = 0.2;
 }  // namespace
 
 AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario)
-    : scenario_(scenario), channel_(std::make_unique<AnalyticChannel>(scenario)) {}
+    : scenario_(scenario),
+      channel_(std::make_unique<AnalyticChannel>(scenario)),
+      memo_(scenario.uavs.size(), scenario.ues.size()) {}
 
 AnalyticEvaluator::~AnalyticEvaluator() = default;
 
@@ -58,13 +60,18 @@ std::vector<UeLink> AnalyticEvaluator::LinksAt(std::size_t uav, const Vec3& posi
 }
 
 StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {
+  StepInfo info;
+  if (memo_.Find(placement, info, ue_throughput_))
+    return info;
   std::vector<std::vector<UeLink>> links(placement.size());
   std::vector<const std::vector<UeLink>*> views;
   for (std::size_t u = 0; u < placement.size(); ++u) {
     links[u] = LinksAt(u, placement[u]);
     views.push_back(&links[u]);
   }
-  return Score(placement, views);
+  info = Score(placement, views);
+  memo_.Store(placement, info, ue_throughput_);
+  return info;
 }
 
 StepInfo AnalyticEvaluator::Score(const Placement& placement,

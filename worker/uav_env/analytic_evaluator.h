@@ -10,6 +10,7 @@
 
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
+#include "worker/uav_env/placement_memo.h"
 
 namespace rlpos {
 
@@ -28,6 +29,7 @@ class AnalyticEvaluator {
  public:
   explicit AnalyticEvaluator(const Scenario& scenario);
   ~AnalyticEvaluator();
+  // Placements already evaluated come from a bounded memo (placement_memo.h): the same numbers.
   StepInfo Evaluate(const Placement& placement);
   // Every UE's link to UAV `uav` were it at `position` (the other UAVs do not matter).
   std::vector<UeLink> LinksAt(std::size_t uav, const Vec3& position);
@@ -41,6 +43,7 @@ class AnalyticEvaluator {
   Scenario scenario_;
   std::unique_ptr<AnalyticChannel> channel_;
   std::vector<double> ue_throughput_;
+  PlacementMemo memo_;
 };
 
 // The env's reward (the scenario's env.reward) at `placement` by the analytic model: what the
