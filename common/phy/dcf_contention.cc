@@ -1,7 +1,10 @@
 #include "common/phy/dcf_contention.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace rlpos {
 namespace {
@@ -29,8 +32,9 @@ double BackoffTauAtStages(double p, int cw_min, int stages) {
   return Tau(p, cw_min + 1.0, stages);
 }
 
-DcfContention SaturatedDcf(double stations, int cw_min, int cw_max) {
-  const double n = std::max(1.0, stations);
+namespace {
+
+DcfContention Solve(double n, int cw_min, int cw_max) {
   const double w = cw_min + 1.0;
   const int stages = BackoffStages(cw_min, cw_max);
   // p = 1 - (1 - tau(p))^(n-1): the left side grows and the right side falls with p, so the
@@ -53,6 +57,33 @@ DcfContention SaturatedDcf(double stations, int cw_min, int cw_max) {
   c.idle_slots_per_success = idle / success;
   c.collisions_per_success = (1.0 - idle - success) / success;
   return c;
+}
+
+// The airtime model asks for the same few station counts over and over (on a full channel, the
+// number of stations), and a solution costs some sixty pow calls. A small memo per thread, keyed
+// by the exact bits of its inputs, gives the same numbers at once and never grows.
+struct DcfMemoEntry {
+  bool filled = false;
+  std::uint64_t stations_bits = 0;
+  int cw_min = 0, cw_max = 0;
+  DcfContention value;
+};
+constexpr std::size_t kDcfMemoSlots = 16;
+
+}  // namespace
+
+DcfContention SaturatedDcf(double stations, int cw_min, int cw_max) {
+  const double n = std::max(1.0, stations);
+  std::uint64_t bits;
+  std::memcpy(&bits, &n, sizeof bits);
+  thread_local std::array<DcfMemoEntry, kDcfMemoSlots> memo{};
+  // Station counts are small whole numbers or fractions of one: fold the mantissa's top bits.
+  const std::uint64_t h = (bits >> 40) ^ (bits >> 20) ^ bits;
+  DcfMemoEntry& e = memo[static_cast<std::size_t>((h ^ (h >> 7)) % kDcfMemoSlots)];
+  if (e.filled && e.stations_bits == bits && e.cw_min == cw_min && e.cw_max == cw_max)
+    return e.value;
+  e = {true, bits, cw_min, cw_max, Solve(n, cw_min, cw_max)};
+  return e.value;
 }
 
 }  // namespace rlpos
