@@ -61,7 +61,7 @@ std::vector<UeLink> AnalyticEvaluator::LinksAt(std::size_t uav, const Vec3& posi
 
 StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {
   StepInfo info;
-  if (memo_.Find(placement, info, ue_throughput_))
+  if (memo_.Find(placement, info))
     return info;
   std::vector<std::vector<UeLink>> links(placement.size());
   std::vector<const std::vector<UeLink>*> views;
@@ -70,7 +70,7 @@ StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {
     views.push_back(&links[u]);
   }
   info = Score(placement, views);
-  memo_.Store(placement, info, ue_throughput_);
+  memo_.Store(placement, info);
   return info;
 }
 
@@ -103,11 +103,9 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
   CaptureCost capture;
   capture.contention.probability = kCaptureProbability;
   capture.follow_up_rate_mbps = McsDataRateMbps(phy, 0);
-  ue_throughput_.assign(n_ues, 0.0);
   if (n_uavs == 1) {
     const AirtimeEstimate estimate =
         EstimateAirtimeThroughput(airtime, scenario_.traffic.packet_size, capture);
-    ue_throughput_ = estimate.throughput_mbps;
     info.throughput_mbps = estimate.aggregate_mbps;
     return info;
   }
@@ -131,8 +129,6 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
       continue;
     const AirtimeEstimate estimate =
         EstimateAirtimeThroughput(domain, scenario_.traffic.packet_size, capture);
-    for (std::size_t k = 0; k < members.size(); ++k)
-      ue_throughput_[members[k]] = estimate.throughput_mbps[k];
     info.throughput_mbps += estimate.aggregate_mbps;
   }
   return info;

@@ -36,13 +36,10 @@ class AnalyticEvaluator {
   // The state at `placement` from links already known: `links[u]` = LinksAt(u, placement[u]).
   // What a search that moves one UAV at a time evaluates without recomputing the others.
   StepInfo Score(const Placement& placement, const std::vector<const std::vector<UeLink>*>& links);
-  // Per-UE estimated throughput of the last Evaluate or Score (Mbit/s).
-  const std::vector<double>& UeThroughput() const { return ue_throughput_; }
 
  private:
   Scenario scenario_;
   std::unique_ptr<AnalyticChannel> channel_;
-  std::vector<double> ue_throughput_;
   PlacementMemo memo_;
 };
 

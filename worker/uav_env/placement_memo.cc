@@ -28,25 +28,17 @@ std::uint64_t Mix(std::uint64_t z) {
 PlacementMemo::PlacementMemo(std::size_t n_uavs, std::size_t n_ues, std::size_t budget_bytes)
     : n_uavs_(n_uavs),
       n_ues_(n_ues),
-      stride_(3 * n_uavs + 3 + n_ues * (n_uavs > 1 ? 3 : 2)),
+      stride_(3 * n_uavs + 3 + n_ues * (n_uavs > 1 ? 2 : 1)),
       slots_(budget_bytes / (stride_ * sizeof(double) + 1)) {
-  if (slots_ == 0)
+  if (slots_ < 4) {  // not one placement fits: no memo
+    slots_ = 0;
     return;
+  }
   // calloc, not a vector: untouched slots stay unmapped zero pages.
   table_.reset(static_cast<double*>(std::calloc(slots_ * stride_, sizeof(double))));
   if (!table_)
     throw std::bad_alloc();
   filled_.assign(slots_, 0);
-}
-
-std::size_t PlacementMemo::SlotOf(const Placement& placement) const {
-  std::uint64_t h = 0;
-  for (const Vec3& p : placement) {
-    h = Mix(h ^ Bits(p.x));
-    h = Mix(h ^ Bits(p.y));
-    h = Mix(h ^ Bits(p.z));
-  }
-  return static_cast<std::size_t>(h % slots_);
 }
 
 bool PlacementMemo::Matches(const double* slot, const Placement& placement) const {
@@ -61,15 +53,27 @@ bool PlacementMemo::Matches(const double* slot, const Placement& placement) cons
   return true;
 }
 
-bool PlacementMemo::Find(const Placement& placement, StepInfo& info,
-                         std::vector<double>& ue_throughput) const {
+std::size_t PlacementMemo::Probe(const Placement& placement) const {
+  std::uint64_t h = 0;
+  for (const Vec3& p : placement) {
+    h = Mix(h ^ Bits(p.x));
+    h = Mix(h ^ Bits(p.y));
+    h = Mix(h ^ Bits(p.z));
+  }
+  // Linear probing; the table is never more than three quarters full, so an empty slot ends it.
+  std::size_t slot = static_cast<std::size_t>(h % slots_);
+  while (filled_[slot] && !Matches(Slot(slot), placement))
+    slot = slot + 1 == slots_ ? 0 : slot + 1;
+  return slot;
+}
+
+bool PlacementMemo::Find(const Placement& placement, StepInfo& info) const {
   if (slots_ == 0 || placement.size() != n_uavs_)
     return false;
-  const std::size_t s = SlotOf(placement);
-  const double* slot = table_.get() + s * stride_;
-  if (!filled_[s] || !Matches(slot, placement))
+  const std::size_t slot = Probe(placement);
+  if (!filled_[slot])
     return false;
-  const double* v = slot + 3 * n_uavs_;
+  const double* v = Slot(slot) + 3 * n_uavs_;
   info.positions = placement;
   info.active_uav = 0;
   info.n_los = static_cast<int>(v[0]);
@@ -77,42 +81,42 @@ bool PlacementMemo::Find(const Placement& placement, StepInfo& info,
   info.throughput_mbps = v[2];
   v += 3;
   info.snr_db.assign(v, v + n_ues_);
-  ue_throughput.assign(v + n_ues_, v + 2 * n_ues_);
-  if (n_uavs_ > 1) {
-    info.serving.resize(n_ues_);
-    for (std::size_t i = 0; i < n_ues_; ++i)
-      info.serving[i] = static_cast<int>(v[2 * n_ues_ + i]);
-  } else {
-    info.serving.assign(n_ues_, 0);
-  }
+  info.serving.resize(n_ues_);
+  for (std::size_t i = 0; i < n_ues_; ++i)
+    info.serving[i] = n_uavs_ > 1 ? static_cast<int>(v[n_ues_ + i]) : 0;
   return true;
 }
 
-void PlacementMemo::Store(const Placement& placement, const StepInfo& info,
-                          const std::vector<double>& ue_throughput) {
+void PlacementMemo::Store(const Placement& placement, const StepInfo& info) {
   if (slots_ == 0 || placement.size() != n_uavs_ || info.snr_db.size() != n_ues_ ||
-      ue_throughput.size() != n_ues_ || info.serving.size() != n_ues_) {
+      info.serving.size() != n_ues_) {
     return;
   }
-  const std::size_t s = SlotOf(placement);
-  double* slot = table_.get() + s * stride_;
-  for (std::size_t u = 0; u < n_uavs_; ++u) {
-    slot[3 * u] = placement[u].x;
-    slot[3 * u + 1] = placement[u].y;
-    slot[3 * u + 2] = placement[u].z;
+  if (size_ + 1 > Capacity()) {  // full: start again (the pages stay mapped, no more)
+    std::fill(filled_.begin(), filled_.end(), 0);
+    size_ = 0;
   }
-  double* v = slot + 3 * n_uavs_;
+  const std::size_t slot = Probe(placement);
+  double* key = Slot(slot);
+  for (std::size_t u = 0; u < n_uavs_; ++u) {
+    key[3 * u] = placement[u].x;
+    key[3 * u + 1] = placement[u].y;
+    key[3 * u + 2] = placement[u].z;
+  }
+  double* v = key + 3 * n_uavs_;
   v[0] = info.n_los;
   v[1] = info.demands_met;
   v[2] = info.throughput_mbps;
   v += 3;
   std::copy(info.snr_db.begin(), info.snr_db.end(), v);
-  std::copy(ue_throughput.begin(), ue_throughput.end(), v + n_ues_);
   if (n_uavs_ > 1) {
     for (std::size_t i = 0; i < n_ues_; ++i)
-      v[2 * n_ues_ + i] = info.serving[i];
+      v[n_ues_ + i] = info.serving[i];
   }
-  filled_[s] = 1;
+  if (!filled_[slot]) {
+    filled_[slot] = 1;
+    ++size_;
+  }
 }
 
 }  // namespace rlpos

@@ -5,10 +5,10 @@
 // the loss models and the airtime model. Keys are compared bit for bit, so a hit returns exactly
 // what the evaluation gave.
 //
-// Bounded: a fixed table of slots within a byte budget, one placement per slot (a newcomer
-// replaces the slot's previous placement), so the memory of an env does not grow with the
-// number of steps or episodes. The table is zeroed memory that the system maps on first use:
-// an env that visits few placements holds few pages.
+// Bounded: a fixed hash table within a byte budget (open addressing). When it is three quarters
+// full it starts again empty, so the memory of an env does not grow with the number of steps or
+// episodes, and a lattice that fits (B's 5,292 points) stays in it for good. The table is zeroed
+// memory that the system maps on first use: an env that visits few placements holds few pages.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -21,23 +21,26 @@ namespace rlpos {
 
 class PlacementMemo {
  public:
-  static constexpr std::size_t kDefaultBudgetBytes = 512 * 1024;
+  // On scenario B (one UAV, 4 UEs): 8,192 slots of 80 bytes, so 6,144 placements.
+  static constexpr std::size_t kDefaultBudgetBytes = 640 * 1024;
 
   PlacementMemo(std::size_t n_uavs, std::size_t n_ues,
                 std::size_t budget_bytes = kDefaultBudgetBytes);
 
-  // The state stored for `placement`: sets `info` (positions, serving, n_los, throughput_mbps,
-  // demands_met, snr_db; active_uav 0) and `ue_throughput`. False, touching neither, if the
+  // The state stored for `placement`: sets `info`'s positions, serving, n_los, throughput_mbps,
+  // demands_met and snr_db, and active_uav to 0. False, leaving `info` as it was, if the
   // placement is not stored.
-  bool Find(const Placement& placement, StepInfo& info, std::vector<double>& ue_throughput) const;
+  bool Find(const Placement& placement, StepInfo& info) const;
   // Stores the state at `placement` (as AnalyticEvaluator::Evaluate computed it).
-  void Store(const Placement& placement, const StepInfo& info,
-             const std::vector<double>& ue_throughput);
-  // How many placements it holds at most.
-  std::size_t Capacity() const { return slots_; }
+  void Store(const Placement& placement, const StepInfo& info);
+  // How many placements it holds at most, and how many it holds now.
+  std::size_t Capacity() const { return slots_ * 3 / 4; }
+  std::size_t Size() const { return size_; }
 
  private:
-  std::size_t SlotOf(const Placement& placement) const;
+  // The slot that holds `placement`, or the empty slot where it would go.
+  std::size_t Probe(const Placement& placement) const;
+  double* Slot(std::size_t slot) const { return table_.get() + slot * stride_; }
   bool Matches(const double* slot, const Placement& placement) const;
 
   struct Free {
@@ -45,10 +48,11 @@ class PlacementMemo {
   };
   std::size_t n_uavs_;
   std::size_t n_ues_;
-  // A slot: the key (x, y, z per UAV), then n_los, demands_met, throughput_mbps, then per UE
-  // snr_db and throughput, and with several UAVs the serving UAV.
+  // A slot: the key (x, y, z per UAV), then n_los, demands_met, throughput_mbps, then per UE the
+  // SNR, and with several UAVs the serving UAV.
   std::size_t stride_;
   std::size_t slots_;
+  std::size_t size_ = 0;
   std::unique_ptr<double[], Free> table_;
   std::vector<std::uint8_t> filled_;
 };
