@@ -3,26 +3,30 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string_view>
 
 #include "common/scenario/scenario_checks.h"
 
 namespace rlpos {
 
+// The names are compared at every step: as string_views they compare their lengths first.
+using namespace std::string_view_literals;
+
 Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
-  const std::string& move = s.env.actions.at(static_cast<std::size_t>(action));
+  const std::string_view move = s.env.actions.at(static_cast<std::size_t>(action));
   const double d = s.env.step;
   Vec3 delta{0, 0, 0};
-  if (move == "up")
+  if (move == "up"sv)
     delta.z = d;
-  if (move == "down")
+  if (move == "down"sv)
     delta.z = -d;
-  if (move == "forward")
+  if (move == "forward"sv)
     delta.y = d;
-  if (move == "backward")
+  if (move == "backward"sv)
     delta.y = -d;
-  if (move == "right")
+  if (move == "right"sv)
     delta.x = d;
-  if (move == "left")
+  if (move == "left"sv)
     delta.x = -d;
   return ApplyDisplacement(s, uav, delta, from);
 }
@@ -113,23 +117,24 @@ BoxSpace ObservationBounds(const Scenario& s) {
 
 std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
   std::vector<double> obs;
-  for (const auto& field : s.env.observations) {
-    if (field == "x")
+  obs.reserve(3 * info.positions.size() + 3 + info.snr_db.size() + s.uavs.size());
+  for (const std::string_view field : s.env.observations) {
+    if (field == "x"sv)
       for (const auto& p : info.positions)
         obs.push_back(p.x);
-    if (field == "y")
+    if (field == "y"sv)
       for (const auto& p : info.positions)
         obs.push_back(p.y);
-    if (field == "z")
+    if (field == "z"sv)
       for (const auto& p : info.positions)
         obs.push_back(p.z);
-    if (field == "n_los")
+    if (field == "n_los"sv)
       obs.push_back(info.n_los);
-    if (field == "demands_met")
+    if (field == "demands_met"sv)
       obs.push_back(info.demands_met);
-    if (field == "throughput")
+    if (field == "throughput"sv)
       obs.push_back(info.throughput_mbps);
-    if (field == "snr") {
+    if (field == "snr"sv) {
       // Clipped to the bounds so that the observation always lies in its space.
       for (double snr : info.snr_db)
         obs.push_back(std::clamp(snr, -20.0, 60.0));
