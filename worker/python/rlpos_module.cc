@@ -1,10 +1,14 @@
 // _rlpos: the C++ side of the Python package rlpos (worker/python/rlpos/). The env runs in the
 // calling process, with ns-3, and without the GIL while ns-3 or the analytic model works.
 // The Gymnasium surface (spaces, numpy arrays, registration) is the package's Python part.
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -74,6 +78,7 @@ py::list PositionsList(const Placement& placement) {
   return positions;
 }
 
+// Built here, as the Python API hands them out, so that a step costs Python no conversions.
 py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
   py::dict d;
   const Vec3& p = info.positions.front();
@@ -87,9 +92,35 @@ py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
   d["throughput_mbps"] = info.throughput_mbps;
   d["demands_met"] = info.demands_met;
   d["snr_db"] = info.snr_db;
-  if (!mask.empty())
-    d["action_mask"] = std::vector<int>(mask.begin(), mask.end());
+  if (!mask.empty()) {
+    // int8, Gymnasium's convention for masks.
+    py::array_t<std::int8_t> m(static_cast<py::ssize_t>(mask.size()));
+    std::copy(mask.begin(), mask.end(), m.mutable_data());
+    d["action_mask"] = std::move(m);
+  }
   return d;
+}
+
+// The observation space's bounds in float32, as the Python Box holds them.
+struct Float32Bounds {
+  std::vector<float> low, high;
+};
+
+Float32Bounds ToFloat32(const BoxSpace& box) {
+  return {std::vector<float>(box.low.begin(), box.low.end()),
+          std::vector<float>(box.high.begin(), box.high.end())};
+}
+
+// The observation as a float32 array clipped to the space, exactly as
+// np.clip(np.asarray(values, np.float32), low, high) gives it (NaN stays NaN).
+py::array_t<float> Observation(const std::vector<double>& values, const Float32Bounds& bounds) {
+  py::array_t<float> out(static_cast<py::ssize_t>(values.size()));
+  float* o = out.mutable_data();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const float v = static_cast<float>(values[i]);
+    o[i] = std::isnan(v) ? v : std::min(std::max(v, bounds.low[i]), bounds.high[i]);
+  }
+  return out;
 }
 
 class PyEnv {
@@ -99,6 +130,7 @@ class PyEnv {
     if (s.env.fidelity == "packet")
       lease_ = std::make_unique<Ns3Lease>("a packet-level env");
     env_ = std::make_unique<UavPositioningEnv>(std::move(s));
+    bounds_ = ToFloat32(env_->ObservationSpace());
   }
 
   const Scenario& scenario() const { return Open().scenario(); }
@@ -120,7 +152,8 @@ class PyEnv {
       r.info = env.LastInfo();
       return r;
     });
-    return py::make_tuple(o.result.observation, InfoDict(o.result.info, o.mask));
+    return py::make_tuple(Observation(o.result.observation, bounds_),
+                          InfoDict(o.result.info, o.mask));
   }
 
   py::tuple Step(int action) {
@@ -182,14 +215,16 @@ class PyEnv {
     }
   }
 
-  static py::tuple Finish(const Outcome& o) {
+  // Gymnasium's five values, in their final Python types.
+  py::tuple Finish(const Outcome& o) const {
     const StepResult& r = o.result;
-    return py::make_tuple(r.observation, r.reward, r.terminated, r.truncated,
+    return py::make_tuple(Observation(r.observation, bounds_), r.reward, r.terminated, r.truncated,
                           InfoDict(r.info, o.mask));
   }
 
   std::unique_ptr<Ns3Lease> lease_;
   std::unique_ptr<UavPositioningEnv> env_;
+  Float32Bounds bounds_;
   std::mutex mutex_;  // the GIL is released while stepping: one step at a time per env
 };
 

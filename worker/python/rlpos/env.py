@@ -67,6 +67,9 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
         low, high = self._env.observation_bounds
         self.observation_space = Box(np.array(low, np.float32), np.array(high, np.float32),
                                      dtype=np.float32)
+        # The C++ side returns the observation as a float32 array clipped to this space and the
+        # info dict as it is handed out; a plain int action in range goes straight to it.
+        self._discrete_n = self._env.action_count
         if seed is None:
             self._next_run = self._env.agent_seed * 1000000 + 1
         else:
@@ -99,10 +102,11 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
             self._next_run = _check_seed(seed, "seed")
         run = self._next_run
         self._next_run = run + 1 if run < _MAX_SEED else 0
-        observation, info = self._env.reset(run, random_start)
-        return self._observation(observation), self._info(info)
+        return self._env.reset(run, random_start)
 
     def step(self, action):
+        if type(action) is int and 0 <= action < self._discrete_n:
+            return self._env.step(action)
         if isinstance(self.action_space, Discrete):
             n = self.action_space.n
             if isinstance(action, np.ndarray) and action.shape == ():
@@ -110,7 +114,7 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
             if isinstance(action, (bool, np.bool_)) or not isinstance(action, (int, np.integer)) \
                     or not 0 <= int(action) < n:
                 raise ValueError("action: expected an integer in [0, %d), got %r" % (n, action))
-            result = self._env.step(int(action))
+            return self._env.step(int(action))
         else:
             try:
                 d = np.asarray(action, dtype=np.float64)
@@ -121,21 +125,8 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
                 raise ValueError("action: expected a displacement (dx, dy, dz) within [%g, %g] m, "
                                  "got %r" % (self.action_space.low[0], self.action_space.high[0],
                                              action))
-            result = self._env.step_continuous(d.tolist())
-        observation, reward, terminated, truncated, info = result
-        return (self._observation(observation), float(reward), bool(terminated), bool(truncated),
-                self._info(info))
+            return self._env.step_continuous(d.tolist())
 
     def close(self):
         """Gives ns-3 back: another env, oracle or evaluation may then start."""
         self._env.close()
-
-    def _observation(self, values):
-        return np.clip(np.asarray(values, np.float32), self.observation_space.low,
-                       self.observation_space.high)
-
-    @staticmethod
-    def _info(info):
-        if "action_mask" in info:
-            info["action_mask"] = np.asarray(info["action_mask"], np.int8)
-        return info
