@@ -12,7 +12,9 @@ namespace rlpos {
 // The names are compared at every step: as string_views they compare their lengths first.
 using namespace std::string_view_literals;
 
-Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
+namespace {
+
+Vec3 MoveDelta(const Scenario& s, int action) {
   const std::string_view move = s.env.actions.at(static_cast<std::size_t>(action));
   const double d = s.env.step;
   Vec3 delta{0, 0, 0};
@@ -28,11 +30,12 @@ Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placem
     delta.x = d;
   if (move == "left"sv)
     delta.x = -d;
-  return ApplyDisplacement(s, uav, delta, from);
+  return delta;
 }
 
-Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delta,
-                            const Placement& from) {
+// Where UAV `uav` of `from` ends after `delta`: clamped to its zone; where it was if that is
+// inside a building or too close to another UAV.
+Vec3 Target(const Scenario& s, std::size_t uav, const Vec3& delta, const Placement& from) {
   const Vec3& at = from.at(uav);
   Vec3 to{at.x + delta.x, at.y + delta.y, at.z + delta.z};
   const Box& z = s.uavs.at(uav).zone;
@@ -40,9 +43,24 @@ Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delt
   to.y = std::clamp(to.y, z.ymin, z.ymax);
   to.z = std::clamp(to.z, z.zmin, z.zmax);
   if (BuildingContaining(s, to) >= 0 || OverlapsAnother(from, uav, to))
-    return from;
+    return at;
+  return to;
+}
+
+}  // namespace
+
+Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
+  return ApplyDisplacement(s, uav, MoveDelta(s, action), from);
+}
+
+Vec3 MoveTarget(const Scenario& s, std::size_t uav, int action, const Placement& from) {
+  return Target(s, uav, MoveDelta(s, action), from);
+}
+
+Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delta,
+                            const Placement& from) {
   Placement placement = from;
-  placement[uav] = to;
+  placement[uav] = Target(s, uav, delta, from);
   return placement;
 }
 

@@ -15,6 +15,9 @@ namespace rlpos {
 // than kMinUavSeparation to another UAV, leaves the UAV where it is. (With env.action_mask the
 // agent never picks a move that leaves it where it is.)
 Placement ApplyMove(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
+// Where ApplyMove puts UAV `uav`, without building the placement (an action mask asks this of
+// every action at every step).
+Vec3 MoveTarget(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
 // The placement after a displacement of UAV `uav` (env.action_space "continuous"), with the
 // same rules.
 Placement ApplyDisplacement(const Scenario& scenario, std::size_t uav, const Vec3& displacement,

@@ -78,25 +78,43 @@ py::list PositionsList(const Placement& placement) {
   return positions;
 }
 
+// The info dict's keys, made and interned once: a step builds no key strings. Never freed, so
+// that no Python object is released after the interpreter is gone.
+struct InfoKeys {
+  static py::str Make(const char* name) {
+    return py::reinterpret_steal<py::str>(PyUnicode_InternFromString(name));
+  }
+  py::str position = Make("position"), positions = Make("positions"),
+          serving_uav = Make("serving_uav"), active_uav = Make("active_uav"), n_los = Make("n_los"),
+          throughput_mbps = Make("throughput_mbps"), demands_met = Make("demands_met"),
+          snr_db = Make("snr_db"), action_mask = Make("action_mask");
+};
+
+const InfoKeys& Keys() {
+  static const InfoKeys* keys = new InfoKeys();
+  return *keys;
+}
+
 // Built here, as the Python API hands them out, so that a step costs Python no conversions.
 py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
+  const InfoKeys& k = Keys();
   py::dict d;
   const Vec3& p = info.positions.front();
-  d["position"] = py::make_tuple(p.x, p.y, p.z);  // the first UAV's
+  d[k.position] = py::make_tuple(p.x, p.y, p.z);  // the first UAV's
   if (info.positions.size() > 1) {
-    d["positions"] = PositionsList(info.positions);
-    d["serving_uav"] = info.serving;
-    d["active_uav"] = info.active_uav;
+    d[k.positions] = PositionsList(info.positions);
+    d[k.serving_uav] = info.serving;
+    d[k.active_uav] = info.active_uav;
   }
-  d["n_los"] = info.n_los;
-  d["throughput_mbps"] = info.throughput_mbps;
-  d["demands_met"] = info.demands_met;
-  d["snr_db"] = info.snr_db;
+  d[k.n_los] = info.n_los;
+  d[k.throughput_mbps] = info.throughput_mbps;
+  d[k.demands_met] = info.demands_met;
+  d[k.snr_db] = info.snr_db;
   if (!mask.empty()) {
     // int8, Gymnasium's convention for masks.
     py::array_t<std::int8_t> m(static_cast<py::ssize_t>(mask.size()));
     std::copy(mask.begin(), mask.end(), m.mutable_data());
-    d["action_mask"] = std::move(m);
+    d[k.action_mask] = std::move(m);
   }
   return d;
 }

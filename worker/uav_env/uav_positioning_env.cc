@@ -43,7 +43,7 @@ ActionMask UavPositioningEnv::ValidActions() const {
   bool moves = false;
   for (std::size_t a = 0; a < actions.size(); ++a) {
     const Vec3& at = placement_[active_];
-    const Vec3 to = ApplyMove(scenario_, active_, static_cast<int>(a), placement_)[active_];
+    const Vec3 to = MoveTarget(scenario_, active_, static_cast<int>(a), placement_);
     const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
