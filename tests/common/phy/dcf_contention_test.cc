@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace rlpos {
 namespace {
@@ -48,6 +50,56 @@ TEST(DcfContention, CrowdsCollideMoreAndIdleLess) {
 TEST(DcfContention, LargerWindowsCollideLess) {
   EXPECT_LT(SaturatedDcf(20, 31, 1023).collision_probability,
             SaturatedDcf(20, 15, 1023).collision_probability);
+}
+
+}  // namespace
+}  // namespace rlpos
+
+namespace rlpos {
+namespace {
+
+// Bianchi's fixed point as it was solved before the bisection stopped early and the solutions
+// were memoised: all 100 bisection steps, every call.
+DcfContention FullBisection(double stations, int cw_min, int cw_max) {
+  const double n = std::max(1.0, stations);
+  const double w = cw_min + 1.0;
+  const int stages = BackoffStages(cw_min, cw_max);
+  auto tau = [&](double p) {
+    double sum = 0.0, term = 1.0;
+    for (int k = 0; k < stages; ++k, term *= 2 * p)
+      sum += term;
+    return 2.0 / (1.0 + w + p * w * sum);
+  };
+  double lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 100; ++k) {
+    const double p = 0.5 * (lo + hi);
+    const double rhs = 1.0 - std::pow(1.0 - tau(p), n - 1.0);
+    (rhs > p ? lo : hi) = p;
+  }
+  DcfContention c;
+  c.collision_probability = 0.5 * (lo + hi);
+  c.tau = tau(c.collision_probability);
+  const double idle = std::pow(1.0 - c.tau, n);
+  const double success = n * c.tau * std::pow(1.0 - c.tau, n - 1.0);
+  c.idle_slots_per_success = idle / success;
+  c.collisions_per_success = (1.0 - idle - success) / success;
+  return c;
+}
+
+TEST(DcfContention, SameBitsAsTheFullBisectionFirstTimeAndFromTheMemo) {
+  const std::pair<int, int> windows[] = {{15, 1023}, {7, 255}, {15, 15}};
+  for (double n = 0.5; n < 40; n += 0.173) {
+    for (int call = 0; call < 2; ++call) {  // solved, then remembered (for each window apart)
+      for (const auto& [cw_min, cw_max] : windows) {
+        const DcfContention want = FullBisection(n, cw_min, cw_max);
+        const DcfContention got = SaturatedDcf(n, cw_min, cw_max);
+        EXPECT_EQ(got.tau, want.tau) << n << " " << cw_min << " " << cw_max;
+        EXPECT_EQ(got.collision_probability, want.collision_probability) << n;
+        EXPECT_EQ(got.idle_slots_per_success, want.idle_slots_per_success) << n;
+        EXPECT_EQ(got.collisions_per_success, want.collisions_per_success) << n;
+      }
+    }
+  }
 }
 
 }  // namespace
