@@ -85,6 +85,32 @@ def test_an_invalid_action_is_a_value_error_and_harms_nothing(env, action):
     assert env.step(np.int64(2))[4]["position"] == (50.0, 55.0, 25.0)  # forward: +y
 
 
+def test_plain_and_numpy_int_actions_step_alike(scenario_b):
+    # A plain int goes straight to the C++ step; numpy ints and 0-d arrays are checked first.
+    envs = [rlpos.make(scenario_b, fidelity="analytic", overrides=SHORT) for _ in range(3)]
+    try:
+        results = [[e.reset(seed=4)] for e in envs]
+        for a in [0, 2, 4, 1, 3, 5, 6, 2, 4, 4]:
+            for e, as_given, result in zip(envs, (a, np.int64(a), np.array(a)), results):
+                result.append(e.step(as_given))
+        plain = results[0]
+        for other in results[1:]:
+            for mine, theirs in zip(plain, other):
+                observation = mine[0]
+                assert observation.dtype == np.float32 and observation.shape == (4,)
+                assert np.array_equal(observation, theirs[0])
+                assert mine[1:-1] == theirs[1:-1]  # reward, terminated, truncated (or nothing)
+                info, their_info = mine[-1], theirs[-1]
+                assert info["action_mask"].dtype == np.int8
+                assert {k: v for k, v in info.items() if k != "action_mask"} == \
+                    {k: v for k, v in their_info.items() if k != "action_mask"}
+                assert np.array_equal(info["action_mask"], their_info["action_mask"])
+        assert len({r[4]["position"] for r in plain[1:]}) > 3  # it went places
+    finally:
+        for e in envs:
+            e.close()
+
+
 @pytest.mark.parametrize("action", [[0, 0, 6], [0, 0], [np.nan, 0, 0], "up", [[1, 2, 3]]])
 def test_an_invalid_displacement_is_a_value_error(scenario_b, action):
     env = rlpos.make(scenario_b, fidelity="analytic", overrides={**SHORT, **CONTINUOUS})
