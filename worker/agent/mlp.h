@@ -1,7 +1,7 @@
 #pragma once
 // The small multilayer perceptrons the agents are made of, what they do with them besides
 // forward passes (copy, Polyak-average, load with a shape check), and the batches they feed them.
-#include <torch/torch.h>
+#include "worker/agent/libtorch.h"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "worker/agent/ppo_agent.h"
 
-#include <torch/torch.h>
+#include "worker/agent/libtorch.h"
 
 #include <algorithm>
 #include <filesystem>

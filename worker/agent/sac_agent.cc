@@ -1,6 +1,6 @@
 #include "worker/agent/sac_agent.h"
 
-#include <torch/torch.h>
+#include "worker/agent/libtorch.h"
 
 #include <cmath>
 #include <filesystem>
