@@ -172,6 +172,33 @@ def test_continuous_actions(scenario_b):
         envs.close()
 
 
+def test_several_uavs_fly_as_in_rlpos_make():
+    urban3 = scenario_path("urban3")
+    envs = rlpos.make_vec(urban3, num_envs=2, seed=1, overrides=SHORT)
+    singles = [rlpos.make(urban3, fidelity="analytic", seed=s, overrides=SHORT) for s in (1, 2)]
+    try:
+        observations, infos = envs.reset(options={"random_start": True})
+        envs.action_space.seed(3)
+        for t in range(12):
+            for i, single in enumerate(singles):
+                if t == 0:
+                    obs, info = single.reset(options={"random_start": True})
+                elif t == 11:  # after the last step of the episode, the autoreset
+                    obs, info = single.reset()
+                else:
+                    obs, _, _, _, info = single.step(actions[i])
+                assert np.array_equal(observations[i], obs)
+                assert tuple(infos["position"][i]) == info["position"]
+                assert [tuple(p) for p in infos["positions"][i]] == info["positions"]
+                assert infos["active_uav"][i] == info["active_uav"]
+            actions = envs.action_space.sample()
+            observations, _, _, _, infos = envs.step(actions)
+    finally:
+        envs.close()
+        for single in singles:
+            single.close()
+
+
 # Bad input: a one-line ValueError (RuntimeError for the state) naming what is wrong, and no
 # thread left behind.
 def one_line_error(kind, match, f):
@@ -254,6 +281,12 @@ def test_bad_continuous_actions(scenario_b, actions, match):
 @pytest.mark.parametrize("seed", [-1, 2**63, 1.5, "1", [1, 2], [1, 2, 3, -4]])
 def test_bad_seeds(envs, seed):
     one_line_error(ValueError, "seed", lambda: envs.reset(seed=seed))
+
+
+@pytest.mark.parametrize("threads", [0, 5, 1.0])
+def test_bad_threads(scenario_b, threads):
+    one_line_error(ValueError, "threads", lambda: rlpos.make_vec(scenario_b, num_envs=4,
+                                                                 threads=threads))
 
 
 def test_bad_options(envs):

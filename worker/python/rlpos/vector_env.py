@@ -70,9 +70,9 @@ class VectorEnv(gymnasium.vector.VectorEnv if GYMNASIUM else object):
             if seed > _MAX_SEED - (num_envs - 1):
                 raise ValueError("seed: seed + num_envs - 1 must be at most 2**63 - 1, got %r"
                                  % (seed,))
-        if threads is not None and (not _is_int(threads) or not 1 <= threads <= MAX_ENVS):
-            raise ValueError("threads: expected an integer from 1 to %d or None, got %r"
-                             % (MAX_ENVS, threads))
+        if threads is not None and (not _is_int(threads) or not 1 <= threads <= num_envs):
+            raise ValueError("threads: expected None or an integer from 1 to num_envs (%d), "
+                             "got %r" % (num_envs, threads))
         self._env = _rlpos.VectorEnv([os.fspath(s) for s in scenarios],
                                      override_texts(overrides, **{"env.fidelity": fidelity}),
                                      num_envs, seed, threads or 0)
