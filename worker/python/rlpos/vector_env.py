@@ -144,12 +144,11 @@ class VectorEnv(gymnasium.vector.VectorEnv if GYMNASIUM else object):
             raise ValueError("actions: expected %s, got dtype %s" % (what, a.dtype))
         if a.shape != shape:
             raise ValueError("actions: expected shape %s, got %s" % (shape, a.shape))
-        if kinds == "iu":  # here, as uint64 values would wrap on their way to C++ (int64)
-            k = self.single_action_space.n
-            bad = np.flatnonzero((a < 0) | (a >= k))
-            if bad.size:
-                raise ValueError("actions[%d]: expected a move index in [0, %d), got %d"
-                                 % (bad[0], k, a[bad[0]]))
+        if a.dtype.kind == "u" and a.dtype.itemsize == 8 and a.size and a.max() > _MAX_SEED:
+            # C++ checks the range; uint64 values this large would wrap on their way (int64).
+            i = int(np.argmax(a > _MAX_SEED))
+            raise ValueError("actions[%d]: expected a move index in [0, %d), got %d"
+                             % (i, self.single_action_space.n, a[i]))
         observations, rewards, terminations, truncations, fields = self._env.step(a)
         return observations, rewards, terminations, truncations, self._infos(fields)
 
@@ -169,8 +168,9 @@ class VectorEnv(gymnasium.vector.VectorEnv if GYMNASIUM else object):
             infos["positions"] = positions
             infos["active_uav"] = active
         infos.update(fields)
-        for key in list(infos):
-            infos["_" + key] = np.ones(self.num_envs, np.bool_)
+        masks = np.ones((len(infos), self.num_envs), np.bool_)  # one allocation, a row per key
+        for key, mask in zip(list(infos), masks):
+            infos["_" + key] = mask
         return infos
 
     def __repr__(self):
