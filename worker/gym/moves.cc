@@ -8,7 +8,7 @@
 
 namespace rlpos {
 
-Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
+Vec3 MoveDisplacement(const Scenario& s, int action) {
   const std::string& move = s.env.actions.at(static_cast<std::size_t>(action));
   const double d = s.env.step;
   Vec3 delta{0, 0, 0};
@@ -24,18 +24,26 @@ Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placem
     delta.x = d;
   if (move == "left")
     delta.x = -d;
-  return ApplyDisplacement(s, uav, delta, from);
+  return delta;
 }
 
-Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delta,
-                            const Placement& from) {
-  const Vec3& at = from.at(uav);
+Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
+  return ApplyDisplacement(s, uav, MoveDisplacement(s, action), from);
+}
+
+Vec3 TargetAlone(const Scenario& s, std::size_t uav, const Vec3& delta, const Vec3& at) {
   Vec3 to{at.x + delta.x, at.y + delta.y, at.z + delta.z};
   const Box& z = s.uavs.at(uav).zone;
   to.x = std::clamp(to.x, z.xmin, z.xmax);
   to.y = std::clamp(to.y, z.ymin, z.ymax);
   to.z = std::clamp(to.z, z.zmin, z.zmax);
-  if (BuildingContaining(s, to) >= 0 || OverlapsAnother(from, uav, to))
+  return BuildingContaining(s, to) >= 0 ? at : to;
+}
+
+Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delta,
+                            const Placement& from) {
+  const Vec3 to = TargetAlone(s, uav, delta, from.at(uav));
+  if (OverlapsAnother(from, uav, to))
     return from;
   Placement placement = from;
   placement[uav] = to;
@@ -101,7 +109,7 @@ BoxSpace ObservationBounds(const Scenario& s) {
       box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
     if (field == "snr") {
       for (std::size_t i = 0; i < s.ues.size(); ++i)
-        box.low.push_back(-20), box.high.push_back(60);
+        box.low.push_back(kObservedSnrLowDb), box.high.push_back(kObservedSnrHighDb);
     }
   }
   if (s.uavs.size() > 1) {
@@ -132,7 +140,7 @@ std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
     if (field == "snr") {
       // Clipped to the bounds so that the observation always lies in its space.
       for (double snr : info.snr_db)
-        obs.push_back(std::clamp(snr, -20.0, 60.0));
+        obs.push_back(std::clamp(snr, kObservedSnrLowDb, kObservedSnrHighDb));
     }
   }
   if (s.uavs.size() > 1) {
