@@ -152,7 +152,6 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   return result;
 }
 
-
 void UavPositioningEnv::CheckStepAll(std::size_t actions) const {
   if (placement_.empty())
     throw std::logic_error("StepAll before the first Reset");
