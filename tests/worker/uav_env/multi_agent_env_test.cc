@@ -197,5 +197,22 @@ TEST(StepAll, PacketFidelityMeasuresOneInterval) {
   EXPECT_GT(last.info.throughput_mbps, 100.0);
 }
 
+TEST(StepAll, PacketFidelityMovesTwoUavsAtOnce) {
+  // campus2's two UAVs at packet level: each UE has a radio per UAV and is handed over after
+  // the joint move, as after Step's.
+  const Scenario s = Load("campus2", {"env.fidelity=packet", "env.episode_duration=0.1",
+                                      "env.decision_interval=0.1", "simulation.warmup=0.3"});
+  UavPositioningEnv env(s);
+  env.Reset(1);
+  const Placement start = env.LastInfo().positions;
+  const int up = MoveIndex(s, "up");
+  const MultiStepResult m = env.StepAll({up, up});
+  ExpectConsistent(env, m);
+  for (std::size_t u = 0; u < 2; ++u)
+    EXPECT_EQ(m.info.positions[u].z, start[u].z + s.env.step) << "UAV " << u;
+  EXPECT_GT(m.info.throughput_mbps, 0.0);
+  EXPECT_TRUE(m.truncated);  // one step of 0.1 s
+}
+
 }  // namespace
 }  // namespace rlpos
