@@ -1,12 +1,11 @@
 #include "worker/agent/dqn_agent.h"
 
-#include <torch/torch.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
+#include "worker/agent/libtorch.h"
 #include "worker/agent/mlp.h"
 #include "worker/agent/running_moments.h"
 

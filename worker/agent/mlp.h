@@ -1,11 +1,10 @@
 #pragma once
 // The small multilayer perceptrons the agents are made of, what they do with them besides
 // forward passes (copy, Polyak-average, load with a shape check), and the batches they feed them.
-#include <torch/torch.h>
-
 #include <string>
 #include <vector>
 
+#include "worker/agent/libtorch.h"
 #include "worker/gym/spaces.h"
 
 namespace rlpos {

@@ -1,13 +1,12 @@
 #include "worker/agent/ppo_agent.h"
 
-#include <torch/torch.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
 #include <random>
 #include <stdexcept>
 
+#include "worker/agent/libtorch.h"
 #include "worker/agent/mlp.h"
 #include "worker/agent/running_moments.h"
 

@@ -1,12 +1,11 @@
 #include "worker/agent/sac_agent.h"
 
-#include <torch/torch.h>
-
 #include <cmath>
 #include <filesystem>
 #include <random>
 #include <stdexcept>
 
+#include "worker/agent/libtorch.h"
 #include "worker/agent/mlp.h"
 #include "worker/agent/running_moments.h"
 

@@ -15,6 +15,7 @@ struct StepInfo {
   std::vector<int> serving;  // per UE: the index of its UAV
   int active_uav = 0;        // the UAV the next action moves (several UAVs take turns)
   int n_los = 0;
+  std::vector<std::uint8_t> los;  // per UE: 1 if its line to its serving UAV is clear
   double throughput_mbps = 0.0;
   int demands_met = 0;
   std::vector<double> snr_db;

@@ -12,9 +12,7 @@ namespace rlpos {
 // The names are compared at every step: as string_views they compare their lengths first.
 using namespace std::string_view_literals;
 
-namespace {
-
-Vec3 MoveDelta(const Scenario& s, int action) {
+Vec3 MoveDisplacement(const Scenario& s, int action) {
   const std::string_view move = s.env.actions.at(static_cast<std::size_t>(action));
   const double d = s.env.step;
   Vec3 delta{0, 0, 0};
@@ -33,34 +31,31 @@ Vec3 MoveDelta(const Scenario& s, int action) {
   return delta;
 }
 
-// Where UAV `uav` of `from` ends after `delta`: clamped to its zone; where it was if that is
-// inside a building or too close to another UAV.
-Vec3 Target(const Scenario& s, std::size_t uav, const Vec3& delta, const Placement& from) {
-  const Vec3& at = from.at(uav);
+Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
+  return ApplyDisplacement(s, uav, MoveDisplacement(s, action), from);
+}
+
+Vec3 TargetAlone(const Scenario& s, std::size_t uav, const Vec3& delta, const Vec3& at) {
   Vec3 to{at.x + delta.x, at.y + delta.y, at.z + delta.z};
   const Box& z = s.uavs.at(uav).zone;
   to.x = std::clamp(to.x, z.xmin, z.xmax);
   to.y = std::clamp(to.y, z.ymin, z.ymax);
   to.z = std::clamp(to.z, z.zmin, z.zmax);
-  if (BuildingContaining(s, to) >= 0 || OverlapsAnother(from, uav, to))
-    return at;
-  return to;
-}
-
-}  // namespace
-
-Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
-  return ApplyDisplacement(s, uav, MoveDelta(s, action), from);
+  return BuildingContaining(s, to) >= 0 ? at : to;
 }
 
 Vec3 MoveTarget(const Scenario& s, std::size_t uav, int action, const Placement& from) {
-  return Target(s, uav, MoveDelta(s, action), from);
+  const Vec3 to = TargetAlone(s, uav, MoveDisplacement(s, action), from.at(uav));
+  return OverlapsAnother(from, uav, to) ? from[uav] : to;
 }
 
 Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delta,
                             const Placement& from) {
+  const Vec3 to = TargetAlone(s, uav, delta, from.at(uav));
+  if (OverlapsAnother(from, uav, to))
+    return from;
   Placement placement = from;
-  placement[uav] = Target(s, uav, delta, from);
+  placement[uav] = to;
   return placement;
 }
 
@@ -123,7 +118,7 @@ BoxSpace ObservationBounds(const Scenario& s) {
       box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
     if (field == "snr") {
       for (std::size_t i = 0; i < s.ues.size(); ++i)
-        box.low.push_back(-20), box.high.push_back(60);
+        box.low.push_back(kObservedSnrLowDb), box.high.push_back(kObservedSnrHighDb);
     }
   }
   if (s.uavs.size() > 1) {
@@ -155,7 +150,7 @@ std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
     if (field == "snr"sv) {
       // Clipped to the bounds so that the observation always lies in its space.
       for (double snr : info.snr_db)
-        obs.push_back(std::clamp(snr, -20.0, 60.0));
+        obs.push_back(std::clamp(snr, kObservedSnrLowDb, kObservedSnrHighDb));
     }
   }
   if (s.uavs.size() > 1) {

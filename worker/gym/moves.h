@@ -15,6 +15,13 @@ namespace rlpos {
 // than kMinUavSeparation to another UAV, leaves the UAV where it is. (With env.action_mask the
 // agent never picks a move that leaves it where it is.)
 Placement ApplyMove(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
+// The displacement of move `action` (an index into scenario.env.actions): env.step metres along
+// its axis; "stay" is (0, 0, 0).
+Vec3 MoveDisplacement(const Scenario& scenario, int action);
+// Where UAV `uav` at `at` ends after `displacement` if no other UAV mattered: clamped to its
+// zone, or `at` if that point is inside a building.
+Vec3 TargetAlone(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
+                 const Vec3& at);
 // Where ApplyMove puts UAV `uav`, without building the placement (an action mask asks this of
 // every action at every step).
 Vec3 MoveTarget(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
@@ -30,6 +37,10 @@ Placement ApplyDisplacement(const Scenario& scenario, std::size_t uav, const Vec
 Placement RandomStart(const Scenario& scenario, std::uint64_t seed);
 // The continuous action space: a displacement in metres, each component in [-step, step].
 BoxSpace DisplacementBounds(const Scenario& scenario);
+
+// The bounds an observed SNR is clipped to (dB), in the observation and the state.
+constexpr double kObservedSnrLowDb = -20.0;
+constexpr double kObservedSnrHighDb = 60.0;
 
 // Observation layout and bounds from scenario.env.observations ("snr" expands to one per UE;
 // "x", "y" and "z" to one per UAV). With several UAVs a one-hot of the UAV whose turn it is

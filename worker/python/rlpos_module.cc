@@ -20,6 +20,7 @@
 #include "worker/positioners/positioners.h"
 #include "worker/uav_env/analytic_evaluator.h"
 #include "worker/uav_env/uav_positioning_env.h"
+#include "worker/vector_env/batched_env.h"
 
 namespace py = pybind11;
 
@@ -246,6 +247,265 @@ class PyEnv {
   std::mutex mutex_;  // the GIL is released while stepping: one step at a time per env
 };
 
+// N analytic envs stepped together (worker/vector_env), for rlpos.VectorEnv. Each call fills
+// numpy arrays it allocates, without the GIL: the observations are copied once, from the envs
+// into the array Python receives.
+class PyVectorEnv {
+ public:
+  PyVectorEnv(const std::vector<std::string>& files, const std::vector<std::string>& overrides,
+              std::size_t num_envs, std::optional<std::uint64_t> seed, std::size_t threads) {
+    std::vector<Scenario> scenarios;
+    for (const auto& file : files)
+      scenarios.push_back(Load(file, overrides));
+    BatchedEnvOptions options;
+    options.num_envs = num_envs;
+    options.seed = seed;
+    options.threads = threads;
+    env_ = std::make_unique<BatchedEnv>(scenarios, options);  // invalid_argument: ValueError
+  }
+
+  std::size_t NumEnvs() const { return Open().NumEnvs(); }
+  std::size_t Threads() const { return Open().Threads(); }
+  std::size_t UavCount() const { return Open().UavCount(); }
+  int ActionCount() const { return Open().ActionSpace().n; }
+  std::pair<std::vector<double>, std::vector<double>> ActionBounds() const {
+    const BoxSpace box = Open().ContinuousActionSpace();
+    return {box.low, box.high};
+  }
+  std::pair<std::vector<double>, std::vector<double>> ObservationBounds() const {
+    const BoxSpace box = Open().ObservationSpace();
+    return {box.low, box.high};
+  }
+  std::vector<std::string> ScenarioNames() const {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < Open().NumEnvs(); ++i)
+      names.push_back(Open().ScenarioOf(i).name);
+    return names;
+  }
+  std::vector<std::string> Moves() const { return Open().ScenarioOf(0).env.actions; }
+
+  // (observations, fields): fields = the info arrays by name.
+  py::tuple Reset(const std::vector<std::optional<std::uint64_t>>& seeds, bool random_start) {
+    Arrays a = Allocate(false);
+    {
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      Open().Reset(seeds, ResetOptions{random_start}, a.buffers);
+    }
+    return py::make_tuple(a.observations, a.fields);
+  }
+
+  // (observations, rewards, terminations, truncations, fields). `actions`: N move indices, or
+  // N x 3 displacements; the Python side has checked their dtype and shape.
+  py::tuple Step(const py::array& actions) {
+    Arrays a = Allocate(true);
+    if (Open().ActionSpace().n > 0) {
+      const auto moves =
+          py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(actions);
+      if (!moves)
+        throw py::value_error("actions: expected integer move indices");
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      Open().Step(moves.data(), static_cast<std::size_t>(moves.size()), a.buffers);
+    } else {
+      const auto d =
+          py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(actions);
+      if (!d)
+        throw py::value_error("actions: expected displacements (numbers)");
+      py::gil_scoped_release release;
+      std::lock_guard<std::mutex> lock(mutex_);
+      Open().StepContinuous(d.data(), static_cast<std::size_t>(d.size()), a.buffers);
+    }
+    return py::make_tuple(a.observations, a.rewards, a.terminated, a.truncated, a.fields);
+  }
+
+  void Close() {
+    std::unique_ptr<BatchedEnv> env;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      env = std::move(env_);
+    }
+    py::gil_scoped_release release;  // joins the pool's threads
+    env.reset();
+  }
+  bool closed() const { return env_ == nullptr; }
+
+ private:
+  BatchedEnv& Open() const {
+    if (!env_)
+      throw std::runtime_error("rlpos: the vector env is closed");
+    return *env_;
+  }
+
+  struct Arrays {
+    py::array_t<float> observations;
+    py::array_t<double> rewards;
+    py::array_t<bool> terminated, truncated;
+    py::dict fields;
+    BatchBuffers buffers;
+  };
+
+  Arrays Allocate(bool step) const {
+    const BatchedEnv& env = Open();
+    const auto n = static_cast<py::ssize_t>(env.NumEnvs());
+    Arrays a;
+    a.observations = py::array_t<float>({n, static_cast<py::ssize_t>(env.ObservationDim())});
+    a.buffers.observations = a.observations.mutable_data();
+    if (step) {
+      a.rewards = py::array_t<double>(n);
+      a.terminated = py::array_t<bool>(n);
+      a.truncated = py::array_t<bool>(n);
+      a.buffers.rewards = a.rewards.mutable_data();
+      a.buffers.terminated = a.terminated.mutable_data();
+      a.buffers.truncated = a.truncated.mutable_data();
+    }
+    py::array_t<double> positions({n, static_cast<py::ssize_t>(env.UavCount()), py::ssize_t{3}});
+    py::array_t<std::int64_t> active(n), n_los(n), demands(n);
+    py::array_t<double> throughput(n);
+    a.buffers.positions = positions.mutable_data();
+    a.buffers.active_uav = active.mutable_data();
+    a.buffers.n_los = n_los.mutable_data();
+    a.buffers.throughput_mbps = throughput.mutable_data();
+    a.buffers.demands_met = demands.mutable_data();
+    a.fields["positions"] = positions;
+    a.fields["active_uav"] = active;
+    a.fields["n_los"] = n_los;
+    a.fields["throughput_mbps"] = throughput;
+    a.fields["demands_met"] = demands;
+    if (env.HasActionMask()) {
+      py::array_t<std::int8_t> mask({n, static_cast<py::ssize_t>(env.ActionCount())});
+      a.buffers.action_mask = mask.mutable_data();
+      a.fields["action_mask"] = mask;
+    }
+    return a;
+  }
+
+  std::unique_ptr<BatchedEnv> env_;
+  std::mutex mutex_;  // one call at a time per vector env (the GIL is released inside)
+};
+
+// Several UAVs as agents (rlpos.parallel_env): every UAV moves at once in each step
+// (UavPositioningEnv::StepAll). Returns plain lists; the package's Python part makes the
+// per-agent dicts and numpy arrays.
+class PyParallelEnv {
+ public:
+  PyParallelEnv(const std::string& file, const std::vector<std::string>& overrides) {
+    Scenario s = Load(file, overrides);
+    if (s.env.fidelity == "packet")
+      lease_ = std::make_unique<Ns3Lease>("a packet-level parallel env");
+    env_ = std::make_unique<UavPositioningEnv>(std::move(s));
+  }
+
+  const Scenario& scenario() const { return Open().scenario(); }
+  std::vector<std::string> AgentNames() const {
+    std::vector<std::string> names;
+    for (const auto& uav : scenario().uavs)
+      names.push_back(uav.name);
+    return names;
+  }
+  int ActionCount() const { return Open().ActionSpace().n; }
+  int StepsPerEpisode() const { return Open().StepsPerEpisode(); }
+  std::pair<std::vector<double>, std::vector<double>> ActionBounds() const {
+    const BoxSpace box = Open().ContinuousActionSpace();
+    return {box.low, box.high};
+  }
+  std::pair<std::vector<double>, std::vector<double>> ObservationBounds() const {
+    const BoxSpace box = Open().ObservationSpace();
+    return {box.low, box.high};
+  }
+  std::pair<std::vector<double>, std::vector<double>> StateBounds() const {
+    const BoxSpace box = Open().StateSpace();
+    return {box.low, box.high};
+  }
+
+  // (observations per UAV, state, info)
+  py::tuple Reset(std::uint64_t seed, bool random_start) {
+    const Outcome o = Run([&](UavPositioningEnv& env) {
+      MultiStepResult r;
+      env.Reset(seed, ResetOptions{random_start});
+      r.observations = env.AgentObservations();
+      r.state = env.State();
+      r.info = env.LastInfo();
+      return r;
+    });
+    return py::make_tuple(o.result.observations, o.result.state, Info(o));
+  }
+  // (observations per UAV, state, team reward, terminated, truncated, info)
+  py::tuple Step(const std::vector<int>& actions) {
+    return Finish(Run([&](UavPositioningEnv& env) { return env.StepAll(actions); }));
+  }
+  py::tuple StepContinuous(const std::vector<std::vector<double>>& displacements) {
+    return Finish(
+        Run([&](UavPositioningEnv& env) { return env.StepAllContinuous(displacements); }));
+  }
+
+  void Close() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    env_.reset();
+    lease_.reset();
+  }
+  bool closed() const { return env_ == nullptr; }
+
+ private:
+  UavPositioningEnv& Open() const {
+    if (!env_)
+      throw std::runtime_error("rlpos: the parallel env is closed");
+    return *env_;
+  }
+
+  struct Outcome {
+    MultiStepResult result;
+    std::vector<ActionMask> masks;  // per UAV, after it
+  };
+
+  // As PyEnv::Run: without the GIL, under the env's lock.
+  template <typename F>
+  Outcome Run(F step) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(mutex_);
+    try {
+      Outcome o{step(Open()), {}};
+      for (std::size_t u = 0; u < o.result.observations.size(); ++u)
+        o.masks.push_back(Open().ValidActionsOf(u));
+      return o;
+    } catch (const std::out_of_range& e) {
+      throw py::value_error(e.what());  // an action outside the action space
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(e.what());  // not one action per UAV
+    }
+  }
+
+  // The team's info: every UAV's position and mask, each UE's serving UAV, LoS and SNR, and
+  // the run's figures (no active_uav: StepAll has no turns).
+  static py::dict Info(const Outcome& o) {
+    const StepInfo& info = o.result.info;
+    py::dict d;
+    d["positions"] = PositionsList(info.positions);
+    d["serving_uav"] = info.serving;
+    d["n_los"] = info.n_los;
+    d["los"] = std::vector<int>(info.los.begin(), info.los.end());
+    d["throughput_mbps"] = info.throughput_mbps;
+    d["demands_met"] = info.demands_met;
+    d["snr_db"] = info.snr_db;
+    if (!o.masks.empty() && !o.masks.front().empty()) {
+      py::list masks;
+      for (const auto& mask : o.masks)
+        masks.append(std::vector<int>(mask.begin(), mask.end()));
+      d["action_masks"] = masks;
+    }
+    return d;
+  }
+
+  static py::tuple Finish(const Outcome& o) {
+    const MultiStepResult& r = o.result;
+    return py::make_tuple(r.observations, r.state, r.reward, r.terminated, r.truncated, Info(o));
+  }
+
+  std::unique_ptr<Ns3Lease> lease_;
+  std::unique_ptr<UavPositioningEnv> env_;
+  std::mutex mutex_;  // the GIL is released while stepping: one step at a time per env
+};
+
 py::list Oracle(const std::string& file, const std::vector<std::string>& overrides,
                 double grid_step, int packet_candidates, double packet_duration, std::size_t top) {
   const Scenario s = Load(file, overrides);
@@ -311,7 +571,9 @@ std::string Evaluate(const std::string& file, const std::vector<std::string>& ov
 
 PYBIND11_MODULE(_rlpos, m) {
   using namespace rlpos::python;
-  m.doc() = "C++ side of rlpos: the UAV positioning env, the oracle and packet-level evaluation";
+  m.doc() =
+      "C++ side of rlpos: the UAV positioning env (one env, a batch, or every UAV as an agent), "
+      "the oracle and packet-level evaluation";
   py::class_<PyEnv>(m, "Env")
       .def(py::init<const std::string&, const std::vector<std::string>&>(), py::arg("scenario"),
            py::arg("overrides"))
@@ -329,6 +591,45 @@ PYBIND11_MODULE(_rlpos, m) {
       .def("step_continuous", &PyEnv::StepContinuous, py::arg("displacement"))
       .def("time_steps", &PyEnv::TimeSteps, py::arg("actions"), py::arg("steps"), py::arg("seed"))
       .def("close", &PyEnv::Close);
+  py::class_<PyVectorEnv>(m, "VectorEnv")
+      .def(py::init<const std::vector<std::string>&, const std::vector<std::string>&, std::size_t,
+                    std::optional<std::uint64_t>, std::size_t>(),
+           py::arg("scenarios"), py::arg("overrides"), py::arg("num_envs"), py::arg("seed"),
+           py::arg("threads"))
+      .def_property_readonly("num_envs", &PyVectorEnv::NumEnvs)
+      .def_property_readonly("threads", &PyVectorEnv::Threads)
+      .def_property_readonly("uav_count", &PyVectorEnv::UavCount)
+      .def_property_readonly("action_count", &PyVectorEnv::ActionCount)
+      .def_property_readonly("action_bounds", &PyVectorEnv::ActionBounds)
+      .def_property_readonly("observation_bounds", &PyVectorEnv::ObservationBounds)
+      .def_property_readonly("scenario_names", &PyVectorEnv::ScenarioNames)
+      .def_property_readonly("actions", &PyVectorEnv::Moves)
+      .def_property_readonly("closed", &PyVectorEnv::closed)
+      .def("reset", &PyVectorEnv::Reset, py::arg("seeds"), py::arg("random_start"))
+      .def("step", &PyVectorEnv::Step, py::arg("actions"))
+      .def("close", &PyVectorEnv::Close);
+  py::class_<PyParallelEnv>(m, "ParallelEnv")
+      .def(py::init<const std::string&, const std::vector<std::string>&>(), py::arg("scenario"),
+           py::arg("overrides"))
+      .def_property_readonly("agent_names", &PyParallelEnv::AgentNames)
+      .def_property_readonly("action_count", &PyParallelEnv::ActionCount)
+      .def_property_readonly("action_bounds", &PyParallelEnv::ActionBounds)
+      .def_property_readonly("observation_bounds", &PyParallelEnv::ObservationBounds)
+      .def_property_readonly("state_bounds", &PyParallelEnv::StateBounds)
+      .def_property_readonly("steps_per_episode", &PyParallelEnv::StepsPerEpisode)
+      .def_property_readonly("scenario_name",
+                             [](const PyParallelEnv& e) { return e.scenario().name; })
+      .def_property_readonly("fidelity",
+                             [](const PyParallelEnv& e) { return e.scenario().env.fidelity; })
+      .def_property_readonly("agent_seed",
+                             [](const PyParallelEnv& e) { return e.scenario().agent.seed; })
+      .def_property_readonly("actions",
+                             [](const PyParallelEnv& e) { return e.scenario().env.actions; })
+      .def_property_readonly("closed", &PyParallelEnv::closed)
+      .def("reset", &PyParallelEnv::Reset, py::arg("seed"), py::arg("random_start") = false)
+      .def("step", &PyParallelEnv::Step, py::arg("actions"))
+      .def("step_continuous", &PyParallelEnv::StepContinuous, py::arg("displacements"))
+      .def("close", &PyParallelEnv::Close);
   m.def("oracle", &Oracle, py::arg("scenario"), py::arg("overrides"), py::arg("grid_step"),
         py::arg("packet_candidates"), py::arg("packet_duration"), py::arg("top"));
   m.def("evaluate", &Evaluate, py::arg("scenario"), py::arg("overrides"), py::arg("position"));

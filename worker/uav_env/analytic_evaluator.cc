@@ -94,6 +94,7 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
   for (std::size_t i = 0; i < n_ues; ++i) {
     const UeLink& link = (*links[static_cast<std::size_t>(info.serving[i])])[i];
     info.n_los += link.los ? 1 : 0;
+    info.los.push_back(link.los ? 1 : 0);
     info.snr_db.push_back(link.snr_db);
     info.demands_met += link.demand_met ? 1 : 0;
     airtime[i] = {scenario_.ues[i].demand_mbps, link.phy_rate_mbps, link.mpdu_success, link.snr_db};

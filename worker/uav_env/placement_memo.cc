@@ -28,7 +28,8 @@ std::uint64_t Mix(std::uint64_t z) {
 PlacementMemo::PlacementMemo(std::size_t n_uavs, std::size_t n_ues, std::size_t budget_bytes)
     : n_uavs_(n_uavs),
       n_ues_(n_ues),
-      stride_(3 * n_uavs + 3 + n_ues * (n_uavs > 1 ? 2 : 1)),
+      los_words_((n_ues + kLosBitsPerWord - 1) / kLosBitsPerWord),
+      stride_(3 * n_uavs + 2 + los_words_ + n_ues * (n_uavs > 1 ? 2 : 1)),
       slots_(budget_bytes / (stride_ * sizeof(double) + 1)) {
   if (slots_ < 4) {  // not one placement fits: no memo
     slots_ = 0;
@@ -76,10 +77,17 @@ bool PlacementMemo::Find(const Placement& placement, StepInfo& info) const {
   const double* v = Slot(slot) + 3 * n_uavs_;
   info.positions = placement;
   info.active_uav = 0;
-  info.n_los = static_cast<int>(v[0]);
-  info.demands_met = static_cast<int>(v[1]);
-  info.throughput_mbps = v[2];
-  v += 3;
+  info.demands_met = static_cast<int>(v[0]);
+  info.throughput_mbps = v[1];
+  v += 2;
+  info.los.resize(n_ues_);
+  info.n_los = 0;  // as the evaluation counts it: the UEs in LoS
+  for (std::size_t i = 0; i < n_ues_; ++i) {
+    const auto word = static_cast<std::uint64_t>(v[i / kLosBitsPerWord]);
+    info.los[i] = static_cast<std::uint8_t>((word >> (i % kLosBitsPerWord)) & 1);
+    info.n_los += info.los[i];
+  }
+  v += los_words_;
   info.snr_db.assign(v, v + n_ues_);
   info.serving.resize(n_ues_);
   for (std::size_t i = 0; i < n_ues_; ++i)
@@ -89,7 +97,7 @@ bool PlacementMemo::Find(const Placement& placement, StepInfo& info) const {
 
 void PlacementMemo::Store(const Placement& placement, const StepInfo& info) {
   if (slots_ == 0 || placement.size() != n_uavs_ || info.snr_db.size() != n_ues_ ||
-      info.serving.size() != n_ues_) {
+      info.serving.size() != n_ues_ || info.los.size() != n_ues_) {
     return;
   }
   if (size_ + 1 > Capacity()) {  // full: start again (the pages stay mapped, no more)
@@ -104,10 +112,17 @@ void PlacementMemo::Store(const Placement& placement, const StepInfo& info) {
     key[3 * u + 2] = placement[u].z;
   }
   double* v = key + 3 * n_uavs_;
-  v[0] = info.n_los;
-  v[1] = info.demands_met;
-  v[2] = info.throughput_mbps;
-  v += 3;
+  v[0] = info.demands_met;
+  v[1] = info.throughput_mbps;
+  v += 2;
+  std::vector<std::uint64_t> words(los_words_, 0);
+  for (std::size_t i = 0; i < n_ues_; ++i) {
+    if (info.los[i])
+      words[i / kLosBitsPerWord] |= std::uint64_t{1} << (i % kLosBitsPerWord);
+  }
+  for (std::size_t w = 0; w < los_words_; ++w)
+    v[w] = static_cast<double>(words[w]);  // below 2^52: exact
+  v += los_words_;
   std::copy(info.snr_db.begin(), info.snr_db.end(), v);
   if (n_uavs_ > 1) {
     for (std::size_t i = 0; i < n_ues_; ++i)

@@ -27,9 +27,9 @@ class PlacementMemo {
   PlacementMemo(std::size_t n_uavs, std::size_t n_ues,
                 std::size_t budget_bytes = kDefaultBudgetBytes);
 
-  // The state stored for `placement`: sets `info`'s positions, serving, n_los, throughput_mbps,
-  // demands_met and snr_db, and active_uav to 0. False, leaving `info` as it was, if the
-  // placement is not stored.
+  // The state stored for `placement`: sets `info`'s positions, serving, n_los, los,
+  // throughput_mbps, demands_met and snr_db, and active_uav to 0. False, leaving `info` as it was,
+  // if the placement is not stored.
   bool Find(const Placement& placement, StepInfo& info) const;
   // Stores the state at `placement` (as AnalyticEvaluator::Evaluate computed it).
   void Store(const Placement& placement, const StepInfo& info);
@@ -48,8 +48,11 @@ class PlacementMemo {
   };
   std::size_t n_uavs_;
   std::size_t n_ues_;
-  // A slot: the key (x, y, z per UAV), then n_los, demands_met, throughput_mbps, then per UE the
-  // SNR, and with several UAVs the serving UAV.
+  // A slot: the key (x, y, z per UAV), then demands_met, throughput_mbps, the UEs' LoS flags as
+  // bits of whole numbers (n_los is their count), then per UE the SNR, and with several UAVs the
+  // serving UAV.
+  static constexpr std::size_t kLosBitsPerWord = 52;
+  std::size_t los_words_;
   std::size_t stride_;
   std::size_t slots_;
   std::size_t size_ = 0;

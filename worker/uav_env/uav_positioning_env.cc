@@ -35,15 +35,15 @@ BoxSpace UavPositioningEnv::ObservationSpace() const {
   return ObservationBounds(scenario_);
 }
 
-ActionMask UavPositioningEnv::ValidActions() const {
+ActionMask UavPositioningEnv::ValidActionsOf(std::size_t uav) const {
   if (!scenario_.env.action_mask || Continuous())
     return {};
   const auto& actions = scenario_.env.actions;
   ActionMask mask(actions.size(), 0);
   bool moves = false;
   for (std::size_t a = 0; a < actions.size(); ++a) {
-    const Vec3& at = placement_[active_];
-    const Vec3 to = MoveTarget(scenario_, active_, static_cast<int>(a), placement_);
+    const Vec3& at = placement_.at(uav);
+    const Vec3 to = MoveTarget(scenario_, uav, static_cast<int>(a), placement_);
     const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
@@ -68,8 +68,10 @@ StepInfo UavPositioningEnv::Observe() {
     info.n_los = m.n_los;
     info.throughput_mbps = m.aggregate_throughput_mbps;
     info.demands_met = m.demands_met;
-    for (const auto& ue : m.ues)
+    for (const auto& ue : m.ues) {
       info.snr_db.push_back(ue.snr_db);
+      info.los.push_back(ue.los ? 1 : 0);
+    }
   }
   info.active_uav = static_cast<int>(active_);
   return info;
@@ -148,6 +150,73 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   result.reward = RewardOf(info_);
   result.truncated = steps_ >= steps_per_episode_;
   return result;
+}
+
+void UavPositioningEnv::CheckStepAll(std::size_t actions) const {
+  if (placement_.empty())
+    throw std::logic_error("StepAll before the first Reset");
+  if (actions != placement_.size()) {
+    throw std::invalid_argument("StepAll: " + std::to_string(actions) + " actions for " +
+                                std::to_string(placement_.size()) +
+                                " UAVs; expected one per UAV, in the scenario's order");
+  }
+}
+
+MultiStepResult UavPositioningEnv::StepAll(const std::vector<int>& actions) {
+  CheckStepAll(actions.size());
+  if (Continuous())
+    throw std::out_of_range("this env takes continuous actions (displacements)");
+  std::vector<Vec3> displacements;
+  for (std::size_t u = 0; u < actions.size(); ++u) {
+    if (!ActionSpace().Contains(actions[u])) {
+      throw std::out_of_range("action " + std::to_string(actions[u]) + " of UAV " +
+                              std::to_string(u) + " (\"" + scenario_.uavs[u].name +
+                              "\") out of the action space Discrete(" +
+                              std::to_string(ActionSpace().n) + ")");
+    }
+    displacements.push_back(MoveDisplacement(scenario_, actions[u]));
+  }
+  return MoveAllTo(ApplyJointDisplacement(scenario_, displacements, placement_));
+}
+
+MultiStepResult UavPositioningEnv::StepAllContinuous(
+    const std::vector<std::vector<double>>& displacements) {
+  CheckStepAll(displacements.size());
+  if (!Continuous())
+    throw std::out_of_range("this env takes discrete actions (move indices)");
+  const double step = scenario_.env.step;  // the Box is [-step, step]^3; NaN is outside
+  const auto within = [step](double v) { return v >= -step && v <= step; };
+  std::vector<Vec3> moves;
+  for (std::size_t u = 0; u < displacements.size(); ++u) {
+    const auto& d = displacements[u];
+    if (d.size() != 3 || !std::all_of(d.begin(), d.end(), within)) {
+      const std::string bound = FormatNumber(step);
+      throw std::out_of_range(
+          "the displacement of UAV " + std::to_string(u) + " (\"" + scenario_.uavs[u].name +
+          "\") must have 3 components, each within [-" + bound + ", " + bound + "] m");
+    }
+    moves.push_back({d[0], d[1], d[2]});
+  }
+  return MoveAllTo(ApplyJointDisplacement(scenario_, moves, placement_));
+}
+
+MultiStepResult UavPositioningEnv::MoveAllTo(const Placement& placement) {
+  StepResult step = MoveTo(placement);
+  MultiStepResult result;
+  result.observations = AgentObservations();
+  result.state = State();
+  result.reward = step.reward;
+  result.terminated = step.terminated;
+  result.truncated = step.truncated;
+  result.info = std::move(step.info);
+  return result;
+}
+
+std::vector<std::vector<double>> UavPositioningEnv::AgentObservations() const {
+  std::vector<std::vector<double>> observations;
+  for (std::size_t u = 0; u < scenario_.uavs.size(); ++u)
+    observations.push_back(AgentObservation(scenario_, info_, u));
+  return observations;
 }
 
 }  // namespace rlpos

@@ -3,12 +3,15 @@
 // packet fidelity: the full ns-3 simulation advances one decision interval per step
 // (Simulator::Stop + Run); each episode rebuilds the network with RngRun = the reset seed.
 // analytic fidelity: no packets (AnalyticEvaluator). Episode length and interval from env.
-// Several UAVs take turns: each step moves the UAV whose turn it is (StepInfo::active_uav, also
-// in the observation), env.turn_steps steps in a row, so one shared policy flies them all.
+// Several UAVs take turns in Step: each step moves the UAV whose turn it is
+// (StepInfo::active_uav, also in the observation), env.turn_steps steps in a row, so one shared
+// policy flies them all. Or they move at once as agents in StepAll (worker/gym/multi_agent.h):
+// one action per UAV, one decision interval, an observation per UAV and one team reward.
 #include <memory>
 
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
+#include "worker/gym/multi_agent.h"
 #include "worker/gym/reward.h"
 
 namespace rlpos {
@@ -34,7 +37,25 @@ class UavPositioningEnv : public Env {
   // With env.action_mask: "stay" and every move that changes the active UAV's position (not into
   // a wall of its zone, a building or another UAV). Without it, or if nothing moves, every
   // action.
-  ActionMask ValidActions() const override;
+  ActionMask ValidActions() const override { return ValidActionsOf(active_); }
+  // The same for UAV `uav`, the others where they are now (in StepAll another UAV's move can
+  // still refuse an allowed move: ApplyJointDisplacement).
+  ActionMask ValidActionsOf(std::size_t uav) const;
+
+  // Every UAV at once, actions[u] for UAV u (scenario order): ApplyJointDisplacement's rule,
+  // then one decision interval, as Step. The reward, truncation and LastInfo are Step's
+  // (LastInfo().active_uav keeps counting Step's turns; StepAll ignores it). Works at both
+  // fidelities. Throws std::invalid_argument for a count other than one action per UAV,
+  // std::out_of_range for an action outside the action space (naming the UAV), and
+  // std::logic_error before the first Reset; a refused call moves nothing.
+  MultiStepResult StepAll(const std::vector<int>& actions);
+  // The same with one displacement per UAV (env.action_space "continuous").
+  MultiStepResult StepAllContinuous(const std::vector<std::vector<double>>& displacements);
+  // Each UAV's observation (AgentObservation) and the global state (MakeState) after the last
+  // Reset, Step or StepAll.
+  std::vector<std::vector<double>> AgentObservations() const;
+  std::vector<double> State() const { return MakeState(scenario_, info_); }
+  BoxSpace StateSpace() const { return StateBounds(scenario_); }
 
   const Scenario& scenario() const { return scenario_; }
   int StepsPerEpisode() const { return steps_per_episode_; }
@@ -44,7 +65,9 @@ class UavPositioningEnv : public Env {
 
  private:
   StepInfo Observe();  // the state at the current position (after the last interval)
-  StepResult MoveTo(const Placement& placement);  // one decision interval at `placement`
+  StepResult MoveTo(const Placement& placement);          // one decision interval at `placement`
+  MultiStepResult MoveAllTo(const Placement& placement);  // the same, seen by every UAV
+  void CheckStepAll(std::size_t actions) const;           // one action per UAV, after a Reset
   bool Continuous() const { return scenario_.env.action_space == "continuous"; }
   // Packet level with several UAVs: a radio per UAV on each UE, re-associated every step.
   bool HandsOver() const { return scenario_.uavs.size() > 1; }

@@ -21,11 +21,13 @@ Scenario ShippedAnalytic(const std::string& name) {
 StepInfo MadeUpInfo(const Placement& placement, std::size_t n_ues, int salt) {
   StepInfo info;
   info.positions = placement;
-  info.n_los = salt % 5;
+  info.n_los = 0;
   info.demands_met = salt % 3;
   info.throughput_mbps = 1.5 * salt;
   for (std::size_t i = 0; i < n_ues; ++i) {
     info.snr_db.push_back(0.25 * salt + static_cast<double>(i));
+    info.los.push_back(static_cast<std::uint8_t>((salt + i) % 3 == 0));
+    info.n_los += info.los.back();
     info.serving.push_back(placement.size() > 1 ? static_cast<int>((i + salt) % 2) : 0);
   }
   return info;
@@ -40,6 +42,7 @@ void ExpectSameInfo(const StepInfo& a, const StepInfo& b) {
   }
   EXPECT_EQ(a.serving, b.serving);
   EXPECT_EQ(a.n_los, b.n_los);
+  EXPECT_EQ(a.los, b.los);
   EXPECT_EQ(a.demands_met, b.demands_met);
   EXPECT_EQ(a.throughput_mbps, b.throughput_mbps);  // bit for bit, not within a tolerance
   EXPECT_EQ(a.snr_db, b.snr_db);
@@ -61,6 +64,16 @@ TEST(PlacementMemo, GivesBackWhatWasStoredForThatPlacementOnly) {
   memo.Store({{0.0, 1, 1}, {5, 5, 5}}, MadeUpInfo({{0.0, 1, 1}, {5, 5, 5}}, 3, 1));
   EXPECT_FALSE(memo.Find({{-0.0, 1, 1}, {5, 5, 5}}, found));
   EXPECT_EQ(memo.Size(), 2u);
+}
+
+TEST(PlacementMemo, KeepsTheLosOfManyUes) {
+  PlacementMemo memo(1, 120);  // the LoS flags take three words
+  const Placement p{{1, 2, 3}};
+  const StepInfo stored = MadeUpInfo(p, 120, 4);
+  memo.Store(p, stored);
+  StepInfo found;
+  ASSERT_TRUE(memo.Find(p, found));
+  ExpectSameInfo(found, stored);
 }
 
 TEST(PlacementMemo, StaysWithinItsBudgetWhateverItIsGiven) {

@@ -6,7 +6,18 @@
     observation, info = env.reset(seed=1)
     observation, reward, terminated, truncated, info = env.step(env.action_space.sample())
 
-With gymnasium importable the env is a gymnasium.Env, registered as "rlpos/UavPositioning-v0".
+    envs = rlpos.make_vec("campaigns/scenarios/b.json", num_envs=64, seed=1)
+    observations, infos = envs.reset()
+    observations, rewards, terminations, truncations, infos = envs.step(envs.action_space.sample())
+
+    team = rlpos.parallel_env("campaigns/scenarios/urban3.json", fidelity="analytic", seed=1)
+    observations, infos = team.reset(seed=1)          # every UAV an agent (PettingZoo's API)
+    actions = {agent: team.action_space(agent).sample() for agent in team.agents}
+    observations, rewards, terminations, truncations, infos = team.step(actions)
+
+With gymnasium importable the env is a gymnasium.Env, registered as "rlpos/UavPositioning-v0",
+and make_vec's a gymnasium.vector.VectorEnv; with pettingzoo importable the parallel env is a
+pettingzoo.ParallelEnv.
 Any number of analytic envs at once. One packet-level user (env, evaluation, or oracle search with
 packet-level candidates) at a time per process: ns-3's simulator is global.
 """
@@ -14,9 +25,12 @@ import json
 
 from . import _rlpos
 from .env import UavPositioningEnv, override_texts
-from .spaces import GYMNASIUM, Box, Discrete
+from .parallel_env import ParallelUavEnv
+from .spaces import GYMNASIUM, Box, Discrete, MultiDiscrete
+from .vector_env import VectorEnv
 
-__all__ = ["make", "oracle", "evaluate", "UavPositioningEnv", "Discrete", "Box", "ENV_ID"]
+__all__ = ["make", "make_vec", "parallel_env", "oracle", "evaluate", "UavPositioningEnv",
+           "VectorEnv", "ParallelUavEnv", "Discrete", "Box", "MultiDiscrete", "ENV_ID"]
 
 ENV_ID = "rlpos/UavPositioning-v0"
 
@@ -24,6 +38,22 @@ ENV_ID = "rlpos/UavPositioning-v0"
 def make(scenario, fidelity=None, seed=None, overrides=None):
     """The env of a scenario file; `overrides` are --set's, as {"path": value}."""
     return UavPositioningEnv(scenario, fidelity=fidelity, seed=seed, overrides=overrides)
+
+
+def make_vec(scenario_or_list, num_envs=1, fidelity="analytic", seed=None, overrides=None,
+             threads=None):
+    """`num_envs` analytic envs stepped together in C++ (a gymnasium.vector.VectorEnv with
+    gymnasium importable); a list of scenario files: env i gets list[i % len(list)], and all must
+    share their spaces. `threads`: the stepping threads (None: min(cores, num_envs))."""
+    return VectorEnv(scenario_or_list, num_envs=num_envs, fidelity=fidelity, seed=seed,
+                     overrides=overrides, threads=threads)
+
+
+def parallel_env(scenario, fidelity=None, seed=None, overrides=None):
+    """Every UAV of the scenario as an agent, all moving at once in each step, with PettingZoo's
+    ParallelEnv API (a pettingzoo.ParallelEnv where pettingzoo is importable); `overrides` are
+    --set's, as {"path": value}. See ParallelUavEnv."""
+    return ParallelUavEnv(scenario, fidelity=fidelity, seed=seed, overrides=overrides)
 
 
 def oracle(scenario, overrides=None, grid_step=None, packet_candidates=3, packet_duration=2.0,

@@ -1,5 +1,6 @@
-"""Discrete and Box spaces: Gymnasium's own when gymnasium is importable, else these two, which
-offer the same attributes and methods (n; low, high, shape, dtype; sample, contains, seed)."""
+"""Discrete, Box and MultiDiscrete spaces: Gymnasium's own when gymnasium is importable, else
+these, which offer the same attributes and methods (n or nvec; low, high, shape, dtype; sample,
+contains, seed). batch_space: the space of N envs' actions or observations, as Gymnasium's."""
 import numpy as np
 
 try:
@@ -71,9 +72,42 @@ class FallbackBox(_Space):
         return "Box(%s, %s, %s, %s)" % (self.low, self.high, self.shape, self.dtype)
 
 
+class FallbackMultiDiscrete(_Space):
+    """One Discrete(nvec[i]) per element: N envs' discrete actions."""
+
+    def __init__(self, nvec, dtype=np.int64, seed=None):
+        self.nvec = np.asarray(nvec, dtype=dtype)
+        super().__init__(self.nvec.shape, dtype, seed)
+        self.start = np.zeros_like(self.nvec)
+
+    def sample(self, mask=None):
+        return self.np_random.integers(self.nvec).astype(self.dtype)
+
+    def contains(self, x):
+        x = np.asarray(x)
+        return (x.shape == self.shape and x.dtype.kind in "iu" and bool(np.all(x >= 0))
+                and bool(np.all(x < self.nvec)))
+
+    def __repr__(self):
+        return "MultiDiscrete(%s)" % self.nvec
+
+
+def fallback_batch_space(space, n):
+    """Gymnasium's batch_space for our two spaces: Discrete(k) -> MultiDiscrete([k] * n), a Box
+    of shape s -> a Box of shape (n, *s) with the bounds repeated."""
+    if isinstance(space, FallbackDiscrete):
+        return FallbackMultiDiscrete(np.full(n, space.n, dtype=space.dtype), dtype=space.dtype)
+    repeats = (n,) + (1,) * space.low.ndim
+    return FallbackBox(np.tile(space.low, repeats), np.tile(space.high, repeats), dtype=space.dtype)
+
+
 if GYMNASIUM:
     Discrete = gymnasium.spaces.Discrete
     Box = gymnasium.spaces.Box
+    MultiDiscrete = gymnasium.spaces.MultiDiscrete
+    batch_space = gymnasium.vector.utils.batch_space
 else:
     Discrete = FallbackDiscrete
     Box = FallbackBox
+    MultiDiscrete = FallbackMultiDiscrete
+    batch_space = fallback_batch_space
