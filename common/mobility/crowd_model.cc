@@ -2,6 +2,7 @@
 // (round buildings when the straight way is blocked), stay `dwell` s, then walk to a spot drawn
 // in the whole venue and stay there. UEs with the same settings gather at the same place and
 // time, each on its own path.
+#include <sstream>
 #include <string>
 
 #include "common/mobility/mobility_models.h"
@@ -32,8 +33,9 @@ void WalkWithCrowd(const CrowdSpec& spec, TrajectoryBuilder& walk, MobilityRando
   walk.Wait(spec.start);
   if (walk.Done())
     return;
-  WalkSomewhere(walk, random, spec.target, spec.radius, spec.speed,
-                "a spot within " + std::to_string(spec.radius) + " m of the crowd's target");
+  std::ostringstream gathering;
+  gathering << "a spot within " << spec.radius << " m of the crowd's target";
+  WalkSomewhere(walk, random, spec.target, spec.radius, spec.speed, gathering.str());
   walk.Wait(spec.dwell);
   if (walk.Done())
     return;

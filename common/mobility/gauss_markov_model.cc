@@ -2,8 +2,9 @@
 //   speed     s = alpha s + (1 - alpha) mean_speed     + sqrt(1 - alpha^2) kSpeedSd x N(0, 1)
 //   direction d = alpha d + (1 - alpha) mean_direction + sqrt(1 - alpha^2) kDirectionSd x N(0, 1)
 // with the speed kept in [0, 2 mean_speed] and the mean direction drawn once per UE. A step that
-// would leave the venue or touch a building is drawn again; from the tenth draw on the mean
-// direction is drawn anew too (the UE turns away from the wall, as the model's edge rule does).
+// would leave the venue or touch a building is drawn again; from the tenth draw on, the UE turns
+// to a fresh mean direction (as the model's edge rule turns it away from the edge), and after
+// every 100 draws its step is halved (a UE in a narrow gap takes shorter steps).
 #include <algorithm>
 #include <cmath>
 
@@ -24,19 +25,24 @@ void WalkGaussMarkov(const GaussMarkovSpec& spec, TrajectoryBuilder& walk, Mobil
   double direction = mean_direction;
   while (!walk.Done()) {
     bool moved = false;
+    double scale = 1.0;
     for (int draw = 0; draw < kMaxMobilityDraws && !moved; ++draw) {
-      if (draw >= 10)
+      if (draw >= 10) {
         mean_direction = random.Angle();
+        direction = mean_direction;
+      }
+      if (draw > 0 && draw % 100 == 0)
+        scale /= 2.0;
       const double s = std::clamp(spec.alpha * speed + (1.0 - spec.alpha) * spec.speed +
                                       memory * kSpeedSdShare * spec.speed * random.Normal(),
                                   0.0, 2.0 * spec.speed);
       const double d = spec.alpha * direction + (1.0 - spec.alpha) * mean_direction +
                        memory * kDirectionSd * random.Normal();
-      const double length = s * spec.step;
+      const double length = s * spec.step * scale;
       const Vec3 to{walk.position().x + length * std::cos(d),
                     walk.position().y + length * std::sin(d), walk.position().z};
       if (length == 0.0) {
-        walk.Wait(spec.step);
+        walk.Wait(spec.step * scale);
       } else if (walk.area().LegIsClear(walk.position(), to)) {
         walk.WalkTo(to, s);
       } else {
