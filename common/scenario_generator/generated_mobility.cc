@@ -1,8 +1,7 @@
 #include "common/scenario_generator/generated_mobility.h"
 
-#include <sstream>
-
 #include "common/config/config_error.h"
+#include "common/mobility/mobility_text.h"
 #include "common/mobility/ue_trajectories.h"
 #include "common/mobility/walkable_area.h"
 #include "common/scenario_generator/portable_random.h"
@@ -47,21 +46,6 @@ MobilitySpec Drawn(MobilityModel model, const Scenario& s, PortableRandom& rando
   return m;
 }
 
-std::string Summary(const MobilitySpec& m) {
-  std::ostringstream out;
-  out << "UEs move: " << MobilityModelName(m.model);
-  if (m.model == MobilityModel::kRandomWaypoint) {
-    out << " at " << m.random_waypoint.speed_min << "-" << m.random_waypoint.speed_max
-        << " m/s, pause " << m.random_waypoint.pause << " s";
-  } else if (m.model == MobilityModel::kGaussMarkov) {
-    out << " at " << m.gauss_markov.speed << " m/s, alpha " << m.gauss_markov.alpha;
-  } else if (m.model == MobilityModel::kCrowd) {
-    out << ", gathering at (" << m.crowd.target.x << ", " << m.crowd.target.y << ") from "
-        << m.crowd.start << " s for " << m.crowd.dwell << " s";
-  }
-  return out.str();
-}
-
 }  // namespace
 
 const std::vector<MobilityModel>& GeneratableMobilityModels() {
@@ -93,7 +77,7 @@ bool DrawMobility(Scenario& scenario, MobilityModel model, std::uint64_t seed,
   } catch (const ConfigError&) {
     return false;
   }
-  summary = Summary(m);
+  summary = "UEs move: " + DescribeMobility(m);
   return true;
 }
 
