@@ -69,7 +69,49 @@ void CheckUav(const Scenario& s, std::size_t i) {
   }
 }
 
+// A mobile UE walks on the ground between buildings: it starts off every footprint, and a
+// crowd's target is a reachable spot of the venue.
+void CheckUeMobility(const Scenario& s, std::size_t i) {
+  const UeSpec& ue = s.ues[i];
+  if (ue.mobility.model == MobilityModel::kStatic)
+    return;
+  const std::string path = JoinPath("/ues", i);
+  const int under = FootprintContaining(s, ue.position.x, ue.position.y);
+  if (under >= 0) {
+    throw ConfigError(JoinPath(path, "position"),
+                      "UE \"" + ue.name + "\" moves (" + MobilityModelName(ue.mobility.model) +
+                          ") but starts on building " + std::to_string(under) + " (\"" +
+                          s.buildings[under].name + "\"): a mobile UE starts on the ground");
+  }
+  if (ue.mobility.model != MobilityModel::kCrowd)
+    return;
+  const Vec3& t = ue.mobility.crowd.target;
+  const std::string target_path = JoinPath(JoinPath(path, "mobility"), "target");
+  if (t.x < 0 || t.x > s.venue.width || t.y < 0 || t.y > s.venue.depth) {
+    std::ostringstream out;
+    out << "crowd target (" << t.x << ", " << t.y << ") is outside the venue [0, " << s.venue.width
+        << "] x [0, " << s.venue.depth << "]";
+    throw ConfigError(target_path, out.str());
+  }
+  const int inside = FootprintContaining(s, t.x, t.y);
+  if (inside >= 0) {
+    std::ostringstream out;
+    out << "crowd target (" << t.x << ", " << t.y << ") is inside building " << inside << " (\""
+        << s.buildings[inside].name << "\")";
+    throw ConfigError(target_path, out.str());
+  }
+}
+
 }  // namespace
+
+int FootprintContaining(const Scenario& scenario, double x, double y) {
+  for (std::size_t i = 0; i < scenario.buildings.size(); ++i) {
+    const auto& b = scenario.buildings[i];
+    if (x >= b.xmin && x <= b.xmax && y >= b.ymin && y <= b.ymax)
+      return static_cast<int>(i);
+  }
+  return -1;
+}
 
 bool UavsOverlap(const Vec3& a, const Vec3& b) {
   return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z) < kMinUavSeparation;
@@ -122,6 +164,8 @@ void CheckScenarioGeometry(const Scenario& s) {
                                   "\")");
     }
   }
+  for (std::size_t i = 0; i < s.ues.size(); ++i)
+    CheckUeMobility(s, i);
   for (std::size_t i = 0; i < s.uavs.size(); ++i)
     CheckUav(s, i);
   for (std::size_t i = 0; i < s.ues.size(); ++i) {

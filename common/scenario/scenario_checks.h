@@ -4,7 +4,8 @@
 namespace rlpos {
 
 // Cross-field checks of a parsed scenario: everything inside the venue, no overlapping buildings,
-// no UE inside a building, each UAV's zone inside the venue and holding its initial position,
+// no UE inside a building, a mobile UE starting off every footprint and a crowd's target in the
+// venue and off every footprint, each UAV's zone inside the venue and holding its initial position,
 // UAVs apart and uniquely named, a UE's fixed UAV one that exists.
 // Throws ConfigError naming the JSON path of the offending element.
 void CheckScenarioGeometry(const Scenario& scenario);
@@ -16,5 +17,7 @@ bool OverlapsAnother(const Placement& placement, std::size_t uav, const Vec3& p)
 
 // Index of the building whose volume holds `p` (boundary included), or -1.
 int BuildingContaining(const Scenario& scenario, const Vec3& p);
+// Index of the building whose ground footprint holds (x, y) (boundary included), or -1.
+int FootprintContaining(const Scenario& scenario, double x, double y);
 
 }  // namespace rlpos

@@ -103,12 +103,62 @@ BuildingSpec ReadBuilding(const json& v, const std::string& path, std::size_t in
   return b;
 }
 
+// [x, y]: a point on the ground.
+Vec3 ReadGroundPoint(const json& v, const std::string& path) {
+  if (!v.is_array() || v.size() != 2) {
+    throw ConfigError(path,
+                      "expected [x, y], got " +
+                          (v.is_array() ? "an array of " + std::to_string(v.size()) : TypeName(v)));
+  }
+  return {CheckedNumber(v[0], JoinPath(path, 0), {}), CheckedNumber(v[1], JoinPath(path, 1), {}),
+          0.0};
+}
+
 MobilitySpec ReadMobility(const json& v, const std::string& path) {
   ObjectReader r(v, path);
   MobilitySpec m;
-  m.model = r.String("model", m.model, {"static", "random_walk"});
-  m.speed = r.Number("speed", m.speed, Positive());
-  m.change_interval = r.Number("change_interval", m.change_interval, Positive());
+  m.model = *ParseMobilityModel(r.String("model", "static", MobilityModelNames()));
+  switch (m.model) {
+    case MobilityModel::kStatic:
+      // Documents written before the other models carry random_walk's keys: read, unused.
+      r.Number("speed", 1.0, Positive());
+      r.Number("change_interval", 2.0, Positive());
+      break;
+    case MobilityModel::kRandomWalk: {
+      auto& w = m.random_walk;
+      w.speed = r.Number("speed", w.speed, Positive());
+      w.change_interval = r.Number("change_interval", w.change_interval, Positive());
+      break;
+    }
+    case MobilityModel::kRandomWaypoint: {
+      auto& w = m.random_waypoint;
+      if (const json* speed = r.Child("speed")) {
+        std::tie(w.speed_min, w.speed_max) = ReadInterval(*speed, r.PathOf("speed"), true);
+        CheckedNumber((*speed)[0], JoinPath(r.PathOf("speed"), 0), Positive());
+      }
+      w.pause = r.Number("pause", w.pause, NonNegative());
+      break;
+    }
+    case MobilityModel::kGaussMarkov: {
+      auto& g = m.gauss_markov;
+      g.speed = r.Number("speed", g.speed, Positive());
+      g.alpha = r.Number("alpha", g.alpha, Between(0.0, 1.0));
+      g.step = r.Number("step", g.step, Positive());
+      break;
+    }
+    case MobilityModel::kCrowd: {
+      auto& c = m.crowd;
+      const json* target = r.Child("target");
+      if (!target)
+        throw ConfigError(r.PathOf("target"), "is required ([x, y]: where the crowd gathers)");
+      c.target = ReadGroundPoint(*target, r.PathOf("target"));
+      c.radius = r.Number("radius", c.radius, NonNegative());
+      c.speed = r.Number("speed", c.speed, Positive());
+      c.start = r.Number("start", c.start, NonNegative());
+      c.dwell = r.Number("dwell", c.dwell, NonNegative());
+      break;
+    }
+  }
   r.Finish();
   return m;
 }
@@ -528,6 +578,36 @@ json BuildingsJson(const Scenario& s) {
   return buildings;
 }
 
+// The model and its own parameters only.
+json MobilityJson(const MobilitySpec& m) {
+  json out = {{"model", MobilityModelName(m.model)}};
+  switch (m.model) {
+    case MobilityModel::kStatic:
+      break;
+    case MobilityModel::kRandomWalk:
+      out["speed"] = m.random_walk.speed;
+      out["change_interval"] = m.random_walk.change_interval;
+      break;
+    case MobilityModel::kRandomWaypoint:
+      out["speed"] = {m.random_waypoint.speed_min, m.random_waypoint.speed_max};
+      out["pause"] = m.random_waypoint.pause;
+      break;
+    case MobilityModel::kGaussMarkov:
+      out["speed"] = m.gauss_markov.speed;
+      out["alpha"] = m.gauss_markov.alpha;
+      out["step"] = m.gauss_markov.step;
+      break;
+    case MobilityModel::kCrowd:
+      out["target"] = {m.crowd.target.x, m.crowd.target.y};
+      out["radius"] = m.crowd.radius;
+      out["speed"] = m.crowd.speed;
+      out["start"] = m.crowd.start;
+      out["dwell"] = m.crowd.dwell;
+      break;
+  }
+  return out;
+}
+
 json UesJson(const Scenario& s) {
   json ues = json::array();
   for (const auto& u : s.ues) {
@@ -535,10 +615,7 @@ json UesJson(const Scenario& s) {
     json ue = {{"name", u.name},
                {"position", Vec3Json(u.position)},
                {"demand", demand},
-               {"mobility",
-                {{"model", u.mobility.model},
-                 {"speed", u.mobility.speed},
-                 {"change_interval", u.mobility.change_interval}}}};
+               {"mobility", MobilityJson(u.mobility)}};
     if (!u.uav.empty())
       ue["uav"] = u.uav;
     ues.push_back(ue);

@@ -126,8 +126,10 @@ std::string GeneratedJsonText(const Scenario& s) {
   json doc = ToJson(s);
   doc.erase("env");
   doc.erase("agent");
-  for (auto& ue : doc.at("ues"))
-    ue.erase("mobility");
+  for (auto& ue : doc.at("ues")) {
+    if (ue.at("mobility").at("model") == "static")
+      ue.erase("mobility");
+  }
   return Laid(doc).dump(2) + "\n";
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The document of a generated scenario: the scenario's JSON as common/scenario writes it (ToJson,
 // the one writer of its fields), laid out as the shipped scenarios are: their key order, only
-// what the generator chose (the env and agent sections and the UEs' mobility are left out, so
+// what the generator chose (the env and agent sections and static UEs' mobility are left out, so
 // the defaults apply), and whole numbers written as integers.
 #include <nlohmann/json.hpp>
 #include <string>

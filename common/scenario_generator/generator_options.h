@@ -1,9 +1,11 @@
 #pragma once
-// What `rlpos-sim generate` is asked for: a seed, a style, how many UAVs and UEs.
+// What `rlpos-sim generate` is asked for: a seed, a style, how many UAVs and UEs, how they move.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "common/scenario/scenario.h"
 
 namespace rlpos {
 
@@ -21,6 +23,8 @@ struct GeneratorOptions {
   std::optional<GeneratorStyle> style;  // unset: kAllStyles()[seed % 4]
   int uavs = 1;
   std::optional<int> ues;  // unset: DefaultUeCount(style, uavs)
+  // unset: static UEs (and the same bytes as before --mobility existed)
+  std::optional<MobilityModel> mobility;
 };
 
 // The styles in their documented order (urban, campus, suburb, open).

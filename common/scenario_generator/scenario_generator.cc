@@ -4,6 +4,7 @@
 #include "common/scenario/scenario_parser.h"
 #include "common/scenario_generator/building_layouts.h"
 #include "common/scenario_generator/generated_json.h"
+#include "common/scenario_generator/generated_mobility.h"
 #include "common/scenario_generator/los_geometry.h"
 #include "common/scenario_generator/portable_random.h"
 #include "common/scenario_generator/uav_baseline.h"
@@ -51,7 +52,8 @@ std::optional<Scenario> DrawScenario(const GeneratorOptions& o, PortableRandom& 
 std::string GenerateCommandLine(const GeneratorOptions& o) {
   return "rlpos-sim generate --seed " + std::to_string(o.seed) + " --style " +
          StyleName(ResolvedStyle(o)) + " --uavs " + std::to_string(o.uavs) +
-         (o.ues ? " --ues " + std::to_string(*o.ues) : "");
+         (o.ues ? " --ues " + std::to_string(*o.ues) : "") +
+         (o.mobility ? " --mobility " + MobilityModelName(*o.mobility) : "");
 }
 
 GeneratedScenario GenerateScenario(const GeneratorOptions& options, int max_attempts) {
@@ -67,11 +69,16 @@ GeneratedScenario GenerateScenario(const GeneratorOptions& options, int max_atte
     const int hidden = UesHiddenFromAll(*drawn, drawn->InitialPlacement());
     if (has_buildings && hidden == 0)
       continue;  // the baseline would see every UE: nothing for a positioner to find
+    std::string moves;
+    if (o.mobility && !DrawMobility(*drawn, *o.mobility, o.seed + attempt, moves))
+      continue;  // no crowd target with room, or a UE the buildings leave no way to walk
     if (has_buildings) {
       drawn->description += " At the baseline " + std::to_string(hidden) + " of " +
                             std::to_string(drawn->ues.size()) + " UEs are " +
                             (o.uavs == 1 ? "NLoS." : "hidden from every UAV.");
     }
+    if (!moves.empty())
+      drawn->description += " " + moves + ".";
     std::string text = GeneratedJsonText(*drawn);
     Scenario parsed;
     try {

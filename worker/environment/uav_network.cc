@@ -13,7 +13,6 @@
 #include <ns3/mobility-helper.h>
 #include <ns3/neighbor-cache-helper.h>
 #include <ns3/onoff-application.h>
-#include <ns3/rectangle.h>
 #include <ns3/wifi-phy.h>
 #include <ns3/wifi-remote-station-manager.h>
 
@@ -25,6 +24,7 @@
 #include "worker/environment/loss_model_spec.h"
 #include "worker/environment/ns3_object_spec.h"
 #include "worker/environment/uav_network_impl.h"
+#include "worker/environment/ue_mobility.h"
 
 namespace rlpos {
 namespace {
@@ -56,26 +56,6 @@ void BuildBuildings(const Scenario& s) {
     building->SetNFloors(static_cast<uint16_t>(b.floors));
     building->SetNRoomsX(static_cast<uint16_t>(b.rooms_x));
     building->SetNRoomsY(static_cast<uint16_t>(b.rooms_y));
-  }
-}
-
-void InstallUeMobility(const Scenario& s, ns3::NodeContainer& ues) {
-  for (std::size_t i = 0; i < s.ues.size(); ++i) {
-    const auto& ue = s.ues[i];
-    ns3::MobilityHelper mobility;
-    if (ue.mobility.model == "random_walk") {
-      mobility.SetMobilityModel(
-          "ns3::RandomWalk2dMobilityModel", "Bounds",
-          ns3::RectangleValue(ns3::Rectangle(0, s.venue.width, 0, s.venue.depth)), "Mode",
-          ns3::StringValue("Time"), "Time",
-          ns3::TimeValue(ns3::Seconds(ue.mobility.change_interval)), "Speed",
-          ns3::StringValue(
-              "ns3::ConstantRandomVariable[Constant=" + AttributeString(ue.mobility.speed) + "]"));
-    } else {
-      mobility.SetMobilityModel("ns3::ConstantPositionMobilityModel");
-    }
-    mobility.Install(ues.Get(i));
-    ues.Get(i)->GetObject<ns3::MobilityModel>()->SetPosition(ToNs3(ue.position));
   }
 }
 
@@ -243,6 +223,13 @@ Placement UavNetwork::UavPositions() const {
   for (uint32_t u = 0; u < impl_->uavs.GetN(); ++u)
     placement.push_back(FromNs3(impl_->UavMobility(u)->GetPosition()));
   return placement;
+}
+
+std::vector<Vec3> UavNetwork::UePositions() const {
+  std::vector<Vec3> positions;
+  for (uint32_t i = 0; i < impl_->ues.GetN(); ++i)
+    positions.push_back(FromNs3(impl_->ues.Get(i)->GetObject<ns3::MobilityModel>()->GetPosition()));
+  return positions;
 }
 
 const std::vector<int>& UavNetwork::Association() const {

@@ -37,6 +37,9 @@ class UavNetwork {
   void SetUavPositions(const Placement& placement);
   void SetUavPosition(std::size_t uav, const Vec3& position);
   Placement UavPositions() const;
+  // Each UE's position as ns-3's mobility model gives it now (scenario.ues' order): a moving
+  // UE's trajectory (common/mobility) at the simulator's time.
+  std::vector<Vec3> UePositions() const;
   // Applies the association rule to the links as they are now (after UAVs or UEs moved) and
   // hands over each UE whose serving UAV changes: its flow to the old UAV stops, and a new one
   // from its radio in the new UAV's BSS to a sink on that UAV (UDP: from the next packet; TCP: a

@@ -74,6 +74,8 @@ std::vector<Entry> Entries(const MapScene& scene) {
   std::vector<Entry> out;
   AddUeEntries(scene, out);
   AddUavEntries(scene, out);
+  if (!scene.ue_paths.empty())
+    out.push_back({Symbol::kLine, scene.ue_paths_label, kUePath});
   if (!scene.flight.empty())
     out.push_back({Symbol::kFlight, scene.flight_label, kFlight});
   const Box& z = scene.scenario.uavs.front().zone;

@@ -1,6 +1,6 @@
 #pragma once
 // What a map shows, as data: the scenario, one or more named placements of its UAVs, each UE's
-// link to its serving UAV (for a map of one placement) and flown paths. Computing the links
+// link to its serving UAV (for a map of one placement), walked and flown paths. Computing the links
 // needs ns-3 (map_links.h); drawing them does not (map_render.h).
 #include <string>
 #include <vector>
@@ -36,6 +36,9 @@ struct MapScene {
   std::vector<MapLink> links;  // per UE, for placements.front(); empty: not drawn
   std::vector<FlightPath> flight;
   std::string flight_label = "rl flight";
+  // The paths moving UEs walk (their trajectories' waypoints, per UE; empty: a static UE).
+  std::vector<std::vector<Vec3>> ue_paths;
+  std::string ue_paths_label = "UE paths";
   bool side_views = false;  // add the x-z and y-z elevation views
 };
 

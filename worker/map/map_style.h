@@ -26,6 +26,7 @@ constexpr Rgb kLos = Rgb::Hex(0x009e73);        // a UE in line of sight of its 
 constexpr Rgb kNlos = Rgb::Hex(0xd55e00);       // a UE behind a building
 constexpr Rgb kUeNeutral = Rgb::Hex(0x8c8c8c);  // UEs on a map of several placements
 constexpr Rgb kFlight = Rgb::Hex(0x6a3d9a);     // the rl flight path
+constexpr Rgb kUePath = Rgb::Hex(0x4f8fbf);     // the paths moving UEs walk
 
 // A building of `height` in a venue `max_height` high: light grey (low) to dark slate (tall).
 Rgb BuildingColour(double height, double max_height);

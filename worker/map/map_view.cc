@@ -129,6 +129,27 @@ void DrawFlight(cairo_t* cr, const MapScene& scene, const View& view) {
   }
 }
 
+// Thin lines under the UEs, an arrow at each path's end: where each moving UE walks.
+void DrawUePaths(cairo_t* cr, const MapScene& scene, const View& view) {
+  cairo_save(cr);
+  SetColour(cr, kUePath, 0.85);
+  cairo_set_line_width(cr, 1.0);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const auto& path : scene.ue_paths) {
+    if (path.size() < 2)
+      continue;
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      const Vec3& p = path[k];
+      k == 0 ? cairo_move_to(cr, view.CanvasX(p), view.CanvasY(p))
+             : cairo_line_to(cr, view.CanvasX(p), view.CanvasY(p));
+    }
+    cairo_stroke(cr);
+    const Vec3 &a = path[path.size() - 2], &b = path.back();
+    DrawArrowHead(cr, view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b));
+  }
+  cairo_restore(cr);
+}
+
 void DrawUes(cairo_t* cr, const MapScene& scene, const View& view) {
   for (std::size_t i = 0; i < scene.scenario.ues.size(); ++i) {
     const Vec3& p = scene.scenario.ues[i].position;
@@ -201,6 +222,7 @@ void DrawView(cairo_t* cr, const MapScene& scene, const View& view) {
   DrawZones(cr, s, view);
   DrawBuildings(cr, s, view);
   DrawLinks(cr, scene, view);
+  DrawUePaths(cr, scene, view);
   DrawFlight(cr, scene, view);
   DrawUes(cr, scene, view);
   DrawUavs(cr, scene, view);

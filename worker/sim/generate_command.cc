@@ -5,6 +5,7 @@
 
 #include "common/config/config_error.h"
 #include "common/files/atomic_file.h"
+#include "common/scenario_generator/generated_mobility.h"
 #include "common/scenario_generator/scenario_generator.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/sim/commands.h"
@@ -38,6 +39,8 @@ GeneratorOptions OptionsOf(const GenerateCommand& g) {
   o.uavs = static_cast<int>(WholeNumber(g.uavs, "--uavs", 1, kMaxGeneratedUavs));
   if (!g.ues.empty())
     o.ues = static_cast<int>(WholeNumber(g.ues, "--ues", 1, kMaxGeneratedUes));
+  if (!g.mobility.empty())
+    o.mobility = ParseGeneratedMobility(g.mobility, "--mobility");
   return o;
 }
 
@@ -51,6 +54,8 @@ void AddGenerate(CLI::App& app, GenerateCommand& g) {
                         "urban|campus|suburb|open (default: the seed's, seed mod 4 in this order)");
   g.command->add_option("--uavs", g.uavs, "UAVs, 1-3 (default 1)");
   g.command->add_option("--ues", g.ues, "UEs, 1-100 (default: the style's, 4 more per extra UAV)");
+  g.command->add_option("--mobility", g.mobility,
+                        "random_waypoint|gauss_markov|crowd: every UE moves so (default: static)");
   g.command->add_option("--out", g.out, "Scenario file to write (default: stdout)");
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // rlpos-sim generate --seed N [--style urban|campus|suburb|open] [--uavs K] [--ues M]
-// [--out FILE]: a scenario drawn from a seed (common/scenario_generator), checked by the parser
-// and against ns-3, written whole to FILE or to stdout.
+// [--mobility random_waypoint|gauss_markov|crowd] [--out FILE]: a scenario drawn from a seed
+// (common/scenario_generator), checked by the parser and against ns-3, written whole to FILE or to
+// stdout.
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -10,7 +11,7 @@ namespace rlpos::sim {
 struct GenerateCommand {
   CLI::App* command = nullptr;
   // As typed: parsed here, so that every bad value gets the same one-line error.
-  std::string seed, style, uavs = "1", ues, out;
+  std::string seed, style, uavs = "1", ues, mobility, out;
 };
 
 // Adds `generate` to `app`.

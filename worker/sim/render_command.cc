@@ -4,6 +4,8 @@
 
 #include "common/config/config_error.h"
 #include "common/files/atomic_file.h"
+#include "common/mobility/ue_trajectories.h"
+#include "common/scenario/number_text.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/map/map_links.h"
@@ -109,6 +111,26 @@ std::vector<map::MapPlacement> Placements(const Scenario& s, const RenderCommand
   return {{"baseline", s.InitialPlacement()}};
 }
 
+// The walked paths of the moving UEs, at the scenario's RngRun, up to its horizon.
+void AddUePaths(map::MapScene& scene) {
+  const Scenario& s = scene.scenario;
+  if (!AnyUeMoves(s))
+    return;
+  const double horizon = TrajectoryHorizon(s);
+  for (const UeTrajectory& trajectory : UeTrajectories(s, horizon)) {
+    std::vector<Vec3> path;
+    for (const Waypoint& w : trajectory.waypoints()) {
+      const bool same = !path.empty() && path.back().x == w.position.x &&
+                        path.back().y == w.position.y && path.back().z == w.position.z;
+      if (!same)
+        path.push_back(w.position);
+    }
+    scene.ue_paths.push_back(std::move(path));
+  }
+  scene.ue_paths_label = "UE paths, 0-" + FormatNumber(horizon) + " s (RngRun " +
+                         std::to_string(s.simulation.run) + ")";
+}
+
 }  // namespace
 
 void AddRender(CLI::App& app, RenderCommand& r, CommonOptions& options) {
@@ -148,6 +170,7 @@ int RunRender(const CommonOptions& options, const RenderCommand& r) {
     scene.flight = flight.paths;
     scene.flight_label = "rl flight (evaluation episode " + std::to_string(flight.episode) + ")";
   }
+  AddUePaths(scene);
   map::AddLinks(scene);
   WriteFileAtomically(r.out, map::RenderMap(scene, format));
   std::cout << r.out << std::endl;

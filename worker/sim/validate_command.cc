@@ -2,12 +2,39 @@
 #include <cstdio>
 #include <iostream>
 
+#include "common/mobility/mobility_text.h"
 #include "common/phy/mcs_table.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/environment/uav_network.h"
 #include "worker/sim/commands.h"
 
 namespace rlpos::sim {
+namespace {
+
+// One line per mobility setting in use, with the UEs that have it (all static: one line).
+void PrintMobility(const Scenario& scenario) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> settings;
+  for (const auto& ue : scenario.ues) {
+    const std::string text = DescribeMobility(ue.mobility);
+    auto it = std::find_if(settings.begin(), settings.end(),
+                           [&](const auto& setting) { return setting.first == text; });
+    if (it == settings.end())
+      it = settings.insert(settings.end(), {text, {}});
+    it->second.push_back(ue.name);
+  }
+  for (const auto& [text, names] : settings) {
+    std::string who = std::to_string(names.size()) + " UE" + (names.size() == 1 ? "" : "s");
+    if (names.size() < scenario.ues.size() && names.size() <= 4) {
+      who += " (";
+      for (std::size_t i = 0; i < names.size(); ++i)
+        who += (i ? ", " : "") + names[i];
+      who += ")";
+    }
+    std::printf("  mobility    %s: %s\n", who.c_str(), text.c_str());
+  }
+}
+
+}  // namespace
 
 int RunValidate(const CommonOptions& options, bool json) {
   const Scenario scenario = LoadScenarioFor(options, {});
@@ -30,7 +57,8 @@ int RunValidate(const CommonOptions& options, bool json) {
                    {"demand_mbps", scenario.ues[i].demand_mbps},
                    {"required_mcs", demand.required_mcs},
                    {"demand_met", demand.met},
-                   {"uav", scenario.uavs[static_cast<std::size_t>(serving[i])].name}});
+                   {"uav", scenario.uavs[static_cast<std::size_t>(serving[i])].name},
+                   {"mobility", DescribeMobility(scenario.ues[i].mobility)}});
   }
   nlohmann::json uavs = nlohmann::json::array();
   for (std::size_t u = 0; u < scenario.uavs.size(); ++u) {
@@ -69,6 +97,7 @@ int RunValidate(const CommonOptions& options, bool json) {
               scenario.wifi.guard_interval_ns, scenario.wifi.mode.c_str(),
               scenario.wifi.rate_manager.type.c_str());
   std::printf("  propagation %s\n", scenario.propagation.type.c_str());
+  PrintMobility(scenario);
   if (uavs.size() == 1) {
     std::printf("  baseline    (%g, %g, %g): in LoS %d/%zu\n", p.x, p.y, p.z, n_los, links.size());
   } else {

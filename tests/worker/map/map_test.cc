@@ -187,6 +187,22 @@ TEST(Map, ElevationViewsDrawTheNearestBuildingInFront) {
   EXPECT_EQ(image.At(layout.xz.CanvasX(sky), layout.xz.CanvasY(sky)), kGround.ToHex());
 }
 
+// A moving UE's path is a blue line on the open ground (north of C's north block, y 70-78).
+TEST(Map, UePathsAreDrawn) {
+  MapScene scene = BaselineScene(kScenarios + "/c.json");
+  const View& top = LayoutOf(scene).top;
+  const Vec3 on_path{23, 87, 1.5};
+  const auto pixel = [&] {
+    const Image image(RenderMap(scene, MapFormat::kPng));
+    return image.At(top.CanvasX(on_path), top.CanvasY(on_path));
+  };
+  EXPECT_EQ(pixel(), kGround.ToHex());
+  scene.ue_paths = {{{5, 87, 1.5}, {40, 87, 1.5}}, {}, {}, {}};
+  const std::uint32_t drawn = pixel();
+  const int red = static_cast<int>(drawn >> 16), blue = static_cast<int>(drawn & 0xff);
+  EXPECT_GT(blue - red, 40) << std::hex << drawn;
+}
+
 TEST(Map, SvgIsTheSameBytesEachTime) {
   MapScene scene = BaselineScene(kScenarios + "/urban3.json", true);
   const std::string first = RenderMap(scene, MapFormat::kSvg);

@@ -36,6 +36,30 @@ TEST(RlposSimCli, ValidatePrintsASummary) {
   EXPECT_NE(r.out.find("baseline    (50, 50, 25): in LoS 1/4"), std::string::npos) << r.out;
 }
 
+TEST(RlposSimCli, ValidateSaysHowTheUesMove) {
+  EXPECT_NE(RunCommand(Sim("validate " + kScenarioB)).out.find("  mobility    4 UEs: static\n"),
+            std::string::npos);
+  const auto r = RunCommand(Sim(
+      "validate " + kScenarioB +
+      " --set 'ues.2.mobility={\"model\": \"random_waypoint\", \"speed\": [1, 2], \"pause\": 0}'"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("  mobility    3 UEs (ue0, ue1, ue3): static\n"
+                       "  mobility    1 UE (ue2): random_waypoint at 1-2 m/s, pause 0 s\n"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(RlposSimCli, BadMobilityIsAOneLineErrorWithItsPath) {
+  ExpectOneLineError(
+      RunCommand(Sim("validate " + kScenarioB +
+                     " --set 'ues.2.mobility={\"model\": \"crowd\", \"target\": [50, 50]}'")),
+      2, "/ues/2/mobility/target: crowd target (50, 50) is inside building 0 (\"tower\")");
+  ExpectOneLineError(
+      RunCommand(Sim("validate " + kScenarioB +
+                     " --set 'ues.2.mobility={\"model\": \"gauss_markov\", \"alpha\": 2}'")),
+      2, "/ues/2/mobility/alpha: must be <= 1, got 2");
+}
+
 TEST(RlposSimCli, ValidateCountsTheUesInLoSOfSeveralUavs) {
   const auto r = RunCommand(
       Sim("validate " + std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json"));

@@ -52,6 +52,24 @@ TEST(RlposSimGenerate, SameSeedSameBytesInAFileAndAcrossProcesses) {
   EXPECT_NE(RunCommand(Sim("generate --seed 18 --style urban")).out, first.out);
 }
 
+TEST(RlposSimGenerate, MobilityMovesEveryUeAndValidateSaysHow) {
+  TempDir dir;
+  const auto r = RunCommand(Sim("generate --seed 3 --style open --mobility gauss_markov"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(RunCommand(Sim("generate --seed 3 --style open --mobility gauss_markov")).out, r.out);
+  const auto document = nlohmann::json::parse(r.out);
+  for (const auto& ue : document["ues"])
+    EXPECT_EQ(ue["mobility"]["model"], "gauss_markov");
+  WriteFile(dir.File("open.json"), r.out);
+  const auto v = RunCommand(Sim("validate " + dir.File("open.json")));
+  ASSERT_EQ(v.exit_code, 0) << v.err;
+  EXPECT_NE(v.out.find("  mobility    10 UEs: gauss_markov at 1 m/s, alpha 0.75, step 1 s\n"),
+            std::string::npos)
+      << v.out;
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --mobility teleport")),
+                     "--mobility: unknown mobility \"teleport\"");
+}
+
 TEST(RlposSimGenerate, TheSeedChoosesTheStyleWhenNoneIsGiven) {
   const auto r = RunCommand(Sim("generate --seed 6"));  // 6 mod 4: suburb
   ASSERT_EQ(r.exit_code, 0) << r.err;
