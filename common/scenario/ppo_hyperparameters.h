@@ -5,6 +5,8 @@
 // steps, and these were chosen when our training was the paper's 10 episodes of 1,000 steps
 // (docs/rl.md, "PPO and SAC"). PPO's training budget is agent.train_episodes's, whose default
 // per algorithm is in agent_hyperparameters.h.
+#include <string>
+
 #include "common/config/config_error.h"
 #include "common/scenario/hyperparameter.h"
 
@@ -22,11 +24,17 @@ struct PpoSpec {
   int epochs = 10;
   int minibatches = 4;
   bool anneal_learning_rate = true;
+  int num_envs = 1;
 };
 
 inline void CheckPpoSpec(const PpoSpec& p, const ObjectReader& reader) {
   if (p.minibatches > p.rollout_steps)
     throw ConfigError(reader.PathOf("minibatches"), "must not exceed rollout_steps");
+  // Each env then gives rollout_steps / num_envs steps to every update.
+  if (p.rollout_steps % p.num_envs != 0)
+    throw ConfigError(reader.PathOf("num_envs"), "must divide rollout_steps (" +
+                                                     std::to_string(p.rollout_steps) + "), got " +
+                                                     std::to_string(p.num_envs));
 }
 
 inline const HyperparameterTable<PpoSpec>& PpoHyperparameters() {
@@ -52,7 +60,12 @@ inline const HyperparameterTable<PpoSpec>& PpoHyperparameters() {
        {"anneal_learning_rate", &PpoSpec::anneal_learning_rate, NoRange(),
         "the rate falls linearly to 0 over the training's rollouts (train_episodes x steps per "
         "episode / rollout_steps), the first at the full rate (CleanRL's anneal_lr, on there): "
-        "late updates then refine the policy instead of knocking it off its best"}},
+        "late updates then refine the policy instead of knocking it off its best"},
+       {"num_envs", &PpoSpec::num_envs, Integers(1, 4096),
+        "analytic envs that collect each rollout together, one batched forward pass of the "
+        "policy for all of them per step; must divide rollout_steps, and each update still "
+        "learns from rollout_steps transitions. Env i of n flies training episodes i, i + n, "
+        "... in rounds of n. 1: one env, today's seed stream exactly. Packet fidelity: 1 only"}},
       CheckPpoSpec};
   return table;
 }
