@@ -39,13 +39,20 @@ struct PpoAgent::Impl {
   // What the last Act (one row) or ActBatch (a row per env) chose with, until Observe.
   std::vector<ActionMask> pending_masks;
   std::vector<float> pending_log_probs;
+  // Transitions per update: rollout_steps from each of the num_envs envs that collect them.
+  std::int64_t rollout_size;
   std::int64_t planned_updates = 0;  // rollouts in the training; 0: no annealing
   std::int64_t done_updates = 0;     // rollouts learned from so far
 
   Impl(const AgentSpec& s, int obs_dim, int actions, std::int64_t training_steps)
-      : spec(s), ppo(s.ppo), observation_dim(obs_dim), action_count(actions), rng(s.seed) {
+      : spec(s),
+        ppo(s.ppo),
+        observation_dim(obs_dim),
+        action_count(actions),
+        rng(s.seed),
+        rollout_size(std::int64_t{s.ppo.rollout_steps} * s.ppo.num_envs) {
     if (ppo.anneal_learning_rate && training_steps > 0)
-      planned_updates = std::max<std::int64_t>(1, training_steps / ppo.rollout_steps);
+      planned_updates = std::max<std::int64_t>(1, training_steps / rollout_size);
     torch::manual_seed(s.seed);  // weight initialisation
     actor = MakeMlp(s.hidden, obs_dim, actions);
     critic = MakeMlp(s.hidden, obs_dim, 1);
@@ -272,7 +279,7 @@ std::vector<int> PpoAgent::ActBatch(const std::vector<std::vector<float>>& obser
 std::optional<double> PpoAgent::Observe(Transition transition) {
   Impl& m = *impl_;
   m.Add(std::move(transition), 0, 0);
-  if (static_cast<int>(m.rollout.size()) < m.ppo.rollout_steps)
+  if (static_cast<std::int64_t>(m.rollout.size()) < m.rollout_size)
     return std::nullopt;
   return m.Learn();
 }
@@ -285,7 +292,7 @@ std::optional<double> PpoAgent::ObserveBatch(std::vector<Transition> transitions
         "ObserveBatch: one transition and env per row of the last ActBatch");
   for (std::size_t r = 0; r < transitions.size(); ++r)
     m.Add(std::move(transitions[r]), r, envs[r]);
-  if (static_cast<int>(m.rollout.size()) < m.ppo.rollout_steps)
+  if (static_cast<std::int64_t>(m.rollout.size()) < m.rollout_size)
     return std::nullopt;
   return m.Learn();
 }

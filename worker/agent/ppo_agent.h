@@ -1,7 +1,8 @@
 #pragma once
 // Proximal Policy Optimization (libtorch) on the discrete moves: separate actor and critic MLPs,
 // the clipped surrogate objective, generalised advantage estimation, an entropy bonus and
-// gradient-norm clipping, updated every agent.ppo.rollout_steps transitions. Seeded: the same
+// gradient-norm clipping, updated every agent.ppo.rollout_steps x num_envs transitions (rollouts
+// of rollout_steps from each of num_envs envs, as CleanRL's). Seeded: the same
 // seed, spaces and transitions give the same network. The rollout may come from one env (Act,
 // Observe) or from several at once (ActBatch, ObserveBatch: one forward pass for them all).
 #include <cstdint>
@@ -30,7 +31,7 @@ class PpoAgent : public Agent {
                             const std::vector<ActionMask>& masks);
   // The transitions of the rows of the last ActBatch, in its order; envs[r] names row r's env
   // (its stream: GAE carries no advantage from one env's transitions to another's). Learns once
-  // the rollout holds rollout_steps transitions: the mean loss of that update.
+  // the rollout holds rollout_steps x num_envs transitions: the mean loss of that update.
   std::optional<double> ObserveBatch(std::vector<Transition> transitions,
                                      const std::vector<int>& envs);
   void KeepPolicy() override;

@@ -19,13 +19,13 @@ namespace {
 namespace fs = std::filesystem;
 
 // A short training: 24 episodes of 10 steps from random starts (every 4th from the baseline),
-// rollouts of 40 transitions, a checkpoint every 8 episodes, a 20-step evaluation.
+// rollouts of 10 steps per env, a checkpoint every 8 episodes, a 20-step evaluation.
 Scenario ShortB(int num_envs) {
   return LoadScenario(
       std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json",
       {"env.fidelity=analytic", "env.episode_duration=2", "agent.algorithm=ppo",
        "agent.train_episodes=24", "agent.train_episode_steps=10", "agent.baseline_start_every=4",
-       "agent.eval_interval=8", "agent.ppo.rollout_steps=40", "agent.ppo.epochs=2",
+       "agent.eval_interval=8", "agent.ppo.rollout_steps=10", "agent.ppo.epochs=2",
        "agent.ppo.num_envs=" + std::to_string(num_envs)});
 }
 
@@ -133,7 +133,7 @@ TEST(PpoBatchedTraining, RecordsEveryEpisodeAndTheCheckpoints) {
   for (int e = 0; e < 24; ++e)
     EXPECT_EQ(train[static_cast<std::size_t>(e)], e + 1);
   EXPECT_EQ(checkpoints, (std::vector<int>{8, 16, 24}));
-  EXPECT_EQ(updates, 24 * 10 / 40);  // rollouts of 40 transitions, as with one env
+  EXPECT_EQ(updates, 24 * 10 / (10 * 4));  // each of 10 steps from each of the 4 envs
   EXPECT_EQ(t.result.episodes_trained, 24);
 }
 
@@ -151,9 +151,6 @@ TEST(PpoBatchedTraining, RefusesBadNumEnvsInOneLine) {
             "--set agent.ppo.num_envs=0: /agent/ppo/num_envs: must be in [1, 4096], got 0");
   EXPECT_EQ(ErrorOf({"agent.ppo.num_envs=5000"}),
             "--set agent.ppo.num_envs=5000: /agent/ppo/num_envs: must be in [1, 4096], got 5000");
-  EXPECT_EQ(ErrorOf({"agent.ppo.num_envs=3"}),
-            "--set agent.ppo.num_envs=3: /agent/ppo/num_envs: must divide rollout_steps (256), "
-            "got 3");
   const std::string fraction = ErrorOf({"agent.ppo.num_envs=2.5"});
   EXPECT_EQ(fraction.find('\n'), std::string::npos);
   EXPECT_NE(fraction.find("/agent/ppo/num_envs: "), std::string::npos) << fraction;
