@@ -8,10 +8,12 @@ runs >= 0.95, and the times' median and worst, with the speed-up against the fir
 Asserts nothing.
 
   scripts/bench_ppo_vector.py --scenarios DIR|FILE,... [--build DIR] [--seeds 1-3]
-                              [--num-envs 1,16] [--jobs 1] [--set PATH=VALUE ...]
+                              [--num-envs 1,8] [--jobs 1] [--set PATH=VALUE ...]
+                              [--oracle-cache FILE]
 
 The oracle is `rlpos-sim position --positioner oracle`: the best analytic reward of its
-candidates (the top of the analytic grid search).
+candidates (the top of the analytic grid search). --oracle-cache keeps them between runs, keyed
+by the scenario file's bytes (a rebuilt reward model needs a new cache).
 """
 import argparse
 import concurrent.futures
@@ -24,7 +26,9 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bench_agents import quantile, scenario_files, seeds_of  # noqa: E402
+from bench_agents import (file_digest, load_cache, quantile, save_cache,  # noqa: E402
+                          scenario_files, seeds_of)
+import hashlib  # noqa: E402
 
 
 def run(argv):
@@ -62,9 +66,10 @@ def main():
     parser.add_argument("--build", default=os.path.join(os.path.dirname(HERE), "build"))
     parser.add_argument("--scenarios", required=True)
     parser.add_argument("--seeds", default="1-3")
-    parser.add_argument("--num-envs", default="1,16")
+    parser.add_argument("--num-envs", default="1,8")
     parser.add_argument("--jobs", type=int, default=1, help="trainings at a time")
     parser.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    parser.add_argument("--oracle-cache", metavar="FILE")
     args = parser.parse_args()
     sim = os.path.join(args.build, "bin", "rlpos-sim")
     variants = [int(v) for v in args.num_envs.split(",")]
@@ -76,13 +81,27 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as work, \
             concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        oracles = {s: pool.submit(oracle_reward, sim, s) for s in scenarios}
+        cache = load_cache(args.oracle_cache)
+
+        def key(scenario):
+            digest = hashlib.sha256()
+            file_digest(scenario, digest)
+            return digest.hexdigest()
+
+        def cached_oracle(scenario):
+            if key(scenario) not in cache:
+                cache[key(scenario)] = oracle_reward(sim, scenario)
+            return cache[key(scenario)]
+
+        oracles = {s: pool.submit(cached_oracle, s) for s in scenarios}
         runs = [(s, seed, n) for s in scenarios for seed in seeds_of(args.seeds)
                 for n in variants]
         futures = [pool.submit(train, sim, s, seed, n, overrides, work) for s, seed, n in runs]
         for (scenario, seed, n), future in zip(runs, futures):
             reward, wall, cpu = future.result()
             oracle = oracles[scenario].result()
+            if args.oracle_cache:
+                save_cache(args.oracle_cache, cache)
             row = {"scenario": os.path.splitext(os.path.basename(scenario))[0], "seed": seed,
                    "envs": n, "ratio": reward / oracle, "wall": wall, "cpu": cpu}
             rows.append(row)
