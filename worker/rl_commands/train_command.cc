@@ -171,28 +171,24 @@ std::int64_t TrainingEpisodeSteps(const Scenario& s, const UavPositioningEnv& en
 // evaluation trajectory.
 TrainResult TrainAndRecord(const Scenario& s, const fs::path& folder) {
   UavPositioningEnv env(s);
-  // PPO's rollouts come from agent.ppo.num_envs analytic envs at once; the packet level is one
-  // network per process, so there one env collects them, as with num_envs = 1.
-  const bool batched =
-      s.agent.algorithm == "ppo" && s.agent.ppo.num_envs > 1 && s.env.fidelity == "analytic";
-  AgentSpec spec = s.agent;
-  if (!batched)
-    spec.ppo.num_envs = 1;
   const std::unique_ptr<Agent> agent_owner =
-      MakeAgent(spec, env, std::int64_t{spec.train_episodes} * TrainingEpisodeSteps(s, env));
+      MakeAgent(s.agent, env, std::int64_t{s.agent.train_episodes} * TrainingEpisodeSteps(s, env));
   Agent& agent = *agent_owner;
   std::ofstream curve = OpenLearningCurve(folder / "learning_curve.csv");
   TrajectoryWriter trajectory(folder / "trajectory.csv", s, agent);
-  const int total = spec.train_episodes + spec.eval_episodes;
+  const int total = s.agent.train_episodes + s.agent.eval_episodes;
   const EpisodeCallback on_episode = [&](const EpisodeRecord& r) {
     WriteCurveRow(curve, r);
     PrintEpisode(r, total);
   };
-  const TrainResult result =
-      batched
-          ? TrainPpoBatched(s, dynamic_cast<PpoAgent&>(agent), FirstEpisodeRun(spec.seed), 0,
-                            on_episode, std::ref(trajectory))
-          : Train(env, agent, spec, FirstEpisodeRun(spec.seed), on_episode, std::ref(trajectory));
+  // PPO's rollouts from agent.ppo.num_envs analytic envs at once; the packet level is one
+  // network per process, so it collects from one env.
+  auto* ppo = dynamic_cast<PpoAgent*>(&agent);
+  const TrainResult result = ppo && s.agent.ppo.num_envs > 1 && s.env.fidelity == "analytic"
+                                 ? TrainPpoBatched(s, *ppo, FirstEpisodeRun(s.agent.seed), 0,
+                                                   on_episode, std::ref(trajectory))
+                                 : Train(env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
+                                         on_episode, std::ref(trajectory));
   curve.close();
   trajectory.Close();
   agent.Save(folder.string());
