@@ -22,6 +22,7 @@ struct PpoSpec {
   int epochs = 10;
   int minibatches = 4;
   bool anneal_learning_rate = true;
+  int num_envs = 1;
 };
 
 inline void CheckPpoSpec(const PpoSpec& p, const ObjectReader& reader) {
@@ -45,14 +46,24 @@ inline const HyperparameterTable<PpoSpec>& PpoHyperparameters() {
         "weight of the value loss"},
        {"max_grad_norm", &PpoSpec::max_grad_norm, Positive(), "gradient norm clipping"},
        {"rollout_steps", &PpoSpec::rollout_steps, Integers(2, 1000000),
-        "transitions per update. CleanRL: 128"},
+        "transitions per env per update (CleanRL's num_steps: an update learns from num_envs x "
+        "rollout_steps). CleanRL: 128"},
        {"epochs", &PpoSpec::epochs, Integers(1, 1000), "passes over a rollout. CleanRL: 4"},
        {"minibatches", &PpoSpec::minibatches, Integers(1, 1000000),
-        "minibatches per pass; at most rollout_steps"},
+        "minibatches per pass (each of num_envs x rollout_steps / minibatches transitions); at "
+        "most rollout_steps"},
        {"anneal_learning_rate", &PpoSpec::anneal_learning_rate, NoRange(),
         "the rate falls linearly to 0 over the training's rollouts (train_episodes x steps per "
         "episode / rollout_steps), the first at the full rate (CleanRL's anneal_lr, on there): "
-        "late updates then refine the policy instead of knocking it off its best"}},
+        "late updates then refine the policy instead of knocking it off its best"},
+       {"num_envs", &PpoSpec::num_envs, Integers(1, 4096),
+        "analytic envs that collect the rollouts together, with one batched forward pass of the "
+        "policy for them all per step; each update learns from num_envs x rollout_steps "
+        "transitions, so num_envs times fewer updates (and gradient steps) per training, of "
+        "num_envs times more transitions each (CleanRL's num_envs). Env i of n flies training "
+        "episodes i, i + n, ... in rounds of n. 1: one env, the seed stream of a single env. "
+        "Packet fidelity (one network per process): one env collects the num_envs x "
+        "rollout_steps transitions"}},
       CheckPpoSpec};
   return table;
 }

@@ -35,15 +35,24 @@ struct PpoAgent::Impl {
   std::vector<Transition> rollout;
   std::vector<ActionMask> masks;  // the mask at each transition's observation
   std::vector<float> log_probs;
-  ActionMask pending_mask;
-  float pending_log_prob = 0.0f;
+  std::vector<int> streams;  // the env each transition came from (batched collection)
+  // What the last Act (one row) or ActBatch (a row per env) chose with, until Observe.
+  std::vector<ActionMask> pending_masks;
+  std::vector<float> pending_log_probs;
+  // Transitions per update: rollout_steps from each of the num_envs envs that collect them.
+  std::int64_t rollout_size;
   std::int64_t planned_updates = 0;  // rollouts in the training; 0: no annealing
   std::int64_t done_updates = 0;     // rollouts learned from so far
 
   Impl(const AgentSpec& s, int obs_dim, int actions, std::int64_t training_steps)
-      : spec(s), ppo(s.ppo), observation_dim(obs_dim), action_count(actions), rng(s.seed) {
+      : spec(s),
+        ppo(s.ppo),
+        observation_dim(obs_dim),
+        action_count(actions),
+        rng(s.seed),
+        rollout_size(std::int64_t{s.ppo.rollout_steps} * s.ppo.num_envs) {
     if (ppo.anneal_learning_rate && training_steps > 0)
-      planned_updates = std::max<std::int64_t>(1, training_steps / ppo.rollout_steps);
+      planned_updates = std::max<std::int64_t>(1, training_steps / rollout_size);
     torch::manual_seed(s.seed);  // weight initialisation
     actor = MakeMlp(s.hidden, obs_dim, actions);
     critic = MakeMlp(s.hidden, obs_dim, 1);
@@ -62,7 +71,8 @@ struct PpoAgent::Impl {
   }
 
   // Advantages by GAE(lambda). A truncated episode bootstraps from the value of its last next
-  // observation; a terminal one from 0; no advantage is carried across an episode's end.
+  // observation; a terminal one from 0; no advantage is carried across an episode's end, nor
+  // from one env's transitions to another's (the last of each env's is cut as the rollout's).
   std::pair<torch::Tensor, torch::Tensor> AdvantagesAndReturns(const torch::Tensor& obs,
                                                                const torch::Tensor& next) {
     torch::NoGradGuard no_grad;
@@ -73,15 +83,20 @@ struct PpoAgent::Impl {
     auto adv = advantages.accessor<float, 1>();
     auto v = values.accessor<float, 1>();
     auto nv = next_values.accessor<float, 1>();
-    float carried = 0.0f;
+    const int stream_count = 1 + *std::max_element(streams.begin(), streams.end());
+    std::vector<float> carried_of(static_cast<std::size_t>(stream_count), 0.0f);
+    std::vector<bool> seen(static_cast<std::size_t>(stream_count), false);
     for (long t = n - 1; t >= 0; --t) {
       const Transition& tr = rollout[static_cast<std::size_t>(t)];
+      const auto stream = static_cast<std::size_t>(streams[static_cast<std::size_t>(t)]);
+      float& carried = carried_of[stream];
       const float reward =
           spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
       const float bootstrap = tr.terminal ? 0.0f : static_cast<float>(ppo.gamma) * nv[t];
       const float delta = reward + bootstrap - v[t];
-      if (tr.episode_end || t == n - 1)
+      if (tr.episode_end || !seen[stream])
         carried = 0.0f;
+      seen[stream] = true;
       carried = delta + static_cast<float>(ppo.gamma * ppo.gae_lambda) * carried;
       adv[t] = carried;
     }
@@ -97,6 +112,43 @@ struct PpoAgent::Impl {
         0.0, 1.0 - static_cast<double>(done_updates) / static_cast<double>(planned_updates));
     for (auto& group : optimizer->param_groups())
       static_cast<torch::optim::AdamOptions&>(group.options()).lr(ppo.learning_rate * left);
+  }
+
+  // An action by the probabilities p of the actions: with explore a sample (inverse CDF with
+  // the agent's own generator: reproducible across libraries), otherwise the most probable
+  // allowed one.
+  int Choose(const float* p, const ActionMask& mask, bool explore) {
+    if (!mask.empty() && std::none_of(mask.begin(), mask.end(), [](std::uint8_t a) { return a; }))
+      throw std::invalid_argument("the action mask allows no action");
+    int action = -1;
+    if (explore) {
+      const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+      double cumulative = 0.0;
+      for (int a = 0; a < action_count; ++a) {
+        if (!Allowed(mask, a) || p[a] <= 0.0f)
+          continue;
+        action = a;  // the last allowed action takes what rounding leaves over
+        cumulative += p[a];
+        if (u < cumulative)
+          break;
+      }
+    } else {
+      for (int a = 0; a < action_count; ++a) {
+        if (Allowed(mask, a) && (action < 0 || p[a] > p[action]))
+          action = a;
+      }
+    }
+    pending_masks.push_back(mask);
+    pending_log_probs.push_back(std::log(std::max(p[action], 1e-30f)));
+    return action;
+  }
+
+  void Add(Transition transition, std::size_t row, int stream) {
+    reward_moments.Add(transition.reward);
+    rollout.push_back(std::move(transition));
+    masks.push_back(std::move(pending_masks.at(row)));
+    log_probs.push_back(pending_log_probs.at(row));
+    streams.push_back(stream);
   }
 
   // The mean loss of the minibatch updates.
@@ -152,6 +204,7 @@ struct PpoAgent::Impl {
     rollout.clear();
     masks.clear();
     log_probs.clear();
+    streams.clear();
     return loss_sum / std::max(updates, 1);
   }
 };
@@ -185,43 +238,61 @@ double PpoAgent::LearningRate() const {
 
 int PpoAgent::Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) {
   Impl& m = *impl_;
-  if (!mask.empty() && std::none_of(mask.begin(), mask.end(), [](std::uint8_t a) { return a; }))
-    throw std::invalid_argument("the action mask allows no action");
   const std::vector<float> p = Probabilities(observation, mask);
-  int action = 0;
-  if (explore) {
-    // Inverse-CDF sampling with the agent's own generator: reproducible across libraries.
-    const double u = std::uniform_real_distribution<double>(0.0, 1.0)(m.rng);
-    double cumulative = 0.0;
-    action = -1;
-    for (int a = 0; a < m.action_count; ++a) {
-      if (!Allowed(mask, a) || p[static_cast<std::size_t>(a)] <= 0.0f)
-        continue;
-      action = a;  // the last allowed action takes what rounding leaves over
-      cumulative += p[static_cast<std::size_t>(a)];
-      if (u < cumulative)
-        break;
-    }
-  } else {
-    action = -1;
-    for (int a = 0; a < m.action_count; ++a) {
-      if (Allowed(mask, a) &&
-          (action < 0 || p[static_cast<std::size_t>(a)] > p[static_cast<std::size_t>(action)]))
-        action = a;
-    }
+  m.pending_masks.clear();
+  m.pending_log_probs.clear();
+  return m.Choose(p.data(), mask, explore);
+}
+
+std::vector<int> PpoAgent::ActBatch(const std::vector<std::vector<float>>& observations,
+                                    const std::vector<ActionMask>& masks) {
+  Impl& m = *impl_;
+  const std::size_t rows = observations.size();
+  if (!masks.empty() && masks.size() != rows)
+    throw std::invalid_argument("ActBatch: one mask per observation, or none");
+  static const ActionMask kNoMask;
+  const auto mask_of = [&](std::size_t r) -> const ActionMask& {
+    return masks.empty() ? kNoMask : masks[r];
+  };
+  torch::Tensor p;
+  {
+    torch::NoGradGuard no_grad;
+    std::vector<const ActionMask*> mask_rows;
+    for (std::size_t r = 0; r < rows; ++r)
+      mask_rows.push_back(&mask_of(r));
+    const torch::Tensor logits =
+        m.actor->forward(StackRows(
+            rows,
+            m.observation_dim, [&](std::size_t r) -> const auto& { return observations[r]; })) +
+        MaskPenalty(mask_rows, m.action_count, kForbidden);
+    p = torch::softmax(logits, 1).contiguous();
   }
-  m.pending_mask = mask;
-  m.pending_log_prob = std::log(std::max(p[static_cast<std::size_t>(action)], 1e-30f));
-  return action;
+  m.pending_masks.clear();
+  m.pending_log_probs.clear();
+  std::vector<int> actions(rows);
+  const float* row = p.data_ptr<float>();
+  for (std::size_t r = 0; r < rows; ++r, row += m.action_count)
+    actions[r] = m.Choose(row, mask_of(r), true);
+  return actions;
 }
 
 std::optional<double> PpoAgent::Observe(Transition transition) {
   Impl& m = *impl_;
-  m.reward_moments.Add(transition.reward);
-  m.rollout.push_back(std::move(transition));
-  m.masks.push_back(std::move(m.pending_mask));
-  m.log_probs.push_back(m.pending_log_prob);
-  if (static_cast<int>(m.rollout.size()) < m.ppo.rollout_steps)
+  m.Add(std::move(transition), 0, 0);
+  if (static_cast<std::int64_t>(m.rollout.size()) < m.rollout_size)
+    return std::nullopt;
+  return m.Learn();
+}
+
+std::optional<double> PpoAgent::ObserveBatch(std::vector<Transition> transitions,
+                                             const std::vector<int>& envs) {
+  Impl& m = *impl_;
+  if (transitions.size() != m.pending_masks.size() || envs.size() != transitions.size())
+    throw std::invalid_argument(
+        "ObserveBatch: one transition and env per row of the last ActBatch");
+  for (std::size_t r = 0; r < transitions.size(); ++r)
+    m.Add(std::move(transitions[r]), r, envs[r]);
+  if (static_cast<std::int64_t>(m.rollout.size()) < m.rollout_size)
     return std::nullopt;
   return m.Learn();
 }

@@ -1,8 +1,10 @@
 #pragma once
 // Proximal Policy Optimization (libtorch) on the discrete moves: separate actor and critic MLPs,
 // the clipped surrogate objective, generalised advantage estimation, an entropy bonus and
-// gradient-norm clipping, updated every agent.ppo.rollout_steps transitions. Seeded: the same
-// seed, spaces and transitions give the same network.
+// gradient-norm clipping, updated every agent.ppo.rollout_steps x num_envs transitions (rollouts
+// of rollout_steps from each of num_envs envs, as CleanRL's). Seeded: the same
+// seed, spaces and transitions give the same network. The rollout may come from one env (Act,
+// Observe) or from several at once (ActBatch, ObserveBatch: one forward pass for them all).
 #include <cstdint>
 #include <memory>
 
@@ -22,6 +24,16 @@ class PpoAgent : public Agent {
   // explore: a sample of the policy; otherwise its most probable allowed action.
   int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) override;
   std::optional<double> Observe(Transition transition) override;
+  // Exploring actions for several envs' observations (normalised), one forward pass for all:
+  // row r is sampled among what masks[r] allows, rows in order, from the agent's generator (one
+  // row gives what Act gives). masks: one per row, or empty for no masks.
+  std::vector<int> ActBatch(const std::vector<std::vector<float>>& observations,
+                            const std::vector<ActionMask>& masks);
+  // The transitions of the rows of the last ActBatch, in its order; envs[r] names row r's env
+  // (its stream: GAE carries no advantage from one env's transitions to another's). Learns once
+  // the rollout holds rollout_steps x num_envs transitions: the mean loss of that update.
+  std::optional<double> ObserveBatch(std::vector<Transition> transitions,
+                                     const std::vector<int>& envs);
   void KeepPolicy() override;
   void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;

@@ -81,41 +81,35 @@ std::uint64_t EvaluationSeed(const AgentSpec& spec, std::uint64_t seed, int k) {
   return seed + static_cast<std::uint64_t>(spec.train_episodes) + static_cast<std::uint64_t>(k);
 }
 
-TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
-                  const EpisodeCallback& on_episode, const StepCallback& on_eval_step) {
-  TrainResult result;
-  const auto add = [&](EpisodeRecord record) {
-    if (on_episode)
-      on_episode(record);
-    result.curve.push_back(std::move(record));
-  };
+bool Checkpoints::Due(const AgentSpec& spec, int before, int done) {
+  if (spec.eval_interval <= 0)
+    return false;
+  return done / spec.eval_interval > before / spec.eval_interval || done == spec.train_episodes;
+}
+
+EpisodeRecord Checkpoints::Score(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
+                                 int episode, TrainResult& result) {
   // The evaluation's first seed: checkpoints are scored on the episode the answer comes from.
-  const std::uint64_t eval_seed = EvaluationSeed(spec, seed, 0);
-  std::optional<double> kept;  // the kept policy's checkpoint reward
-  int stale = 0;               // checkpoints in a row that did not beat it
-  for (int e = 0; e < spec.train_episodes; ++e) {
-    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true,
-                                      nullptr, TrainingEpisodeOptions(spec, e));
-    record.episode = e + 1;
-    add(std::move(record));
-    result.episodes_trained = e + 1;
-    const bool last = e + 1 == spec.train_episodes;
-    if (spec.eval_interval <= 0 || ((e + 1) % spec.eval_interval != 0 && !last))
-      continue;
-    EpisodeRecord check = RunEpisode(env, agent, eval_seed, false);
-    check.episode = e + 1;
-    check.checkpoint = true;
-    stale = kept && check.final_reward <= *kept ? stale + 1 : 0;
-    if (!kept || check.final_reward >= *kept) {
-      agent.KeepPolicy();
-      kept = check.final_reward;
-      result.policy_episode = e + 1;
-    }
-    add(std::move(check));
-    if (spec.early_stop_checkpoints > 0 && stale >= spec.early_stop_checkpoints)
-      break;
+  EpisodeRecord check = RunEpisode(env, agent, EvaluationSeed(spec, seed, 0), false);
+  check.episode = episode;
+  check.checkpoint = true;
+  stale_ = kept_ && check.final_reward <= *kept_ ? stale_ + 1 : 0;
+  if (!kept_ || check.final_reward >= *kept_) {
+    agent.KeepPolicy();
+    kept_ = check.final_reward;
+    result.policy_episode = episode;
   }
-  if (kept) {
+  return check;
+}
+
+bool Checkpoints::StopEarly(const AgentSpec& spec) const {
+  return spec.early_stop_checkpoints > 0 && stale_ >= spec.early_stop_checkpoints;
+}
+
+void Checkpoints::Evaluate(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
+                           TrainResult& result, const EpisodeCallback& on_episode,
+                           const StepCallback& on_eval_step) const {
+  if (kept_) {
     agent.RestoreKeptPolicy();
   } else {
     result.policy_episode = spec.train_episodes;
@@ -126,8 +120,34 @@ TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t s
     record.episode = spec.train_episodes + k + 1;
     result.final_info = record.final_info;
     result.final_reward = record.final_reward;
-    add(std::move(record));
+    if (on_episode)
+      on_episode(record);
+    result.curve.push_back(std::move(record));
   }
+}
+
+TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
+                  const EpisodeCallback& on_episode, const StepCallback& on_eval_step) {
+  TrainResult result;
+  const auto add = [&](EpisodeRecord record) {
+    if (on_episode)
+      on_episode(record);
+    result.curve.push_back(std::move(record));
+  };
+  Checkpoints checkpoints;
+  for (int e = 0; e < spec.train_episodes; ++e) {
+    EpisodeRecord record = RunEpisode(env, agent, seed + static_cast<std::uint64_t>(e), true,
+                                      nullptr, TrainingEpisodeOptions(spec, e));
+    record.episode = e + 1;
+    add(std::move(record));
+    result.episodes_trained = e + 1;
+    if (!Checkpoints::Due(spec, e, e + 1))
+      continue;
+    add(checkpoints.Score(env, agent, spec, seed, e + 1, result));
+    if (checkpoints.StopEarly(spec))
+      break;
+  }
+  checkpoints.Evaluate(env, agent, spec, seed, result, on_episode, on_eval_step);
   return result;
 }
 

@@ -6,6 +6,7 @@
 // a greedy policy worse than its stochastic one) still answers with its best.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "common/scenario/scenario.h"
@@ -64,6 +65,29 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
 // the training episodes'. Checkpoints fly k = 0; the last one's end is TrainResult::final_info,
 // which a replay of the policy reproduces (a policy folder records it).
 std::uint64_t EvaluationSeed(const AgentSpec& spec, std::uint64_t seed, int k);
+
+// The greedy checkpoints of a training (spec.eval_interval) and the best policy they keep: the
+// part of Train that does not depend on how the training episodes are collected.
+class Checkpoints {
+ public:
+  // Whether a checkpoint follows the training episodes up to `done` (from 1), `before` of them
+  // having been trained at the last call: one per eval_interval crossed, and after the last.
+  static bool Due(const AgentSpec& spec, int before, int done);
+  // Scores the policy by a greedy episode from the evaluation's first seed after training
+  // episode `episode`, keeps it if no earlier one scored more, and records it into `result`.
+  EpisodeRecord Score(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
+                      int episode, TrainResult& result);
+  // spec.early_stop_checkpoints in a row did not beat the kept policy.
+  bool StopEarly(const AgentSpec& spec) const;
+  // Restores the kept policy (if any) and runs the evaluation episodes into `result`.
+  void Evaluate(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
+                TrainResult& result, const EpisodeCallback& on_episode,
+                const StepCallback& on_eval_step) const;
+
+ private:
+  std::optional<double> kept_;  // the kept policy's checkpoint reward
+  int stale_ = 0;               // checkpoints in a row that did not beat it
+};
 
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
 // greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's

@@ -9,10 +9,12 @@
 #include "common/scenario/placement_json.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/agent/make_agent.h"
+#include "worker/agent/ppo_agent.h"
 #include "worker/agent/trainer.h"
 #include "worker/rl_commands/policy_folder.h"
 #include "worker/rl_commands/rl_commands.h"
 #include "worker/uav_env/uav_positioning_env.h"
+#include "worker/vector_training/ppo_batched_training.h"
 
 namespace rlpos::sim {
 namespace {
@@ -175,13 +177,18 @@ TrainResult TrainAndRecord(const Scenario& s, const fs::path& folder) {
   std::ofstream curve = OpenLearningCurve(folder / "learning_curve.csv");
   TrajectoryWriter trajectory(folder / "trajectory.csv", s, agent);
   const int total = s.agent.train_episodes + s.agent.eval_episodes;
-  const TrainResult result = Train(
-      env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
-      [&](const EpisodeRecord& r) {
-        WriteCurveRow(curve, r);
-        PrintEpisode(r, total);
-      },
-      std::ref(trajectory));
+  const EpisodeCallback on_episode = [&](const EpisodeRecord& r) {
+    WriteCurveRow(curve, r);
+    PrintEpisode(r, total);
+  };
+  // PPO's rollouts from agent.ppo.num_envs analytic envs at once; the packet level is one
+  // network per process, so it collects from one env.
+  auto* ppo = dynamic_cast<PpoAgent*>(&agent);
+  const TrainResult result = ppo && s.agent.ppo.num_envs > 1 && s.env.fidelity == "analytic"
+                                 ? TrainPpoBatched(s, *ppo, FirstEpisodeRun(s.agent.seed), 0,
+                                                   on_episode, std::ref(trajectory))
+                                 : Train(env, agent, s.agent, FirstEpisodeRun(s.agent.seed),
+                                         on_episode, std::ref(trajectory));
   curve.close();
   trajectory.Close();
   agent.Save(folder.string());

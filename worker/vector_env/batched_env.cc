@@ -113,6 +113,8 @@ void BatchedEnv::Write(std::size_t i, const std::vector<double>& observation,
                        const BatchBuffers& out) {
   const UavPositioningEnv& env = slots_[i]->env;
   const StepInfo& info = env.LastInfo();
+  if (out.raw_observations)
+    std::copy(observation.begin(), observation.end(), out.raw_observations + i * ObservationDim());
   if (out.observations) {
     // As rlpos.make's env gives it: float32, clipped to the float32 bounds (NaN stays NaN).
     const std::size_t d = ObservationDim();
@@ -147,8 +149,22 @@ void BatchedEnv::Write(std::size_t i, const std::vector<double>& observation,
   }
 }
 
+const StepInfo& BatchedEnv::LastInfo(std::size_t env) const {
+  return slots_.at(env)->env.LastInfo();
+}
+
 void BatchedEnv::Reset(const std::vector<std::optional<std::uint64_t>>& seeds,
                        const ResetOptions& options, const BatchBuffers& out) {
+  Reset(seeds, std::vector<ResetOptions>(NumEnvs(), options), out);
+}
+
+void BatchedEnv::Reset(const std::vector<std::optional<std::uint64_t>>& seeds,
+                       const std::vector<ResetOptions>& options, const BatchBuffers& out) {
+  if (options.size() != NumEnvs()) {
+    throw std::invalid_argument("reset options: expected one per env (" +
+                                std::to_string(NumEnvs()) + "), got " +
+                                std::to_string(options.size()));
+  }
   if (!seeds.empty() && seeds.size() != NumEnvs()) {
     throw std::invalid_argument("seeds: expected one per env (" + std::to_string(NumEnvs()) +
                                 "), got " + std::to_string(seeds.size()));
@@ -158,7 +174,7 @@ void BatchedEnv::Reset(const std::vector<std::optional<std::uint64_t>>& seeds,
     const std::uint64_t run = !seeds.empty() && seeds[i] ? *seeds[i] : slot.next_run;
     slot.next_run = RunAfter(run);
     slot.ended = false;
-    Write(i, slot.env.Reset(run, options), out);
+    Write(i, slot.env.Reset(run, options[i]), out);
   });
   started_ = true;
 }

@@ -32,6 +32,7 @@ struct BatchedEnvOptions {
 // Where a Reset or Step writes, row-major, one row per env. A null pointer: not wanted.
 struct BatchBuffers {
   float* observations = nullptr;        // N x ObservationDim(), clipped to the observation space
+  double* raw_observations = nullptr;   // N x ObservationDim(), as the env gives them (C++ agents)
   double* rewards = nullptr;            // N (Step)
   bool* terminated = nullptr;           // N (Step)
   bool* truncated = nullptr;            // N (Step)
@@ -74,6 +75,12 @@ class BatchedEnv {
   // `seeds` of another size than NumEnvs().
   void Reset(const std::vector<std::optional<std::uint64_t>>& seeds, const ResetOptions& options,
              const BatchBuffers& out);
+  // The same with env i's own options[i] (a training's exploring starts differ per episode).
+  // std::invalid_argument for an `options` of another size than NumEnvs().
+  void Reset(const std::vector<std::optional<std::uint64_t>>& seeds,
+             const std::vector<ResetOptions>& options, const BatchBuffers& out);
+  // Env i's info of its last reset or step (until the next Step).
+  const StepInfo& LastInfo(std::size_t env) const;
   // One step of every env: `actions` holds NumEnvs() move indices. An env that ended at the
   // last step resets instead (with its next run, without options). std::invalid_argument, with
   // nothing stepped, for a count other than NumEnvs(), an index outside the action space, or a

@@ -220,6 +220,39 @@ Batch RunBatch(const std::vector<Scenario>& scenarios, std::size_t n, std::size_
   return b;
 }
 
+// A training resets each env with its own options (exploring starts for some episodes, the
+// baseline for others) and reads the observations as the env gives them, unclipped doubles.
+TEST(BatchedEnv, ResetsEachEnvWithItsOwnOptionsAndGivesRawObservations) {
+  const Scenario b = LoadB(kShort);
+  BatchedEnvOptions options;
+  options.num_envs = 3;
+  options.threads = 2;
+  BatchedEnv batched({b}, options);
+  std::vector<ResetOptions> resets(3);
+  resets[0].random_start = true;
+  resets[2].random_start = true;
+  Batch batch(batched);
+  BatchBuffers buffers = batch.Buffers();
+  std::vector<double> raw(3 * batched.ObservationDim());
+  buffers.raw_observations = raw.data();
+  batched.Reset({11u, 12u, 13u}, resets, buffers);
+  for (std::size_t i = 0; i < 3; ++i) {
+    UavPositioningEnv single(b);
+    const std::vector<double> expected = single.Reset(11 + i, resets[i]);
+    ExpectRow(batch, i, single, expected, "reset with its own options");
+    EXPECT_EQ(
+        std::vector<double>(raw.begin() + static_cast<long>(i * batched.ObservationDim()),
+                            raw.begin() + static_cast<long>((i + 1) * batched.ObservationDim())),
+        expected);
+    EXPECT_EQ(batched.LastInfo(i).positions[0].x, single.LastInfo().positions[0].x);
+    EXPECT_EQ(batched.LastInfo(i).positions[0].y, single.LastInfo().positions[0].y);
+  }
+  // The baseline start and a random one differ, or the options did not reach the envs.
+  EXPECT_NE(batch.positions[0 * 3] + batch.positions[0 * 3 + 1] + batch.positions[0 * 3 + 2],
+            batch.positions[1 * 3] + batch.positions[1 * 3 + 1] + batch.positions[1 * 3 + 2]);
+  EXPECT_THROW(batched.Reset({}, std::vector<ResetOptions>(2), buffers), std::invalid_argument);
+}
+
 TEST(BatchedEnv, OneThreadOrFourGiveTheSameResults) {
   const std::vector<Scenario> scenarios = {LoadB(kShort), OpenB(kShort)};
   EXPECT_TRUE(RunBatch(scenarios, 13, 1, false) == RunBatch(scenarios, 13, 4, false));

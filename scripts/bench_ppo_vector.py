@@ -1,0 +1,130 @@
+#!/usr/bin/env python3
+"""PPO's training with its rollouts from one env against several (agent.ppo.num_envs), side by
+side: per scenario and training seed, `rlpos-sim train --algorithm ppo` with each num_envs in
+turn (analytic fidelity, the defaults otherwise), its wall and CPU seconds (the child's user +
+system time: the better guide on a shared machine) and its reward against the oracle's best on
+the move grid. Prints one row per training, then per num_envs: the ratio's median, worst and
+runs >= 0.95, and the times' median and worst, with the speed-up against the first num_envs.
+Asserts nothing.
+
+  scripts/bench_ppo_vector.py --scenarios DIR|FILE,... [--build DIR] [--seeds 1-3]
+                              [--num-envs 1,8] [--jobs 1] [--set PATH=VALUE ...]
+                              [--oracle-cache FILE]
+
+The oracle is `rlpos-sim position --positioner oracle`: the best analytic reward of its
+candidates (the top of the analytic grid search). --oracle-cache keeps them between runs, keyed
+by the scenario file's bytes (a rebuilt reward model needs a new cache).
+"""
+import argparse
+import concurrent.futures
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from bench_agents import (file_digest, load_cache, quantile, save_cache,  # noqa: E402
+                          scenario_files, seeds_of)
+import hashlib  # noqa: E402
+
+
+def run(argv):
+    """(stdout as JSON, wall s, CPU s: the child's user + system time, by /usr/bin/time)."""
+    with tempfile.NamedTemporaryFile("r", suffix=".time") as times:
+        started = time.monotonic()
+        done = subprocess.run(["/usr/bin/time", "-f", "%U %S", "-o", times.name] + argv,
+                              capture_output=True, text=True)
+        wall = time.monotonic() - started
+        if done.returncode != 0:
+            sys.exit("bench_ppo_vector: %s failed: %s" % (" ".join(argv[:3]),
+                                                          done.stderr.strip()[-400:]))
+        user, system = (float(v) for v in times.read().split()[-2:])
+    return json.loads(done.stdout), wall, user + system
+
+
+def oracle_reward(sim, scenario):
+    result, _, _ = run([sim, "position", "--scenario", scenario, "--positioner", "oracle",
+                        "--json"])
+    return max(c["analytic_reward"] for c in result["candidates"])
+
+
+def train(sim, scenario, seed, num_envs, overrides, work):
+    name = os.path.splitext(os.path.basename(scenario))[0]
+    out = os.path.join(work, "%s-%d-n%d" % (name, seed, num_envs))
+    result, wall, cpu = run([sim, "train", "--scenario", scenario, "--fidelity", "analytic",
+                               "--algorithm", "ppo", "--seed", str(seed), "--out", out,
+                               "--json", "--set", "agent.ppo.num_envs=%d" % num_envs]
+                              + overrides)
+    return result["reward"], wall, cpu
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", default=os.path.join(os.path.dirname(HERE), "build"))
+    parser.add_argument("--scenarios", required=True)
+    parser.add_argument("--seeds", default="1-3")
+    parser.add_argument("--num-envs", default="1,8")
+    parser.add_argument("--jobs", type=int, default=1, help="trainings at a time")
+    parser.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
+    parser.add_argument("--oracle-cache", metavar="FILE")
+    args = parser.parse_args()
+    sim = os.path.join(args.build, "bin", "rlpos-sim")
+    variants = [int(v) for v in args.num_envs.split(",")]
+    scenarios = scenario_files(args.scenarios)
+    overrides = [a for o in args.set for a in ("--set", o)]
+    print("load average at start: %.2f %.2f %.2f" % os.getloadavg())
+    print("%-22s %4s %5s %8s %8s %6s %7s %7s" %
+          ("scenario", "seed", "envs", "reward", "oracle", "ratio", "wall_s", "cpu_s"))
+    rows = []
+    with tempfile.TemporaryDirectory() as work, \
+            concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        cache = load_cache(args.oracle_cache)
+
+        def key(scenario):
+            digest = hashlib.sha256()
+            file_digest(scenario, digest)
+            return digest.hexdigest()
+
+        def cached_oracle(scenario):
+            if key(scenario) not in cache:
+                cache[key(scenario)] = oracle_reward(sim, scenario)
+            return cache[key(scenario)]
+
+        oracles = {s: pool.submit(cached_oracle, s) for s in scenarios}
+        runs = [(s, seed, n) for s in scenarios for seed in seeds_of(args.seeds)
+                for n in variants]
+        futures = [pool.submit(train, sim, s, seed, n, overrides, work) for s, seed, n in runs]
+        for (scenario, seed, n), future in zip(runs, futures):
+            reward, wall, cpu = future.result()
+            oracle = oracles[scenario].result()
+            if args.oracle_cache:
+                save_cache(args.oracle_cache, cache)
+            row = {"scenario": os.path.splitext(os.path.basename(scenario))[0], "seed": seed,
+                   "envs": n, "ratio": reward / oracle, "wall": wall, "cpu": cpu}
+            rows.append(row)
+            print("%-22s %4d %5d %8.4f %8.4f %6.3f %7.1f %7.1f" %
+                  (row["scenario"], seed, n, reward, oracle, row["ratio"], wall, cpu), flush=True)
+    print("load average at end: %.2f %.2f %.2f" % os.getloadavg())
+    print("\n| num_envs | runs | median ratio | worst ratio | runs >= 0.95 | median wall s "
+          "| worst wall s | median CPU s | worst CPU s | CPU speed-up (median / worst) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    first = None
+    for n in variants:
+        group = [r for r in rows if r["envs"] == n]
+        ratios = sorted(r["ratio"] for r in group)
+        walls = sorted(r["wall"] for r in group)
+        cpus = sorted(r["cpu"] for r in group)
+        if first is None:
+            first = {(r["scenario"], r["seed"]): r["cpu"] for r in group}
+        speedups = sorted(first[(r["scenario"], r["seed"])] / r["cpu"] for r in group)
+        print("| %d | %d | %.3f | %.3f | %d | %.1f | %.1f | %.1f | %.1f | %.2f / %.2f |" % (
+            n, len(group), quantile(ratios, 0.5), ratios[0], sum(v >= 0.95 for v in ratios),
+            quantile(walls, 0.5), walls[-1], quantile(cpus, 0.5), cpus[-1],
+            quantile(speedups, 0.5), speedups[0]))
+
+
+if __name__ == "__main__":
+    main()
