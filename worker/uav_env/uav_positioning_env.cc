@@ -12,12 +12,13 @@
 
 namespace rlpos {
 
-UavPositioningEnv::UavPositioningEnv(Scenario scenario)
+UavPositioningEnv::UavPositioningEnv(Scenario scenario,
+                                     std::shared_ptr<SharedPlacementMemo> shared_memo)
     : scenario_(std::move(scenario)), reward_(MakeReward(scenario_.env.reward)) {
   steps_per_episode_ = static_cast<int>(
       std::llround(scenario_.env.episode_duration / scenario_.env.decision_interval));
   if (scenario_.env.fidelity == "analytic") {
-    analytic_ = std::make_unique<AnalyticEvaluator>(scenario_);
+    analytic_ = std::make_unique<AnalyticEvaluator>(scenario_, std::move(shared_memo));
   }
 }
 

@@ -18,10 +18,15 @@ namespace rlpos {
 
 class UavNetwork;
 class AnalyticEvaluator;
+class SharedPlacementMemo;
 
 class UavPositioningEnv : public Env {
  public:
-  explicit UavPositioningEnv(Scenario scenario);
+  // Analytic fidelity: with `shared_memo` (one per scenario, shared by the envs of a batch) the
+  // states of placements evaluated go there, else into the env's own memo. Packet fidelity
+  // ignores it.
+  explicit UavPositioningEnv(Scenario scenario,
+                             std::shared_ptr<SharedPlacementMemo> shared_memo = nullptr);
   ~UavPositioningEnv() override;
 
   DiscreteSpace ActionSpace() const override;
