@@ -17,6 +17,10 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario,
     : scenario_(std::move(scenario)), reward_(MakeReward(scenario_.env.reward)) {
   steps_per_episode_ = static_cast<int>(
       std::llround(scenario_.env.episode_duration / scenario_.env.decision_interval));
+  if (!Continuous()) {
+    for (std::size_t a = 0; a < scenario_.env.actions.size(); ++a)
+      move_displacements_.push_back(MoveDisplacement(scenario_, static_cast<int>(a)));
+  }
   if (scenario_.env.fidelity == "analytic") {
     analytic_ = std::make_unique<AnalyticEvaluator>(scenario_, std::move(shared_memo));
   }
@@ -44,7 +48,7 @@ ActionMask UavPositioningEnv::ValidActionsOf(std::size_t uav) const {
   bool moves = false;
   for (std::size_t a = 0; a < actions.size(); ++a) {
     const Vec3& at = placement_.at(uav);
-    const Vec3 to = MoveTarget(scenario_, uav, static_cast<int>(a), placement_);
+    const Vec3 to = DisplacementTarget(scenario_, uav, move_displacements_[a], placement_);
     const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
@@ -112,7 +116,7 @@ StepResult UavPositioningEnv::Step(int action) {
                                                " out of the action space Discrete(" +
                                                std::to_string(ActionSpace().n) + ")");
   }
-  return MoveTo(ApplyMove(scenario_, active_, action, placement_));
+  return MoveTo(ApplyDisplacement(scenario_, active_, move_displacements_[action], placement_));
 }
 
 StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
@@ -175,7 +179,7 @@ MultiStepResult UavPositioningEnv::StepAll(const std::vector<int>& actions) {
                               "\") out of the action space Discrete(" +
                               std::to_string(ActionSpace().n) + ")");
     }
-    displacements.push_back(MoveDisplacement(scenario_, actions[u]));
+    displacements.push_back(move_displacements_[static_cast<std::size_t>(actions[u])]);
   }
   return MoveAllTo(ApplyJointDisplacement(scenario_, displacements, placement_));
 }

@@ -80,6 +80,9 @@ class UavPositioningEnv : public Env {
   std::unique_ptr<Reward> reward_;
   std::unique_ptr<UavNetwork> network_;          // packet fidelity
   std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
+  // Each discrete action's displacement (MoveDisplacement), worked out once: the action mask asks
+  // for every action at every step.
+  std::vector<Vec3> move_displacements_;
   Placement placement_;
   std::size_t active_ = 0;  // the UAV the next action moves
   StepInfo info_;
