@@ -66,8 +66,13 @@ std::vector<UeLink> AnalyticEvaluator::LinksAt(std::size_t uav, const Vec3& posi
 
 StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {
   StepInfo info;
+  EvaluateInto(placement, info);
+  return info;
+}
+
+void AnalyticEvaluator::EvaluateInto(const Placement& placement, StepInfo& info) {
   if (shared_memo_ ? shared_memo_->Find(placement, info) : own_memo_->Find(placement, info))
-    return info;
+    return;
   std::vector<std::vector<UeLink>> links(placement.size());
   std::vector<const std::vector<UeLink>*> views;
   for (std::size_t u = 0; u < placement.size(); ++u) {
@@ -79,7 +84,6 @@ StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {
     shared_memo_->Store(placement, info);
   else
     own_memo_->Store(placement, info);
-  return info;
 }
 
 StepInfo AnalyticEvaluator::Score(const Placement& placement,

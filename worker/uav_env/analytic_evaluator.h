@@ -35,6 +35,8 @@ class AnalyticEvaluator {
   ~AnalyticEvaluator();
   // Placements already evaluated come from a bounded memo (placement_memo.h): the same numbers.
   StepInfo Evaluate(const Placement& placement);
+  // The same into `info` (every field set), reusing its vectors: no allocation on a memo hit.
+  void EvaluateInto(const Placement& placement, StepInfo& info);
   // Every UE's link to UAV `uav` were it at `position` (the other UAVs do not matter).
   std::vector<UeLink> LinksAt(std::size_t uav, const Vec3& position);
   // The state at `placement` from links already known: `links[u]` = LinksAt(u, placement[u]).

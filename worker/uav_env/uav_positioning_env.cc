@@ -62,11 +62,12 @@ double UavPositioningEnv::RewardOf(const StepInfo& info) const {
   return (*reward_)(RewardInputOf(scenario_, info.n_los, info.throughput_mbps, info.demands_met));
 }
 
-StepInfo UavPositioningEnv::Observe() {
-  StepInfo info;
+void UavPositioningEnv::Observe() {
+  StepInfo& info = info_;
   if (analytic_) {
-    info = analytic_->Evaluate(placement_);
+    analytic_->EvaluateInto(placement_, info);  // reuses info_'s vectors on a memo hit
   } else {
+    info = StepInfo{};
     const RunMetrics m = network_->Measure();
     info.positions = placement_;
     info.serving = network_->Association();
@@ -79,7 +80,6 @@ StepInfo UavPositioningEnv::Observe() {
     }
   }
   info.active_uav = static_cast<int>(active_);
-  return info;
 }
 
 std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
@@ -105,7 +105,7 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed, const ResetOpti
     network_->BeginMeasurement({warmup - dt, warmup});
     network_->RunUntil(warmup);
   }
-  info_ = Observe();
+  Observe();
   return MakeObservation(scenario_, info_);
 }
 
@@ -148,7 +148,7 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
   ++steps_;
-  info_ = Observe();
+  Observe();
   StepResult result;
   result.info = info_;
   result.observation = MakeObservation(scenario_, info_);

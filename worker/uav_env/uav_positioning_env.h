@@ -69,7 +69,7 @@ class UavPositioningEnv : public Env {
   double WallSecondsInNs3() const { return wall_in_ns3_; }
 
  private:
-  StepInfo Observe();  // the state at the current position (after the last interval)
+  void Observe();  // info_ = the state at the current position (after the last interval)
   StepResult MoveTo(const Placement& placement);          // one decision interval at `placement`
   MultiStepResult MoveAllTo(const Placement& placement);  // the same, seen by every UAV
   void CheckStepAll(std::size_t actions) const;           // one action per UAV, after a Reset
