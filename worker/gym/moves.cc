@@ -45,7 +45,12 @@ Vec3 TargetAlone(const Scenario& s, std::size_t uav, const Vec3& delta, const Ve
 }
 
 Vec3 MoveTarget(const Scenario& s, std::size_t uav, int action, const Placement& from) {
-  const Vec3 to = TargetAlone(s, uav, MoveDisplacement(s, action), from.at(uav));
+  return DisplacementTarget(s, uav, MoveDisplacement(s, action), from);
+}
+
+Vec3 DisplacementTarget(const Scenario& s, std::size_t uav, const Vec3& delta,
+                        const Placement& from) {
+  const Vec3 to = TargetAlone(s, uav, delta, from.at(uav));
   return OverlapsAnother(from, uav, to) ? from[uav] : to;
 }
 

@@ -25,6 +25,10 @@ Vec3 TargetAlone(const Scenario& scenario, std::size_t uav, const Vec3& displace
 // Where ApplyMove puts UAV `uav`, without building the placement (an action mask asks this of
 // every action at every step).
 Vec3 MoveTarget(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
+// The same for a displacement: where ApplyDisplacement puts UAV `uav`. (An env that asks for
+// every action at every step turns its actions into displacements once.)
+Vec3 DisplacementTarget(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
+                        const Placement& from);
 // The placement after a displacement of UAV `uav` (env.action_space "continuous"), with the
 // same rules.
 Placement ApplyDisplacement(const Scenario& scenario, std::size_t uav, const Vec3& displacement,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "common/metrics/run_metrics.h"
 #include "common/phy/airtime_model.h"
@@ -22,10 +23,14 @@ constexpr double kCaptureProbability = 0.2;
 
 }  // namespace
 
-AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario)
+AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario,
+                                     std::shared_ptr<SharedPlacementMemo> shared_memo)
     : scenario_(scenario),
       channel_(std::make_unique<AnalyticChannel>(scenario)),
-      memo_(scenario.uavs.size(), scenario.ues.size()) {}
+      shared_memo_(std::move(shared_memo)) {
+  if (!shared_memo_)
+    own_memo_ = std::make_unique<PlacementMemo>(scenario.uavs.size(), scenario.ues.size());
+}
 
 AnalyticEvaluator::~AnalyticEvaluator() = default;
 
@@ -61,8 +66,13 @@ std::vector<UeLink> AnalyticEvaluator::LinksAt(std::size_t uav, const Vec3& posi
 
 StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {
   StepInfo info;
-  if (memo_.Find(placement, info))
-    return info;
+  EvaluateInto(placement, info);
+  return info;
+}
+
+void AnalyticEvaluator::EvaluateInto(const Placement& placement, StepInfo& info) {
+  if (shared_memo_ ? shared_memo_->Find(placement, info) : own_memo_->Find(placement, info))
+    return;
   std::vector<std::vector<UeLink>> links(placement.size());
   std::vector<const std::vector<UeLink>*> views;
   for (std::size_t u = 0; u < placement.size(); ++u) {
@@ -70,8 +80,10 @@ StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {
     views.push_back(&links[u]);
   }
   info = Score(placement, views);
-  memo_.Store(placement, info);
-  return info;
+  if (shared_memo_)
+    shared_memo_->Store(placement, info);
+  else
+    own_memo_->Store(placement, info);
 }
 
 StepInfo AnalyticEvaluator::Score(const Placement& placement,

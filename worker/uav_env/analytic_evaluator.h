@@ -11,6 +11,7 @@
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
 #include "worker/uav_env/placement_memo.h"
+#include "worker/uav_env/shared_placement_memo.h"
 
 namespace rlpos {
 
@@ -27,10 +28,15 @@ struct UeLink {
 
 class AnalyticEvaluator {
  public:
-  explicit AnalyticEvaluator(const Scenario& scenario);
+  // With `shared_memo` (of this scenario, shared with other evaluators), Evaluate remembers its
+  // states there; without it, in its own PlacementMemo.
+  explicit AnalyticEvaluator(const Scenario& scenario,
+                             std::shared_ptr<SharedPlacementMemo> shared_memo = nullptr);
   ~AnalyticEvaluator();
   // Placements already evaluated come from a bounded memo (placement_memo.h): the same numbers.
   StepInfo Evaluate(const Placement& placement);
+  // The same into `info` (every field set), reusing its vectors: no allocation on a memo hit.
+  void EvaluateInto(const Placement& placement, StepInfo& info);
   // Every UE's link to UAV `uav` were it at `position` (the other UAVs do not matter).
   std::vector<UeLink> LinksAt(std::size_t uav, const Vec3& position);
   // The state at `placement` from links already known: `links[u]` = LinksAt(u, placement[u]).
@@ -40,7 +46,8 @@ class AnalyticEvaluator {
  private:
   Scenario scenario_;
   std::unique_ptr<AnalyticChannel> channel_;
-  PlacementMemo memo_;
+  std::unique_ptr<PlacementMemo> own_memo_;           // no shared memo given
+  std::shared_ptr<SharedPlacementMemo> shared_memo_;  // or this one
 };
 
 // The env's reward (the scenario's env.reward) at `placement` by the analytic model: what the

@@ -25,6 +25,16 @@ std::uint64_t Mix(std::uint64_t z) {
 
 }  // namespace
 
+std::uint64_t PlacementHash(const Placement& placement) {
+  std::uint64_t h = 0;
+  for (const Vec3& p : placement) {
+    h = Mix(h ^ Bits(p.x));
+    h = Mix(h ^ Bits(p.y));
+    h = Mix(h ^ Bits(p.z));
+  }
+  return h;
+}
+
 PlacementMemo::PlacementMemo(std::size_t n_uavs, std::size_t n_ues, std::size_t budget_bytes)
     : n_uavs_(n_uavs),
       n_ues_(n_ues),
@@ -55,12 +65,7 @@ bool PlacementMemo::Matches(const double* slot, const Placement& placement) cons
 }
 
 std::size_t PlacementMemo::Probe(const Placement& placement) const {
-  std::uint64_t h = 0;
-  for (const Vec3& p : placement) {
-    h = Mix(h ^ Bits(p.x));
-    h = Mix(h ^ Bits(p.y));
-    h = Mix(h ^ Bits(p.z));
-  }
+  const std::uint64_t h = PlacementHash(placement);
   // Linear probing; the table is never more than three quarters full, so an empty slot ends it.
   std::size_t slot = static_cast<std::size_t>(h % slots_);
   while (filled_[slot] && !Matches(Slot(slot), placement))

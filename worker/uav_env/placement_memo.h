@@ -19,6 +19,9 @@
 
 namespace rlpos {
 
+// The hash a memo files `placement` under (every bit of every coordinate counts).
+std::uint64_t PlacementHash(const Placement& placement);
+
 class PlacementMemo {
  public:
   // On scenario B (one UAV, 4 UEs): 8,192 slots of 80 bytes, so 6,144 placements.

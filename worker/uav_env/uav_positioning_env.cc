@@ -12,12 +12,17 @@
 
 namespace rlpos {
 
-UavPositioningEnv::UavPositioningEnv(Scenario scenario)
+UavPositioningEnv::UavPositioningEnv(Scenario scenario,
+                                     std::shared_ptr<SharedPlacementMemo> shared_memo)
     : scenario_(std::move(scenario)), reward_(MakeReward(scenario_.env.reward)) {
   steps_per_episode_ = static_cast<int>(
       std::llround(scenario_.env.episode_duration / scenario_.env.decision_interval));
+  if (!Continuous()) {
+    for (std::size_t a = 0; a < scenario_.env.actions.size(); ++a)
+      move_displacements_.push_back(MoveDisplacement(scenario_, static_cast<int>(a)));
+  }
   if (scenario_.env.fidelity == "analytic") {
-    analytic_ = std::make_unique<AnalyticEvaluator>(scenario_);
+    analytic_ = std::make_unique<AnalyticEvaluator>(scenario_, std::move(shared_memo));
   }
 }
 
@@ -43,7 +48,7 @@ ActionMask UavPositioningEnv::ValidActionsOf(std::size_t uav) const {
   bool moves = false;
   for (std::size_t a = 0; a < actions.size(); ++a) {
     const Vec3& at = placement_.at(uav);
-    const Vec3 to = MoveTarget(scenario_, uav, static_cast<int>(a), placement_);
+    const Vec3 to = DisplacementTarget(scenario_, uav, move_displacements_[a], placement_);
     const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
@@ -57,11 +62,12 @@ double UavPositioningEnv::RewardOf(const StepInfo& info) const {
   return (*reward_)(RewardInputOf(scenario_, info.n_los, info.throughput_mbps, info.demands_met));
 }
 
-StepInfo UavPositioningEnv::Observe() {
-  StepInfo info;
+void UavPositioningEnv::Observe() {
+  StepInfo& info = info_;
   if (analytic_) {
-    info = analytic_->Evaluate(placement_);
+    analytic_->EvaluateInto(placement_, info);  // reuses info_'s vectors on a memo hit
   } else {
+    info = StepInfo{};
     const RunMetrics m = network_->Measure();
     info.positions = placement_;
     info.serving = network_->Association();
@@ -74,7 +80,6 @@ StepInfo UavPositioningEnv::Observe() {
     }
   }
   info.active_uav = static_cast<int>(active_);
-  return info;
 }
 
 std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
@@ -100,7 +105,7 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed, const ResetOpti
     network_->BeginMeasurement({warmup - dt, warmup});
     network_->RunUntil(warmup);
   }
-  info_ = Observe();
+  Observe();
   return MakeObservation(scenario_, info_);
 }
 
@@ -111,7 +116,7 @@ StepResult UavPositioningEnv::Step(int action) {
                                                " out of the action space Discrete(" +
                                                std::to_string(ActionSpace().n) + ")");
   }
-  return MoveTo(ApplyMove(scenario_, active_, action, placement_));
+  return MoveTo(ApplyDisplacement(scenario_, active_, move_displacements_[action], placement_));
 }
 
 StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
@@ -143,7 +148,7 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
   ++steps_;
-  info_ = Observe();
+  Observe();
   StepResult result;
   result.info = info_;
   result.observation = MakeObservation(scenario_, info_);
@@ -174,7 +179,7 @@ MultiStepResult UavPositioningEnv::StepAll(const std::vector<int>& actions) {
                               "\") out of the action space Discrete(" +
                               std::to_string(ActionSpace().n) + ")");
     }
-    displacements.push_back(MoveDisplacement(scenario_, actions[u]));
+    displacements.push_back(move_displacements_[static_cast<std::size_t>(actions[u])]);
   }
   return MoveAllTo(ApplyJointDisplacement(scenario_, displacements, placement_));
 }

@@ -18,10 +18,15 @@ namespace rlpos {
 
 class UavNetwork;
 class AnalyticEvaluator;
+class SharedPlacementMemo;
 
 class UavPositioningEnv : public Env {
  public:
-  explicit UavPositioningEnv(Scenario scenario);
+  // Analytic fidelity: with `shared_memo` (one per scenario, shared by the envs of a batch) the
+  // states of placements evaluated go there, else into the env's own memo. Packet fidelity
+  // ignores it.
+  explicit UavPositioningEnv(Scenario scenario,
+                             std::shared_ptr<SharedPlacementMemo> shared_memo = nullptr);
   ~UavPositioningEnv() override;
 
   DiscreteSpace ActionSpace() const override;
@@ -64,7 +69,7 @@ class UavPositioningEnv : public Env {
   double WallSecondsInNs3() const { return wall_in_ns3_; }
 
  private:
-  StepInfo Observe();  // the state at the current position (after the last interval)
+  void Observe();  // info_ = the state at the current position (after the last interval)
   StepResult MoveTo(const Placement& placement);          // one decision interval at `placement`
   MultiStepResult MoveAllTo(const Placement& placement);  // the same, seen by every UAV
   void CheckStepAll(std::size_t actions) const;           // one action per UAV, after a Reset
@@ -75,6 +80,9 @@ class UavPositioningEnv : public Env {
   std::unique_ptr<Reward> reward_;
   std::unique_ptr<UavNetwork> network_;          // packet fidelity
   std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
+  // Each discrete action's displacement (MoveDisplacement), worked out once: the action mask asks
+  // for every action at every step.
+  std::vector<Vec3> move_displacements_;
   Placement placement_;
   std::size_t active_ = 0;  // the UAV the next action moves
   StepInfo info_;

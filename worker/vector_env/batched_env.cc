@@ -1,9 +1,12 @@
 #include "worker/vector_env/batched_env.h"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 #include "common/scenario/number_text.h"
+#include "common/scenario/scenario_parser.h"
+#include "worker/uav_env/shared_placement_memo.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_env/thread_pool.h"
 
@@ -22,6 +25,30 @@ std::string Describe(const DiscreteSpace& discrete, const BoxSpace& continuous) 
   return "a continuous Box of " + std::to_string(continuous.Dim());
 }
 
+// One memo per distinct scenario, for memo[i % scenarios.size()]: scenarios of the same content
+// (the same file given twice, say) share one, sized for the envs that use it.
+std::vector<std::shared_ptr<SharedPlacementMemo>> MemosOf(const std::vector<Scenario>& scenarios,
+                                                          std::size_t num_envs) {
+  std::map<std::string, std::size_t> first_of;  // content -> first index with it
+  std::vector<std::size_t> same_as(scenarios.size());
+  std::vector<std::size_t> envs(scenarios.size(), 0);
+  for (std::size_t i = 0; i < scenarios.size(); ++i)
+    same_as[i] = first_of.emplace(ToJson(scenarios[i]).dump(), i).first->second;
+  for (std::size_t e = 0; e < num_envs; ++e)
+    ++envs[same_as[e % scenarios.size()]];
+  std::vector<std::shared_ptr<SharedPlacementMemo>> memos(scenarios.size());
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    if (same_as[i] == i && envs[i] > 0) {
+      memos[i] =
+          std::make_shared<SharedPlacementMemo>(scenarios[i].uavs.size(), scenarios[i].ues.size(),
+                                                SharedPlacementMemo::BudgetFor(envs[i]));
+    }
+  }
+  for (std::size_t i = 0; i < scenarios.size(); ++i)
+    memos[i] = memos[same_as[i]];
+  return memos;
+}
+
 std::string Label(const std::vector<Scenario>& scenarios, std::size_t i) {
   return "scenario " + std::to_string(i) + " (" + scenarios[i].name + ")";
 }
@@ -29,8 +56,10 @@ std::string Label(const std::vector<Scenario>& scenarios, std::size_t i) {
 }  // namespace
 
 struct BatchedEnv::Slot {
-  explicit Slot(const Scenario& s) : env(s) {}
+  Slot(const Scenario& s, std::shared_ptr<SharedPlacementMemo> shared)
+      : env(s, shared), memo(std::move(shared)) {}
   UavPositioningEnv env;
+  std::shared_ptr<SharedPlacementMemo> memo;
   std::uint64_t next_run = 0;  // the run of its next reset without a seed
   bool ended = false;          // terminated or truncated at the last step: autoreset next
 };
@@ -55,10 +84,11 @@ BatchedEnv::BatchedEnv(const std::vector<Scenario>& scenarios, const BatchedEnvO
     throw std::invalid_argument("seed: seed + num_envs - 1 must be at most 2**63 - 1, got seed " +
                                 std::to_string(*options.seed));
   }
+  const auto memos = MemosOf(scenarios, options.num_envs);
   slots_.reserve(options.num_envs);
   for (std::size_t i = 0; i < options.num_envs; ++i) {
     const Scenario& s = scenarios[i % scenarios.size()];
-    slots_.push_back(std::make_unique<Slot>(s));
+    slots_.push_back(std::make_unique<Slot>(s, memos[i % scenarios.size()]));
     const std::uint64_t first = options.seed ? *options.seed : s.agent.seed * 1000000 + 1;
     slots_.back()->next_run = first + i;
   }
@@ -100,6 +130,10 @@ BatchedEnv::BatchedEnv(const std::vector<Scenario>& scenarios, const BatchedEnvO
 }
 
 BatchedEnv::~BatchedEnv() = default;
+
+const SharedPlacementMemo& BatchedEnv::MemoOf(std::size_t env) const {
+  return *slots_.at(env)->memo;
+}
 
 std::size_t BatchedEnv::Threads() const {
   return pool_->Size();

@@ -4,7 +4,9 @@
 // action at step t + 1 is ignored, it resets, and step t + 1 returns the reset observation with
 // reward 0 and terminated = truncated = false. Results are written into contiguous buffers the
 // caller provides (numpy arrays from Python), row i for env i. The envs are independent values,
-// so the results do not depend on the number of threads.
+// so the results do not depend on the number of threads. The envs of one scenario (same content)
+// share one memo of analytic states (shared_placement_memo.h, at most 4 MiB a scenario): what
+// one env evaluated, the others look up, bit for bit the same.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -18,6 +20,7 @@
 
 namespace rlpos {
 
+class SharedPlacementMemo;
 class ThreadPool;
 class UavPositioningEnv;
 
@@ -60,6 +63,8 @@ class BatchedEnv {
   std::size_t NumEnvs() const { return slots_.size(); }
   std::size_t Threads() const;
   const Scenario& ScenarioOf(std::size_t env) const;
+  // The memo of analytic states env `env` shares with the other envs of its scenario's content.
+  const SharedPlacementMemo& MemoOf(std::size_t env) const;
   // The spaces every env shares.
   BoxSpace ObservationSpace() const { return observation_space_; }
   DiscreteSpace ActionSpace() const { return action_space_; }           // n = 0: continuous

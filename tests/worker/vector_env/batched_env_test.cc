@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "worker/environment/scenario_loading.h"
+#include "worker/uav_env/shared_placement_memo.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos {
@@ -260,6 +261,33 @@ TEST(BatchedEnv, OneThreadOrFourGiveTheSameResults) {
   continuous.insert(continuous.end(), kContinuous.begin(), kContinuous.end());
   EXPECT_TRUE(RunBatch({LoadB(continuous)}, 13, 1, true) ==
               RunBatch({LoadB(continuous)}, 13, 4, true));
+}
+
+TEST(BatchedEnv, EnvsOfOneScenarioShareOneBoundedMemo) {
+  // B, open B and B again (the same content): envs 0, 2, 3, 5 share one memo, 1 and 4 another.
+  BatchedEnv env({LoadB(kShort), OpenB(kShort), LoadB(kShort)}, BatchedEnvOptions{6, 1, 2});
+  for (std::size_t i : {2, 3, 5})
+    EXPECT_EQ(&env.MemoOf(i), &env.MemoOf(0)) << i;
+  EXPECT_EQ(&env.MemoOf(4), &env.MemoOf(1));
+  EXPECT_NE(&env.MemoOf(1), &env.MemoOf(0));
+  // Sized for its four envs (four single envs' budgets), within the few MiB of a scenario.
+  EXPECT_EQ(env.MemoOf(0).Capacity(),
+            SharedPlacementMemo(1, 4, SharedPlacementMemo::BudgetFor(4)).Capacity());
+  Batch batch(env);
+  env.Reset({}, {}, batch.Buffers());
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<std::int64_t> move(
+      0, static_cast<std::int64_t>(env.ActionCount()) - 1);
+  std::vector<std::int64_t> actions(env.NumEnvs());
+  for (int k = 0; k < 50; ++k) {
+    for (auto& a : actions)
+      a = move(rng);
+    env.Step(actions.data(), actions.size(), batch.Buffers());
+  }
+  // Every env of B started at B's start: one entry, not four, for the placements they share.
+  EXPECT_GT(env.MemoOf(0).Size(), 0u);
+  EXPECT_LT(env.MemoOf(0).Size(), 4u * 50u);
+  EXPECT_LE(env.MemoOf(0).Size(), env.MemoOf(0).Capacity());
 }
 
 TEST(BatchedEnv, ContinuousEnvsFollowTheSingleEnv) {
