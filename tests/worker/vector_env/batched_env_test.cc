@@ -274,7 +274,7 @@ TEST(BatchedEnv, EnvsOfOneScenarioShareOneBoundedMemo) {
   EXPECT_EQ(env.MemoOf(0).Capacity(),
             SharedPlacementMemo(1, 4, SharedPlacementMemo::BudgetFor(4)).Capacity());
   Batch batch(env);
-  env.Reset({}, {}, batch.Buffers());
+  env.Reset({}, ResetOptions{}, batch.Buffers());
   std::mt19937 rng(5);
   std::uniform_int_distribution<std::int64_t> move(
       0, static_cast<std::int64_t>(env.ActionCount()) - 1);
