@@ -142,14 +142,19 @@ py::array_t<float> Observation(const std::vector<double>& values, const Float32B
   return out;
 }
 
-class PyEnv {
+// One UavPositioningEnv held for Python: its lease of ns-3 at packet level, its lock (the GIL is
+// released while it steps, one step at a time per env), and what both bindings read of it.
+class HeldEnv {
  public:
-  PyEnv(const std::string& file, const std::vector<std::string>& overrides) {
+  // `lease_user` names it in the error of a second packet-level user; `closed_error` is the
+  // error of a call after Close(). Both are string literals (the lease keeps the pointer).
+  HeldEnv(const std::string& file, const std::vector<std::string>& overrides,
+          const char* lease_user, const char* closed_error)
+      : closed_error_(closed_error) {
     Scenario s = Load(file, overrides);
     if (s.env.fidelity == "packet")
-      lease_ = std::make_unique<Ns3Lease>("a packet-level env");
+      lease_ = std::make_unique<Ns3Lease>(lease_user);
     env_ = std::make_unique<UavPositioningEnv>(std::move(s));
-    bounds_ = ToFloat32(env_->ObservationSpace());
   }
 
   const Scenario& scenario() const { return Open().scenario(); }
@@ -162,6 +167,34 @@ class PyEnv {
   std::pair<std::vector<double>, std::vector<double>> ObservationBounds() const {
     const BoxSpace box = Open().ObservationSpace();
     return {box.low, box.high};
+  }
+
+  void Close() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    env_.reset();
+    lease_.reset();
+  }
+  bool closed() const { return env_ == nullptr; }
+
+ protected:
+  UavPositioningEnv& Open() const {
+    if (!env_)
+      throw std::runtime_error(closed_error_);
+    return *env_;
+  }
+  std::mutex mutex_;
+
+ private:
+  const char* closed_error_;
+  std::unique_ptr<Ns3Lease> lease_;
+  std::unique_ptr<UavPositioningEnv> env_;
+};
+
+class PyEnv : public HeldEnv {
+ public:
+  PyEnv(const std::string& file, const std::vector<std::string>& overrides)
+      : HeldEnv(file, overrides, "a packet-level env", "rlpos: the env is closed") {
+    bounds_ = ToFloat32(Open().ObservationSpace());
   }
 
   py::tuple Reset(std::uint64_t seed, bool random_start) {
@@ -200,20 +233,7 @@ class PyEnv {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
 
-  void Close() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    env_.reset();
-    lease_.reset();
-  }
-  bool closed() const { return env_ == nullptr; }
-
  private:
-  UavPositioningEnv& Open() const {
-    if (!env_)
-      throw std::runtime_error("rlpos: the env is closed");
-    return *env_;
-  }
-
   struct Outcome {
     StepResult result;
     ActionMask mask;  // the actions allowed after it
@@ -241,10 +261,7 @@ class PyEnv {
                           InfoDict(r.info, o.mask));
   }
 
-  std::unique_ptr<Ns3Lease> lease_;
-  std::unique_ptr<UavPositioningEnv> env_;
   Float32Bounds bounds_;
-  std::mutex mutex_;  // the GIL is released while stepping: one step at a time per env
 };
 
 // N analytic envs stepped together (worker/vector_env), for rlpos.VectorEnv. Each call fills
@@ -387,31 +404,17 @@ class PyVectorEnv {
 // Several UAVs as agents (rlpos.parallel_env): every UAV moves at once in each step
 // (UavPositioningEnv::StepAll). Returns plain lists; the package's Python part makes the
 // per-agent dicts and numpy arrays.
-class PyParallelEnv {
+class PyParallelEnv : public HeldEnv {
  public:
-  PyParallelEnv(const std::string& file, const std::vector<std::string>& overrides) {
-    Scenario s = Load(file, overrides);
-    if (s.env.fidelity == "packet")
-      lease_ = std::make_unique<Ns3Lease>("a packet-level parallel env");
-    env_ = std::make_unique<UavPositioningEnv>(std::move(s));
-  }
+  PyParallelEnv(const std::string& file, const std::vector<std::string>& overrides)
+      : HeldEnv(file, overrides, "a packet-level parallel env",
+                "rlpos: the parallel env is closed") {}
 
-  const Scenario& scenario() const { return Open().scenario(); }
   std::vector<std::string> AgentNames() const {
     std::vector<std::string> names;
     for (const auto& uav : scenario().uavs)
       names.push_back(uav.name);
     return names;
-  }
-  int ActionCount() const { return Open().ActionSpace().n; }
-  int StepsPerEpisode() const { return Open().StepsPerEpisode(); }
-  std::pair<std::vector<double>, std::vector<double>> ActionBounds() const {
-    const BoxSpace box = Open().ContinuousActionSpace();
-    return {box.low, box.high};
-  }
-  std::pair<std::vector<double>, std::vector<double>> ObservationBounds() const {
-    const BoxSpace box = Open().ObservationSpace();
-    return {box.low, box.high};
   }
   std::pair<std::vector<double>, std::vector<double>> StateBounds() const {
     const BoxSpace box = Open().StateSpace();
@@ -439,20 +442,7 @@ class PyParallelEnv {
         Run([&](UavPositioningEnv& env) { return env.StepAllContinuous(displacements); }));
   }
 
-  void Close() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    env_.reset();
-    lease_.reset();
-  }
-  bool closed() const { return env_ == nullptr; }
-
  private:
-  UavPositioningEnv& Open() const {
-    if (!env_)
-      throw std::runtime_error("rlpos: the parallel env is closed");
-    return *env_;
-  }
-
   struct Outcome {
     MultiStepResult result;
     std::vector<ActionMask> masks;  // per UAV, after it
@@ -500,10 +490,6 @@ class PyParallelEnv {
     const MultiStepResult& r = o.result;
     return py::make_tuple(r.observations, r.state, r.reward, r.terminated, r.truncated, Info(o));
   }
-
-  std::unique_ptr<Ns3Lease> lease_;
-  std::unique_ptr<UavPositioningEnv> env_;
-  std::mutex mutex_;  // the GIL is released while stepping: one step at a time per env
 };
 
 py::list Oracle(const std::string& file, const std::vector<std::string>& overrides,
