@@ -560,23 +560,25 @@ PYBIND11_MODULE(_rlpos, m) {
   m.doc() =
       "C++ side of rlpos: the UAV positioning env (one env, a batch, or every UAV as an agent), "
       "the oracle and packet-level evaluation";
-  py::class_<PyEnv>(m, "Env")
+  // What the single env and the parallel env both tell of their scenario and spaces.
+  py::class_<HeldEnv>(m, "HeldEnv")
+      .def_property_readonly("action_count", &HeldEnv::ActionCount)
+      .def_property_readonly("action_bounds", &HeldEnv::ActionBounds)
+      .def_property_readonly("observation_bounds", &HeldEnv::ObservationBounds)
+      .def_property_readonly("steps_per_episode", &HeldEnv::StepsPerEpisode)
+      .def_property_readonly("scenario_name", [](const HeldEnv& e) { return e.scenario().name; })
+      .def_property_readonly("fidelity", [](const HeldEnv& e) { return e.scenario().env.fidelity; })
+      .def_property_readonly("agent_seed", [](const HeldEnv& e) { return e.scenario().agent.seed; })
+      .def_property_readonly("actions", [](const HeldEnv& e) { return e.scenario().env.actions; })
+      .def_property_readonly("closed", &HeldEnv::closed)
+      .def("close", &HeldEnv::Close);
+  py::class_<PyEnv, HeldEnv>(m, "Env")
       .def(py::init<const std::string&, const std::vector<std::string>&>(), py::arg("scenario"),
            py::arg("overrides"))
-      .def_property_readonly("action_count", &PyEnv::ActionCount)
-      .def_property_readonly("action_bounds", &PyEnv::ActionBounds)
-      .def_property_readonly("observation_bounds", &PyEnv::ObservationBounds)
-      .def_property_readonly("steps_per_episode", &PyEnv::StepsPerEpisode)
-      .def_property_readonly("scenario_name", [](const PyEnv& e) { return e.scenario().name; })
-      .def_property_readonly("fidelity", [](const PyEnv& e) { return e.scenario().env.fidelity; })
-      .def_property_readonly("agent_seed", [](const PyEnv& e) { return e.scenario().agent.seed; })
-      .def_property_readonly("actions", [](const PyEnv& e) { return e.scenario().env.actions; })
-      .def_property_readonly("closed", &PyEnv::closed)
       .def("reset", &PyEnv::Reset, py::arg("seed"), py::arg("random_start") = false)
       .def("step", &PyEnv::Step, py::arg("action"))
       .def("step_continuous", &PyEnv::StepContinuous, py::arg("displacement"))
-      .def("time_steps", &PyEnv::TimeSteps, py::arg("actions"), py::arg("steps"), py::arg("seed"))
-      .def("close", &PyEnv::Close);
+      .def("time_steps", &PyEnv::TimeSteps, py::arg("actions"), py::arg("steps"), py::arg("seed"));
   py::class_<PyVectorEnv>(m, "VectorEnv")
       .def(py::init<const std::vector<std::string>&, const std::vector<std::string>&, std::size_t,
                     std::optional<std::uint64_t>, std::size_t>(),
@@ -594,28 +596,14 @@ PYBIND11_MODULE(_rlpos, m) {
       .def("reset", &PyVectorEnv::Reset, py::arg("seeds"), py::arg("random_start"))
       .def("step", &PyVectorEnv::Step, py::arg("actions"))
       .def("close", &PyVectorEnv::Close);
-  py::class_<PyParallelEnv>(m, "ParallelEnv")
+  py::class_<PyParallelEnv, HeldEnv>(m, "ParallelEnv")
       .def(py::init<const std::string&, const std::vector<std::string>&>(), py::arg("scenario"),
            py::arg("overrides"))
       .def_property_readonly("agent_names", &PyParallelEnv::AgentNames)
-      .def_property_readonly("action_count", &PyParallelEnv::ActionCount)
-      .def_property_readonly("action_bounds", &PyParallelEnv::ActionBounds)
-      .def_property_readonly("observation_bounds", &PyParallelEnv::ObservationBounds)
       .def_property_readonly("state_bounds", &PyParallelEnv::StateBounds)
-      .def_property_readonly("steps_per_episode", &PyParallelEnv::StepsPerEpisode)
-      .def_property_readonly("scenario_name",
-                             [](const PyParallelEnv& e) { return e.scenario().name; })
-      .def_property_readonly("fidelity",
-                             [](const PyParallelEnv& e) { return e.scenario().env.fidelity; })
-      .def_property_readonly("agent_seed",
-                             [](const PyParallelEnv& e) { return e.scenario().agent.seed; })
-      .def_property_readonly("actions",
-                             [](const PyParallelEnv& e) { return e.scenario().env.actions; })
-      .def_property_readonly("closed", &PyParallelEnv::closed)
       .def("reset", &PyParallelEnv::Reset, py::arg("seed"), py::arg("random_start") = false)
       .def("step", &PyParallelEnv::Step, py::arg("actions"))
-      .def("step_continuous", &PyParallelEnv::StepContinuous, py::arg("displacements"))
-      .def("close", &PyParallelEnv::Close);
+      .def("step_continuous", &PyParallelEnv::StepContinuous, py::arg("displacements"));
   m.def("oracle", &Oracle, py::arg("scenario"), py::arg("overrides"), py::arg("grid_step"),
         py::arg("packet_candidates"), py::arg("packet_duration"), py::arg("top"));
   m.def("evaluate", &Evaluate, py::arg("scenario"), py::arg("overrides"), py::arg("position"));

@@ -31,7 +31,24 @@ def _check_seed(seed, what):
     return int(seed)
 
 
-class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
+class WrappedEnvProperties:
+    """What the single env and the parallel env both tell of the C++ env they wrap (`_env`)."""
+
+    @property
+    def fidelity(self):
+        return self._env.fidelity
+
+    @property
+    def steps_per_episode(self):
+        return self._env.steps_per_episode
+
+    @property
+    def moves(self):
+        """The names of the discrete actions, by index."""
+        return list(self._env.actions)
+
+
+class UavPositioningEnv(WrappedEnvProperties, gymnasium.Env if GYMNASIUM else object):
     """One UAV above the UEs of a scenario; each step moves it and measures one decision
     interval (packet fidelity: ns-3 runs it; analytic: the model of rlpos-sim's analytic
     fidelity).
@@ -75,19 +92,6 @@ class UavPositioningEnv(gymnasium.Env if GYMNASIUM else object):
         else:
             self._next_run = _check_seed(seed, "seed")
             self.action_space.seed(self._next_run)
-
-    @property
-    def fidelity(self):
-        return self._env.fidelity
-
-    @property
-    def steps_per_episode(self):
-        return self._env.steps_per_episode
-
-    @property
-    def moves(self):
-        """The names of the discrete actions, by index."""
-        return list(self._env.actions)
 
     def reset(self, *, seed=None, options=None):
         if GYMNASIUM:

@@ -5,7 +5,7 @@ import os
 import numpy as np
 
 from . import _rlpos
-from .env import _MAX_SEED, _check_seed, override_texts
+from .env import _MAX_SEED, WrappedEnvProperties, _check_seed, override_texts
 from .spaces import Box, Discrete
 
 try:
@@ -17,7 +17,7 @@ except ImportError:  # everything works the same without it
     PETTINGZOO = False
 
 
-class ParallelUavEnv(pettingzoo.ParallelEnv if PETTINGZOO else object):
+class ParallelUavEnv(WrappedEnvProperties, pettingzoo.ParallelEnv if PETTINGZOO else object):
     """The UAVs of a scenario as agents that all move at once in each step, one decision
     interval per step (packet fidelity: ns-3 runs it; analytic: the analytic model).
 
@@ -78,19 +78,6 @@ class ParallelUavEnv(pettingzoo.ParallelEnv if PETTINGZOO else object):
             self._next_run = _check_seed(seed, "seed")
             for u, agent in enumerate(self.possible_agents):
                 self.action_spaces[agent].seed((self._next_run + u) % (_MAX_SEED + 1))
-
-    @property
-    def fidelity(self):
-        return self._env.fidelity
-
-    @property
-    def steps_per_episode(self):
-        return self._env.steps_per_episode
-
-    @property
-    def moves(self):
-        """The names of the discrete actions, by index."""
-        return list(self._env.actions)
 
     @property
     def num_agents(self):
