@@ -1,7 +1,7 @@
-"""rlpos.make_vec against Gymnasium itself, where gymnasium is importable (Debian packages none,
-so CI skips these; test_vector_env.py checks the same contract without it): it is a
-gymnasium.vector.VectorEnv, Gymnasium's vector wrappers run on it, and it gives what
-gymnasium.vector.SyncVectorEnv over rlpos.make gives for the same seeds and actions."""
+"""rlpos.make_vec against Gymnasium itself, where gymnasium is importable. Debian packages none,
+so CMake registers this suite only where it imports; test_vector_env.py checks the same contract
+without it. It is a gymnasium.vector.VectorEnv, Gymnasium's vector wrappers run on it, and it gives
+what gymnasium.vector.SyncVectorEnv over rlpos.make gives for the same seeds and actions."""
 import warnings
 
 import numpy as np
