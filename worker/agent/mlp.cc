@@ -26,6 +26,67 @@ void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to
     target[i].copy_(source[i]);
 }
 
+namespace {
+
+// The Linear layers of a MakeMlp network, checked against a DenseNetwork's widths.
+std::vector<torch::nn::Linear> LinearLayers(const torch::nn::Sequential& net,
+                                            const DenseNetwork& dense) {
+  std::vector<torch::nn::Linear> layers;
+  for (const auto& module : net->children()) {
+    if (auto linear = std::dynamic_pointer_cast<torch::nn::LinearImpl>(module))
+      layers.emplace_back(linear);
+  }
+  bool same = static_cast<int>(layers.size()) == dense.LayerCount();
+  for (int l = 0; same && l < dense.LayerCount(); ++l) {
+    const auto& w = layers[static_cast<std::size_t>(l)]->weight;
+    same = w.size(0) == dense.LayerOutputs(l) && w.size(1) == dense.LayerInputs(l);
+  }
+  if (!same)
+    throw std::invalid_argument("a torch network and a dense network of other widths");
+  return layers;
+}
+
+}  // namespace
+
+void CopyParameters(const torch::nn::Sequential& from, DenseNetwork& to) {
+  const auto layers = LinearLayers(from, to);
+  std::vector<float>& p = to.Parameters();
+  for (int l = 0; l < to.LayerCount(); ++l) {
+    const torch::Tensor w = layers[static_cast<std::size_t>(l)]->weight.detach().contiguous();
+    const torch::Tensor b = layers[static_cast<std::size_t>(l)]->bias.detach().contiguous();
+    const auto wa = w.accessor<float, 2>();
+    const int in = to.LayerInputs(l);
+    const int out = to.LayerOutputs(l);
+    for (int i = 0; i < in; ++i) {
+      for (int o = 0; o < out; ++o)
+        p[to.WeightOffset(l) + static_cast<std::size_t>(i * out + o)] = wa[o][i];
+    }
+    std::copy(b.data_ptr<float>(), b.data_ptr<float>() + out,
+              p.begin() + static_cast<long>(to.BiasOffset(l)));
+  }
+}
+
+void CopyParameters(const DenseNetwork& from, torch::nn::Sequential& to) {
+  const auto layers = LinearLayers(to, from);
+  const std::vector<float>& p = from.Parameters();
+  torch::NoGradGuard no_grad;
+  for (int l = 0; l < from.LayerCount(); ++l) {
+    const int in = from.LayerInputs(l);
+    const int out = from.LayerOutputs(l);
+    torch::Tensor w = torch::empty({out, in});
+    auto wa = w.accessor<float, 2>();
+    for (int i = 0; i < in; ++i) {
+      for (int o = 0; o < out; ++o)
+        wa[o][i] = p[from.WeightOffset(l) + static_cast<std::size_t>(i * out + o)];
+    }
+    torch::Tensor b = torch::empty({out});
+    std::copy(p.begin() + static_cast<long>(from.BiasOffset(l)),
+              p.begin() + static_cast<long>(from.BiasOffset(l)) + out, b.data_ptr<float>());
+    layers[static_cast<std::size_t>(l)]->weight.copy_(w);
+    layers[static_cast<std::size_t>(l)]->bias.copy_(b);
+  }
+}
+
 void KeptNetworks::Keep(const std::vector<torch::nn::Sequential>& networks) {
   torch::NoGradGuard no_grad;
   parameters_.clear();

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "worker/agent/dense_network.h"
 #include "worker/agent/libtorch.h"
 #include "worker/gym/spaces.h"
 
@@ -13,6 +14,10 @@ namespace rlpos {
 torch::nn::Sequential MakeMlp(const std::vector<int>& hidden, int in, int out);
 
 void CopyParameters(const torch::nn::Sequential& from, torch::nn::Sequential& to);
+// Between a MakeMlp network and a DenseNetwork of the same widths (std::invalid_argument if they
+// differ): libtorch keeps initialising, saving and loading the networks a DenseNetwork computes.
+void CopyParameters(const torch::nn::Sequential& from, DenseNetwork& to);
+void CopyParameters(const DenseNetwork& from, torch::nn::Sequential& to);
 // to <- tau * from + (1 - tau) * to.
 void SoftUpdate(const torch::nn::Sequential& from, torch::nn::Sequential& to, double tau);
 

@@ -6,8 +6,11 @@
 #include <random>
 #include <stdexcept>
 
+#include "worker/agent/dense_network.h"
+#include "worker/agent/flat_adam.h"
 #include "worker/agent/libtorch.h"
 #include "worker/agent/mlp.h"
+#include "worker/agent/ppo_objective.h"
 #include "worker/agent/running_moments.h"
 
 namespace rlpos {
@@ -24,12 +27,18 @@ struct PpoAgent::Impl {
   PpoSpec ppo;
   int observation_dim;
   int action_count;
+  // libtorch initialises, saves and loads the networks; DenseNetwork computes with them
+  // (dense_network.h says why). torch's copies are brought up to date before a save.
   torch::nn::Sequential actor{nullptr};
   torch::nn::Sequential critic{nullptr};
-  std::unique_ptr<torch::optim::Adam> optimizer;
+  DenseNetwork actor_net;
+  DenseNetwork critic_net;
+  FlatAdam actor_adam;
+  FlatAdam critic_adam;
   std::mt19937_64 rng;
   RunningMoments reward_moments;
-  KeptNetworks kept;
+  std::vector<float> kept_actor;  // KeepPolicy's copy of the parameters
+  std::vector<float> kept_critic;
 
   // The rollout: what Act saw and chose, then what Observe was told.
   std::vector<Transition> rollout;
@@ -44,63 +53,100 @@ struct PpoAgent::Impl {
   std::int64_t planned_updates = 0;  // rollouts in the training; 0: no annealing
   std::int64_t done_updates = 0;     // rollouts learned from so far
 
+  static std::vector<int> Widths(int in, const std::vector<int>& hidden, int out) {
+    std::vector<int> widths{in};
+    widths.insert(widths.end(), hidden.begin(), hidden.end());
+    widths.push_back(out);
+    return widths;
+  }
+
   Impl(const AgentSpec& s, int obs_dim, int actions, std::int64_t training_steps)
       : spec(s),
         ppo(s.ppo),
         observation_dim(obs_dim),
         action_count(actions),
+        actor_net(Widths(obs_dim, s.hidden, actions)),
+        critic_net(Widths(obs_dim, s.hidden, 1)),
+        actor_adam(actor_net.Parameters().size(), s.ppo.learning_rate, 1e-5),
+        critic_adam(critic_net.Parameters().size(), s.ppo.learning_rate, 1e-5),
         rng(s.seed),
         rollout_size(std::int64_t{s.ppo.rollout_steps} * s.ppo.num_envs) {
     if (ppo.anneal_learning_rate && training_steps > 0)
       planned_updates = std::max<std::int64_t>(1, training_steps / rollout_size);
-    torch::manual_seed(s.seed);  // weight initialisation
+    torch::manual_seed(s.seed);  // weight initialisation: libtorch's, as before
     actor = MakeMlp(s.hidden, obs_dim, actions);
     critic = MakeMlp(s.hidden, obs_dim, 1);
-    std::vector<torch::Tensor> parameters = actor->parameters();
-    for (const auto& p : critic->parameters())
-      parameters.push_back(p);
-    optimizer = std::make_unique<torch::optim::Adam>(
-        parameters, torch::optim::AdamOptions(ppo.learning_rate).eps(1e-5));
+    CopyParameters(actor, actor_net);
+    CopyParameters(critic, critic_net);
   }
 
-  torch::Tensor Observations(bool next) const {
-    return StackRows(
-        rollout.size(), observation_dim, [&](std::size_t r) -> const auto& {
-          return next ? rollout[r].next_observation : rollout[r].observation;
-        });
+  // rows x observation_dim, row-major, of the rollout's observations (or next observations).
+  std::vector<float> Observations(bool next) const {
+    std::vector<float> rows;
+    rows.reserve(rollout.size() * static_cast<std::size_t>(observation_dim));
+    for (const Transition& t : rollout) {
+      const std::vector<float>& row = next ? t.next_observation : t.observation;
+      rows.insert(rows.end(), row.begin(), row.begin() + observation_dim);
+    }
+    return rows;
   }
 
-  // Advantages by GAE(lambda). A truncated episode bootstraps from the value of its last next
-  // observation; a terminal one from 0; no advantage is carried across an episode's end, nor
-  // from one env's transitions to another's (the last of each env's is cut as the rollout's).
-  std::pair<torch::Tensor, torch::Tensor> AdvantagesAndReturns(const torch::Tensor& obs,
-                                                               const torch::Tensor& next) {
-    torch::NoGradGuard no_grad;
-    const torch::Tensor values = critic->forward(obs).squeeze(1).contiguous();
-    const torch::Tensor next_values = critic->forward(next).squeeze(1).contiguous();
+  // The actor's logits for `rows` observations, with kForbidden where a row's mask forbids the
+  // action (a mask that allows nothing counts as no mask, as MaskPenalty).
+  void Logits(const float* observations, int rows, const ActionMask* const* row_masks,
+              std::vector<float>& logits) {
+    logits.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(action_count));
+    actor_net.Forward(observations, rows, logits.data());
+    for (int r = 0; r < rows; ++r) {
+      const ActionMask& mask = *row_masks[r];
+      if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t a) { return a != 0; }))
+        continue;
+      for (int a = 0; a < action_count; ++a) {
+        if (!Allowed(mask, a))
+          logits[static_cast<std::size_t>(r * action_count + a)] += kForbidden;
+      }
+    }
+  }
+
+  // The critic's value of each of `rows` observations.
+  std::vector<float> Values(const std::vector<float>& observations, int rows) {
+    std::vector<float> values(static_cast<std::size_t>(rows));
+    critic_net.Forward(observations.data(), rows, values.data());
+    return values;
+  }
+
+  // Advantages by GAE(lambda), and the returns (advantages + values). A truncated episode
+  // bootstraps from the value of its last next observation; a terminal one from 0; no advantage
+  // is carried across an episode's end, nor from one env's transitions to another's (the last
+  // of each env's is cut as the rollout's).
+  std::pair<std::vector<float>, std::vector<float>> AdvantagesAndReturns(
+      const std::vector<float>& obs, const std::vector<float>& next) {
     const long n = static_cast<long>(rollout.size());
-    torch::Tensor advantages = torch::empty({n});
-    auto adv = advantages.accessor<float, 1>();
-    auto v = values.accessor<float, 1>();
-    auto nv = next_values.accessor<float, 1>();
+    const std::vector<float> v = Values(obs, static_cast<int>(n));
+    const std::vector<float> nv = Values(next, static_cast<int>(n));
+    std::vector<float> adv(static_cast<std::size_t>(n));
     const int stream_count = 1 + *std::max_element(streams.begin(), streams.end());
     std::vector<float> carried_of(static_cast<std::size_t>(stream_count), 0.0f);
     std::vector<bool> seen(static_cast<std::size_t>(stream_count), false);
     for (long t = n - 1; t >= 0; --t) {
-      const Transition& tr = rollout[static_cast<std::size_t>(t)];
-      const auto stream = static_cast<std::size_t>(streams[static_cast<std::size_t>(t)]);
+      const auto i = static_cast<std::size_t>(t);
+      const Transition& tr = rollout[i];
+      const auto stream = static_cast<std::size_t>(streams[i]);
       float& carried = carried_of[stream];
       const float reward =
           spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
-      const float bootstrap = tr.terminal ? 0.0f : static_cast<float>(ppo.gamma) * nv[t];
-      const float delta = reward + bootstrap - v[t];
+      const float bootstrap = tr.terminal ? 0.0f : static_cast<float>(ppo.gamma) * nv[i];
+      const float delta = reward + bootstrap - v[i];
       if (tr.episode_end || !seen[stream])
         carried = 0.0f;
       seen[stream] = true;
       carried = delta + static_cast<float>(ppo.gamma * ppo.gae_lambda) * carried;
-      adv[t] = carried;
+      adv[i] = carried;
     }
-    return {advantages, advantages + values};
+    std::vector<float> returns(static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < returns.size(); ++i)
+      returns[i] = adv[i] + v[i];
+    return {adv, returns};
   }
 
   // Linear decay to 0 over the planned rollouts, as CleanRL's anneal_lr: the first rollout
@@ -110,8 +156,8 @@ struct PpoAgent::Impl {
       return;
     const double left = std::max(
         0.0, 1.0 - static_cast<double>(done_updates) / static_cast<double>(planned_updates));
-    for (auto& group : optimizer->param_groups())
-      static_cast<torch::optim::AdamOptions&>(group.options()).lr(ppo.learning_rate * left);
+    actor_adam.SetLearningRate(ppo.learning_rate * left);
+    critic_adam.SetLearningRate(ppo.learning_rate * left);
   }
 
   // An action by the probabilities p of the actions: with explore a sample (inverse CDF with
@@ -151,53 +197,84 @@ struct PpoAgent::Impl {
     streams.push_back(stream);
   }
 
+  // Scales both networks' gradients to a joint norm of at most max_grad_norm, as
+  // torch::nn::utils::clip_grad_norm_ does over their parameters.
+  void ClipGradients() {
+    double squares = 0.0;
+    for (const DenseNetwork* net : {&actor_net, &critic_net}) {
+      for (float g : net->Gradients())
+        squares += static_cast<double>(g) * g;
+    }
+    const double coefficient = ppo.max_grad_norm / (std::sqrt(squares) + 1e-6);
+    if (coefficient >= 1.0)
+      return;
+    const auto scale = static_cast<float>(coefficient);
+    for (DenseNetwork* net : {&actor_net, &critic_net}) {
+      for (float& g : net->Gradients())
+        g *= scale;
+    }
+  }
+
   // The mean loss of the minibatch updates.
   double Learn() {
     AnnealLearningRate();
     ++done_updates;
-    const torch::Tensor obs = Observations(false);
+    const std::vector<float> obs = Observations(false);
     const auto [advantages, returns] = AdvantagesAndReturns(obs, Observations(true));
     const long n = static_cast<long>(rollout.size());
-    torch::Tensor actions = torch::empty({n}, torch::kLong);
-    auto action_at = actions.accessor<std::int64_t, 1>();  // not tensor[r] = x: a tensor op each
+    std::vector<int> actions(static_cast<std::size_t>(n));
     for (long r = 0; r < n; ++r)
-      action_at[r] = rollout[static_cast<std::size_t>(r)].action;
-    const torch::Tensor old_log_probs = torch::tensor(log_probs);
+      actions[static_cast<std::size_t>(r)] = rollout[static_cast<std::size_t>(r)].action;
 
     std::vector<long> order(static_cast<std::size_t>(n));
     std::iota(order.begin(), order.end(), 0L);
     const long size = std::max(1L, n / ppo.minibatches);
+    const auto dim = static_cast<std::size_t>(observation_dim);
+    // One minibatch's rows, gathered.
+    std::vector<float> batch_obs(static_cast<std::size_t>(size) * dim);
+    std::vector<const ActionMask*> batch_masks(static_cast<std::size_t>(size));
+    std::vector<int> batch_actions(static_cast<std::size_t>(size));
+    std::vector<float> batch_old(static_cast<std::size_t>(size));
+    std::vector<float> batch_adv(static_cast<std::size_t>(size));
+    std::vector<float> batch_returns(static_cast<std::size_t>(size));
+    std::vector<float> logits;
+    std::vector<float> values(static_cast<std::size_t>(size));
+    const PpoCoefficients coefficients{ppo.clip, ppo.entropy_coefficient, ppo.value_coefficient};
     double loss_sum = 0.0;
     int updates = 0;
     for (int epoch = 0; epoch < ppo.epochs; ++epoch) {
       std::shuffle(order.begin(), order.end(), rng);
       for (long start = 0; start + size <= n; start += size) {
-        const std::vector<long> chosen(order.begin() + start, order.begin() + start + size);
-        const torch::Tensor index = torch::tensor(chosen, torch::kLong);
-        std::vector<const ActionMask*> batch_masks;
-        for (long i : chosen)
-          batch_masks.push_back(&masks[static_cast<std::size_t>(i)]);
-        const torch::Tensor logits = actor->forward(obs.index_select(0, index)) +
-                                     MaskPenalty(batch_masks, action_count, kForbidden);
-        const torch::Tensor log_p = torch::log_softmax(logits, 1);
-        const torch::Tensor taken =
-            log_p.gather(1, actions.index_select(0, index).unsqueeze(1)).squeeze(1);
-        const torch::Tensor entropy = -(log_p.exp() * log_p).sum(1).mean();
-        torch::Tensor adv = advantages.index_select(0, index);
-        adv = (adv - adv.mean()) / (adv.std() + 1e-8);
-        const torch::Tensor ratio = (taken - old_log_probs.index_select(0, index)).exp();
-        const torch::Tensor policy_loss =
-            torch::max(-adv * ratio, -adv * ratio.clamp(1.0 - ppo.clip, 1.0 + ppo.clip)).mean();
-        const torch::Tensor value = critic->forward(obs.index_select(0, index)).squeeze(1);
-        const torch::Tensor value_loss =
-            0.5 * (value - returns.index_select(0, index)).pow(2).mean();
-        const torch::Tensor loss =
-            policy_loss - ppo.entropy_coefficient * entropy + ppo.value_coefficient * value_loss;
-        optimizer->zero_grad();
-        loss.backward();
-        torch::nn::utils::clip_grad_norm_(optimizer->param_groups()[0].params(), ppo.max_grad_norm);
-        optimizer->step();
-        loss_sum += loss.item<double>();
+        for (long k = 0; k < size; ++k) {
+          const auto i = static_cast<std::size_t>(order[static_cast<std::size_t>(start + k)]);
+          const auto row = static_cast<std::size_t>(k);
+          std::copy(obs.begin() + static_cast<long>(i * dim),
+                    obs.begin() + static_cast<long>((i + 1) * dim),
+                    batch_obs.begin() + static_cast<long>(row * dim));
+          batch_masks[row] = &masks[i];
+          batch_actions[row] = actions[i];
+          batch_old[row] = log_probs[i];
+          batch_adv[row] = advantages[i];
+          batch_returns[row] = returns[i];
+        }
+        const int rows = static_cast<int>(size);
+        Logits(batch_obs.data(), rows, batch_masks.data(), logits);
+        critic_net.Forward(batch_obs.data(), rows, values.data());
+        const PpoMinibatch minibatch{rows,
+                                     action_count,
+                                     logits.data(),
+                                     values.data(),
+                                     batch_actions.data(),
+                                     batch_old.data(),
+                                     batch_adv.data(),
+                                     batch_returns.data()};
+        const PpoObjective objective = PpoLossAndGradients(minibatch, coefficients);
+        actor_net.Backward(objective.d_logits.data());
+        critic_net.Backward(objective.d_values.data());
+        ClipGradients();
+        actor_adam.Step(actor_net.Parameters(), actor_net.Gradients());
+        critic_adam.Step(critic_net.Parameters(), critic_net.Gradients());
+        loss_sum += objective.loss;
         ++updates;
       }
     }
@@ -206,6 +283,19 @@ struct PpoAgent::Impl {
     log_probs.clear();
     streams.clear();
     return loss_sum / std::max(updates, 1);
+  }
+
+  // The policy's action probabilities of `rows` observations (row-major), masked.
+  std::vector<float> Probabilities(const float* observations, int rows,
+                                   const ActionMask* const* row_masks) {
+    std::vector<float> logits;
+    Logits(observations, rows, row_masks, logits);
+    std::vector<float> p(logits.size());
+    for (int r = 0; r < rows; ++r) {
+      Softmax(logits.data() + static_cast<std::ptrdiff_t>(r) * action_count, action_count,
+              p.data() + static_cast<std::ptrdiff_t>(r) * action_count);
+    }
+    return p;
   }
 };
 
@@ -224,16 +314,14 @@ std::string PpoAgent::Algorithm() const {
 
 std::vector<float> PpoAgent::Probabilities(const std::vector<float>& observation,
                                            const ActionMask& mask) const {
-  torch::NoGradGuard no_grad;
-  const torch::Tensor logits = impl_->actor->forward(Row(observation)) +
-                               MaskPenalty({&mask}, impl_->action_count, kForbidden);
-  const torch::Tensor p = torch::softmax(logits, 1).squeeze(0).contiguous();
-  return std::vector<float>(p.data_ptr<float>(), p.data_ptr<float>() + p.numel());
+  if (static_cast<int>(observation.size()) < impl_->observation_dim)
+    throw std::invalid_argument("PpoAgent: an observation shorter than the network's input");
+  const ActionMask* row_mask = &mask;
+  return impl_->Probabilities(observation.data(), 1, &row_mask);
 }
 
 double PpoAgent::LearningRate() const {
-  return static_cast<torch::optim::AdamOptions&>(impl_->optimizer->param_groups()[0].options())
-      .lr();
+  return impl_->actor_adam.LearningRate();
 }
 
 int PpoAgent::Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) {
@@ -254,25 +342,25 @@ std::vector<int> PpoAgent::ActBatch(const std::vector<std::vector<float>>& obser
   const auto mask_of = [&](std::size_t r) -> const ActionMask& {
     return masks.empty() ? kNoMask : masks[r];
   };
-  torch::Tensor p;
-  {
-    torch::NoGradGuard no_grad;
-    std::vector<const ActionMask*> mask_rows;
-    for (std::size_t r = 0; r < rows; ++r)
-      mask_rows.push_back(&mask_of(r));
-    const torch::Tensor logits =
-        m.actor->forward(StackRows(
-            rows,
-            m.observation_dim, [&](std::size_t r) -> const auto& { return observations[r]; })) +
-        MaskPenalty(mask_rows, m.action_count, kForbidden);
-    p = torch::softmax(logits, 1).contiguous();
+  std::vector<float> stacked;
+  stacked.reserve(rows * static_cast<std::size_t>(m.observation_dim));
+  std::vector<const ActionMask*> mask_rows;
+  for (std::size_t r = 0; r < rows; ++r) {
+    if (static_cast<int>(observations[r].size()) < m.observation_dim)
+      throw std::invalid_argument("ActBatch: an observation shorter than the network's input");
+    stacked.insert(stacked.end(), observations[r].begin(),
+                   observations[r].begin() + m.observation_dim);
+    mask_rows.push_back(&mask_of(r));
   }
+  const std::vector<float> p =
+      rows == 0 ? std::vector<float>{}
+                : m.Probabilities(stacked.data(), static_cast<int>(rows), mask_rows.data());
   m.pending_masks.clear();
   m.pending_log_probs.clear();
   std::vector<int> actions(rows);
-  const float* row = p.data_ptr<float>();
-  for (std::size_t r = 0; r < rows; ++r, row += m.action_count)
-    actions[r] = m.Choose(row, mask_of(r), true);
+  for (std::size_t r = 0; r < rows; ++r)
+    actions[r] =
+        m.Choose(p.data() + r * static_cast<std::size_t>(m.action_count), mask_of(r), true);
   return actions;
 }
 
@@ -298,15 +386,21 @@ std::optional<double> PpoAgent::ObserveBatch(std::vector<Transition> transitions
 }
 
 void PpoAgent::KeepPolicy() {
-  impl_->kept.Keep({impl_->actor, impl_->critic});
+  impl_->kept_actor = impl_->actor_net.Parameters();
+  impl_->kept_critic = impl_->critic_net.Parameters();
 }
 
 void PpoAgent::RestoreKeptPolicy() {
-  impl_->kept.Restore({impl_->actor, impl_->critic});
+  if (impl_->kept_actor.empty())
+    throw std::logic_error("no policy kept to restore");
+  impl_->actor_net.Parameters() = impl_->kept_actor;
+  impl_->critic_net.Parameters() = impl_->kept_critic;
 }
 
 void PpoAgent::Save(const std::string& directory) const {
   std::filesystem::create_directories(directory);
+  CopyParameters(impl_->actor_net, impl_->actor);
+  CopyParameters(impl_->critic_net, impl_->critic);
   torch::save(impl_->actor, directory + "/policy.pt");
   torch::save(impl_->critic, directory + "/value.pt");
 }
@@ -314,10 +408,13 @@ void PpoAgent::Save(const std::string& directory) const {
 void PpoAgent::Load(const std::string& directory) {
   LoadNetwork(directory + "/policy.pt", impl_->actor, impl_->spec.hidden, impl_->observation_dim,
               impl_->action_count);
+  CopyParameters(impl_->actor, impl_->actor_net);
   // Acting needs only the actor: a policy exported from a campaign's artifacts has no value.pt.
   const std::string value = directory + "/value.pt";
-  if (std::filesystem::exists(value))
+  if (std::filesystem::exists(value)) {
     LoadNetwork(value, impl_->critic, impl_->spec.hidden, impl_->observation_dim, 1);
+    CopyParameters(impl_->critic, impl_->critic_net);
+  }
 }
 
 }  // namespace rlpos

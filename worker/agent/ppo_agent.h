@@ -1,5 +1,6 @@
 #pragma once
-// Proximal Policy Optimization (libtorch) on the discrete moves: separate actor and critic MLPs,
+// Proximal Policy Optimization on the discrete moves: separate actor and critic MLPs (initialised,
+// saved and loaded by libtorch, computed in plain float: dense_network.h says why),
 // the clipped surrogate objective, generalised advantage estimation, an entropy bonus and
 // gradient-norm clipping, updated every agent.ppo.rollout_steps x num_envs transitions (rollouts
 // of rollout_steps from each of num_envs envs, as CleanRL's). Seeded: the same
