@@ -3,13 +3,14 @@
 side: per scenario and training seed, `rlpos-sim train --algorithm ppo` with each num_envs in
 turn (analytic fidelity, the defaults otherwise), its wall and CPU seconds (the child's user +
 system time: the better guide on a shared machine) and its reward against the oracle's best on
-the move grid. Prints one row per training, then per num_envs: the ratio's median, worst and
-runs >= 0.95, and the times' median and worst, with the speed-up against the first num_envs.
-Asserts nothing.
+the move grid. Prints one row per training, then per variant: the ratio's median, worst and
+runs >= 0.95, and the times' median and worst, with the speed-up against the first variant.
+--baseline-build DIR adds a first variant, num_envs 1 with another build's rlpos-sim (an older
+commit's, to compare two builds' trainings pair by pair in one run). Asserts nothing.
 
   scripts/bench_ppo_vector.py --scenarios DIR|FILE,... [--build DIR] [--seeds 1-3]
-                              [--num-envs 1,8] [--jobs 1] [--set PATH=VALUE ...]
-                              [--oracle-cache FILE]
+                              [--num-envs 1,8] [--baseline-build DIR] [--jobs 1]
+                              [--set PATH=VALUE ...] [--oracle-cache FILE]
 
 The oracle is `rlpos-sim position --positioner oracle`: the best analytic reward of its
 candidates (the top of the analytic grid search). --oracle-cache keeps them between runs, keyed
@@ -51,9 +52,9 @@ def oracle_reward(sim, scenario):
     return max(c["analytic_reward"] for c in result["candidates"])
 
 
-def train(sim, scenario, seed, num_envs, overrides, work):
+def train(sim, scenario, seed, num_envs, overrides, work, label):
     name = os.path.splitext(os.path.basename(scenario))[0]
-    out = os.path.join(work, "%s-%d-n%d" % (name, seed, num_envs))
+    out = os.path.join(work, "%s-%d-%s" % (name, seed, label))
     result, wall, cpu = run([sim, "train", "--scenario", scenario, "--fidelity", "analytic",
                                "--algorithm", "ppo", "--seed", str(seed), "--out", out,
                                "--json", "--set", "agent.ppo.num_envs=%d" % num_envs]
@@ -67,17 +68,22 @@ def main():
     parser.add_argument("--scenarios", required=True)
     parser.add_argument("--seeds", default="1-3")
     parser.add_argument("--num-envs", default="1,8")
+    parser.add_argument("--baseline-build", metavar="DIR",
+                        help="first variant: num_envs 1 with this build's rlpos-sim")
     parser.add_argument("--jobs", type=int, default=1, help="trainings at a time")
     parser.add_argument("--set", action="append", default=[], metavar="PATH=VALUE")
     parser.add_argument("--oracle-cache", metavar="FILE")
     args = parser.parse_args()
     sim = os.path.join(args.build, "bin", "rlpos-sim")
-    variants = [int(v) for v in args.num_envs.split(",")]
+    # (label, rlpos-sim, num_envs)
+    variants = [("n%d" % int(v), sim, int(v)) for v in args.num_envs.split(",")]
+    if args.baseline_build:
+        variants.insert(0, ("baseline", os.path.join(args.baseline_build, "bin", "rlpos-sim"), 1))
     scenarios = scenario_files(args.scenarios)
     overrides = [a for o in args.set for a in ("--set", o)]
     print("load average at start: %.2f %.2f %.2f" % os.getloadavg())
-    print("%-22s %4s %5s %8s %8s %6s %7s %7s" %
-          ("scenario", "seed", "envs", "reward", "oracle", "ratio", "wall_s", "cpu_s"))
+    print("%-22s %4s %8s %8s %8s %6s %7s %7s" %
+          ("scenario", "seed", "variant", "reward", "oracle", "ratio", "wall_s", "cpu_s"))
     rows = []
     with tempfile.TemporaryDirectory() as work, \
             concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
@@ -94,34 +100,36 @@ def main():
             return cache[key(scenario)]
 
         oracles = {s: pool.submit(cached_oracle, s) for s in scenarios}
-        runs = [(s, seed, n) for s in scenarios for seed in seeds_of(args.seeds)
-                for n in variants]
-        futures = [pool.submit(train, sim, s, seed, n, overrides, work) for s, seed, n in runs]
-        for (scenario, seed, n), future in zip(runs, futures):
+        runs = [(s, seed, v) for s in scenarios for seed in seeds_of(args.seeds)
+                for v in variants]
+        futures = [pool.submit(train, v[1], s, seed, v[2], overrides, work, v[0])
+                   for s, seed, v in runs]
+        for (scenario, seed, (label, _, n)), future in zip(runs, futures):
             reward, wall, cpu = future.result()
             oracle = oracles[scenario].result()
             if args.oracle_cache:
                 save_cache(args.oracle_cache, cache)
             row = {"scenario": os.path.splitext(os.path.basename(scenario))[0], "seed": seed,
-                   "envs": n, "ratio": reward / oracle, "wall": wall, "cpu": cpu}
+                   "variant": label, "ratio": reward / oracle, "wall": wall, "cpu": cpu}
             rows.append(row)
-            print("%-22s %4d %5d %8.4f %8.4f %6.3f %7.1f %7.1f" %
-                  (row["scenario"], seed, n, reward, oracle, row["ratio"], wall, cpu), flush=True)
+            print("%-22s %4d %8s %8.4f %8.4f %6.3f %7.1f %7.1f" %
+                  (row["scenario"], seed, label, reward, oracle, row["ratio"], wall, cpu),
+                  flush=True)
     print("load average at end: %.2f %.2f %.2f" % os.getloadavg())
-    print("\n| num_envs | runs | median ratio | worst ratio | runs >= 0.95 | median wall s "
+    print("\n| variant | runs | median ratio | worst ratio | runs >= 0.95 | median wall s "
           "| worst wall s | median CPU s | worst CPU s | CPU speed-up (median / worst) |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     first = None
-    for n in variants:
-        group = [r for r in rows if r["envs"] == n]
+    for label, _, _ in variants:
+        group = [r for r in rows if r["variant"] == label]
         ratios = sorted(r["ratio"] for r in group)
         walls = sorted(r["wall"] for r in group)
         cpus = sorted(r["cpu"] for r in group)
         if first is None:
             first = {(r["scenario"], r["seed"]): r["cpu"] for r in group}
         speedups = sorted(first[(r["scenario"], r["seed"])] / r["cpu"] for r in group)
-        print("| %d | %d | %.3f | %.3f | %d | %.1f | %.1f | %.1f | %.1f | %.2f / %.2f |" % (
-            n, len(group), quantile(ratios, 0.5), ratios[0], sum(v >= 0.95 for v in ratios),
+        print("| %s | %d | %.3f | %.3f | %d | %.1f | %.1f | %.1f | %.1f | %.2f / %.2f |" % (
+            label, len(group), quantile(ratios, 0.5), ratios[0], sum(v >= 0.95 for v in ratios),
             quantile(walls, 0.5), walls[-1], quantile(cpus, 0.5), cpus[-1],
             quantile(speedups, 0.5), speedups[0]))
 
