@@ -15,6 +15,7 @@
 
 #include "common/config/config_error.h"
 #include "common/scenario/number_text.h"
+#include "common/scenario/scenario_parser.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/environment/uav_network.h"
 #include "worker/positioners/positioners.h"
@@ -554,6 +555,10 @@ PYBIND11_MODULE(_rlpos, m) {
       .def_property_readonly("fidelity", [](const HeldEnv& e) { return e.scenario().env.fidelity; })
       .def_property_readonly("agent_seed", [](const HeldEnv& e) { return e.scenario().agent.seed; })
       .def_property_readonly("actions", [](const HeldEnv& e) { return e.scenario().env.actions; })
+      // The scenario as loaded (file, overrides, defaults), every field explicit: what
+      // rlpos-sim train writes as a policy folder's scenario.json.
+      .def_property_readonly("scenario_json",
+                             [](const HeldEnv& e) { return ToJson(e.scenario()).dump(); })
       .def_property_readonly("closed", &HeldEnv::closed)
       .def("close", &HeldEnv::Close);
   py::class_<PyEnv, HeldEnv>(m, "Env")
