@@ -130,3 +130,26 @@ def test_a_continuous_env_is_refused(scenario_b, tmp_path):
             rlpos.save_torchscript_policy(nn.Linear(4, 3), env, tmp_path / "policy")
     finally:
         env.close()
+
+
+class Unscriptable(nn.Module):
+    """A forward TorchScript cannot compile (a Python callable attribute): it is traced."""
+
+    def __init__(self, inner):
+        super().__init__()
+        self.inner = inner
+        self.shift = lambda x: x - 1.0
+
+    def forward(self, x):
+        return self.inner(self.shift(x))
+
+
+def test_a_module_that_does_not_script_is_traced(env, tmp_path):
+    module = Unscriptable(policy_for(env))
+    with pytest.raises(Exception):
+        torch.jit.script(module)
+    rlpos.save_torchscript_policy(module, env, tmp_path / "policy")
+    loaded = torch.jit.load(str(tmp_path / "policy" / "model.pt"))
+    x = torch.rand(3, 4) * 50
+    with torch.no_grad():
+        assert torch.equal(loaded(x), module(x))
