@@ -33,7 +33,7 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
   const PolicyFolder folder = ReadPolicyFolder(policy);
   RefuseContradiction(folder, options);
   // Training's own final evaluation episode: its scenario (fidelity and agent included), its
-  // run, from the baseline, greedy.
+  // run, from the baseline, greedy. A TorchScript policy flies in its scenario's env the same way.
   UavPositioningEnv env(folder.trained);
   if (folder.torchscript)
     return TorchScriptPlacement(folder, env);

@@ -38,14 +38,11 @@ Placement TorchScriptPlacement(const PolicyFolder& folder, UavPositioningEnv& en
            "actions (" + Join(folder.trained.env.actions) + ")");
   const std::string model = folder.dir + "/" + kTorchScriptModelFile;
   // The policy's problems are the model file's; the env's own errors pass as they are.
-  const auto blame_model = [&](const std::invalid_argument& e) {
-    return ConfigError("--policy", model + ": " + e.what());
-  };
   std::unique_ptr<TorchScriptPolicy> policy;
   try {
     policy = std::make_unique<TorchScriptPolicy>(model, m.observation_dim, m.action_count);
   } catch (const std::invalid_argument& e) {
-    throw blame_model(e);
+    throw ConfigError("--policy", model + ": " + e.what());
   }
   // The observation exactly as the Python binding gave it in training.
   const Float32Clip clip(observations);

@@ -145,6 +145,14 @@ TEST_F(TorchScriptFolder, DimsThatAreNotTheScenariosSpacesAreRefused) {
   WriteManifest(manifest);
   ExpectOneLineRefusal(Position(), ManifestFile(),
                        "/action_count: 6, but scenario.json's env has 7 actions");
+  // Trained with continuous actions, declared discrete.
+  WriteManifest(Manifest());
+  nlohmann::json scenario = nlohmann::json::parse(std::ifstream(dir_ / "scenario.json"));
+  scenario["env"]["action_space"] = "continuous";
+  scenario["agent"]["algorithm"] = "sac";
+  std::ofstream(dir_ / "scenario.json", std::ios::trunc) << scenario.dump(2);
+  ExpectOneLineRefusal(Position(), ManifestFile(),
+                       "/action_space: \"discrete\", but scenario.json says \"continuous\"");
 }
 
 TEST_F(TorchScriptFolder, AModelThatDoesNotLoadIsRefused) {
