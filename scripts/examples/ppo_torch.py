@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 """A short PPO in PyTorch on the rlpos env (analytic fidelity), in the single-file style of
 CleanRL: 10 episodes of 1,000 steps on scenario B, then the greedy flight's final position
-against the oracle's.
+against the oracle's. With --export DIR, the policy is also written as a TorchScript policy
+folder, and rlpos-sim flies it (position --positioner rl --policy DIR) to the same place.
 
   PYTHONPATH=build/python python3 scripts/examples/ppo_torch.py [--scenario FILE] [--seed N]
+      [--export DIR]
 """
 import argparse
+import json
 import os
+import subprocess
 import time
 
 import numpy as np
@@ -24,11 +28,30 @@ def mlp(inputs, outputs):
                          nn.Linear(32, outputs))
 
 
+class Exported(nn.Module):
+    """The actor on the env's own observations, as a TorchScript policy folder takes them: the
+    scaling onto [-1, 1] moves inside the module; the action mask stays rlpos-sim's."""
+
+    def __init__(self, actor, low, high):
+        super().__init__()
+        self.actor = actor
+        self.register_buffer("low", torch.as_tensor(low))
+        self.register_buffer("high", torch.as_tensor(high))
+
+    def forward(self, x):
+        return self.actor(2 * (x - self.low) / (self.high - self.low) - 1)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scenario", default=DEFAULT_SCENARIO)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--episodes", type=int, default=10)
+    parser.add_argument("--export", metavar="DIR",
+                        help="write the policy as a TorchScript policy folder and fly it with "
+                             "rlpos-sim")
+    parser.add_argument("--rlpos-sim", default=os.path.join(HERE, "..", "..", "build", "bin",
+                                                            "rlpos-sim"))
     args = parser.parse_args()
     torch.manual_seed(args.seed)
     rng = np.random.default_rng(args.seed)
@@ -77,17 +100,28 @@ def main():
                                                           info["position"]))
     train_s = time.monotonic() - started
 
-    obs, info = env.reset()  # greedy flight
+    # The greedy flight, on the run a policy folder's replay flies (the scenario's).
+    run = env.scenario["simulation"]["run"]
+    obs, info = env.reset(seed=run)
     done = False
     while not done:
         with torch.no_grad():
             action = int(torch.argmax(logits_of(scale(obs), mask_of(info))))
         obs, reward, terminated, truncated, info = env.step(action)
         done = terminated or truncated
+    if args.export:
+        rlpos.save_torchscript_policy(Exported(actor, low, high), env, args.export, eval_run=run)
     env.close()
     print("greedy final position %s: reward %.4f, oracle %s: %.4f (%.1f %%); trained in %.1f s"
           % (info["position"], reward, best["position"], best["analytic_reward"],
              100 * reward / best["analytic_reward"], train_s))
+    if args.export:
+        placed = json.loads(subprocess.run(
+            [args.rlpos_sim, "position", "--scenario", args.scenario, "--positioner", "rl",
+             "--policy", args.export, "--json"], check=True, capture_output=True,
+            text=True).stdout)
+        print("rlpos-sim position --policy %s: %s, reward %.4f" % (
+            args.export, tuple(placed["position"]), placed["reward"]))
 
 
 def learn(buffer, actor, critic, optimizer, logits_of, mean, std, gamma, lam, clip, ent_coef,

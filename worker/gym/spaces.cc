@@ -27,4 +27,20 @@ std::vector<float> BoxSpace::Normalise(const std::vector<double>& x) const {
   return out;
 }
 
+Float32Clip::Float32Clip(const BoxSpace& box)
+    : low_(box.low.begin(), box.low.end()), high_(box.high.begin(), box.high.end()) {}
+
+void Float32Clip::Apply(const std::vector<double>& x, float* out) const {
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const float v = static_cast<float>(x[i]);
+    out[i] = v < low_[i] ? low_[i] : (v > high_[i] ? high_[i] : v);  // NaN compares false
+  }
+}
+
+std::vector<float> Float32Clip::operator()(const std::vector<double>& x) const {
+  std::vector<float> out(x.size());
+  Apply(x, out.data());
+  return out;
+}
+
 }  // namespace rlpos

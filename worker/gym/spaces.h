@@ -29,4 +29,18 @@ struct BoxSpace {
   std::vector<float> Normalise(const std::vector<double>& x) const;
 };
 
+// An observation as the Python binding hands it out: float32, clipped to the space's bounds in
+// float32 (NaN stays NaN), as np.clip(np.asarray(x, np.float32), low, high) gives it. What a
+// policy trained through the binding saw, so what a policy exported from Python is fed.
+class Float32Clip {
+ public:
+  explicit Float32Clip(const BoxSpace& box);
+  // Writes x.size() floats to `out`.
+  void Apply(const std::vector<double>& x, float* out) const;
+  std::vector<float> operator()(const std::vector<double>& x) const;
+
+ private:
+  std::vector<float> low_, high_;
+};
+
 }  // namespace rlpos

@@ -15,6 +15,7 @@
 
 #include "common/config/config_error.h"
 #include "common/scenario/number_text.h"
+#include "common/scenario/scenario_parser.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/environment/uav_network.h"
 #include "worker/positioners/positioners.h"
@@ -120,25 +121,10 @@ py::dict InfoDict(const StepInfo& info, const ActionMask& mask) {
   return d;
 }
 
-// The observation space's bounds in float32, as the Python Box holds them.
-struct Float32Bounds {
-  std::vector<float> low, high;
-};
-
-Float32Bounds ToFloat32(const BoxSpace& box) {
-  return {std::vector<float>(box.low.begin(), box.low.end()),
-          std::vector<float>(box.high.begin(), box.high.end())};
-}
-
-// The observation as a float32 array clipped to the space, exactly as
-// np.clip(np.asarray(values, np.float32), low, high) gives it (NaN stays NaN).
-py::array_t<float> Observation(const std::vector<double>& values, const Float32Bounds& bounds) {
+// The observation as a float32 array clipped to the space (Float32Clip).
+py::array_t<float> Observation(const std::vector<double>& values, const Float32Clip& clip) {
   py::array_t<float> out(static_cast<py::ssize_t>(values.size()));
-  float* o = out.mutable_data();
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const float v = static_cast<float>(values[i]);
-    o[i] = std::isnan(v) ? v : std::min(std::max(v, bounds.low[i]), bounds.high[i]);
-  }
+  clip.Apply(values, out.mutable_data());
   return out;
 }
 
@@ -193,9 +179,8 @@ class HeldEnv {
 class PyEnv : public HeldEnv {
  public:
   PyEnv(const std::string& file, const std::vector<std::string>& overrides)
-      : HeldEnv(file, overrides, "a packet-level env", "rlpos: the env is closed") {
-    bounds_ = ToFloat32(Open().ObservationSpace());
-  }
+      : HeldEnv(file, overrides, "a packet-level env", "rlpos: the env is closed"),
+        clip_(Open().ObservationSpace()) {}
 
   py::tuple Reset(std::uint64_t seed, bool random_start) {
     const Outcome o = Run([&](UavPositioningEnv& env) {
@@ -204,7 +189,7 @@ class PyEnv : public HeldEnv {
       r.info = env.LastInfo();
       return r;
     });
-    return py::make_tuple(Observation(o.result.observation, bounds_),
+    return py::make_tuple(Observation(o.result.observation, clip_),
                           InfoDict(o.result.info, o.mask));
   }
 
@@ -257,11 +242,11 @@ class PyEnv : public HeldEnv {
   // Gymnasium's five values, in their final Python types.
   py::tuple Finish(const Outcome& o) const {
     const StepResult& r = o.result;
-    return py::make_tuple(Observation(r.observation, bounds_), r.reward, r.terminated, r.truncated,
+    return py::make_tuple(Observation(r.observation, clip_), r.reward, r.terminated, r.truncated,
                           InfoDict(r.info, o.mask));
   }
 
-  Float32Bounds bounds_;
+  Float32Clip clip_;
 };
 
 // N analytic envs stepped together (worker/vector_env), for rlpos.VectorEnv. Each call fills
@@ -570,6 +555,10 @@ PYBIND11_MODULE(_rlpos, m) {
       .def_property_readonly("fidelity", [](const HeldEnv& e) { return e.scenario().env.fidelity; })
       .def_property_readonly("agent_seed", [](const HeldEnv& e) { return e.scenario().agent.seed; })
       .def_property_readonly("actions", [](const HeldEnv& e) { return e.scenario().env.actions; })
+      // The scenario as loaded (file, overrides, defaults), every field explicit: what
+      // rlpos-sim train writes as a policy folder's scenario.json.
+      .def_property_readonly("scenario_json",
+                             [](const HeldEnv& e) { return ToJson(e.scenario()).dump(); })
       .def_property_readonly("closed", &HeldEnv::closed)
       .def("close", &HeldEnv::Close);
   py::class_<PyEnv, HeldEnv>(m, "Env")

@@ -1,5 +1,7 @@
 #include "worker/rl_commands/policy_folder.h"
 
+#include <filesystem>
+
 #include "common/config/config_error.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/agent/trainer.h"
@@ -39,6 +41,32 @@ void CheckAgrees(const nlohmann::json& result, const char* key, const std::strin
   }
 }
 
+Scenario ReadTrainedScenario(const std::string& dir) {
+  try {
+    return ParseScenario(ReadFolderFile(dir, "scenario.json"));
+  } catch (const ConfigError& e) {
+    if (e.path() == "--policy")
+      throw;
+    throw ConfigError("--policy", dir + "/scenario.json: " + e.describe());
+  }
+}
+
+PolicyFolder ReadTorchScriptFolder(const std::string& dir) {
+  PolicyFolder folder;
+  folder.dir = dir;
+  const std::string manifest = dir + "/" + kTorchScriptManifestFile;
+  folder.torchscript =
+      ParseTorchScriptManifest(ReadFolderFile(dir, kTorchScriptManifestFile), manifest);
+  folder.trained = ReadTrainedScenario(dir);
+  if (folder.trained.env.action_space != folder.torchscript->action_space) {
+    throw ConfigError("--policy",
+                      manifest + ": /action_space: \"" + folder.torchscript->action_space +
+                          "\", but scenario.json says \"" + folder.trained.env.action_space + "\"");
+  }
+  folder.eval_run = folder.torchscript->eval_run;
+  return folder;
+}
+
 }  // namespace
 
 nlohmann::json SeedStreamJson(std::uint64_t first_episode_run, std::uint64_t eval_run) {
@@ -46,16 +74,16 @@ nlohmann::json SeedStreamJson(std::uint64_t first_episode_run, std::uint64_t eva
 }
 
 PolicyFolder ReadPolicyFolder(const std::string& dir) {
+  // A model.pt without its manifest is a TorchScript folder too, refused for the missing file.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(fs::path(dir) / kTorchScriptManifestFile, ec) ||
+      fs::exists(fs::path(dir) / kTorchScriptModelFile, ec))
+    return ReadTorchScriptFolder(dir);
   PolicyFolder folder;
   folder.dir = dir;
   const nlohmann::json result = ReadFolderFile(dir, "result.json");
-  try {
-    folder.trained = ParseScenario(ReadFolderFile(dir, "scenario.json"));
-  } catch (const ConfigError& e) {
-    if (e.path() == "--policy")
-      throw;
-    throw ConfigError("--policy", dir + "/scenario.json: " + e.describe());
-  }
+  folder.trained = ReadTrainedScenario(dir);
   const Scenario& s = folder.trained;
   CheckAgrees(result, "algorithm", s.agent.algorithm, dir);
   CheckAgrees(result, "action_space", s.env.action_space, dir);

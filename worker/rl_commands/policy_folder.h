@@ -1,12 +1,18 @@
 #pragma once
-// A policy folder as `rlpos-sim train` writes it, read back as what an exact replay of the
-// training's own final evaluation needs: the scenario as trained (its overrides, the agent's
-// hyperparameters and the fidelity included: scenario.json) and the seed stream (result.json).
+// A policy folder read back as what an exact replay needs, in one of two formats:
+// - ours, as `rlpos-sim train` writes it: the scenario as trained (its overrides, the agent's
+//   hyperparameters and the fidelity included: scenario.json), the seed stream (result.json) and
+//   the agent's networks;
+// - TorchScript, trained anywhere: policy.json (torchscript_manifest.h), scenario.json (the env
+//   as trained) and model.pt.
+// A folder with a policy.json is of the second.
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "common/scenario/scenario.h"
+#include "worker/rl_commands/torchscript_manifest.h"
 
 namespace rlpos::sim {
 
@@ -19,13 +25,18 @@ struct PolicyFolder {
   // A general policy may be placed in scenarios other than its own. None is yet: the field is
   // read so that a folder that claims it is refused rather than misread.
   bool general = false;
+  // Set for a TorchScript folder (model.pt is its policy); unset for ours (the agent of
+  // trained.agent is).
+  std::optional<TorchScriptManifest> torchscript;
 };
 
 // The seed stream's fields of result.json.
 nlohmann::json SeedStreamJson(std::uint64_t first_episode_run, std::uint64_t eval_run);
 
 // Reads DIR/scenario.json and DIR/result.json (folders from before eval_run existed: it is the
-// run training gave its last evaluation episode). Bad or missing files: ConfigError on --policy.
+// run training gave its last evaluation episode), or for a TorchScript folder DIR/policy.json and
+// DIR/scenario.json. Only these fixed names inside DIR are read. Bad or missing files:
+// ConfigError on --policy.
 PolicyFolder ReadPolicyFolder(const std::string& dir);
 
 }  // namespace rlpos::sim

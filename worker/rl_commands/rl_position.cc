@@ -6,6 +6,7 @@
 #include "worker/environment/scenario_loading.h"
 #include "worker/rl_commands/policy_folder.h"
 #include "worker/rl_commands/rl_commands.h"
+#include "worker/rl_commands/torchscript_placement.h"
 #include "worker/sim_api/rl_plugin_api.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
@@ -32,8 +33,10 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
   const PolicyFolder folder = ReadPolicyFolder(policy);
   RefuseContradiction(folder, options);
   // Training's own final evaluation episode: its scenario (fidelity and agent included), its
-  // run, from the baseline, greedy.
+  // run, from the baseline, greedy. A TorchScript policy flies in its scenario's env the same way.
   UavPositioningEnv env(folder.trained);
+  if (folder.torchscript)
+    return TorchScriptPlacement(folder, env);
   const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
   agent->Load(policy);
   return RunEpisode(env, *agent, folder.eval_run, false).final_info.positions;

@@ -123,8 +123,7 @@ BatchedEnv::BatchedEnv(const std::vector<Scenario>& scenarios, const BatchedEnvO
   for (const auto& slot : slots_)
     has_action_mask_ =
         has_action_mask_ || (slot->env.scenario().env.action_mask && action_space_.n > 0);
-  observation_low_.assign(observation_space_.low.begin(), observation_space_.low.end());
-  observation_high_.assign(observation_space_.high.begin(), observation_space_.high.end());
+  observation_clip_ = Float32Clip(observation_space_);
   pool_ = std::make_unique<ThreadPool>(options.threads ? options.threads
                                                        : DefaultThreadCount(slots_.size()));
 }
@@ -151,13 +150,7 @@ void BatchedEnv::Write(std::size_t i, const std::vector<double>& observation,
     std::copy(observation.begin(), observation.end(), out.raw_observations + i * ObservationDim());
   if (out.observations) {
     // As rlpos.make's env gives it: float32, clipped to the float32 bounds (NaN stays NaN).
-    const std::size_t d = ObservationDim();
-    float* row = out.observations + i * d;
-    for (std::size_t k = 0; k < d; ++k) {
-      const float v = static_cast<float>(observation[k]);
-      row[k] = v < observation_low_[k] ? observation_low_[k]
-                                       : (v > observation_high_[k] ? observation_high_[k] : v);
-    }
+    observation_clip_.Apply(observation, out.observations + i * ObservationDim());
   }
   if (out.n_los)
     out.n_los[i] = info.n_los;

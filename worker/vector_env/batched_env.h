@@ -105,7 +105,7 @@ class BatchedEnv {
   std::vector<std::unique_ptr<Slot>> slots_;
   std::unique_ptr<ThreadPool> pool_;
   BoxSpace observation_space_;
-  std::vector<float> observation_low_, observation_high_;  // the space's bounds as float32
+  Float32Clip observation_clip_{BoxSpace{}};  // as rlpos.make's env gives an observation
   DiscreteSpace action_space_;
   BoxSpace continuous_space_;
   std::size_t uav_count_ = 0;

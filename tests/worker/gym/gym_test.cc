@@ -1,6 +1,8 @@
 // Spaces, moves and clamping, observations, rewards: the gym's pure parts.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "common/scenario/scenario_parser.h"
 #include "worker/gym/moves.h"
 #include "worker/gym/reward.h"
@@ -34,6 +36,17 @@ TEST(Spaces, DiscreteAndBox) {
   const auto n = box.Normalise({0, 10});
   EXPECT_FLOAT_EQ(n[0], -1.0f);
   EXPECT_FLOAT_EQ(n[1], 1.0f);
+}
+
+// The observation as the Python env gives it (and a policy exported from Python is fed):
+// float32, clipped to the float32 bounds, NaN kept, not normalised.
+TEST(Spaces, Float32ClipGivesThePythonEnvsObservation) {
+  const Float32Clip clip(BoxSpace{{0.0, -0.1}, {100.0, 0.1}});
+  const auto o = clip({50.25, 7.0});
+  EXPECT_EQ(o[0], 50.25f);
+  EXPECT_EQ(o[1], 0.1f);  // the bound, in float32
+  EXPECT_EQ(clip({-1.0, 2.0})[0], 0.0f);
+  EXPECT_TRUE(std::isnan(clip({std::nan(""), 5.0})[0]));
 }
 
 // One UAV's move.

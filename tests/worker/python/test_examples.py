@@ -6,7 +6,7 @@ import sys
 
 import pytest
 
-from conftest import SOURCE
+from conftest import BIN, SOURCE
 
 
 def run_example(name, *args):
@@ -22,6 +22,14 @@ def test_ppo_torch_reaches_nine_tenths_of_the_oracle_in_b():
     out = run_example("ppo_torch.py")
     share = float(re.search(r"\(([\d.]+) %\); trained in", out).group(1))
     assert share >= 90.0, out
+
+
+def test_ppo_torch_exports_a_policy_that_rlpos_sim_flies_to_the_same_place(tmp_path):
+    out = run_example("ppo_torch.py", "--episodes", "1", "--export", str(tmp_path / "policy"),
+                      "--rlpos-sim", os.path.join(BIN, "rlpos-sim"))
+    python = re.search(r"greedy final position (\([^)]*\))", out).group(1)
+    cli = re.search(r"rlpos-sim position --policy \S+: (\([^)]*\))", out).group(1)
+    assert python == cli, out
 
 
 def test_score_policy_evaluates_at_packet_level():

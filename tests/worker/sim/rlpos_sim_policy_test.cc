@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -40,16 +39,6 @@ class PolicyFolder : public ::testing::Test {
 
   fs::path out_;
 };
-
-// The error is one line in the program's format, and it names the policy and the field.
-void ExpectOneLineRefusal(const CommandResult& r, const std::string& policy,
-                          const std::string& field) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_EQ(r.err.rfind("rlpos-sim: error: --policy: " + policy, 0), 0u) << r.err;
-  EXPECT_NE(r.err.find(field), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-}
 
 TEST_F(PolicyFolder, AStepTenPolicyReplaysItsTrainingOnPlainB) {
   const auto result = Train("--episodes 30 --set env.step=10");

@@ -15,6 +15,9 @@
     actions = {agent: team.action_space(agent).sample() for agent in team.agents}
     observations, rewards, terminations, truncations, infos = team.step(actions)
 
+    rlpos.save_torchscript_policy(torch_module, env, "my-policy")   # then, in a shell:
+    # rlpos-sim position --positioner rl --policy my-policy --scenario campaigns/scenarios/b.json
+
 With gymnasium importable the env is a gymnasium.Env, registered as "rlpos/UavPositioning-v0",
 and make_vec's a gymnasium.vector.VectorEnv; with pettingzoo importable the parallel env is a
 pettingzoo.ParallelEnv.
@@ -27,9 +30,11 @@ from . import _rlpos
 from .env import UavPositioningEnv, override_texts
 from .parallel_env import ParallelUavEnv
 from .spaces import GYMNASIUM, Box, Discrete, MultiDiscrete
+from .torchscript_policy import save_torchscript_policy
 from .vector_env import VectorEnv
 
-__all__ = ["make", "make_vec", "parallel_env", "oracle", "evaluate", "UavPositioningEnv",
+__all__ = ["make", "make_vec", "parallel_env", "oracle", "evaluate", "save_torchscript_policy",
+           "UavPositioningEnv",
            "VectorEnv", "ParallelUavEnv", "Discrete", "Box", "MultiDiscrete", "ENV_ID"]
 
 ENV_ID = "rlpos/UavPositioning-v0"

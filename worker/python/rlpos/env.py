@@ -43,6 +43,12 @@ class WrappedEnvProperties:
         return self._env.steps_per_episode
 
     @property
+    def scenario(self):
+        """The env's scenario as loaded (file, overrides, defaults), every field explicit, as a
+        dict: what rlpos-sim train writes as a policy folder's scenario.json."""
+        return json.loads(self._env.scenario_json)
+
+    @property
     def moves(self):
         """The names of the discrete actions, by index."""
         return list(self._env.actions)
