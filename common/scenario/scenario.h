@@ -172,8 +172,11 @@ struct EnvSpec {
   double step = 5.0;                // m per move
   // Moves: up/down = +-z, forward/backward = +-y, right/left = +-x, stay.
   std::vector<std::string> actions = {"up", "down", "forward", "backward", "left", "right", "stay"};
-  // x, y, z, n_los, throughput, demands_met, snr (one per UE)
+  // x, y, z, n_los, throughput, demands_met, snr (one per UE); and the same in every scenario
+  // (worker/gym/general_observation.h): zone, ues, heights, others
   std::vector<std::string> observations = {"x", "y", "z", "n_los"};
+  int observed_ues = 16;  // UE slots of the "ues" observation, nearest first
+  int height_map = 9;     // cells per side of the "heights" observation (odd), env.step each
   double decision_interval = 0.1;   // s between actions
   double episode_duration = 100.0;  // s per episode
   // Moves into a wall of the zone or a building are masked out (not only clamped): otherwise

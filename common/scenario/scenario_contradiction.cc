@@ -28,9 +28,9 @@ const std::vector<std::string>& ReadingOrder() {
 }
 
 // The scenario's JSON with the same keys whatever form it was written in: every UAV under
-// "uavs" with its channel, env.turn_steps written out, the document's own fields dropped. A
-// UAV's name is a label (a listed UAV's default differs from a single one's): the UEs' "uav"
-// fields, compared, say which UAV serves whom.
+// "uavs" with its channel, env.turn_steps, observed_ues and height_map written out, the document's
+// own fields dropped. A UAV's name is a label (a listed UAV's default differs from a single one's):
+// the UEs' "uav" fields, compared, say which UAV serves whom.
 json Comparable(const Scenario& s) {
   json d = ToJson(s);
   for (const auto& [object, key] : DocumentsOwn()) {
@@ -45,6 +45,8 @@ json Comparable(const Scenario& s) {
   d.erase("uav");
   d["uavs"] = uavs;
   d["env"]["turn_steps"] = s.env.turn_steps;
+  d["env"]["observed_ues"] = s.env.observed_ues;
+  d["env"]["height_map"] = s.env.height_map;
   return d;
 }
 

@@ -311,8 +311,13 @@ EnvSpec ReadEnv(const json& v) {
   }
   if (const json* o = r.Child("observations")) {
     e.observations = ReadStringList(*o, r.PathOf("observations"),
-                                    {"x", "y", "z", "n_los", "throughput", "demands_met", "snr"});
+                                    {"x", "y", "z", "n_los", "throughput", "demands_met", "snr",
+                                     "zone", "ues", "heights", "others"});
   }
+  e.observed_ues = static_cast<int>(r.Integer("observed_ues", e.observed_ues, 1, 64));
+  e.height_map = static_cast<int>(r.Integer("height_map", e.height_map, 1, 33));
+  if (e.height_map % 2 == 0)
+    throw ConfigError(r.PathOf("height_map"), "must be odd (the UAV is over the middle cell)");
   e.decision_interval = r.Number("decision_interval", e.decision_interval, Positive());
   e.episode_duration = r.Number("episode_duration", e.episode_duration, Positive());
   e.action_mask = r.Bool("action_mask", e.action_mask);
@@ -687,6 +692,16 @@ json ToJson(const Scenario& s) {
       {"agent", AgentJson(s.agent)}};
   if (s.env.turn_steps != 1)  // absent before several UAVs existed: documents stay as they were
     document["env"]["turn_steps"] = s.env.turn_steps;
+  // Likewise absent before the general observations, unless they are used or set.
+  const EnvSpec defaults;
+  const bool general =
+      std::any_of(s.env.observations.begin(), s.env.observations.end(), [](const std::string& f) {
+        return f == "zone" || f == "ues" || f == "heights" || f == "others";
+      });
+  if (general || s.env.observed_ues != defaults.observed_ues)
+    document["env"]["observed_ues"] = s.env.observed_ues;
+  if (general || s.env.height_map != defaults.height_map)
+    document["env"]["height_map"] = s.env.height_map;
   if (s.uavs_listed) {
     document["uavs"] = uavs;
   } else {

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "common/scenario/scenario_checks.h"
+#include "worker/gym/general_observation.h"
 
 namespace rlpos {
 
@@ -103,6 +104,11 @@ BoxSpace DisplacementBounds(const Scenario& s) {
   return {{-d, -d, -d}, {d, d, d}};
 }
 
+bool OnlyGeneralObservations(const Scenario& s) {
+  return std::all_of(s.env.observations.begin(), s.env.observations.end(),
+                     [](const std::string& field) { return IsGeneralObservation(field); });
+}
+
 BoxSpace ObservationBounds(const Scenario& s) {
   BoxSpace box;
   const double n = static_cast<double>(s.ues.size());
@@ -125,8 +131,9 @@ BoxSpace ObservationBounds(const Scenario& s) {
       for (std::size_t i = 0; i < s.ues.size(); ++i)
         box.low.push_back(kObservedSnrLowDb), box.high.push_back(kObservedSnrHighDb);
     }
+    AddGeneralBounds(s, field, box);
   }
-  if (s.uavs.size() > 1) {
+  if (s.uavs.size() > 1 && !OnlyGeneralObservations(s)) {
     for (std::size_t u = 0; u < s.uavs.size(); ++u)
       box.low.push_back(0), box.high.push_back(1);
   }
@@ -157,8 +164,9 @@ std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
       for (double snr : info.snr_db)
         obs.push_back(std::clamp(snr, kObservedSnrLowDb, kObservedSnrHighDb));
     }
+    AddGeneralObservation(s, info, field, obs);
   }
-  if (s.uavs.size() > 1) {
+  if (s.uavs.size() > 1 && !OnlyGeneralObservations(s)) {
     for (std::size_t u = 0; u < s.uavs.size(); ++u)
       obs.push_back(static_cast<int>(u) == info.active_uav ? 1.0 : 0.0);
   }

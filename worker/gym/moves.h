@@ -47,8 +47,11 @@ constexpr double kObservedSnrLowDb = -20.0;
 constexpr double kObservedSnrHighDb = 60.0;
 
 // Observation layout and bounds from scenario.env.observations ("snr" expands to one per UE;
-// "x", "y" and "z" to one per UAV). With several UAVs a one-hot of the UAV whose turn it is
-// follows (a shared policy moves them in turn).
+// "x", "y" and "z" to one per UAV; "zone", "ues", "heights" and "others" as
+// general_observation.h says). With several UAVs a one-hot of the UAV whose turn it is follows
+// (a shared policy moves them in turn), unless every field is one of the general ones, which
+// already see the world from that UAV.
+bool OnlyGeneralObservations(const Scenario& scenario);
 BoxSpace ObservationBounds(const Scenario& scenario);
 std::vector<double> MakeObservation(const Scenario& scenario, const StepInfo& info);
 

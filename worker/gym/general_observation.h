@@ -1,0 +1,44 @@
+#pragma once
+// Observations that mean the same in every scenario, for a policy that places UAVs in venues it
+// never saw (the generalist): what surrounds the UAV whose turn it is, relative to it, in slots
+// of fixed count, instead of the scenario's own coordinates and UE count. env.observations names
+// them beside the per-scenario fields (moves.h):
+//   "zone"    3 values: the UAV's position within its zone, each in [0, 1];
+//   "ues"     env.observed_ues slots of kUeSlotWidth, the nearest UEs first (horizontal
+//             distance, then index), then empty slots of zeros:
+//             [present, dx, dy, dz, los, snr, mine] with the offsets from the UAV in units of
+//             kObservedRangeM (clipped to +-kObservedOffsetLimit), los of the UE's link to its
+//             serving UAV, the SNR scaled from [kObservedSnrLowDb, kObservedSnrHighDb] to [0, 1],
+//             and mine = 1 if the UAV serves the UE;
+//   "heights" env.height_map x env.height_map cells of env.step metres centred below the UAV,
+//             row by row (y, then x): the top of the tallest building over each cell in units
+//             of kObservedRangeM (0 where there is none), clipped to kObservedHeightLimit;
+//   "others"  kOtherUavSlots slots of [present, dx, dy, dz], the other UAVs nearest first.
+// A scenario with more UEs than slots shows the nearest; the slots and the cells hold no
+// scenario's size, so their layout is the same in every scenario of the same env settings.
+#include <cstddef>
+#include <string_view>
+#include <vector>
+
+#include "common/scenario/scenario.h"
+#include "worker/gym/env.h"
+#include "worker/gym/spaces.h"
+
+namespace rlpos {
+
+constexpr double kObservedRangeM = 100.0;
+constexpr double kObservedOffsetLimit = 4.0;
+constexpr double kObservedHeightLimit = 4.0;
+constexpr int kUeSlotWidth = 7;
+constexpr int kOtherUavSlots = 5;
+constexpr int kOtherUavSlotWidth = 4;
+
+// True for "zone", "ues", "heights" and "others".
+bool IsGeneralObservation(std::string_view field);
+
+// Appends the field's bounds to `box` / its values for the UAV info.active_uav to `out`.
+void AddGeneralBounds(const Scenario& scenario, std::string_view field, BoxSpace& box);
+void AddGeneralObservation(const Scenario& scenario, const StepInfo& info, std::string_view field,
+                           std::vector<double>& out);
+
+}  // namespace rlpos
