@@ -91,13 +91,27 @@ TEST(TrackRun, TheSameRngRunGivesTheSameNumbers) {
   EXPECT_NE(series(first), series(other)) << "another RngRun, the same walk";
 }
 
+// `run` throws a ConfigError whose "path: problem" holds `fragment`.
+template <typename F>
+void ExpectRefused(F run, const std::string& fragment) {
+  try {
+    run();
+    ADD_FAILURE() << "not refused: " << fragment;
+  } catch (const ConfigError& e) {
+    EXPECT_NE(e.describe().find(fragment), std::string::npos) << e.describe();
+  }
+}
+
 TEST(TrackRun, RefusesWhatItCannotRun) {
   const Scenario b = Shipped("b");
-  EXPECT_THROW(Track(b, "oracle", -1.0), ConfigError);
-  EXPECT_THROW(Track(b, "oracle", 0.05), ConfigError);  // less than one interval of 0.1 s
-  EXPECT_THROW(MakeTrackPositioner("rl", b), ConfigError);
-  EXPECT_THROW(MakeTrackPositioner("offsets", b), ConfigError);
-  EXPECT_THROW(MakeTrackPositioner("teleport", b), ConfigError);
+  ExpectRefused([&] { Track(b, "oracle", -1.0); },
+                "--duration: must be at least env.decision_interval (0.1 s), got -1");
+  ExpectRefused([&] { Track(b, "oracle", 0.05); }, "--duration: must be at least");
+  ExpectRefused([&] { MakeTrackPositioner("rl", b); },
+                "--positioner: rl is not supported in track");
+  ExpectRefused([&] { MakeTrackPositioner("offsets", b); }, "--positioner: offsets are placed");
+  ExpectRefused([&] { MakeTrackPositioner("teleport", b); },
+                "--positioner: unknown positioner \"teleport\"");
 }
 
 }  // namespace
