@@ -87,11 +87,11 @@ void AddTrack(CLI::App& app, TrackCommand& t, CommonOptions& options) {
       ->add_option("--positioner", t.positioner,
                    Choices(kTrackPositioners) +
                        "; the *-track ones decide again every env.decision_interval, the others "
-                       "once for t = 0")
+                       "once for t = 0 (rl and offsets: not in track)")
       ->required()
       ->check(CLI::IsMember(NameList(kTrackPositioners)));
   t.command->add_option("--duration", t.duration, "Seconds of the run")->required();
-  t.command->add_option("--run,--RngRun", t.run, "RngRun: the UEs' trajectories (simulation.run)")
+  t.command->add_option("--RngRun,--run", t.run, "RngRun: the UEs' trajectories (simulation.run)")
       ->required()
       ->check(CLI::NonNegativeNumber);
   t.command
