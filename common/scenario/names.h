@@ -25,6 +25,26 @@ inline constexpr std::array<std::string_view, 5> kPositioners{"baseline", "offse
 inline constexpr std::array<std::string_view, 3> kPlacingPositioners{"baseline", "centroid",
                                                                      "oracle"};
 
+// The positioners that decide again at every env.decision_interval as the UEs move (rlpos-sim
+// track). Every other positioner is held: decided once for t = 0.
+inline constexpr std::array<std::string_view, 2> kTrackingPositioners{"oracle-track",
+                                                                      "centroid-track"};
+
+// `a` then `b`.
+template <std::size_t A, std::size_t B>
+constexpr std::array<std::string_view, A + B> Concat(const std::array<std::string_view, A>& a,
+                                                     const std::array<std::string_view, B>& b) {
+  std::array<std::string_view, A + B> out{};
+  for (std::size_t i = 0; i < A; ++i)
+    out[i] = a[i];
+  for (std::size_t i = 0; i < B; ++i)
+    out[A + i] = b[i];
+  return out;
+}
+
+// What rlpos-sim track takes for --positioner (it refuses rl and offsets, saying why).
+inline constexpr auto kTrackPositioners = Concat(kPositioners, kTrackingPositioners);
+
 template <std::size_t N>
 constexpr bool IsOneOf(std::string_view name, const std::array<std::string_view, N>& names) {
   for (std::string_view n : names) {

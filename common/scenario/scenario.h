@@ -126,7 +126,14 @@ struct UavSpec {
   // table (distinct). UAVs given the same channel share the air: their BSSs contend and
   // interfere.
   int channel = 0;
+  // How fast it may fly (m/s) when a positioner re-decides during a run (rlpos-sim track):
+  // horizontally and vertically, each within (0, kMaxUavSpeed].
+  double max_speed = 10.0;
+  double max_climb = 3.0;
 };
+
+// The bound of uav.max_speed and uav.max_climb (m/s): faster than any multirotor flies.
+constexpr double kMaxUavSpeed = 100.0;
 
 // UAVs closer than this (m) overlap: two airframes cannot hold the same spot.
 constexpr double kMinUavSeparation = 1.0;

@@ -193,6 +193,11 @@ UeSpec ReadUe(const json& v, const std::string& path, std::size_t index, const P
   return ue;
 }
 
+// uav.max_speed and uav.max_climb: above 0, at most kMaxUavSpeed.
+NumberRange SpeedLimit() {
+  return {0.0, kMaxUavSpeed, true};
+}
+
 UavSpec ReadUav(const json& v, const Venue& venue, const std::string& path,
                 const std::string& default_name) {
   ObjectReader r(v, path);
@@ -201,6 +206,8 @@ UavSpec ReadUav(const json& v, const Venue& venue, const std::string& path,
   if (uav.name.empty())
     throw ConfigError(r.PathOf("name"), "must not be empty");
   uav.channel = static_cast<int>(r.Integer("channel", 0, 1, 233));
+  uav.max_speed = r.Number("max_speed", uav.max_speed, SpeedLimit());
+  uav.max_climb = r.Number("max_climb", uav.max_climb, SpeedLimit());
   uav.zone = {0, venue.width, 0, venue.depth, 1.0, venue.height};
   uav.initial = {venue.width / 2, venue.depth / 2, 10.0};
   if (const json* p = r.Child("position"))
@@ -640,6 +647,11 @@ json UavsJson(const Scenario& s) {
       uav["name"] = u.name;
     if (u.channel > 0)
       uav["channel"] = u.channel;
+    // Absent when default: documents written before motion limits existed stay as they were.
+    if (u.max_speed != UavSpec{}.max_speed)
+      uav["max_speed"] = u.max_speed;
+    if (u.max_climb != UavSpec{}.max_climb)
+      uav["max_climb"] = u.max_climb;
     uavs.push_back(uav);
   }
   return uavs;

@@ -7,6 +7,8 @@
 #include <ns3/propagation-loss-model.h>
 
 #include <mutex>
+#include <stdexcept>
+#include <string>
 
 #include "common/config/config_error.h"
 #include "worker/environment/loss_model_spec.h"
@@ -107,6 +109,14 @@ UplinkState AnalyticChannel::Uplink(std::size_t ue, const Vec3& uav) {
   link.los = geometry_.Los(p, uav);  // sender first, as the channel asks
   link.snr_db = SnrDb(p, uav, link.los);
   return link;
+}
+
+void AnalyticChannel::SetUePositions(const std::vector<Vec3>& positions) {
+  if (positions.size() != ues_.size()) {
+    throw std::invalid_argument(std::to_string(positions.size()) + " UE positions for " +
+                                std::to_string(ues_.size()) + " UEs");
+  }
+  ues_ = positions;
 }
 
 double AnalyticChannel::SnrDb(const Vec3& ue, const Vec3& uav, bool los) {

@@ -35,6 +35,11 @@ class AnalyticChannel {
 
   // UE `ue`'s uplink to a UAV at `uav`. Not const: it moves the value's own mobility models.
   UplinkState Uplink(std::size_t ue, const Vec3& uav);
+  // The UEs where they are now (one per UE, in the scenario's order; the scenario's positions
+  // until this is called): moving UEs keep the same channel, only their ends move.
+  // Throws std::invalid_argument for another count.
+  void SetUePositions(const std::vector<Vec3>& positions);
+  const std::vector<Vec3>& UePositions() const { return ues_; }
   // The Wi-Fi channel number of each UAV.
   const std::vector<int>& UavChannels() const { return channels_; }
   // Minimum SNR (dB) per MCS, as ns-3's IdealWifiManager derives it.

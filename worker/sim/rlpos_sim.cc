@@ -5,6 +5,8 @@
 //   rlpos-sim train --scenario FILE [--algorithm dqn|ppo|sac] [--fidelity packet|analytic]
 //                   [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
+//   rlpos-sim track --scenario FILE --positioner NAME --duration S --RngRun N
+//                   [--fidelity analytic] [--json]
 //   rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]
 //   rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]
 //   rlpos-sim render SCENARIO [--position x,y,z]... [--result FILE] [--side] --out FILE.png|.svg
@@ -26,6 +28,7 @@
 #include "worker/sim/generate_command.h"
 #include "worker/sim/import_command.h"
 #include "worker/sim/render_command.h"
+#include "worker/sim/track_command.h"
 
 namespace {
 
@@ -42,6 +45,7 @@ struct Invocation {
   TrainOptions train_options;
   CLI::App* position = nullptr;
   PositionOptions position_options;
+  TrackCommand track;
   DescribeCommand describe;
   ImportCommand import;
   RenderCommand render;
@@ -141,6 +145,8 @@ int Run(const Invocation& in) {
       return RunPosition(in.options, in.position_options);
     if (*in.render.command)
       return RunRender(in.options, in.render);
+    if (*in.track.command)
+      return RunTrackCommand(in.options, in.track);
     return RunEval(in.options, in.eval_options);
   } catch (const rlpos::ConfigError& e) {
     const bool cli = e.path().rfind("--", 0) == 0;
@@ -164,6 +170,8 @@ int main(int argc, char** argv) {
   AddEval(app, in);
   AddTrain(app, in);
   AddPosition(app, in);
+  AddTrack(app, in.track, in.options);
+  AddScenarioOverrides(in.track.command, in.options);
   AddDescribe(app, in.describe);
   AddImport(app, in.import, in.options.scenario_file);
   AddRender(app, in.render, in.options);

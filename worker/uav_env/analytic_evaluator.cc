@@ -26,6 +26,8 @@ constexpr double kCaptureProbability = 0.2;
 AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario,
                                      std::shared_ptr<SharedPlacementMemo> shared_memo)
     : scenario_(scenario),
+      phy_{scenario.wifi.standard, scenario.wifi.width_mhz, scenario.wifi.guard_interval_ns,
+           scenario.wifi.spatial_streams},
       channel_(std::make_unique<AnalyticChannel>(scenario)),
       shared_memo_(std::move(shared_memo)) {
   if (!shared_memo_)
@@ -35,33 +37,46 @@ AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario,
 AnalyticEvaluator::~AnalyticEvaluator() = default;
 
 std::vector<UeLink> AnalyticEvaluator::LinksAt(std::size_t uav, const Vec3& position) {
-  if (uav >= scenario_.uavs.size())
-    throw std::out_of_range("no UAV " + std::to_string(uav));
-  const WifiSpec& w = scenario_.wifi;
-  const PhyProfile phy{w.standard, w.width_mhz, w.guard_interval_ns, w.spatial_streams};
-  const std::vector<double>& thresholds_db = channel_->McsSnrThresholdsDb();
   std::vector<UeLink> links;
   links.reserve(scenario_.ues.size());
-  for (std::size_t i = 0; i < scenario_.ues.size(); ++i) {
-    const UplinkState state = channel_->Uplink(i, position);
-    UeLink link;
-    link.los = state.los;
-    link.snr_db = state.snr_db;
-    link.demand_met = CheckDemand(phy, scenario_.ues[i].demand_mbps, link.snr_db).met;
-    int mcs = -1;
-    while (mcs + 1 < static_cast<int>(thresholds_db.size()) &&
-           link.snr_db >= thresholds_db[mcs + 1]) {
-      ++mcs;
-    }
-    if (mcs >= 0) {
-      // IdealWifiManager's thresholds only bound the bit error rate: near a threshold a
-      // 1.4 kB MPDU still fails often enough that retransmissions eat a visible share.
-      link.phy_rate_mbps = McsDataRateMbps(phy, mcs);
-      link.mpdu_success = channel_->MpduSuccessRate(mcs, link.snr_db);
-    }
-    links.push_back(link);
-  }
+  for (std::size_t i = 0; i < scenario_.ues.size(); ++i)
+    links.push_back(LinkAt(uav, i, position));
   return links;
+}
+
+UeLink AnalyticEvaluator::LinkAt(std::size_t uav, std::size_t ue, const Vec3& position) {
+  if (uav >= scenario_.uavs.size())
+    throw std::out_of_range("no UAV " + std::to_string(uav));
+  const PhyProfile& phy = phy_;
+  const std::vector<double>& thresholds_db = channel_->McsSnrThresholdsDb();
+  const UplinkState state = channel_->Uplink(ue, position);
+  UeLink link;
+  link.los = state.los;
+  link.snr_db = state.snr_db;
+  link.demand_met = CheckDemand(phy, scenario_.ues[ue].demand_mbps, link.snr_db).met;
+  int mcs = -1;
+  while (mcs + 1 < static_cast<int>(thresholds_db.size()) &&
+         link.snr_db >= thresholds_db[mcs + 1]) {
+    ++mcs;
+  }
+  if (mcs >= 0) {
+    // IdealWifiManager's thresholds only bound the bit error rate: near a threshold a
+    // 1.4 kB MPDU still fails often enough that retransmissions eat a visible share.
+    link.phy_rate_mbps = McsDataRateMbps(phy, mcs);
+    link.mpdu_success = channel_->MpduSuccessRate(mcs, link.snr_db);
+  }
+  return link;
+}
+
+void AnalyticEvaluator::SetUePositions(const std::vector<Vec3>& positions) {
+  if (shared_memo_)
+    throw std::logic_error("moving the UEs of an evaluator whose memo is shared");
+  channel_->SetUePositions(positions);
+  own_memo_->Clear();
+}
+
+const std::vector<Vec3>& AnalyticEvaluator::UePositions() const {
+  return channel_->UePositions();
 }
 
 StepInfo AnalyticEvaluator::Evaluate(const Placement& placement) {

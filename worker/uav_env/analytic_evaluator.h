@@ -8,6 +8,7 @@
 // and each may be used by one thread at a time.
 #include <memory>
 
+#include "common/phy/mcs_table.h"
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
 #include "worker/uav_env/placement_memo.h"
@@ -39,12 +40,21 @@ class AnalyticEvaluator {
   void EvaluateInto(const Placement& placement, StepInfo& info);
   // Every UE's link to UAV `uav` were it at `position` (the other UAVs do not matter).
   std::vector<UeLink> LinksAt(std::size_t uav, const Vec3& position);
+  // UE `ue`'s link alone (LinksAt(uav, position)[ue]).
+  UeLink LinkAt(std::size_t uav, std::size_t ue, const Vec3& position);
+  // The UEs where they are at some time t of a run (one per UE, in the scenario's order; the
+  // scenario's positions until this is called): every later evaluation is of that moment.
+  // Forgets the placements memorised before. Throws std::logic_error with a shared memo (the
+  // other evaluators sharing it keep their UEs) and std::invalid_argument for another count.
+  void SetUePositions(const std::vector<Vec3>& positions);
+  const std::vector<Vec3>& UePositions() const;
   // The state at `placement` from links already known: `links[u]` = LinksAt(u, placement[u]).
   // What a search that moves one UAV at a time evaluates without recomputing the others.
   StepInfo Score(const Placement& placement, const std::vector<const std::vector<UeLink>*>& links);
 
  private:
   Scenario scenario_;
+  PhyProfile phy_;  // the scenario's Wi-Fi, as the MCS table reads it
   std::unique_ptr<AnalyticChannel> channel_;
   std::unique_ptr<PlacementMemo> own_memo_;           // no shared memo given
   std::shared_ptr<SharedPlacementMemo> shared_memo_;  // or this one

@@ -100,15 +100,18 @@ bool PlacementMemo::Find(const Placement& placement, StepInfo& info) const {
   return true;
 }
 
+void PlacementMemo::Clear() {
+  std::fill(filled_.begin(), filled_.end(), 0);
+  size_ = 0;
+}
+
 void PlacementMemo::Store(const Placement& placement, const StepInfo& info) {
   if (slots_ == 0 || placement.size() != n_uavs_ || info.snr_db.size() != n_ues_ ||
       info.serving.size() != n_ues_ || info.los.size() != n_ues_) {
     return;
   }
-  if (size_ + 1 > Capacity()) {  // full: start again (the pages stay mapped, no more)
-    std::fill(filled_.begin(), filled_.end(), 0);
-    size_ = 0;
-  }
+  if (size_ + 1 > Capacity())  // full: start again (the pages stay mapped, no more)
+    Clear();
   const std::size_t slot = Probe(placement);
   double* key = Slot(slot);
   for (std::size_t u = 0; u < n_uavs_; ++u) {

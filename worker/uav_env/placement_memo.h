@@ -36,6 +36,8 @@ class PlacementMemo {
   bool Find(const Placement& placement, StepInfo& info) const;
   // Stores the state at `placement` (as AnalyticEvaluator::Evaluate computed it).
   void Store(const Placement& placement, const StepInfo& info);
+  // Forgets every placement (the states it holds no longer hold, e.g. the UEs moved).
+  void Clear();
   // How many placements it holds at most, and how many it holds now.
   std::size_t Capacity() const { return slots_ * 3 / 4; }
   std::size_t Size() const { return size_; }

@@ -56,6 +56,23 @@ TEST(MultiUavScenario, ListRoundTripsWithChannelsAndFixedUes) {
   EXPECT_EQ(again.UavPath(1), "/uavs/1");
 }
 
+TEST(MultiUavScenario, SpeedLimitsPerUavDefaultAndRoundTrip) {
+  json doc = Campus();
+  ApplyOverrides(doc, {"uavs.1.max_speed=4.5", "uavs.1.max_climb=1"});
+  const Scenario s = ParseScenario(doc);
+  EXPECT_EQ(s.uavs[0].max_speed, 10.0);  // the defaults
+  EXPECT_EQ(s.uavs[0].max_climb, 3.0);
+  EXPECT_EQ(s.uavs[1].max_speed, 4.5);
+  EXPECT_EQ(s.uavs[1].max_climb, 1.0);
+  const json written = ToJson(s);
+  // Defaults are not written: documents from before the limits keep their bytes.
+  EXPECT_FALSE(written["uavs"][0].contains("max_speed"));
+  EXPECT_FALSE(written["uavs"][0].contains("max_climb"));
+  const Scenario again = ParseScenario(written);
+  EXPECT_EQ(again.uavs[1].max_speed, 4.5);
+  EXPECT_EQ(again.uavs[1].max_climb, 1.0);
+}
+
 TEST(MultiUavScenario, UnnamedUavsAreNumbered) {
   json doc = Campus();
   doc["uavs"][0].erase("name");
@@ -91,6 +108,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"SameName", {"uavs.1.name=\"north\""}, "/uavs/1/name: UAV 0 has the name \"north\" already"},
         BadInput{"EmptyName", {"uavs.1.name=\"\""}, "/uavs/1/name: must not be empty"},
         BadInput{"BadChannel", {"uavs.1.channel=0"}, "/uavs/1/channel: must be in [1, 233]"},
+        BadInput{"StillSpeed", {"uavs.1.max_speed=0"}, "/uavs/1/max_speed: must be positive, got 0"},
+        BadInput{"NegativeClimb", {"uavs.0.max_climb=-3"}, "/uavs/0/max_climb: must be positive, got -3"},
+        BadInput{"SpeedBeyondBound", {"uavs.1.max_speed=101"}, "/uavs/1/max_speed: must be <= 100, got 101"},
         BadInput{"UnknownKey", {"uavs.1.chanel=36"}, "/uavs/1/chanel: unknown key \"chanel\"; did you mean \"channel\"?"},
         BadInput{"UeFixedToNobody", {"ues.2.uav=\"east\""}, "/ues/2/uav: no UAV is named \"east\" (UAVs: \"north\" \"south\")"}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });

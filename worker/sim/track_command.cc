@@ -1,0 +1,120 @@
+#include "worker/sim/track_command.h"
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "common/config/config_error.h"
+#include "common/scenario/names.h"
+#include "common/scenario/number_text.h"
+#include "common/scenario/placement_json.h"
+#include "worker/track/track_positioner.h"
+#include "worker/track/track_run.h"
+
+namespace rlpos::sim {
+namespace {
+
+nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackResult& r) {
+  nlohmann::json uavs = nlohmann::json::array();
+  for (std::size_t u = 0; u < r.uavs.size(); ++u) {
+    const TrackUavSummary& summary = r.uavs[u];
+    uavs.push_back({{"name", s.uavs[u].name},
+                    {"distance_flown_m", summary.distance_flown_m},
+                    {"mean_ues_served", summary.mean_ues_served},
+                    {"los_share", summary.los_share},
+                    {"outage_share", summary.outage_share}});
+  }
+  nlohmann::json series = nlohmann::json::array();
+  const double n_ues = static_cast<double>(s.ues.size());
+  for (const TrackInterval& i : r.intervals) {
+    nlohmann::json interval = {{"time", i.time},
+                               {"reward", i.reward},
+                               {"throughput_mbps", i.throughput_mbps},
+                               {"los_share", i.n_los / n_ues},
+                               {"n_los", i.n_los},
+                               {"demands_met", i.demands_met},
+                               {"positions", PlacementJson(i.positions)}};
+    if (s.uavs.size() > 1)
+      interval["serving_uav"] = i.serving;
+    series.push_back(interval);
+  }
+  return {{"scenario", s.name},
+          {"positioner", t.positioner},
+          {"fidelity", t.fidelity},
+          {"duration", t.duration},
+          {"decision_interval", s.env.decision_interval},
+          {"run", s.simulation.run},
+          {"intervals", r.intervals.size()},
+          {"n_ues", s.ues.size()},
+          {"mean_reward", r.mean_reward},
+          {"mean_throughput_mbps", r.mean_throughput_mbps},
+          {"outage_share", r.outage_share},
+          {"los_share", r.los_share},
+          {"distance_flown_m", r.distance_flown_m},
+          {"uavs", uavs},
+          {"series", series}};
+}
+
+void PrintResult(const Scenario& s, const TrackCommand& t, const TrackResult& r) {
+  std::printf("%s in %s, %s s in %zu intervals of %s s, RngRun %llu\n", t.positioner.c_str(),
+              s.name.c_str(), FormatNumber(t.duration).c_str(), r.intervals.size(),
+              FormatNumber(s.env.decision_interval).c_str(),
+              static_cast<unsigned long long>(s.simulation.run));
+  std::printf("  mean_reward           %.4f\n", r.mean_reward);
+  std::printf("  mean_throughput_mbps  %.2f\n", r.mean_throughput_mbps);
+  std::printf("  outage_share          %.4f\n", r.outage_share);
+  std::printf("  los_share             %.4f\n", r.los_share);
+  std::printf("  distance_flown_m      %.1f\n", r.distance_flown_m);
+  if (s.uavs.size() < 2)
+    return;
+  std::printf("per UAV:  distance_flown_m  mean_ues_served  los_share  outage_share\n");
+  for (std::size_t u = 0; u < r.uavs.size(); ++u) {
+    const TrackUavSummary& summary = r.uavs[u];
+    std::printf("  %-6s  %16.1f  %15.2f  %9.4f  %12.4f\n", s.uavs[u].name.c_str(),
+                summary.distance_flown_m, summary.mean_ues_served, summary.los_share,
+                summary.outage_share);
+  }
+}
+
+}  // namespace
+
+void AddTrack(CLI::App& app, TrackCommand& t, CommonOptions& options) {
+  t.command = app.add_subcommand(
+      "track",
+      "Fly a run in which the UEs move: the UAVs follow a positioner at their speed limits");
+  t.command->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
+  t.command
+      ->add_option("--positioner", t.positioner,
+                   Choices(kTrackPositioners) +
+                       "; the *-track ones decide again every env.decision_interval, the others "
+                       "once for t = 0 (rl and offsets: not in track)")
+      ->required()
+      ->check(CLI::IsMember(NameList(kTrackPositioners)));
+  t.command->add_option("--duration", t.duration, "Seconds of the run")->required();
+  t.command->add_option("--RngRun,--run", t.run, "RngRun: the UEs' trajectories (simulation.run)")
+      ->required()
+      ->check(CLI::NonNegativeNumber);
+  t.command
+      ->add_option("--fidelity", t.fidelity,
+                   Choices(kFidelities) + " (default analytic; packet is not yet supported)")
+      ->check(CLI::IsMember(NameList(kFidelities)));
+  t.command->add_flag("--json", t.json, "Print the result and the per-interval series as JSON");
+}
+
+int RunTrackCommand(const CommonOptions& options, const TrackCommand& t) {
+  if (t.fidelity == "packet") {
+    throw ConfigError("--fidelity",
+                      "packet is not yet supported by track (UAVs that move during an ns-3 run); "
+                      "use analytic");
+  }
+  const Scenario s = LoadScenarioFor(options, {"simulation.run=" + std::to_string(t.run)});
+  auto positioner = MakeTrackPositioner(t.positioner, s);
+  const TrackResult result = RunTrack(s, *positioner, t.duration);
+  if (t.json)
+    std::cout << ResultJson(s, t, result).dump(2) << std::endl;
+  else
+    PrintResult(s, t, result);
+  return kExitOk;
+}
+
+}  // namespace rlpos::sim
