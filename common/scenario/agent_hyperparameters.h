@@ -22,6 +22,7 @@ struct AgentCommonSpec {
   int train_episode_steps = 25;
   bool exploring_starts = true;
   int baseline_start_every = 0;
+  bool joint_steps = false;
   int eval_episodes = 1;
   int eval_interval = 50;
   int early_stop_checkpoints = 0;
@@ -93,6 +94,12 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
         "instead, as the checkpoints and the evaluation do, so that the policy also learns the "
         "way from there. 0: none. PPO's and SAC's default has some: from random starts alone, "
         "their greedy policies missed cells a few moves above the baseline"},
+       {"joint_steps", &AgentCommonSpec::joint_steps, NoRange(),
+        "several UAVs: every step moves every UAV at once (as rlpos.parallel_env), each by the "
+        "shared policy from its own observation (parameter sharing, as MAPPO's actors), all "
+        "rewarded with the team's reward; training, checkpoints, the evaluation and a replay of "
+        "the policy fly that way. false: the UAVs take turns, one move each. One UAV: no "
+        "difference"},
        {"eval_episodes", &AgentCommonSpec::eval_episodes, Integers(1, 1000000),
         "greedy evaluation episodes after training"},
        {"eval_interval", &AgentCommonSpec::eval_interval, Integers(0, 1000000),

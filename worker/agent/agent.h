@@ -27,6 +27,26 @@ class Agent {
   // Learns from one transition (stores it, maybe trains): the loss of the update it made, if
   // any. The transition is of the last Act/ActContinuous with explore.
   virtual std::optional<double> Observe(Transition transition) = 0;
+  // Several agents that act at once with this one policy (parameter sharing): an action for
+  // each observation (masks[i] for observations[i]), then ObserveEach with their transitions in
+  // the same order. By default Act and Observe for each in turn; an agent whose Observe depends
+  // on the Act before it (PPO's log-probabilities) overrides both.
+  virtual std::vector<int> ActEach(const std::vector<std::vector<float>>& observations,
+                                   const std::vector<ActionMask>& masks, bool explore) {
+    std::vector<int> actions;
+    for (std::size_t i = 0; i < observations.size(); ++i)
+      actions.push_back(Act(observations[i], masks.at(i), explore));
+    return actions;
+  }
+  // The loss of the last update the transitions led to, if any.
+  virtual std::optional<double> ObserveEach(std::vector<Transition> transitions) {
+    std::optional<double> loss;
+    for (Transition& t : transitions) {
+      if (const std::optional<double> l = Observe(std::move(t)))
+        loss = l;
+    }
+    return loss;
+  }
   // DQN's exploration rate; 0 for the algorithms that explore by a stochastic policy.
   virtual double Epsilon() const { return 0.0; }
   // Remembers the networks the policy acts with (those Save writes), in memory, replacing what

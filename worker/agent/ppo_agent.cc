@@ -385,6 +385,22 @@ std::optional<double> PpoAgent::ObserveBatch(std::vector<Transition> transitions
   return m.Learn();
 }
 
+std::vector<int> PpoAgent::ActEach(const std::vector<std::vector<float>>& observations,
+                                   const std::vector<ActionMask>& masks, bool explore) {
+  if (explore)
+    return ActBatch(observations, masks);
+  std::vector<int> actions;
+  for (std::size_t i = 0; i < observations.size(); ++i)
+    actions.push_back(Act(observations[i], masks.at(i), false));
+  return actions;
+}
+
+std::optional<double> PpoAgent::ObserveEach(std::vector<Transition> transitions) {
+  std::vector<int> streams(transitions.size());
+  std::iota(streams.begin(), streams.end(), 0);
+  return ObserveBatch(std::move(transitions), streams);
+}
+
 void PpoAgent::KeepPolicy() {
   impl_->kept_actor = impl_->actor_net.Parameters();
   impl_->kept_critic = impl_->critic_net.Parameters();

@@ -35,6 +35,10 @@ class PpoAgent : public Agent {
   // the rollout holds rollout_steps x num_envs transitions: the mean loss of that update.
   std::optional<double> ObserveBatch(std::vector<Transition> transitions,
                                      const std::vector<int>& envs);
+  // Each observation's transitions form a stream of their own (ActBatch, ObserveBatch).
+  std::vector<int> ActEach(const std::vector<std::vector<float>>& observations,
+                           const std::vector<ActionMask>& masks, bool explore) override;
+  std::optional<double> ObserveEach(std::vector<Transition> transitions) override;
   void KeepPolicy() override;
   void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;

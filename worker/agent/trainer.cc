@@ -15,16 +15,116 @@ std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& b
   return out;
 }
 
-EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode) {
+EpisodeOptions GreedyEpisodeOptions(const AgentSpec& spec) {
   EpisodeOptions options;
+  options.joint = spec.joint_steps;
+  return options;
+}
+
+EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode) {
+  EpisodeOptions options = GreedyEpisodeOptions(spec);
   const int every = spec.baseline_start_every;
   options.reset.random_start = spec.exploring_starts && !(every > 0 && (episode + 1) % every == 0);
   options.max_steps = spec.train_episode_steps;
   return options;
 }
 
+namespace {
+
+std::vector<std::vector<float>> NormaliseEach(const BoxSpace& space,
+                                              const std::vector<std::vector<double>>& rows) {
+  std::vector<std::vector<float>> out;
+  out.reserve(rows.size());
+  for (const auto& row : rows)
+    out.push_back(space.Normalise(row));
+  return out;
+}
+
+std::vector<ActionMask> MasksOf(const Env& env) {
+  std::vector<ActionMask> masks;
+  for (std::size_t a = 0; a < env.AgentCount(); ++a)
+    masks.push_back(env.ValidActionsOf(a));
+  return masks;
+}
+
+// RunEpisode with every agent acting at once (options.joint, several agents).
+EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
+                              const StepCallback& on_step, const EpisodeOptions& options) {
+  const BoxSpace space = env.ObservationSpace();
+  const BoxSpace box = env.ContinuousActionSpace();
+  EpisodeRecord record;
+  record.evaluation = !learn;
+  env.Reset(seed, options.reset);
+  std::vector<std::vector<float>> obs = NormaliseEach(space, env.AgentObservations());
+  std::vector<ActionMask> masks = MasksOf(env);
+  double reward = 0.0;
+  double loss_sum = 0.0;
+  for (;;) {
+    std::vector<Transition> transitions(obs.size());
+    MultiStepResult step;
+    if (agent.Continuous()) {
+      std::vector<std::vector<double>> displacements;
+      for (std::size_t a = 0; a < obs.size(); ++a) {
+        transitions[a].continuous_action = agent.ActContinuous(obs[a], learn);
+        displacements.push_back(ScaleToBox(transitions[a].continuous_action, box));
+      }
+      step = env.StepAllContinuous(displacements);
+    } else {
+      const std::vector<int> actions = agent.ActEach(obs, masks, learn);
+      for (std::size_t a = 0; a < obs.size(); ++a)
+        transitions[a].action = actions[a];
+      step = env.StepAll(actions);
+    }
+    std::vector<std::vector<float>> next = NormaliseEach(space, step.observations);
+    std::vector<ActionMask> next_masks = MasksOf(env);
+    if (options.max_steps > 0 && record.steps + 1 >= options.max_steps)
+      step.truncated = true;  // a time limit: the next state still bootstraps
+    const int first_action = transitions.front().action;
+    if (learn) {
+      for (std::size_t a = 0; a < transitions.size(); ++a) {
+        Transition& t = transitions[a];
+        t.observation = std::move(obs[a]);
+        t.reward = static_cast<float>(step.reward);
+        t.next_observation = next[a];
+        t.terminal = step.terminated;
+        t.next_mask = next_masks[a];
+        t.episode_end = step.terminated || step.truncated;
+      }
+      if (const std::optional<double> loss = agent.ObserveEach(std::move(transitions))) {
+        ++record.updates;
+        loss_sum += *loss;
+      }
+    }
+    record.total_reward += step.reward;
+    reward = step.reward;
+    ++record.steps;
+    if (on_step) {
+      StepResult single;
+      single.observation = step.observations.front();
+      single.reward = step.reward;
+      single.terminated = step.terminated;
+      single.truncated = step.truncated;
+      single.info = step.info;
+      on_step(record.steps, first_action, single);
+    }
+    obs = std::move(next);
+    masks = std::move(next_masks);
+    if (step.terminated || step.truncated)
+      break;
+  }
+  record.epsilon = learn ? agent.Epsilon() : 0.0;
+  record.mean_loss = record.updates > 0 ? loss_sum / record.updates : 0.0;
+  record.final_reward = reward;
+  record.final_info = env.LastInfo();
+  return record;
+}
+
+}  // namespace
+
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
                          const StepCallback& on_step, const EpisodeOptions& options) {
+  if (options.joint && env.AgentCount() > 1)
+    return RunJointEpisode(env, agent, seed, learn, on_step, options);
   const BoxSpace space = env.ObservationSpace();
   EpisodeRecord record;
   record.evaluation = !learn;
@@ -90,7 +190,8 @@ bool Checkpoints::Due(const AgentSpec& spec, int before, int done) {
 EpisodeRecord Checkpoints::Score(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
                                  int episode, TrainResult& result) {
   // The evaluation's first seed: checkpoints are scored on the episode the answer comes from.
-  EpisodeRecord check = RunEpisode(env, agent, EvaluationSeed(spec, seed, 0), false);
+  EpisodeRecord check = RunEpisode(env, agent, EvaluationSeed(spec, seed, 0), false, nullptr,
+                                   GreedyEpisodeOptions(spec));
   check.episode = episode;
   check.checkpoint = true;
   stale_ = kept_ && check.final_reward <= *kept_ ? stale_ + 1 : 0;
@@ -115,8 +216,8 @@ void Checkpoints::Evaluate(Env& env, Agent& agent, const AgentSpec& spec, std::u
     result.policy_episode = spec.train_episodes;
   }
   for (int k = 0; k < spec.eval_episodes; ++k) {
-    EpisodeRecord record =
-        RunEpisode(env, agent, EvaluationSeed(spec, seed, k), false, on_eval_step);
+    EpisodeRecord record = RunEpisode(env, agent, EvaluationSeed(spec, seed, k), false,
+                                      on_eval_step, GreedyEpisodeOptions(spec));
     record.episode = spec.train_episodes + k + 1;
     result.final_info = record.final_info;
     result.final_reward = record.final_reward;

@@ -45,19 +45,27 @@ using StepCallback = std::function<void(int step, int action, const StepResult&)
 // A continuous agent's action (each component in [-1, 1]) mapped onto the env's Box.
 std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& box);
 
-// How one episode differs from the env's own: its reset options, and a step limit (0: none)
-// after which it is truncated.
+// How one episode differs from the env's own: its reset options, a step limit (0: none) after
+// which it is truncated, and whether the env's agents act at once (Env::StepAll, each from its
+// own observation, agent.joint_steps) rather than in turns.
 struct EpisodeOptions {
   ResetOptions reset;
   int max_steps = 0;
+  bool joint = false;
 };
+
+// The options of a greedy episode (a checkpoint, the evaluation, a replay) under `spec`.
+EpisodeOptions GreedyEpisodeOptions(const AgentSpec& spec);
 
 // The options of training episode `episode` (from 0) under `spec` (agent.exploring_starts,
 // agent.baseline_start_every, agent.train_episode_steps).
 EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode);
 
 // Runs one episode from env.Reset(seed, options.reset). With `learn`, the agent explores and
-// learns.
+// learns. With options.joint and an env of several agents, every step is one Env::StepAll:
+// each agent's transition (its observation, action and mask, the shared reward) is learnt from
+// (Agent::ObserveEach); on_step sees the joint step as a StepResult of the first agent's
+// observation and action.
 EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
                          const StepCallback& on_step = nullptr, const EpisodeOptions& options = {});
 

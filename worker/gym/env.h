@@ -29,6 +29,16 @@ struct StepResult {
   StepInfo info;
 };
 
+// One step of every UAV at once: one observation per UAV (its own view), one team reward.
+struct MultiStepResult {
+  std::vector<std::vector<double>> observations;  // [agent]: its own view
+  std::vector<double> state;                      // the global state, if the env has one
+  double reward = 0.0;                            // the env's reward, shared by the team
+  bool terminated = false;
+  bool truncated = false;
+  StepInfo info;
+};
+
 // Gymnasium's reset(options=...): what an env may do differently in one episode.
 struct ResetOptions {
   // Start from a state drawn from the seed instead of the usual initial state (exploring
@@ -58,6 +68,22 @@ class Env {
   virtual const StepInfo& LastInfo() const = 0;
   // The actions allowed in the current state; empty (the default) allows all.
   virtual ActionMask ValidActions() const { return {}; }
+
+  // Several agents that act at once (several UAVs: every UAV moves in each step, as in
+  // PettingZoo's ParallelEnv). An env of one agent has none of these.
+  virtual std::size_t AgentCount() const { return 1; }
+  // Each agent's observation after the last Reset or step.
+  virtual std::vector<std::vector<double>> AgentObservations() const {
+    throw std::logic_error("this env has one agent");
+  }
+  // The actions agent `agent` may take now (empty: all).
+  virtual ActionMask ValidActionsOf(std::size_t /*agent*/) const { return ValidActions(); }
+  virtual MultiStepResult StepAll(const std::vector<int>& /*actions*/) {
+    throw std::logic_error("this env has one agent");
+  }
+  virtual MultiStepResult StepAllContinuous(const std::vector<std::vector<double>>& /*actions*/) {
+    throw std::logic_error("this env has one agent");
+  }
 };
 
 }  // namespace rlpos

@@ -11,16 +11,6 @@
 
 namespace rlpos {
 
-// One step of every UAV at once: one observation per UAV (its own view), one team reward.
-struct MultiStepResult {
-  std::vector<std::vector<double>> observations;  // [uav]: AgentObservation
-  std::vector<double> state;                      // MakeState
-  double reward = 0.0;                            // the env's reward, shared by the team
-  bool terminated = false;
-  bool truncated = false;
-  StepInfo info;
-};
-
 // The placement after every UAV u takes displacements[u] at once. Each target is first
 // resolved alone (TargetAlone: clamped to the UAV's zone; into a building: stays). Then, while
 // some UAV that moves would end closer than kMinUavSeparation to another UAV's end point, the

@@ -39,7 +39,9 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
     return TorchScriptPlacement(folder, env);
   const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
   agent->Load(policy);
-  return RunEpisode(env, *agent, folder.eval_run, false).final_info.positions;
+  return RunEpisode(env, *agent, folder.eval_run, false, nullptr,
+                    GreedyEpisodeOptions(folder.trained.agent))
+      .final_info.positions;
 }
 
 }  // namespace rlpos::sim

@@ -119,7 +119,8 @@ void PrintEpisode(const EpisodeRecord& r, int total) {
 }
 
 // The evaluation episodes' steps, one row each: the UAV that moved (its index), its action and
-// where it went.
+// where it went. With agent.joint_steps every UAV moves in each step: a row per UAV, its action
+// the displacement it made.
 class TrajectoryWriter {
  public:
   TrajectoryWriter(const fs::path& file, const Scenario& s, const Agent& agent)
@@ -137,20 +138,35 @@ class TrajectoryWriter {
       ++episode_;
       last_ = s_.InitialPlacement();
     }
+    if (s_.agent.joint_steps && n_uavs_ > 1) {  // every UAV moved: a row each
+      for (std::size_t u = 0; u < n_uavs_; ++u)
+        Row(step, u, Displacement(u, r), r);
+      last_ = r.info.positions;
+      return;
+    }
     // Several UAVs move in turns of env.turn_steps steps.
     const std::size_t uav = static_cast<std::size_t>((step - 1) / s_.env.turn_steps) % n_uavs_;
-    const Vec3& p = r.info.positions[uav];
-    const Vec3 from = last_[uav];
     // A continuous action is written as the displacement the UAV made, "dx dy dz".
     const std::string moved = agent_.Continuous()
-                                  ? FormatNumber(p.x - from.x) + ' ' + FormatNumber(p.y - from.y) +
-                                        ' ' + FormatNumber(p.z - from.z)
-                                  : s_.env.actions[action];
+                                  ? Displacement(uav, r)
+                                  : s_.env.actions[static_cast<std::size_t>(action)];
+    Row(step, uav, moved, r);
     last_ = r.info.positions;
+  }
+  void Close() { out_.close(); }
+
+ private:
+  std::string Displacement(std::size_t uav, const StepResult& r) const {
+    const Vec3& p = r.info.positions[uav];
+    const Vec3& from = last_[uav];
+    return FormatNumber(p.x - from.x) + ' ' + FormatNumber(p.y - from.y) + ' ' +
+           FormatNumber(p.z - from.z);
+  }
+  void Row(int step, std::size_t uav, const std::string& moved, const StepResult& r) {
+    const Vec3& p = r.info.positions[uav];
     out_ << episode_ << ',' << step << ',' << uav << ',' << moved << ',' << p.x << ',' << p.y << ','
          << p.z << ',' << r.info.n_los << ',' << r.info.throughput_mbps << ',' << r.reward << '\n';
   }
-  void Close() { out_.close(); }
 
  private:
   std::ofstream out_;

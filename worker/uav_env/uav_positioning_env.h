@@ -45,7 +45,8 @@ class UavPositioningEnv : public Env {
   ActionMask ValidActions() const override { return ValidActionsOf(active_); }
   // The same for UAV `uav`, the others where they are now (in StepAll another UAV's move can
   // still refuse an allowed move: ApplyJointDisplacement).
-  ActionMask ValidActionsOf(std::size_t uav) const;
+  ActionMask ValidActionsOf(std::size_t uav) const override;
+  std::size_t AgentCount() const override { return scenario_.uavs.size(); }
 
   // Every UAV at once, actions[u] for UAV u (scenario order): ApplyJointDisplacement's rule,
   // then one decision interval, as Step. The reward, truncation and LastInfo are Step's
@@ -53,12 +54,12 @@ class UavPositioningEnv : public Env {
   // fidelities. Throws std::invalid_argument for a count other than one action per UAV,
   // std::out_of_range for an action outside the action space (naming the UAV), and
   // std::logic_error before the first Reset; a refused call moves nothing.
-  MultiStepResult StepAll(const std::vector<int>& actions);
+  MultiStepResult StepAll(const std::vector<int>& actions) override;
   // The same with one displacement per UAV (env.action_space "continuous").
-  MultiStepResult StepAllContinuous(const std::vector<std::vector<double>>& displacements);
+  MultiStepResult StepAllContinuous(const std::vector<std::vector<double>>& displacements) override;
   // Each UAV's observation (AgentObservation) and the global state (MakeState) after the last
   // Reset, Step or StepAll.
-  std::vector<std::vector<double>> AgentObservations() const;
+  std::vector<std::vector<double>> AgentObservations() const override;
   std::vector<double> State() const { return MakeState(scenario_, info_); }
   BoxSpace StateSpace() const { return StateBounds(scenario_); }
 

@@ -16,7 +16,8 @@ namespace rlpos {
 
 // Trains `agent` (built for `scenario`'s spaces and scenario.agent) from episode run `seed` on
 // scenario.agent.ppo.num_envs envs, stepped over `threads` threads (0: min(cores, num_envs)).
-// std::invalid_argument for a scenario the batched env refuses (packet fidelity).
+// std::invalid_argument for a scenario the batched env refuses (packet fidelity), or several
+// UAVs with agent.joint_steps.
 TrainResult TrainPpoBatched(const Scenario& scenario, PpoAgent& agent, std::uint64_t seed,
                             std::size_t threads = 0, const EpisodeCallback& on_episode = nullptr,
                             const StepCallback& on_eval_step = nullptr);

@@ -153,6 +153,52 @@ TEST_F(TrainCommand, TheProgressLineOfSeveralUavsShowsEachOne) {
   EXPECT_NE(r.err.find(both.str() + " in LoS", eval), std::string::npos) << r.err;
 }
 
+// agent.joint_steps: every UAV moves in each step (a trajectory row per UAV and step), in
+// training, in the evaluation and in the replay, which lands where the training's evaluation
+// did. Without it the UAVs take turns: one row per step.
+TEST_F(TrainCommand, JointStepsMoveEveryUavInEachStepAndReplay) {
+  const std::string urban3 = kScenarios + "urban3.json";
+  for (const bool joint : {true, false}) {
+    const std::string sets = " --set agent.joint_steps=" + std::string(joint ? "true" : "false") +
+                             " --set agent.train_episodes=30 --set env.episode_duration=2";
+    const fs::path out = out_ / (joint ? "joint" : "turns");
+    for (const char* algorithm : {"ppo", "dqn"}) {
+      fs::remove_all(out);
+      const auto r =
+          RunCommand(Sim("train --scenario " + urban3 + " --fidelity analytic" + " --algorithm " +
+                         algorithm + sets + " --json --out " + out.string()));
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      const auto trained = nlohmann::json::parse(r.out)["positions"];
+      std::ifstream trajectory(out / "trajectory.csv");
+      std::string line;
+      std::getline(trajectory, line);  // the header
+      std::vector<int> rows_per_step(21, 0);
+      std::vector<int> moved_per_step(21, 0);  // joint: the UAVs whose displacement is not 0
+      while (std::getline(trajectory, line)) {
+        std::vector<std::string> cells;
+        std::stringstream split(line);
+        for (std::string cell; std::getline(split, cell, ',');)
+          cells.push_back(cell);
+        const auto step = static_cast<std::size_t>(std::stoi(cells.at(1)));
+        ++rows_per_step.at(step);
+        moved_per_step.at(step) += cells.at(3) != "0 0 0";
+      }
+      int steps_moving_several = 0;
+      for (std::size_t step = 1; step <= 20; ++step) {
+        EXPECT_EQ(rows_per_step[step], joint ? 3 : 1) << algorithm << " step " << step;
+        steps_moving_several += moved_per_step[step] > 1;
+      }
+      if (joint)
+        EXPECT_GT(steps_moving_several, 0) << algorithm << ": no step moved several UAVs";
+      const auto replay =
+          RunCommand(Sim("position --scenario " + urban3 + " --positioner rl --json --policy " +
+                         out.string() + sets));
+      ASSERT_EQ(replay.exit_code, 0) << replay.err;
+      EXPECT_EQ(nlohmann::json::parse(replay.out)["positions"], trained) << algorithm;
+    }
+  }
+}
+
 TEST_F(TrainCommand, EachAlgorithmsPolicySaysWhatItIs) {
   for (const std::string algorithm : {"ppo", "sac"}) {
     SCOPED_TRACE(algorithm);
