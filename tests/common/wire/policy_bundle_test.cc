@@ -43,11 +43,14 @@ TEST(PolicyBundle, TheHashIsOfTheFilesWhateverTheirOrder) {
   std::vector<PolicyFile> retrained = TrainedFiles();
   retrained[2].data += "x";
   EXPECT_NE(MakePolicyBundle(retrained).sha256, bundle.sha256);
-  // Sizes are packed: moving a byte from one file to the next is another bundle.
-  std::vector<PolicyFile> shifted = TrainedFiles();
-  shifted[0].data += "{";
-  shifted[1].data.erase(0, 1);
-  EXPECT_NE(MakePolicyBundle(shifted).sha256, bundle.sha256);
+  // The canonical packing, as documented: name, NUL, decimal size, NUL, bytes, in
+  // PolicyFileNames() order. Its hash is the campaign's and the workers' contract.
+  std::string packed;
+  for (const auto& f : {TrainedFiles()[0], TrainedFiles()[1], TrainedFiles()[2]}) {
+    packed += f.name + std::string(1, '\0') + std::to_string(f.data.size()) + std::string(1, '\0') +
+              f.data;
+  }
+  EXPECT_EQ(bundle.sha256, Sha256Hex(packed));
   const PolicyBundle torchscript =
       MakePolicyBundle({{"model.pt", "zip"}, {"policy.json", "{}"}, {"scenario.json", "{}"}});
   EXPECT_EQ(torchscript.format, PolicyFormat::kTorchScript);
