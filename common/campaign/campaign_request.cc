@@ -14,6 +14,13 @@ namespace rlpos {
 CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
                                    const std::vector<SubmittedScenario>& scenarios,
                                    const SubmitLimits& limits) {
+  return PlanSubmittedCampaign(campaign_json, scenarios, {}, limits);
+}
+
+CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
+                                   const std::vector<SubmittedScenario>& scenarios,
+                                   const std::vector<SubmittedPolicy>& policies,
+                                   const SubmitLimits& limits) {
   std::size_t bytes = campaign_json.size();
   for (const auto& s : scenarios)
     bytes += s.file.size() + s.document.size();
@@ -37,9 +44,24 @@ CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
     documents[s.file] = wire::ParseBoundedJson(s.document, wire::kMaxScenarioDocument,
                                                "scenario file \"" + s.file + "\"");
   }
+  if (policies.size() > kMaxCampaignPolicies) {
+    throw std::invalid_argument("the campaign sends " + std::to_string(policies.size()) +
+                                " policies, more than the limit of " +
+                                std::to_string(kMaxCampaignPolicies));
+  }
+  std::map<std::string, PolicyBundle> bundles;
+  for (const auto& p : policies) {
+    if (bundles.count(p.folder))
+      throw std::invalid_argument("policy \"" + p.folder + "\" is sent twice");
+    try {
+      bundles[p.folder] = MakePolicyBundle(p.files);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("policy \"" + p.folder + "\": " + e.what());
+    }
+  }
   CampaignSpec spec;
   try {
-    spec = ParseCampaign(campaign, SentScenarioSource(documents));
+    spec = ParseCampaign(campaign, SentScenarioSource(documents), SentPolicySource(bundles));
   } catch (const ConfigError& e) {
     throw std::invalid_argument("campaign: " + e.describe());
   }
@@ -65,6 +87,12 @@ CampaignSubmission ReadCampaignSubmission(const std::string& campaign_file) {
       continue;
     sent[s.file] = true;
     out.scenarios.push_back({s.file, s.document.dump()});
+  }
+  std::map<std::string, bool> packed;
+  for (const auto& p : spec.policies) {
+    if (!packed[p.folder])
+      out.policies.push_back({p.folder, p.bundle.files});
+    packed[p.folder] = true;
   }
   return out;
 }

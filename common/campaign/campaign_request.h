@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/campaign/expansion.h"
+#include "common/campaign/submitted_policy.h"
 #include "common/campaign/submitted_scenario.h"
 
 namespace rlpos {
@@ -22,6 +23,13 @@ struct SubmitLimits {
 CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
                                    const std::vector<SubmittedScenario>& scenarios,
                                    const SubmitLimits& limits);
+// With the named policies' folders, as packed by the client (each its own bound,
+// kMaxPolicyBytes, outside max_request_bytes); a bundle that is not one (unknown file, too
+// large, a format's file missing) refuses the campaign.
+CampaignPlan PlanSubmittedCampaign(const std::string& campaign_json,
+                                   const std::vector<SubmittedScenario>& scenarios,
+                                   const std::vector<SubmittedPolicy>& policies,
+                                   const SubmitLimits& limits);
 
 // What a client sends for a campaign file: its text and the scenario files it names. Reads
 // and validates the campaign first (ConfigError as ReadCampaignFile).
@@ -29,6 +37,7 @@ struct CampaignSubmission {
   CampaignPlan campaign;  // as the client plans it (its id is the one to expect)
   std::string campaign_json;
   std::vector<SubmittedScenario> scenarios;
+  std::vector<SubmittedPolicy> policies;  // the named policies' folders, packed
 };
 CampaignSubmission ReadCampaignSubmission(const std::string& campaign_file);
 

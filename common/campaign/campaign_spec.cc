@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <set>
 
+#include "common/campaign/campaign_policy.h"
 #include "common/campaign/expansion.h"
 #include "common/config/config_error.h"
 #include "common/config/did_you_mean.h"
@@ -112,12 +113,15 @@ std::vector<std::uint64_t> ReadRngRuns(const json& v, const std::string& path) {
 
 // A non-empty list of distinct names among `all` (`what` names one in messages), returned in
 // the order of `all`: the listing order changes no job, so it must not change the campaign id.
+// `skip_objects`: objects in the list are the caller's (named policies), not names.
 std::vector<std::string> ReadCanonicalList(const json& v, const std::string& path,
                                            const std::vector<std::string>& all,
-                                           const std::string& what) {
+                                           const std::string& what, bool skip_objects = false) {
   std::vector<std::string> chosen;
   for (std::size_t i = 0; i < NonEmptyArray(v, path).size(); ++i) {
     const std::string item_path = JoinPath(path, i);
+    if (skip_objects && v[i].is_object())
+      continue;
     if (!v[i].is_string())
       throw ConfigError(item_path, "expected a string, got " + TypeName(v[i]));
     const std::string name = v[i].get<std::string>();
@@ -287,10 +291,11 @@ ScenarioSource SentScenarioSource(const std::map<std::string, json>& documents) 
 }
 
 CampaignSpec ParseCampaign(const json& document, const std::string& base_dir) {
-  return ParseCampaign(document, FileScenarioSource(base_dir));
+  return ParseCampaign(document, FileScenarioSource(base_dir), FilePolicySource(base_dir));
 }
 
-CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
+CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source,
+                           const PolicySource& policies) {
   ObjectReader r(document, "");
   CampaignSpec spec;
   if (!r.Has("name"))
@@ -330,7 +335,8 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source) {
 
   if (const json* positioners = r.Child("positioners")) {
     spec.positioners =
-        ReadCanonicalList(*positioners, "/positioners", AllPositioners(), "positioner");
+        ReadCanonicalList(*positioners, "/positioners", AllPositioners(), "positioner", true);
+    spec.policies = ReadPolicies(*positioners, "/positioners", policies, spec.scenarios);
   } else {
     spec.positioners = AllPositioners();
   }
@@ -372,14 +378,27 @@ json ToJson(const CampaignSpec& spec) {
     eval["duration"] = *spec.eval.duration;
   if (spec.eval.warmup)
     eval["warmup"] = *spec.eval.warmup;
-  return {{"name", spec.name},
-          {"scenarios", scenarios},
-          {"rng_runs", spec.rng_runs},
-          {"positioners", spec.positioners},
-          {"train", train},
-          {"eval", eval},
-          {"retries", spec.retries},
-          {"job_timeout_s", spec.job_timeout_s}};
+  json out = {{"name", spec.name},
+              {"scenarios", scenarios},
+              {"rng_runs", spec.rng_runs},
+              {"positioners", spec.positioners},
+              {"train", train},
+              {"eval", eval},
+              {"retries", spec.retries},
+              {"job_timeout_s", spec.job_timeout_s}};
+  // Absent without named policies, so older campaigns keep their ids; with them, each one's
+  // sha256 makes the same campaign with another policy another campaign.
+  if (!spec.policies.empty()) {
+    json policies = json::array();
+    for (const auto& p : spec.policies) {
+      policies.push_back({{"folder", p.folder},
+                          {"name", p.name},
+                          {"format", ToString(p.bundle.format)},
+                          {"sha256", p.bundle.sha256}});
+    }
+    out["policies"] = policies;
+  }
+  return out;
 }
 
 std::string ToJsonText(const CampaignSpec& spec) {

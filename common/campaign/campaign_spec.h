@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/scenario/scenario.h"
+#include "common/wire/policy_bundle.h"
 
 namespace rlpos {
 
@@ -25,6 +26,18 @@ struct CampaignScenario {
   nlohmann::json document;             // the scenario file as read (before overrides)
   Scenario scenario;                   // parsed with the eval settings and overrides applied
 };
+
+// An rl positioner that names a policy folder instead of training one:
+// {"rl": {"policy": "policies/p1", "name": "p1"}} in "positioners". Its evals are labelled
+// PolicyLabel(name); the folder travels packed, as its bundle.
+struct CampaignPolicy {
+  std::string folder;   // as written in the campaign
+  std::string name;     // "name", or the folder's last component
+  PolicyBundle bundle;  // its files and their sha256
+};
+
+// "rl+<name>": a named policy's eval label, apart from trained rl's "rl" and "rl@...".
+std::string PolicyLabel(const std::string& name);
 
 struct TrainSettings {
   std::vector<std::uint64_t> seeds{1};  // the first seed gives the plain "rl"/"offsetK" labels
@@ -45,6 +58,7 @@ struct CampaignSpec {
   std::vector<CampaignScenario> scenarios;
   std::vector<std::uint64_t> rng_runs;   // sorted, unique
   std::vector<std::string> positioners;  // canonical order, unique
+  std::vector<CampaignPolicy> policies;  // named policies, as listed
   TrainSettings train;
   EvalSettings eval;
   int retries = 2;               // extra attempts after the first
@@ -66,9 +80,22 @@ ScenarioSource FileScenarioSource(const std::string& base_dir);
 // sent). The map must outlive the source.
 ScenarioSource SentScenarioSource(const std::map<std::string, nlohmann::json>& documents);
 
-// `base_dir` is the folder scenario paths are relative to. Throws ConfigError.
+// Where a campaign's named policies come from: given the folder as the campaign writes it and
+// the JSON path to blame, returns its bundle. Throws ConfigError.
+using PolicySource =
+    std::function<PolicyBundle(const std::string& folder, const std::string& where)>;
+// Folders relative to `base_dir`, read and packed (wire/policy_bundle_files.h).
+PolicySource FilePolicySource(const std::string& base_dir);
+// Bundles sent with the campaign, by folder name. The map must outlive the source.
+PolicySource SentPolicySource(const std::map<std::string, PolicyBundle>& bundles);
+
+// `base_dir` is the folder scenario paths and policy folders are relative to. A named policy
+// is checked where it is cheap: its files (a fixed list, bounded), its scenario.json parsed,
+// and no campaign scenario contradicting it (scenario/scenario_contradiction.h). Throws
+// ConfigError. Without a policy source, a named policy is refused.
 CampaignSpec ParseCampaign(const nlohmann::json& document, const std::string& base_dir);
-CampaignSpec ParseCampaign(const nlohmann::json& document, const ScenarioSource& source);
+CampaignSpec ParseCampaign(const nlohmann::json& document, const ScenarioSource& source,
+                           const PolicySource& policies = nullptr);
 
 // Reads a campaign file; scenario paths are relative to its folder. Throws ConfigError; like
 // ReadJsonFile, errors about the file itself have an empty path (callers prefix the file name).

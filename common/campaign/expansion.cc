@@ -91,9 +91,10 @@ bool NeedsTraining(const CampaignSpec& spec, const CampaignScenario& s) {
   return spec.Uses("rl") || UsesOffsets(spec, s);
 }
 
-// Position jobs of a scenario, one per selected positioner that gives a position.
+// Position jobs of a scenario, one per selected positioner that gives a position and one per
+// named policy.
 std::size_t PositionJobs(const CampaignSpec& spec) {
-  std::size_t producers = 0;
+  std::size_t producers = spec.policies.size();
   for (std::string_view positioner : kPlacingPositioners)
     producers += spec.Uses(std::string(positioner)) ? 1 : 0;
   return producers;
@@ -201,6 +202,18 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
       job.params = ScenarioParams(spec, s, JobKind::kPosition);
       job.params.positioner = positioner;
       sources.push_back({positioner, job.key, std::nullopt, {}});
+      add(std::move(job));
+    }
+
+    // A named policy places the UAVs as a position job: `position --positioner rl --policy`.
+    for (const CampaignPolicy& policy : spec.policies) {
+      Job job;
+      job.label = PolicyLabel(policy.name);
+      job.key = "position/" + name + "/" + job.label;
+      job.params = ScenarioParams(spec, s, JobKind::kPosition);
+      job.params.positioner = "rl";
+      job.params.policy_sha256 = policy.bundle.sha256;
+      sources.push_back({job.label, job.key, std::nullopt, {}});
       add(std::move(job));
     }
 

@@ -6,8 +6,11 @@
 //                                       (offsets only for a single-UAV scenario: they are
 //                                       defined around one UAV, so one of several has none)
 //   position/<scenario>/<positioner>    baseline, centroid, oracle (those selected)
+//   position/<scenario>/rl+<name>       per named policy: its placement (positioner "rl" with
+//                                       the policy's sha256)
 //   eval/<scenario>/<label>/run<R>      per RngRun, per label, depending on the job giving the
-//                                       position: baseline|centroid|oracle on their position job;
+//                                       position: baseline|centroid|oracle and rl+<name> on
+//                                       their position job;
 //                                       rl and offset1..offset5 on the train job.
 // Several train seeds: every seed gets its own rl/offset evals. The first seed's labels are the
 // plain "rl", "offset1".."offset5" (the paper's curves); later seeds' carry "@seed<N>"

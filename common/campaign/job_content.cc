@@ -2,11 +2,21 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "common/hash/sha256.h"
 #include "common/job/job_fields.h"
 
 namespace rlpos {
+namespace {
+
+// Fields declared after results were first cached: left out of the content while unset, so
+// that the jobs without them keep the keys their cached results have.
+bool LeftOutWhenUnset(const char* field) {
+  return std::string(field) == "policy_sha256";
+}
+
+}  // namespace
 
 std::string JobContentBase(const JobParams& p, const std::string& scenario_sha256,
                            const std::string& build) {
@@ -14,8 +24,11 @@ std::string JobContentBase(const JobParams& p, const std::string& scenario_sha25
   // the key it had when these fields were listed here by hand.
   nlohmann::json content = {{"content", 1}, {"build", build}, {"scenario_sha256", scenario_sha256}};
   ForEachField(p, [&](const auto& field, const auto& value) {
-    if (Includes(field.kinds, p.kind))
-      content[field.name] = FieldJson(value);
+    if (!Includes(field.kinds, p.kind))
+      return;
+    nlohmann::json v = FieldJson(value);
+    if (!(v.is_null() && LeftOutWhenUnset(field.name)))
+      content[field.name] = std::move(v);
   });
   return Sha256Hex(content.dump());
 }

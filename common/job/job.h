@@ -32,12 +32,13 @@ std::string ToString(const ScenarioOverride& o);  // "path=value"
 // What one job runs: the fields a worker needs besides the scenario document and the attempt.
 struct JobParams {
   JobKind kind = JobKind::kEval;
-  std::string scenario;                        // the scenario's name in its campaign
-  std::optional<std::uint64_t> train_seed;     // train jobs (and the evals that depend on them)
-  std::string fidelity;                        // train: "analytic" | "packet"
-  std::optional<int> train_episodes;           // train: unset = the scenario's
-  std::string positioner;                      // position: "baseline" | "centroid" | "oracle"
-  std::optional<std::uint64_t> rng_run;        // eval
+  std::string scenario;                     // the scenario's name in its campaign
+  std::optional<std::uint64_t> train_seed;  // train jobs (and the evals that depend on them)
+  std::string fidelity;                     // train: "analytic" | "packet"
+  std::optional<int> train_episodes;        // train: unset = the scenario's
+  std::string positioner;                   // position: "baseline" | "centroid" | "oracle" | "rl"
+  std::string policy_sha256;                // position "rl": the named policy's bundle hash
+  std::optional<std::uint64_t> rng_run;     // eval
   std::optional<double> duration_s, warmup_s;  // unset = the scenario's simulation settings
   std::vector<ScenarioOverride> overrides;     // the campaign scenario's "set", in order
 };

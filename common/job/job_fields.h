@@ -57,6 +57,9 @@ inline constexpr auto kJobFields = std::make_tuple(
     Field("fidelity", &JobParams::fidelity, kTrainJob, "/env/fidelity"),
     Field("train_episodes", &JobParams::train_episodes, kTrainJob, "/agent/train_episodes"),
     Field("positioner", &JobParams::positioner, kPositionJob, nullptr),  // --positioner
+    // The policy a named-policy rl position job flies (--policy): another policy, another
+    // placement, so it is part of the content.
+    Field("policy_sha256", &JobParams::policy_sha256, kPositionJob, nullptr),
     Field("rng_run", &JobParams::rng_run, kEvalJob, "/simulation/run"),
     Field("duration_s", &JobParams::duration_s, kEveryKind, "/simulation/duration"),
     Field("warmup_s", &JobParams::warmup_s, kEveryKind, "/simulation/warmup"),

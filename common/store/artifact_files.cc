@@ -18,6 +18,10 @@ std::string ArtifactsDirOf(const std::string& db_file) {
   return dir.replace_extension(".artifacts").string();
 }
 
+std::string PoliciesDirOf(const std::string& db_file) {
+  return (std::filesystem::path(ArtifactsDirOf(db_file)) / "policies").string();
+}
+
 std::string ArtifactRelativePath(const std::string& job_id, const std::string& name) {
   if (!wire::IsSafePath(job_id, wire::kMaxIdLength))
     throw std::invalid_argument("job id " + wire::Printable(job_id) + " is not a safe path");

@@ -9,6 +9,10 @@ namespace rlpos {
 
 std::string ArtifactsDirOf(const std::string& db_file);
 
+// Where the named policies of its campaigns are kept: <artifacts>/policies/<sha256>/<name>
+// (wire/policy_bundle_files.h), content-addressed, shared by the campaigns that name them.
+std::string PoliciesDirOf(const std::string& db_file);
+
 // "<campaign id>/<key>/<name>" of a job id "<campaign id>/<key>". Throws std::invalid_argument
 // unless the job id is a safe path and the name a safe name (wire/identifiers.h): nothing
 // outside the folder can be named.

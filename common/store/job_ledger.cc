@@ -92,8 +92,8 @@ void JobLedger::InsertJobs(const CampaignPlan& campaign, double now, int& seq,
       "INSERT INTO jobs (id, campaign_id, seq, kind, key, scenario, label, rng_run, train_seed, "
       "fidelity, train_episodes, positioner, duration_s, warmup_s, overrides_json, "
       "depends_on, state, attempt, max_attempts, timeout_s, created_at, "
-      "position_rule_json, content_base, cache_key) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-      "?, ?, ?, ?, 1, ?, ?, ?, ?, ?, ?)");
+      "position_rule_json, content_base, cache_key, policy_sha256) VALUES (?, ?, ?, ?, ?, ?, ?, "
+      "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 1, ?, ?, ?, ?, ?, ?, ?)");
   const auto text_or_null = [](const std::string& text) {
     return text.empty() ? std::nullopt : std::optional<std::string>(text);
   };
@@ -128,7 +128,10 @@ void JobLedger::InsertJobs(const CampaignPlan& campaign, double now, int& seq,
     // then they keep its base. The others know it now, and need no base.
     const auto key = job.depends_on.empty() ? JobContentKey(job.content_base, p.kind, std::nullopt)
                                             : std::nullopt;
-    insert.Bind(key ? std::nullopt : text_or_null(job.content_base)).Bind(key).Run();
+    insert.Bind(key ? std::nullopt : text_or_null(job.content_base))
+        .Bind(key)
+        .Bind(text_or_null(p.policy_sha256))
+        .Run();
     if (key)
       cacheable.push_back(job.id);
   });

@@ -53,6 +53,7 @@ JobParams ReadParams(const Statement& row, int first, std::optional<Placement>& 
       p.overrides.push_back({pair.at(0).get<std::string>(), pair.at(1).get<std::string>()});
     }
     placement = ReadPlacement(row, first + 10);
+    p.policy_sha256 = row.OptionalText(first + 14).value_or("");
   } catch (const std::exception& e) {
     throw StoreError(file, std::string("malformed job row: ") + e.what());
   }

@@ -14,7 +14,7 @@ class Statement;
 // The typed job columns, in the order ReadParams reads them.
 constexpr const char* kParamColumns =
     "kind, scenario, train_seed, fidelity, train_episodes, positioner, rng_run, duration_s, "
-    "warmup_s, overrides_json, x, y, z, positions_json";
+    "warmup_s, overrides_json, x, y, z, positions_json, policy_sha256";
 
 // The placement of x, y, z, positions_json starting at `first`: positions_json when set (several
 // UAVs), else x, y, z when bound. Throws on a malformed positions_json.

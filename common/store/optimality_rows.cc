@@ -13,24 +13,30 @@ constexpr const char* kOracle =
     "AND v.reward IS NOT NULL GROUP BY v.scenario";
 
 // rl evals are labelled "rl" or "rl@..." (campaign/expansion.h: EvalLabel); each depends on
-// the train job that found its placement, whose result names the algorithm it trained.
+// the train job that found its placement, whose result names the algorithm it trained. A named
+// policy's evals ("rl+<name>") depend on its rl position job: their "algorithm" is their label,
+// so that no summary counts them with a trained algorithm.
 const std::string kSelect =
     std::string(
-        "SELECT r.scenario, o.uavs, COALESCE(json_extract(t.result_json, '$.algorithm'), "
-        "''), t.train_seed, r.positioner, COUNT(*), AVG(r.reward), o.reward "
+        "SELECT r.scenario, o.uavs, CASE WHEN t.kind = 'train' THEN "
+        "COALESCE(json_extract(t.result_json, '$.algorithm'), '') ELSE r.positioner END, "
+        "COALESCE(t.train_seed, 0), r.positioner, COUNT(*), AVG(r.reward), o.reward "
         "FROM v_eval_runs r "
         "JOIN jobs e ON e.id = r.job_id "
-        "JOIN jobs t ON t.id = e.depends_on AND t.kind = 'train' "
+        "JOIN jobs t ON t.id = e.depends_on AND (t.kind = 'train' OR (t.kind = 'position' AND "
+        "t.positioner = 'rl')) "
         "JOIN (") +
     kOracle +
     ") o ON o.scenario = r.scenario "
     // Scenarios in campaign order (their first job), found once, as the metric readers do.
     "JOIN (SELECT scenario AS order_scenario, MIN(seq) AS order_seq FROM jobs "
     "WHERE campaign_id = ?1 GROUP BY scenario) f ON f.order_scenario = r.scenario "
-    "WHERE r.campaign_id = ?1 AND (r.positioner = 'rl' OR substr(r.positioner, 1, 3) = 'rl@') "
+    "WHERE r.campaign_id = ?1 AND (r.positioner = 'rl' OR substr(r.positioner, 1, 3) IN ('rl@', "
+    "'rl+')) "
     "AND r.reward IS NOT NULL "
     "GROUP BY r.scenario, r.positioner "
-    "ORDER BY f.order_seq, MIN(t.seq)";
+    // Named policies after the trained rl of their scenario.
+    "ORDER BY f.order_seq, MAX(t.kind = 'position'), MIN(t.seq)";
 
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "common/store/schema.h"
 
+#include <algorithm>
+
 #include "common/store/legacy_argv.h"
 #include "common/store/metric_columns.h"
 #include "common/store/store_error.h"
@@ -302,6 +304,12 @@ void ConvertArgvColumns(Database& db) {
 
 }  // namespace
 
+// Version 12: the policy a named-policy rl position job flies (its bundle's sha256; the bundle
+// is kept beside the database, in <artifacts>/policies/<sha256>/).
+constexpr const char* kVersion12 = R"sql(
+ALTER TABLE jobs ADD COLUMN policy_sha256 TEXT;
+)sql";
+
 const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations = [] {
     std::vector<Migration> out{{1, kVersion1, nullptr, nullptr},
@@ -317,6 +325,9 @@ const std::vector<Migration>& Migrations() {
     // The columns of the eval metrics declared after version 10 (store/metric_columns.h).
     for (auto& migration : DerivedMetricMigrations())
       out.push_back(std::move(migration));
+    out.push_back({12, kVersion12, nullptr, nullptr});
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Migration& a, const Migration& b) { return a.version < b.version; });
     return out;
   }();
   return migrations;

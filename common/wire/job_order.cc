@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "common/config/config_error.h"
+#include "common/hash/sha256.h"
 #include "common/job/job_settings.h"
 #include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
@@ -52,8 +53,13 @@ void CheckParams(const JobParams& p) {
       }
       break;
     case JobKind::kPosition:
+      if (p.positioner == "rl") {
+        if (!IsSha256Hex(p.policy_sha256))
+          Bad("policy_sha256", "an rl position job needs its policy's sha256");
+        break;
+      }
       if (!IsOneOf(p.positioner, kPlacingPositioners)) {
-        Bad("positioner", "must be " + Alternatives(kPlacingPositioners) + ", got \"" +
+        Bad("positioner", "must be " + Alternatives(kPlacingPositioners) + " or rl, got \"" +
                               wire::Printable(p.positioner) + "\"");
       }
       break;
@@ -65,6 +71,8 @@ void CheckParams(const JobParams& p) {
     default:
       Bad("kind", "unknown job kind " + std::to_string(static_cast<int>(p.kind)));
   }
+  if (!(p.kind == JobKind::kPosition && p.positioner == "rl") && !p.policy_sha256.empty())
+    Bad("policy_sha256", "only an rl position job has one");
   CheckDuration(p.duration_s, "duration_s", false);
   CheckDuration(p.warmup_s, "warmup_s", true);
   if (p.overrides.size() > wire::kMaxOverrides)
@@ -131,6 +139,14 @@ CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s) {
                          FormatNumber(order.timeout_s));
   }
   CheckParams(order.params);
+  if (order.params.policy_sha256.empty() != !order.policy)
+    Bad("policy", order.policy ? "only an rl position job carries one" : "the job's is missing");
+  if (order.policy) {
+    if (const std::string problem = CheckPolicyBundle(*order.policy); !problem.empty())
+      Bad("policy", problem);
+    if (order.policy->sha256 != order.params.policy_sha256)
+      Bad("policy", "not the job's policy " + order.params.policy_sha256);
+  }
   CheckedOrder checked;
   const json document = wire::ParseBoundedJson(order.scenario_document, wire::kMaxScenarioDocument,
                                                "scenario_document");

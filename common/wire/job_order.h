@@ -8,6 +8,7 @@
 
 #include "common/job/job.h"
 #include "common/scenario/scenario.h"
+#include "common/wire/policy_bundle.h"
 
 namespace rlpos {
 
@@ -19,6 +20,8 @@ struct JobOrder {
   // eval: one position per UAV (the scenario's order), bound when the dependency succeeds
   std::optional<Placement> placement;
   std::string scenario_document;  // the campaign scenario's JSON, before any override
+  // position "rl": the named policy's files, whose sha256 is params.policy_sha256
+  std::optional<PolicyBundle> policy;
 };
 
 // What a validated order runs.
@@ -40,7 +43,9 @@ nlohmann::json EffectiveScenarioDocument(const nlohmann::json& document, const J
 // Checks every field of an order that came over the network, and the scenario it describes
 // (parsed and validated as rlpos-sim would; an eval's placement has a position per UAV, each
 // inside the venue and outside every building; no override contradicts a setting of the job's
-// fields). `max_timeout_s` is the worker's cap. Throws std::invalid_argument naming the field.
+// fields; a named policy's position job carries its bundle, CheckPolicyBundle-clean and of the
+// job's policy_sha256, and no other job carries one). `max_timeout_s` is the worker's cap. Throws
+// std::invalid_argument naming the field.
 CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s);
 
 }  // namespace rlpos

@@ -22,8 +22,12 @@ constexpr std::size_t kMaxMessage = 1024;                // error and progress l
 constexpr std::size_t kMaxCampaignJson = 65536;
 constexpr std::size_t kMaxCampaignScenarios = 32;
 constexpr std::size_t kMaxScenarioFileName = 512;
-constexpr std::size_t kMaxWorkerJobs = 1024;  // job keys in one worker status
-constexpr std::size_t kMaxJsonDepth = 64;     // nesting of any JSON from the wire
+constexpr std::size_t kMaxWorkerJobs = 1024;           // job keys in one worker status
+constexpr std::size_t kMaxJsonDepth = 64;              // nesting of any JSON from the wire
+constexpr std::size_t kMaxPolicyFiles = 5;             // PolicyFileNames()
+constexpr std::size_t kMaxPolicyFileBytes = 16777216;  // kMaxPolicyBytes: one file, all of them
+constexpr std::size_t kMaxPolicyFileName = 64;
+constexpr std::size_t kMaxPolicyFolders = 4;  // kMaxCampaignPolicies
 constexpr int kMaxAttempt = 1000000;
 constexpr int kMaxSlots = 1024;
 

@@ -27,6 +27,7 @@ msg::CampaignRequest SubmitRequest(const CampaignSubmission& submission, bool us
   request.no_cache = !use_cache;
   request.campaign_json = submission.campaign_json;
   request.scenarios = submission.scenarios;
+  request.policies = submission.policies;
   return request;
 }
 

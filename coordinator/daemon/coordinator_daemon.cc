@@ -7,9 +7,11 @@
 #include "common/logging/log.h"
 #include "common/process/stop_signal.h"
 #include "common/process/wall_clock.h"
+#include "common/store/artifact_files.h"
 #include "common/store/store_error.h"
 #include "common/wire/json_text.h"
 #include "common/wire/limits.h"
+#include "common/wire/policy_bundle_files.h"
 #include "coordinator/daemon/scenario_documents.h"
 #include "idl/dds/message_checks.h"
 #include "idl/dds/topics.h"
@@ -91,9 +93,12 @@ void CoordinatorDaemon::HandleRequests() {
     try {
       switch (r.data.kind) {
         case msg::RequestKind::kSubmit: {
-          CampaignPlan campaign =
-              PlanSubmittedCampaign(r.data.campaign_json, r.data.scenarios, options_.limits);
+          CampaignPlan campaign = PlanSubmittedCampaign(r.data.campaign_json, r.data.scenarios,
+                                                        r.data.policies, options_.limits);
           campaign.use_cache = !r.data.no_cache;
+          // Kept by hash before any job names it: a job's policy is always there to send.
+          for (const auto& policy : campaign.parsed.policies)
+            WritePolicyBundle(policy.bundle, PoliciesDirOf(options_.db_file));
           const SubmitResult result = store_.ledger.Submit(campaign);
           reply.campaign_id = result.campaign_id;
           reply.jobs = result.jobs;
@@ -354,6 +359,8 @@ void CoordinatorDaemon::Publish(const ReadyJob& job, const std::string& worker_i
   a.order.params = job.params;
   a.order.placement = job.placement;
   a.order.scenario_document = ScenarioDocument(job.campaign_id, job.params.scenario);
+  if (!job.params.policy_sha256.empty())
+    a.order.policy = Policy(job.params.policy_sha256);
   dds_->assignments.Write(a);
   published_[job.id] = {job.attempt, worker_id, slot};
 }
@@ -407,6 +414,22 @@ const std::string& CoordinatorDaemon::ScenarioDocument(const std::string& campai
   static const std::string kNone;
   const auto doc = it->second.find(name);
   return doc == it->second.end() ? kNone : doc->second;
+}
+
+std::optional<PolicyBundle> CoordinatorDaemon::Policy(const std::string& sha256) {
+  auto it = policies_.find(sha256);
+  if (it == policies_.end()) {
+    try {
+      it =
+          policies_.emplace(sha256, ReadStoredPolicyBundle(PoliciesDirOf(options_.db_file), sha256))
+              .first;
+    } catch (const std::exception& e) {
+      // Sent without it, the job fails on the worker ("policy: the job's is missing").
+      Log(LogLevel::kWarning, e.what());
+      return std::nullopt;
+    }
+  }
+  return it->second;
 }
 
 TickResult CoordinatorDaemon::Schedule() {

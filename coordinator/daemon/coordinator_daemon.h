@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -80,6 +81,8 @@ class CoordinatorDaemon {
   void Withdraw(const std::string& job_id);
   void DisposeSlot(const std::string& worker_id, int slot);
   const std::string& ScenarioDocument(const std::string& campaign_id, const std::string& name);
+  // A named policy kept beside the database (PoliciesDirOf), by its sha256; read once.
+  std::optional<PolicyBundle> Policy(const std::string& sha256);
   double Now() const;
 
   CoordinatorOptions options_;
@@ -102,6 +105,7 @@ class CoordinatorDaemon {
   std::vector<DeferredEvent> deferred_events_;
   std::size_t deferred_bytes_ = 0;
   std::map<std::string, std::map<std::string, std::string>> documents_;  // by campaign
+  std::map<std::string, PolicyBundle> policies_;                         // by sha256
   DropLog dropped_requests_{"campaign request"}, refused_requests_{"campaign request"},
       dropped_statuses_{"worker status"}, dropped_events_{"job event"};
   double started_ = 0;

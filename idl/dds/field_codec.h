@@ -14,6 +14,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "common/wire/limits.h"
+#include "common/wire/policy_bundle.h"
 #include "idl/dds/message_error.h"
 
 namespace rlpos::codec {
@@ -159,6 +161,14 @@ class Encoder {
     OptionalOrZero(m, c);
   }
 
+  // A policy bundle travels as its files (its sha256 beside it, `claimed`); none: no files.
+  template <typename Seq, typename Fields>
+  void Policy(const std::optional<PolicyBundle>& m, Seq& c, const std::string& /*claimed*/,
+              Fields fields) {
+    const std::vector<PolicyFile> none;
+    Sequence(m ? m->files : none, c, wire::kMaxPolicyFiles, "policy files", fields);
+  }
+
  private:
   SequenceBuffers& buffers_;
 };
@@ -241,6 +251,17 @@ class Decoder {
   void OptionalWhen(std::optional<T>& m, const C& c, bool when) {
     if (when)
       m = static_cast<T>(c);
+  }
+
+  // Decoded as received, with the sha256 its order claims (decoded before it): CheckJobOrder
+  // holds it to that.
+  template <typename Seq, typename Fields>
+  void Policy(std::optional<PolicyBundle>& m, const Seq& c, const std::string& claimed,
+              Fields fields) {
+    std::vector<PolicyFile> files;
+    Sequence(files, c, wire::kMaxPolicyFiles, "policy files", fields);
+    if (!files.empty())
+      m = ReceivedPolicyBundle(std::move(files), claimed);
   }
 
  private:

@@ -102,12 +102,28 @@ std::string CheckCampaignRequest(const msg::CampaignRequest& r) {
         if (s.document.size() > wire::kMaxScenarioDocument)
           return "scenario document too large";
       }
+      if (r.policies.size() > wire::kMaxPolicyFolders)
+        return "too many policies";
+      for (const auto& p : r.policies) {
+        if (p.folder.empty() || !IsPrintable(p.folder, wire::kMaxScenarioFileName))
+          return "bad policy folder name";
+        // The files are held to a bundle's rules (names, bounds) when the campaign is planned;
+        // here only what a sample may hold at all.
+        if (p.files.size() > wire::kMaxPolicyFiles)
+          return "too many policy files";
+        std::size_t total = 0;
+        for (const auto& f : p.files) {
+          total += f.data.size();
+          if (total > wire::kMaxPolicyFileBytes)
+            return "policy too large";
+        }
+      }
       break;
     case msg::RequestKind::kCancel:
     case msg::RequestKind::kRetry:
       if (!wire::IsSafeName(r.campaign_id, wire::kMaxCampaignIdLength))
         return "bad campaign_id";
-      if (!r.campaign_json.empty() || !r.scenarios.empty())
+      if (!r.campaign_json.empty() || !r.scenarios.empty() || !r.policies.empty())
         return "a cancel or retry with a campaign";
       break;
     default:

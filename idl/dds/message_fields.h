@@ -29,11 +29,13 @@ static_assert(static_cast<int>(msg::RequestKind::kSubmit) == rlpos_msg_REQUEST_S
 // JobParams' texts that travel as enums, indexed by the IDL's values: the names of
 // common/scenario/names.h, in the IDL's order.
 constexpr std::array<const char*, 2> kFidelities{"analytic", "packet"};
-constexpr std::array<const char*, 4> kPositioners{"", "baseline", "centroid", "oracle"};
-static_assert(rlpos_msg_FIDELITY_PACKET == 1 && rlpos_msg_POSITIONER_ORACLE == 3);
+// "rl": a named policy's position job (its policy travels with it).
+constexpr std::array<const char*, 5> kPositioners{"", "baseline", "centroid", "oracle", "rl"};
+static_assert(rlpos_msg_FIDELITY_PACKET == 1 && rlpos_msg_POSITIONER_ORACLE == 3 &&
+              rlpos_msg_POSITIONER_RL == 4);
 static_assert(kFidelities.size() == rlpos::kFidelities.size() &&
               kFidelities[0] == rlpos::kFidelities[0] && kFidelities[1] == rlpos::kFidelities[1]);
-static_assert(kPositioners.size() == rlpos::kPlacingPositioners.size() + 1 &&
+static_assert(kPositioners.size() == rlpos::kPlacingPositioners.size() + 2 &&
               kPositioners[1] == rlpos::kPlacingPositioners[0] &&
               kPositioners[2] == rlpos::kPlacingPositioners[1] &&
               kPositioners[3] == rlpos::kPlacingPositioners[2]);
@@ -96,6 +98,11 @@ struct Message<msg::JobAssignment> {
     io.OptionalWhen(p.rng_run, c.rng_run, p.kind == JobKind::kEval);
     io.Optional(p.duration_s, c.has_duration, c.duration_s);
     io.Optional(p.warmup_s, c.has_warmup, c.warmup_s);
+    io.Text(p.policy_sha256, c.policy_sha256, "policy_sha256");
+    io.Policy(order.policy, c.policy_files, p.policy_sha256, [&](auto& f, auto& c_f) {
+      io.Text(f.name, c_f.name, "policy file name");
+      io.Octets(f.data, c_f.data, wire::kMaxPolicyFileBytes, "policy file");
+    });
   }
 };
 
@@ -147,6 +154,15 @@ struct Message<msg::CampaignRequest> {
                             "scenario document");
                 });
     io.Value(m.no_cache, c.no_cache);
+    io.Sequence(
+        m.policies, c.policies, wire::kMaxPolicyFolders, "policies", [&](auto& p, auto& c_p) {
+          io.Text(p.folder, c_p.folder, "policy folder");
+          io.Sequence(p.files, c_p.files, wire::kMaxPolicyFiles, "policy files",
+                      [&](auto& f, auto& c_f) {
+                        io.Text(f.name, c_f.name, "policy file name");
+                        io.Octets(f.data, c_f.data, wire::kMaxPolicyFileBytes, "policy file");
+                      });
+        });
   }
 };
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/campaign/submitted_policy.h"
 #include "common/campaign/submitted_scenario.h"
 #include "common/provenance/provenance.h"
 #include "common/wire/artifacts.h"
@@ -48,6 +49,7 @@ struct CampaignRequest {
   std::string campaign_json;                 // submit: the campaign file as written
   std::vector<SubmittedScenario> scenarios;  // submit: the scenario files, as the client read them
   bool no_cache = false;                     // submit: every job runs, none takes a cached result
+  std::vector<SubmittedPolicy> policies;     // submit: the named policies' folders, packed
 };
 
 struct CampaignReply {

@@ -10,6 +10,7 @@
 #include "common/hash/sha256.h"
 #include "common/scenario/number_text.h"
 #include "common/wire/limits.h"
+#include "common/wire/policy_bundle_files.h"
 #include "worker/daemon/sim_command.h"
 
 namespace rlpos {
@@ -114,7 +115,11 @@ JobAttempt::JobAttempt(JobOrder order, const nlohmann::json& scenario, const std
       throw std::runtime_error(folder_ + "/" + kScenarioFileName + ": cannot write");
     scenario_sha256_ = Sha256Hex(text);
   }
-  const auto argv = SimCommandLine(order_, sim_binary, folder_);
+  // A named policy, checked against its sha256 with the order, is unpacked into a folder the
+  // worker names by that hash: slots and attempts that fly it share it.
+  const std::string policy_dir =
+      order_.policy ? WritePolicyBundle(*order_.policy, WorkerPoliciesDir(work_dir)) : "";
+  const auto argv = SimCommandLine(order_, sim_binary, folder_, policy_dir);
   {
     std::ofstream command(fs::path(folder_) / "command.txt");
     for (const auto& a : argv)

@@ -1,14 +1,19 @@
 #include "worker/daemon/sim_command.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 
 namespace rlpos {
 
+std::string WorkerPoliciesDir(const std::string& work_dir) {
+  return (std::filesystem::path(work_dir) / "policies").string();
+}
+
 std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string& sim_binary,
-                                        const std::string& folder) {
+                                        const std::string& folder, const std::string& policy_dir) {
   namespace fs = std::filesystem;
   const std::string scenario = (fs::path(folder) / kScenarioFileName).string();
   const JobParams& p = order.params;
@@ -19,6 +24,12 @@ std::vector<std::string> SimCommandLine(const JobOrder& order, const std::string
               scenario,   "--out", (fs::path(folder) / kOutFolderName).string(),
               "--json"};
     case JobKind::kPosition: {
+      if (order.policy) {
+        if (policy_dir.empty())
+          throw std::invalid_argument("an rl position job needs its policy's folder");
+        return {sim_binary, "position", "--scenario", scenario, "--positioner",
+                "rl",       "--policy", policy_dir,   "--json"};
+      }
       // One of the names CheckJobOrder lets through, spelt by us, not copied from the wire.
       std::string positioner(kPlacingPositioners.front());
       for (std::string_view name : kPlacingPositioners) {

@@ -35,6 +35,7 @@ JobParams EveryFieldSet(JobKind kind) {
   p.fidelity = "analytic";
   p.train_episodes = 10;
   p.positioner = "oracle";
+  p.policy_sha256 = std::string(64, 'a');
   p.rng_run = 3;
   p.duration_s = 2;
   p.warmup_s = 0.5;

@@ -219,6 +219,16 @@ TEST(JobContent, EveryFieldThatChangesARunChangesTheKey) {
   changed["kind"] = train, changed["kind"].kind = JobKind::kPosition;
   for (const auto& [what, params] : changed)
     EXPECT_NE(JobContentBase(params, "aa", "v1"), base) << what;
+  // A named policy's position job: the policy is its content, so another policy's placement is
+  // never served.
+  JobParams rl_position;
+  rl_position.kind = JobKind::kPosition;
+  rl_position.scenario = "B";
+  rl_position.positioner = "rl";
+  rl_position.policy_sha256 = std::string(64, 'a');
+  JobParams other_policy = rl_position;
+  other_policy.policy_sha256 = std::string(64, 'b');
+  EXPECT_NE(JobContentBase(other_policy, "aa", "v1"), JobContentBase(rl_position, "aa", "v1"));
   // The scenario's name in its campaign is not content.
   JobParams renamed = train;
   renamed.scenario = "other";

@@ -248,5 +248,56 @@ TEST_F(OptimalityStoreTest, TheReportHasTheSectionItsFilesAndItsPlot) {
   }
 }
 
+// A named policy's evals have a row of their own, under their label as algorithm: no summary
+// counts them with the trained rl of the scenario's algorithm.
+TEST(OptimalityNamedPolicy, ANamedPolicyIsNeverCountedAsTrainedRl) {
+  testing::TempDir dir;
+  const std::string folder = dir.File("policies/p1");
+  fs::create_directories(folder);
+  testing::WriteFile(folder + "/scenario.json",
+                     testing::ReadFile(testing::SourcePath("campaigns/scenarios/b.json")));
+  testing::WriteFile(folder + "/result.json", R"({"algorithm": "dqn"})");
+  testing::WriteFile(folder + "/policy.pt", "weights");
+  const json document = {{"name", "named"},
+                         {"scenarios", {"scenarios/b.json"}},
+                         {"rng_runs", {1, 1}},
+                         {"positioners", {"oracle", "rl", {{"rl", {{"policy", "policies/p1"}}}}}}};
+  ExpandedCampaign campaign =
+      ExpandCampaign(ParseCampaign(document, FileScenarioSource(testing::SourcePath("campaigns")),
+                                   FilePolicySource(dir.path())));
+  campaign.use_cache = false;
+  CoordinatorStore store(dir.File("rlpos.db"));
+  store.ledger.Submit(campaign);
+  const auto succeed = [&](const std::string& key, const json& result) {
+    const std::string id = campaign.id + "/" + key;
+    ASSERT_TRUE(store.ledger.MarkRunning(id, "w1", 0, 1)) << key;
+    ASSERT_EQ(store.recorder.RecordSuccess(id, 1, result), JobUpdate::kSucceeded) << key;
+  };
+  const auto eval = [&](const std::string& label, double reward) {
+    const std::string key = "eval/B/" + label + "/run1";
+    json result = testing::EvalResult(1, 100, 2.0);
+    result["reward"] = reward;
+    succeed(key, testing::AtJobPosition(store.reader, campaign.id + "/" + key, result));
+  };
+  succeed("position/B/oracle", testing::PositionResult(5, 50, 55));
+  json trained = testing::PositionResult(50, 35, 11);
+  trained["algorithm"] = "dqn";
+  succeed("train/B/seed1", trained);
+  succeed("position/B/rl+p1", testing::PositionResult(40, 30, 12));
+  eval("oracle", 0.8);
+  eval("rl", 0.4);
+  eval("rl+p1", 0.8);
+  const std::vector<OptimalityRow> rows = store.reader.Optimality(campaign.id);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].label, "rl");
+  EXPECT_EQ(rows[0].algorithm, "dqn");
+  EXPECT_DOUBLE_EQ(*rows[0].Ratio(), 0.5);
+  EXPECT_EQ(rows[1].label, "rl+p1");
+  EXPECT_EQ(rows[1].algorithm, "rl+p1");
+  EXPECT_EQ(rows[1].train_seed, 0u);
+  EXPECT_DOUBLE_EQ(*rows[1].Ratio(), 1.0);
+  EXPECT_EQ(SummarizeOptimality(rows).size(), 2u);
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -15,6 +15,7 @@
 
 #include "common/job/job_fields.h"
 #include "common/wire/limits.h"
+#include "idl/dds/message_checks.h"
 #include "idl/dds/topics.h"
 #include "rlpos_messages.h"
 
@@ -55,10 +56,18 @@ auto Fields(const msg::JobAssignment& m) {
     for (const Vec3& q : *o.placement)
       placement->push_back({q.x, q.y, q.z});
   }
+  std::optional<std::tuple<int, std::vector<std::tuple<std::string, std::string>>, std::string>>
+      policy;
+  if (o.policy) {
+    std::vector<std::tuple<std::string, std::string>> files;
+    for (const auto& f : o.policy->files)
+      files.emplace_back(f.name, f.data);
+    policy.emplace(static_cast<int>(o.policy->format), files, o.policy->sha256);
+  }
   return std::make_tuple(m.worker_id, m.slot, o.job_id, o.attempt, o.campaign_id, o.timeout_s,
                          static_cast<int>(p.kind), p.scenario, o.scenario_document, overrides,
                          p.train_seed, p.fidelity, p.train_episodes, p.positioner, placement,
-                         p.rng_run, p.duration_s, p.warmup_s);
+                         p.rng_run, p.duration_s, p.warmup_s, p.policy_sha256, policy);
 }
 
 auto Fields(const msg::JobEvent& m) {
@@ -75,8 +84,15 @@ auto Fields(const msg::CampaignRequest& m) {
   std::vector<std::tuple<std::string, std::string>> scenarios;
   for (const auto& s : m.scenarios)
     scenarios.emplace_back(s.file, s.document);
+  std::vector<std::tuple<std::string, std::vector<std::tuple<std::string, std::string>>>> policies;
+  for (const auto& p : m.policies) {
+    std::vector<std::tuple<std::string, std::string>> files;
+    for (const auto& f : p.files)
+      files.emplace_back(f.name, f.data);
+    policies.emplace_back(p.folder, files);
+  }
   return std::make_tuple(m.request_id, static_cast<int>(m.kind), m.campaign_id, m.campaign_json,
-                         scenarios, m.no_cache);
+                         scenarios, m.no_cache, policies);
 }
 
 auto Fields(const msg::CampaignReply& m) {
@@ -150,6 +166,17 @@ msg::JobAssignment Position() {
   return a;
 }
 
+// A named policy's position job: the policy travels with it.
+msg::JobAssignment RlPosition() {
+  msg::JobAssignment a = Position();
+  a.order.params.positioner = "rl";
+  a.order.policy = MakePolicyBundle({{"model.pt", std::string("\0\x01zip", 5)},
+                                     {"policy.json", R"({"format": "torchscript"})"},
+                                     {"scenario.json", R"({"name": "C"})"}});
+  a.order.params.policy_sha256 = a.order.policy->sha256;
+  return a;
+}
+
 msg::JobEvent Event() {
   msg::JobEvent e;
   e.worker_id = "w-7";
@@ -173,6 +200,7 @@ msg::CampaignRequest Request() {
   r.campaign_json = R"({"name": "m"})";
   r.scenarios = {{"scenarios/b.json", R"({"name": "B"})"}, {"c.json", "{}"}};
   r.no_cache = true;
+  r.policies = {{"policies/p1", {{"policy.pt", std::string("\0w", 2)}, {"result.json", "{}"}}}};
   return r;
 }
 
@@ -195,7 +223,7 @@ TEST(MessageCodec, WorkerStatusRoundTrips) {
 }
 
 TEST(MessageCodec, JobAssignmentOfEachKindRoundTrips) {
-  for (const auto& a : {Eval(), Train(), Position()}) {
+  for (const auto& a : {Eval(), Train(), Position(), RlPosition()}) {
     SCOPED_TRACE(a.order.job_id + " " + ToString(a.order.params.kind));
     ExpectRoundTrip(a);
   }
@@ -220,7 +248,7 @@ void ExpectTravels(const Field& field, const JobParams& sent, const JobParams& g
 }
 
 TEST(MessageCodec, EveryDeclaredJobFieldOfItsKindTravels) {
-  for (const auto& a : {Eval(), Train(), Position()}) {
+  for (const auto& a : {Eval(), Train(), RlPosition()}) {
     const Received<msg::JobAssignment> got = RoundTrip(a);
     ASSERT_EQ(got.decode_error, "");
     std::apply(
@@ -243,6 +271,32 @@ TEST(MessageCodec, CampaignRequestRoundTrips) {
   msg::CampaignRequest r = Request();
   r.scenarios.assign(wire::kMaxCampaignScenarios + 1, SubmittedScenario{"b.json", "{}"});
   EXPECT_EQ(RefusedField(r), "scenarios");
+  r = Request();
+  r.policies.assign(wire::kMaxPolicyFolders + 1, r.policies.front());
+  EXPECT_EQ(RefusedField(r), "policies");
+}
+
+// A submit's policy folders are dropped by the coordinator's first check when no bundle could be
+// made of them; the bundle's own rules (names, formats) are the planner's.
+TEST(MessageChecks, ASubmitsPoliciesAreBounded) {
+  msg::CampaignRequest r = Request();
+  r.kind = msg::RequestKind::kSubmit;
+  r.campaign_id.clear();
+  EXPECT_EQ(CheckCampaignRequest(r), "");
+  r.policies.front().folder.clear();
+  EXPECT_EQ(CheckCampaignRequest(r), "bad policy folder name");
+  r = Request();
+  r.kind = msg::RequestKind::kSubmit;
+  r.campaign_id.clear();
+  r.policies.front().files.assign(wire::kMaxPolicyFiles + 1, PolicyFile{"policy.pt", "w"});
+  EXPECT_EQ(CheckCampaignRequest(r), "too many policy files");
+  r.policies.front().files = {{"policy.pt", std::string(wire::kMaxPolicyFileBytes, 'w')},
+                              {"result.json", "{}"}};
+  EXPECT_EQ(CheckCampaignRequest(r), "policy too large");
+  r = Request();  // a retry that carries nothing but policies
+  r.campaign_json.clear();
+  r.scenarios.clear();
+  EXPECT_EQ(CheckCampaignRequest(r), "a cancel or retry with a campaign");
 }
 
 TEST(MessageCodec, CampaignReplyRoundTrips) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "common/wire/job_order.h"
+#include "common/wire/policy_bundle.h"
 #include "tests/support/process_test_support.h"
 #include "worker/daemon/sim_command.h"
 
@@ -258,6 +259,31 @@ TEST_F(JobAttemptTest, TheChildGetsTheCommandLineOfItsKind) {
     EXPECT_EQ(ReadFile(argv_file), lines);
     EXPECT_EQ(expected[1], ToString(kind));
   }
+}
+
+// A named policy's position job: the child flies the policy from the folder the worker unpacked
+// it into, named by its hash inside the work folder, never from anything the order names.
+TEST_F(JobAttemptTest, ANamedPolicyIsFlownFromTheFolderTheWorkerNamesByItsHash) {
+  JobOrder order = ShippedOrder(JobKind::kPosition);
+  order.job_id = "c1/position/B/rl+p1";
+  order.params.positioner = "rl";
+  order.policy = MakePolicyBundle(
+      {{"scenario.json", "{}"}, {"result.json", "{}"}, {"policy.pt", std::string("\0weights", 8)}});
+  order.params.policy_sha256 = order.policy->sha256;
+  const CheckedOrder checked = CheckJobOrder(order, 3600);
+  // The child prints the policy.pt it was pointed at.
+  JobAttempt attempt(order, checked.scenario, Work(),
+                     Sim("[ \"$5\" = rl ] && [ \"$6\" = --policy ] && "
+                         "printf '{\"bytes\": %s}' $(wc -c < \"$7/policy.pt\")"));
+  const JobOutcome outcome = AwaitOutcome(attempt);
+  ASSERT_TRUE(outcome.succeeded) << outcome.error;
+  EXPECT_EQ(outcome.result_json, "{\"bytes\":8}");
+  const std::string policy_dir = WorkerPoliciesDir(Work()) + "/" + order.policy->sha256;
+  EXPECT_EQ(ReadFile(policy_dir + "/policy.pt"), std::string("\0weights", 8));
+  const std::string folder = AttemptFolder(Work(), order.job_id, order.attempt);
+  EXPECT_EQ(SimCommandLine(order, "sim", folder, policy_dir),
+            (std::vector<std::string>{"sim", "position", "--scenario", folder + "/scenario.json",
+                                      "--positioner", "rl", "--policy", policy_dir, "--json"}));
 }
 
 TEST_F(JobAttemptTest, TrainGetsAnOutFolderInsideItsAttempt) {
