@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iterator>
 #include <set>
 
 #include "common/metrics/eval_metrics.h"
@@ -90,11 +91,14 @@ TEST(MetricTable, SchemaColumnsAreTheTables) {
 }
 
 TEST(MetricTable, TheRewardIsTheOneMetricNewerThanTheHandWrittenSchema) {
-  // Version 11 adds the reward to metrics and v_eval_runs (a run's only: a UAV has none).
+  // Version 11 adds the reward to metrics and v_eval_runs (a run's only: a UAV has none);
+  // version 12, hand-written after it, a named policy's hash on jobs; nothing is newer.
   const std::vector<Migration> derived = DerivedMetricMigrations();
   ASSERT_EQ(derived.size(), 1u);
   EXPECT_EQ(derived[0].version, kLastHandWrittenSchema + 1);
-  EXPECT_EQ(LatestSchemaVersion(), kLastHandWrittenSchema + 1);
+  EXPECT_EQ(LatestSchemaVersion(), kLastHandWrittenSchema + 2);
+  EXPECT_EQ(std::size(kHandWrittenSchemasAfterMetrics), 1u);
+  EXPECT_EQ(kHandWrittenSchemasAfterMetrics[0], kLastHandWrittenSchema + 2);
   testing::TempDir dir;
   Database db(dir.File("reward.db"), false, 1000);
   MigrateUpTo(db, LatestSchemaVersion());
