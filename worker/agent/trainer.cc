@@ -47,18 +47,42 @@ std::vector<ActionMask> MasksOf(const Env& env) {
   return masks;
 }
 
+// What an episode's steps add up to, the same whether its agents act in turns or at once.
+class EpisodeTally {
+ public:
+  explicit EpisodeTally(bool learn) { record_.evaluation = !learn; }
+  int Steps() const { return record_.steps; }
+  // One step's reward and the loss of the update it led to, if any.
+  void Add(double reward, const std::optional<double>& loss) {
+    if (loss) {
+      ++record_.updates;
+      loss_sum_ += *loss;
+    }
+    record_.total_reward += reward;
+    record_.final_reward = reward;
+    ++record_.steps;
+  }
+  EpisodeRecord Finish(const Env& env, const Agent& agent) {
+    record_.epsilon = record_.evaluation ? 0.0 : agent.Epsilon();
+    record_.mean_loss = record_.updates > 0 ? loss_sum_ / record_.updates : 0.0;
+    record_.final_info = env.LastInfo();
+    return std::move(record_);
+  }
+
+ private:
+  EpisodeRecord record_;
+  double loss_sum_ = 0.0;
+};
+
 // RunEpisode with every agent acting at once (options.joint, several agents).
 EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
                               const StepCallback& on_step, const EpisodeOptions& options) {
   const BoxSpace space = env.ObservationSpace();
   const BoxSpace box = env.ContinuousActionSpace();
-  EpisodeRecord record;
-  record.evaluation = !learn;
+  EpisodeTally tally(learn);
   env.Reset(seed, options.reset);
   std::vector<std::vector<float>> obs = NormaliseEach(space, env.AgentObservations());
   std::vector<ActionMask> masks = MasksOf(env);
-  double reward = 0.0;
-  double loss_sum = 0.0;
   for (;;) {
     std::vector<Transition> transitions(obs.size());
     MultiStepResult step;
@@ -77,9 +101,10 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
     }
     std::vector<std::vector<float>> next = NormaliseEach(space, step.observations);
     std::vector<ActionMask> next_masks = MasksOf(env);
-    if (options.max_steps > 0 && record.steps + 1 >= options.max_steps)
+    if (options.max_steps > 0 && tally.Steps() + 1 >= options.max_steps)
       step.truncated = true;  // a time limit: the next state still bootstraps
     const int first_action = transitions.front().action;
+    std::optional<double> loss;
     if (learn) {
       for (std::size_t a = 0; a < transitions.size(); ++a) {
         Transition& t = transitions[a];
@@ -90,14 +115,9 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
         t.next_mask = next_masks[a];
         t.episode_end = step.terminated || step.truncated;
       }
-      if (const std::optional<double> loss = agent.ObserveEach(std::move(transitions))) {
-        ++record.updates;
-        loss_sum += *loss;
-      }
+      loss = agent.ObserveEach(std::move(transitions));
     }
-    record.total_reward += step.reward;
-    reward = step.reward;
-    ++record.steps;
+    tally.Add(step.reward, loss);
     if (on_step) {
       StepResult single;
       single.observation = step.observations.front();
@@ -105,18 +125,14 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
       single.terminated = step.terminated;
       single.truncated = step.truncated;
       single.info = step.info;
-      on_step(record.steps, first_action, single);
+      on_step(tally.Steps(), first_action, single);
     }
     obs = std::move(next);
     masks = std::move(next_masks);
     if (step.terminated || step.truncated)
       break;
   }
-  record.epsilon = learn ? agent.Epsilon() : 0.0;
-  record.mean_loss = record.updates > 0 ? loss_sum / record.updates : 0.0;
-  record.final_reward = reward;
-  record.final_info = env.LastInfo();
-  return record;
+  return tally.Finish(env, agent);
 }
 
 }  // namespace
@@ -126,12 +142,9 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
   if (options.joint && env.AgentCount() > 1)
     return RunJointEpisode(env, agent, seed, learn, on_step, options);
   const BoxSpace space = env.ObservationSpace();
-  EpisodeRecord record;
-  record.evaluation = !learn;
+  EpisodeTally tally(learn);
   std::vector<float> obs = space.Normalise(env.Reset(seed, options.reset));
   ActionMask mask = env.ValidActions();
-  double reward = 0.0;
-  double loss_sum = 0.0;
   const BoxSpace box = env.ContinuousActionSpace();
   for (;;) {
     Transition t;
@@ -146,8 +159,9 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
     const int action = t.action;
     std::vector<float> next = space.Normalise(step.observation);
     ActionMask next_mask = env.ValidActions();
-    if (options.max_steps > 0 && record.steps + 1 >= options.max_steps)
+    if (options.max_steps > 0 && tally.Steps() + 1 >= options.max_steps)
       step.truncated = true;  // a time limit: the next state still bootstraps
+    std::optional<double> loss;
     if (learn) {
       t.observation = obs;
       t.reward = static_cast<float>(step.reward);
@@ -155,26 +169,17 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
       t.terminal = step.terminated;
       t.next_mask = next_mask;
       t.episode_end = step.terminated || step.truncated;
-      if (const std::optional<double> loss = agent.Observe(std::move(t))) {
-        ++record.updates;
-        loss_sum += *loss;
-      }
+      loss = agent.Observe(std::move(t));
     }
-    record.total_reward += step.reward;
-    reward = step.reward;
-    ++record.steps;
+    tally.Add(step.reward, loss);
     if (on_step)
-      on_step(record.steps, action, step);
+      on_step(tally.Steps(), action, step);
     obs = std::move(next);
     mask = std::move(next_mask);
     if (step.terminated || step.truncated)
       break;
   }
-  record.epsilon = learn ? agent.Epsilon() : 0.0;
-  record.mean_loss = record.updates > 0 ? loss_sum / record.updates : 0.0;
-  record.final_reward = reward;
-  record.final_info = env.LastInfo();
-  return record;
+  return tally.Finish(env, agent);
 }
 
 std::uint64_t EvaluationSeed(const AgentSpec& spec, std::uint64_t seed, int k) {
