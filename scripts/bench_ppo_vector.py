@@ -47,8 +47,15 @@ def run(argv):
 
 
 def oracle_reward(sim, scenario):
-    result, _, _ = run([sim, "position", "--scenario", scenario, "--positioner", "oracle",
-                        "--json"])
+    """The oracle's best analytic reward, or None (with a line on stderr) when `position` fails:
+    the scenario's runs are then left out rather than the whole benchmark lost."""
+    try:
+        result, _, _ = run([sim, "position", "--scenario", scenario, "--positioner", "oracle",
+                            "--json"])
+    except SystemExit as failure:
+        print("bench_ppo_vector: %s left out: %s" % (os.path.basename(scenario), failure),
+              file=sys.stderr, flush=True)
+        return None
     return max(c["analytic_reward"] for c in result["candidates"])
 
 
@@ -96,7 +103,10 @@ def main():
 
         def cached_oracle(scenario):
             if key(scenario) not in cache:
-                cache[key(scenario)] = oracle_reward(sim, scenario)
+                reward = oracle_reward(sim, scenario)
+                if reward is None:
+                    return None  # not cached: a later build may place it
+                cache[key(scenario)] = reward
             return cache[key(scenario)]
 
         oracles = {s: pool.submit(cached_oracle, s) for s in scenarios}
@@ -107,6 +117,8 @@ def main():
         for (scenario, seed, (label, _, n)), future in zip(runs, futures):
             reward, wall, cpu = future.result()
             oracle = oracles[scenario].result()
+            if oracle is None:
+                continue
             if args.oracle_cache:
                 save_cache(args.oracle_cache, cache)
             row = {"scenario": os.path.splitext(os.path.basename(scenario))[0], "seed": seed,
@@ -122,6 +134,8 @@ def main():
     first = None
     for label, _, _ in variants:
         group = [r for r in rows if r["variant"] == label]
+        if not group:
+            continue
         ratios = sorted(r["ratio"] for r in group)
         walls = sorted(r["wall"] for r in group)
         cpus = sorted(r["cpu"] for r in group)
