@@ -42,6 +42,13 @@ constexpr std::array<std::string_view, A + B> Concat(const std::array<std::strin
   return out;
 }
 
+// env.observations: the scenario's own fields (their count follows its UAVs and UEs), and the
+// fields that mean the same in every scenario (worker/gym/general_observation.h).
+inline constexpr std::array<std::string_view, 7> kScenarioObservations{
+    "x", "y", "z", "n_los", "throughput", "demands_met", "snr"};
+inline constexpr std::array<std::string_view, 4> kGeneralObservations{"zone", "ues", "heights",
+                                                                      "others"};
+
 // What rlpos-sim track takes for --positioner (it refuses rl and offsets, saying why).
 inline constexpr auto kTrackPositioners = Concat(kPositioners, kTrackingPositioners);
 
@@ -53,6 +60,8 @@ constexpr bool IsOneOf(std::string_view name, const std::array<std::string_view,
   }
   return false;
 }
+
+inline constexpr auto kObservations = Concat(kScenarioObservations, kGeneralObservations);
 
 template <std::size_t N>
 std::vector<std::string> NameList(const std::array<std::string_view, N>& names) {

@@ -317,9 +317,7 @@ EnvSpec ReadEnv(const json& v) {
                                {"up", "down", "forward", "backward", "left", "right", "stay"});
   }
   if (const json* o = r.Child("observations")) {
-    e.observations = ReadStringList(*o, r.PathOf("observations"),
-                                    {"x", "y", "z", "n_los", "throughput", "demands_met", "snr",
-                                     "zone", "ues", "heights", "others"});
+    e.observations = ReadStringList(*o, r.PathOf("observations"), NameList(kObservations));
   }
   e.observed_ues = static_cast<int>(r.Integer("observed_ues", e.observed_ues, 1, 64));
   e.height_map = static_cast<int>(r.Integer("height_map", e.height_map, 1, 33));
@@ -707,9 +705,8 @@ json ToJson(const Scenario& s) {
   // Likewise absent before the general observations, unless they are used or set.
   const EnvSpec defaults;
   const bool general =
-      std::any_of(s.env.observations.begin(), s.env.observations.end(), [](const std::string& f) {
-        return f == "zone" || f == "ues" || f == "heights" || f == "others";
-      });
+      std::any_of(s.env.observations.begin(), s.env.observations.end(),
+                  [](const std::string& f) { return IsOneOf(f, kGeneralObservations); });
   if (general || s.env.observed_ues != defaults.observed_ues)
     document["env"]["observed_ues"] = s.env.observed_ues;
   if (general || s.env.height_map != defaults.height_map)

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "common/scenario/names.h"
 #include "worker/gym/moves.h"
 
 namespace rlpos {
@@ -114,7 +115,7 @@ void AddOthers(const Scenario& s, const StepInfo& info, std::vector<double>& out
 }  // namespace
 
 bool IsGeneralObservation(std::string_view field) {
-  return field == "zone" || field == "ues" || field == "heights" || field == "others";
+  return IsOneOf(field, kGeneralObservations);
 }
 
 void AddGeneralBounds(const Scenario& s, std::string_view field, BoxSpace& box) {

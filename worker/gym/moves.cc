@@ -104,11 +104,6 @@ BoxSpace DisplacementBounds(const Scenario& s) {
   return {{-d, -d, -d}, {d, d, d}};
 }
 
-bool OnlyGeneralObservations(const Scenario& s) {
-  return std::all_of(s.env.observations.begin(), s.env.observations.end(),
-                     [](const std::string& field) { return IsGeneralObservation(field); });
-}
-
 BoxSpace ObservationBounds(const Scenario& s) {
   BoxSpace box;
   const double n = static_cast<double>(s.ues.size());
@@ -116,57 +111,65 @@ BoxSpace ObservationBounds(const Scenario& s) {
     for (const auto& uav : s.uavs)
       box.low.push_back(uav.zone.*lo), box.high.push_back(uav.zone.*hi);
   };
+  bool plain = false;  // a field of the scenario's own (not a general one): the one-hot follows
   for (const auto& field : s.env.observations) {
+    plain = plain || !IsGeneralObservation(field);
     if (field == "x")
       per_uav(&Box::xmin, &Box::xmax);
-    if (field == "y")
+    else if (field == "y")
       per_uav(&Box::ymin, &Box::ymax);
-    if (field == "z")
+    else if (field == "z")
       per_uav(&Box::zmin, &Box::zmax);
-    if (field == "n_los" || field == "demands_met")
+    else if (field == "n_los" || field == "demands_met")
       box.low.push_back(0), box.high.push_back(n);
-    if (field == "throughput")
+    else if (field == "throughput")
       box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
-    if (field == "snr") {
+    else if (field == "snr") {
       for (std::size_t i = 0; i < s.ues.size(); ++i)
         box.low.push_back(kObservedSnrLowDb), box.high.push_back(kObservedSnrHighDb);
-    }
-    AddGeneralBounds(s, field, box);
+    } else
+      AddGeneralBounds(s, field, box);
   }
-  if (s.uavs.size() > 1 && !OnlyGeneralObservations(s)) {
+  if (s.uavs.size() > 1 && plain) {
     for (std::size_t u = 0; u < s.uavs.size(); ++u)
       box.low.push_back(0), box.high.push_back(1);
   }
   return box;
 }
 
+// Called at every step: each field is compared until its branch is found, once.
 std::vector<double> MakeObservation(const Scenario& s, const StepInfo& info) {
   std::vector<double> obs;
   obs.reserve(3 * info.positions.size() + 3 + info.snr_db.size() + s.uavs.size());
+  bool plain = false;  // as in ObservationBounds
   for (const std::string_view field : s.env.observations) {
-    if (field == "x"sv)
+    bool general = false;
+    if (field == "x"sv) {
       for (const auto& p : info.positions)
         obs.push_back(p.x);
-    if (field == "y"sv)
+    } else if (field == "y"sv) {
       for (const auto& p : info.positions)
         obs.push_back(p.y);
-    if (field == "z"sv)
+    } else if (field == "z"sv) {
       for (const auto& p : info.positions)
         obs.push_back(p.z);
-    if (field == "n_los"sv)
+    } else if (field == "n_los"sv) {
       obs.push_back(info.n_los);
-    if (field == "demands_met"sv)
+    } else if (field == "demands_met"sv) {
       obs.push_back(info.demands_met);
-    if (field == "throughput"sv)
+    } else if (field == "throughput"sv) {
       obs.push_back(info.throughput_mbps);
-    if (field == "snr"sv) {
+    } else if (field == "snr"sv) {
       // Clipped to the bounds so that the observation always lies in its space.
       for (double snr : info.snr_db)
         obs.push_back(std::clamp(snr, kObservedSnrLowDb, kObservedSnrHighDb));
+    } else {
+      general = true;
+      AddGeneralObservation(s, info, field, obs);
     }
-    AddGeneralObservation(s, info, field, obs);
+    plain = plain || !general;
   }
-  if (s.uavs.size() > 1 && !OnlyGeneralObservations(s)) {
+  if (s.uavs.size() > 1 && plain) {
     for (std::size_t u = 0; u < s.uavs.size(); ++u)
       obs.push_back(static_cast<int>(u) == info.active_uav ? 1.0 : 0.0);
   }

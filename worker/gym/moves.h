@@ -51,7 +51,6 @@ constexpr double kObservedSnrHighDb = 60.0;
 // general_observation.h says). With several UAVs a one-hot of the UAV whose turn it is follows
 // (a shared policy moves them in turn), unless every field is one of the general ones, which
 // already see the world from that UAV.
-bool OnlyGeneralObservations(const Scenario& scenario);
 BoxSpace ObservationBounds(const Scenario& scenario);
 std::vector<double> MakeObservation(const Scenario& scenario, const StepInfo& info);
 
