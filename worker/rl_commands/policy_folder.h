@@ -22,9 +22,12 @@ struct PolicyFolder {
   std::uint64_t first_episode_run = 0;  // RngRun of the first training episode
   std::uint64_t eval_run =
       0;  // RngRun of the final evaluation episode, whose end result.json reports
-  // A general policy may be placed in scenarios other than its own. None is yet: the field is
-  // read so that a folder that claims it is refused rather than misread.
+  // A general policy (rlpos-sim train --generated or --scenarios) is placed in any scenario with
+  // a UAV count in [min_uavs, max_uavs]: it flies there with its own env settings
+  // (trained.env) from the baseline.
   bool general = false;
+  int min_uavs = 1;
+  int max_uavs = 1;
   // Set for a TorchScript folder (model.pt is its policy); unset for ours (the agent of
   // trained.agent is).
   std::optional<TorchScriptManifest> torchscript;

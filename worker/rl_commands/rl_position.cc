@@ -25,12 +25,43 @@ void RefuseContradiction(const PolicyFolder& folder, const CommonOptions& option
   }
 }
 
+// A general policy flies in the caller's scenario with its own env and agent settings: the
+// caller may restate them, not change them (env.fidelity aside: it flies at its own).
+Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options) {
+  Scenario target = LoadScenarioFor(options, {});
+  const int uavs = static_cast<int>(target.uavs.size());
+  if (uavs < folder.min_uavs || uavs > folder.max_uavs) {
+    throw ConfigError("--policy", folder.dir + " was trained for " +
+                                      std::to_string(folder.min_uavs) + "-" +
+                                      std::to_string(folder.max_uavs) + " UAVs; " +
+                                      options.scenario_file + " has " + std::to_string(uavs));
+  }
+  target.env = folder.trained.env;
+  target.agent = folder.trained.agent;
+  const auto contradiction =
+      FirstContradiction(target, ScenarioDocument(options.scenario_file, options.overrides));
+  if (contradiction) {
+    throw ConfigError("--policy", folder.dir + " (a policy for any scenario) does not fit " +
+                                      options.scenario_file + ": " + contradiction->path + ": " +
+                                      contradiction->problem);
+  }
+  return target;
+}
+
 }  // namespace
 
 Placement PolicyPlacement(const CommonOptions& options, const std::string& policy) {
   if (policy.empty())
     throw ConfigError("--policy", "is required for the rl positioner");
   const PolicyFolder folder = ReadPolicyFolder(policy);
+  if (folder.general && !folder.torchscript) {
+    UavPositioningEnv env(GeneralTarget(folder, options));
+    const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
+    agent->Load(policy);
+    return RunEpisode(env, *agent, folder.eval_run, false, nullptr,
+                      GreedyEpisodeOptions(folder.trained.agent))
+        .final_info.positions;
+  }
   RefuseContradiction(folder, options);
   // Training's own final evaluation episode: its scenario (fidelity and agent included), its
   // run, from the baseline, greedy. A TorchScript policy flies in its scenario's env the same way.
@@ -46,7 +77,7 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
 
 }  // namespace rlpos::sim
 
-extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v3() {
+extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v4() {
   // rlpos-sim asks for the commands before it trains or loads a policy: the moment to size
   // libtorch's pool.
   rlpos::UseOneTorchThreadUnlessAsked();

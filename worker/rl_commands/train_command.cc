@@ -11,6 +11,7 @@
 #include "worker/agent/make_agent.h"
 #include "worker/agent/ppo_agent.h"
 #include "worker/agent/trainer.h"
+#include "worker/rl_commands/generalist_train_command.h"
 #include "worker/rl_commands/policy_folder.h"
 #include "worker/rl_commands/rl_commands.h"
 #include "worker/uav_env/uav_positioning_env.h"
@@ -224,6 +225,12 @@ void PrintTrained(const Scenario& s, const TrainResult& result, const std::strin
 }  // namespace
 
 int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
+  if (TrainsAcrossScenarios(t))
+    return GeneralistTrainCommand(options, t);
+  if (options.scenario_file.empty())
+    throw ConfigError("--scenario", "is required (or --generated or --scenarios, for any scenario)");
+  if (t.steps > 0)
+    throw ConfigError("--steps", "is for --generated and --scenarios; give --episodes");
   const Scenario s = LoadScenarioFor(options, TrainOverrides(t));
   const fs::path partial = CreatePartialFolder(t.out);
   try {

@@ -30,9 +30,9 @@ const RlCommands& Load() {
     void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module)
       throw std::runtime_error("cannot load the RL commands: " + std::string(dlerror()));
-    auto entry = reinterpret_cast<const RlCommands* (*)()>(dlsym(module, "rlpos_rl_commands_v3"));
+    auto entry = reinterpret_cast<const RlCommands* (*)()>(dlsym(module, "rlpos_rl_commands_v4"));
     if (!entry)
-      throw std::runtime_error(path + ": no rlpos_rl_commands_v3 entry point");
+      throw std::runtime_error(path + ": no rlpos_rl_commands_v4 entry point");
     return entry();
   }();
   return *commands;

@@ -4,6 +4,8 @@
 //                  [--json]
 //   rlpos-sim train --scenario FILE [--algorithm dqn|ppo|sac] [--fidelity packet|analytic]
 //                   [--seed N] --out DIR [--json]
+//   rlpos-sim train --generated STYLE[,STYLE...] | --scenarios DIR [--uavs K|K-L] [--ues M-N]
+//                   --steps N [--seed N] --out DIR [--json]
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
 //   rlpos-sim track --scenario FILE --positioner NAME --duration S --RngRun N
 //                   [--fidelity analytic] [--json]
@@ -92,7 +94,22 @@ void AddEval(CLI::App& app, Invocation& in) {
 
 void AddTrain(CLI::App& app, Invocation& in) {
   in.train = app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
-  in.train->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
+  in.train->add_option("--scenario", in.options.scenario_file, "Scenario JSON");
+  in.train->add_option("--generated", in.train_options.generated,
+                       "Train a policy for any scenario, on a fresh generated scenario per "
+                       "episode of these styles (urban,campus,suburb,open) instead of --scenario");
+  in.train->add_option("--scenarios", in.train_options.scenarios_dir,
+                       "Train a policy for any scenario on the scenarios (*.json) of this folder");
+  in.train->add_option("--uavs", in.train_options.uavs, "--generated: UAVs, 1 or a range 1-3");
+  in.train->add_option("--ues", in.train_options.ues,
+                       "--generated: UEs, a count or a range 6-16 (default: the style's)");
+  in.train->add_option("--steps", in.train_options.steps,
+                       "--generated, --scenarios: env steps to train on")
+      ->check(CLI::PositiveNumber);
+  in.train
+      ->add_option("--validation-scenarios", in.train_options.validation_scenarios,
+                   "--generated, --scenarios: scenarios the kept policy is chosen on (default 24)")
+      ->check(CLI::Range(1, 1000));
   in.train
       ->add_option("--algorithm", in.train_options.algorithm,
                    rlpos::Choices(rlpos::kAlgorithms) +

@@ -17,4 +17,4 @@ struct RlCommands {
 }  // namespace rlpos::sim
 
 // The module's one entry point (looked up by name with dlsym).
-extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v3();
+extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v4();

@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""Zero-shot placement: a policy for any scenario against the oracle, on scenarios it never saw.
+
+For every scenario of --scenarios (a set from scripts/generate_scenario_set.sh; --uavs keeps those
+with that many UAVs, by the set's index.tsv), the policy places the UAVs with
+`rlpos-sim position --positioner rl --policy DIR` (loading the policy and flying it greedy from
+the baseline, the whole process timed), and the oracle with `rlpos.oracle(packet_candidates=0)`
+(the best point of the analytic grid search, timed). Both are scored by the analytic model.
+Prints one row per scenario (reward, oracle, ratio, seconds) and the summary the acceptance of a
+policy for any scenario reads: median and P10 of the ratio, the share of scenarios at or above
+0.95, and the worst case.
+
+  scripts/bench_zero_shot.py --policy DIR --scenarios DIR [--uavs 1] [--build DIR] [--jobs 2]
+                             [--csv FILE]
+"""
+import argparse
+import concurrent.futures
+import csv
+import json
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+
+
+def fail(message):
+    print("bench_zero_shot: %s" % message, file=sys.stderr)
+    sys.exit(2)
+
+
+def scenarios_of(folder, uavs):
+    index = os.path.join(folder, "index.tsv")
+    if not os.path.exists(index):
+        fail("%s has no index.tsv (write the set with scripts/generate_scenario_set.sh)" % folder)
+    with open(index) as f:
+        rows = list(csv.DictReader(f, delimiter="\t"))
+    return [os.path.join(folder, r["file"]) for r in rows if uavs is None or int(r["uavs"]) == uavs]
+
+
+def placed(sim, policy, scenario):
+    started = time.monotonic()
+    done = subprocess.run([sim, "position", "--scenario", scenario, "--positioner", "rl",
+                           "--policy", policy, "--json"], capture_output=True, text=True)
+    wall = time.monotonic() - started
+    if done.returncode != 0:
+        fail("%s: %s" % (os.path.basename(scenario), done.stderr.strip()))
+    return json.loads(done.stdout)["reward"], wall
+
+
+def oracle(rlpos, scenario):
+    started = time.monotonic()
+    best = rlpos.oracle(scenario, packet_candidates=0, top=1)[0]
+    return best["analytic_reward"], time.monotonic() - started
+
+
+def percentile(values, share):
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(share * (len(ordered) - 1) + 0.5))]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--policy", required=True, help="policy folder (rlpos-sim train --generated)")
+    parser.add_argument("--scenarios", required=True, help="a set with index.tsv")
+    parser.add_argument("--uavs", type=int, help="keep the scenarios with this many UAVs")
+    parser.add_argument("--build", default=os.path.join(REPO, "build"))
+    parser.add_argument("--jobs", type=int, default=2, help="placements at a time (default 2)")
+    parser.add_argument("--csv", help="also write the rows here")
+    args = parser.parse_args()
+    sim = os.path.join(args.build, "bin", "rlpos-sim")
+    if not os.access(sim, os.X_OK):
+        fail("%s not built" % sim)
+    sys.path.insert(0, os.path.join(args.build, "python"))
+    import rlpos  # noqa: E402 (the build's module)
+
+    scenarios = scenarios_of(args.scenarios, args.uavs)
+    if not scenarios:
+        fail("no scenario in %s with %s UAVs" % (args.scenarios, args.uavs))
+    rows = []
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        rl = {s: pool.submit(placed, sim, args.policy, s) for s in scenarios}
+        best = {s: pool.submit(oracle, rlpos, s) for s in scenarios}
+        print("| scenario | rl | oracle | rl / oracle | rl s | oracle s |")
+        print("|---|---|---|---|---|---|")
+        for s in scenarios:
+            reward, rl_s = rl[s].result()
+            top, oracle_s = best[s].result()
+            ratio = reward / top if top > 0 else 1.0
+            rows.append({"scenario": os.path.basename(s), "reward": reward, "oracle": top,
+                         "ratio": ratio, "rl_s": rl_s, "oracle_s": oracle_s})
+            print("| %s | %.4f | %.4f | %.3f | %.2f | %.2f |" %
+                  (os.path.basename(s), reward, top, ratio, rl_s, oracle_s), flush=True)
+    ratios = [r["ratio"] for r in rows]
+    worst = min(rows, key=lambda r: r["ratio"])
+    print()
+    print("%d scenarios: median %.3f, P10 %.3f, >= 0.95 in %d (%.0f%%), worst %.3f (%s); "
+          "median seconds per placement: rl %.2f, oracle %.2f" %
+          (len(rows), statistics.median(ratios), percentile(ratios, 0.10),
+           sum(r >= 0.95 for r in ratios), 100.0 * sum(r >= 0.95 for r in ratios) / len(ratios),
+           worst["ratio"], worst["scenario"], statistics.median(r["rl_s"] for r in rows),
+           statistics.median(r["oracle_s"] for r in rows)))
+    if args.csv:
+        with open(args.csv, "w", newline="") as f:
+            writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+            writer.writeheader()
+            writer.writerows(rows)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,279 @@
+// rlpos-sim train --generated STYLES | --scenarios DIR: a policy for any scenario
+// (worker/vector_training/generalist_training.h), written as a policy folder that declares itself
+// general.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "common/config/config_error.h"
+#include "common/scenario/names.h"
+#include "common/scenario/scenario_parser.h"
+#include "common/scenario_generator/scenario_generator.h"
+#include "worker/agent/make_agent.h"
+#include "worker/agent/ppo_agent.h"
+#include "worker/environment/scenario_loading.h"
+#include "worker/gym/general_observation.h"
+#include "worker/rl_commands/generalist_train_command.h"
+#include "worker/rl_commands/policy_folder.h"
+#include "worker/uav_env/uav_positioning_env.h"
+#include "worker/vector_training/generalist_training.h"
+
+namespace rlpos::sim {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::vector<GeneratorStyle> ParseStyles(const std::string& text) {
+  std::vector<GeneratorStyle> styles;
+  std::stringstream in(text);
+  std::string name;
+  while (std::getline(in, name, ','))
+    styles.push_back(ParseStyle(name, "--generated"));
+  if (styles.empty())
+    throw ConfigError("--generated", "names no style (urban, campus, suburb or open)");
+  return styles;
+}
+
+std::vector<std::string> StyleNames(const std::vector<GeneratorStyle>& styles) {
+  std::vector<std::string> names;
+  for (GeneratorStyle s : styles)
+    names.push_back(StyleName(s));
+  return names;
+}
+
+// What every drawn scenario gets before the user's --set: the fidelity the batched training
+// runs, PPO, the observations that mean the same everywhere, and a network and batch sized for
+// many scenarios (docs/rl.md, "A policy for any scenario").
+std::vector<std::string> GeneralistDefaults(const TrainOptions& t, int max_uavs) {
+  std::vector<std::string> o = AlgorithmOverrides("ppo");
+  o.push_back("env.fidelity=analytic");
+  o.push_back(max_uavs > 1 ? R"(env.observations=["zone","ues","heights","others"])"
+                           : R"(env.observations=["zone","ues","heights"])");
+  o.push_back("agent.hidden=[128,128]");
+  o.push_back("agent.ppo.num_envs=16");
+  if (t.seed >= 0)
+    o.push_back("agent.seed=" + std::to_string(t.seed));
+  return o;
+}
+
+// The settings scenario: `document` with the defaults and the user's --set applied, checked as
+// any scenario is; then held to what training across scenarios needs.
+Scenario SettingsScenario(nlohmann::json document, const std::vector<std::string>& defaults,
+                          const std::vector<std::string>& user) {
+  std::vector<std::string> overrides = defaults;
+  overrides.insert(overrides.end(), user.begin(), user.end());
+  Scenario s;
+  try {
+    ApplyOverrides(document, overrides);
+    s = ParseScenario(document);
+    CheckScenarioAgainstNs3(s);
+  } catch (const ConfigError& e) {
+    throw BlameOverride(e, overrides);
+  }
+  if (s.agent.algorithm != "ppo")
+    throw ConfigError("--algorithm", "only ppo trains across scenarios in this version");
+  if (s.env.fidelity != "analytic")
+    throw ConfigError("--fidelity", "training across scenarios runs at analytic fidelity");
+  for (const std::string& field : s.env.observations) {
+    if (!IsGeneralObservation(field)) {
+      throw ConfigError("--set", "env.observations: \"" + field +
+                                     "\" is one scenario's own; a policy for any scenario "
+                                     "observes zone, ues, heights and others only");
+    }
+  }
+  return s;
+}
+
+struct Source {
+  std::unique_ptr<ScenarioDraw> draw;
+  Scenario settings;
+  nlohmann::json description;  // what result.json records of the training scenarios
+};
+
+Source GeneratedSource(const TrainOptions& t, const std::vector<std::string>& user) {
+  GeneratedDistribution d;
+  d.styles = ParseStyles(t.generated);
+  d.uavs = ParseCountRange(t.uavs, 1, kMaxGeneratedUavs, "--uavs");
+  if (!t.ues.empty())
+    d.ues = ParseCountRange(t.ues, 1, kMaxGeneratedUes, "--ues");
+  GeneratorOptions example;
+  example.seed = kValidationSeedBase;
+  example.style = d.styles.front();
+  example.uavs = d.uavs.max;
+  if (d.ues)
+    example.ues = d.ues->max;
+  Source source;
+  source.settings = SettingsScenario(ParseJsonText(GenerateScenario(example).json_text),
+                                     GeneralistDefaults(t, d.uavs.max), user);
+  source.description = {{"generated", StyleNames(d.styles)},
+                        {"uavs", {d.uavs.min, d.uavs.max}},
+                        {"ues", d.ues ? nlohmann::json{d.ues->min, d.ues->max} : nullptr}};
+  source.draw =
+      std::make_unique<ScenarioDraw>(d, source.settings, source.settings.agent.seed);
+  return source;
+}
+
+Source FolderSource(const TrainOptions& t, const std::vector<std::string>& user) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(t.scenarios_dir, ec)) {
+    if (entry.path().extension() == ".json")
+      files.push_back(entry.path());
+  }
+  if (ec)
+    throw ConfigError("--scenarios", t.scenarios_dir + ": " + ec.message());
+  if (files.empty())
+    throw ConfigError("--scenarios", t.scenarios_dir + " holds no *.json scenario");
+  std::sort(files.begin(), files.end());
+  std::vector<Scenario> set;
+  std::vector<std::string> names;
+  int max_uavs = 1, min_uavs = 1000;
+  for (const fs::path& f : files) {
+    Scenario s = LoadScenario(f.string(), {});
+    max_uavs = std::max(max_uavs, static_cast<int>(s.uavs.size()));
+    min_uavs = std::min(min_uavs, static_cast<int>(s.uavs.size()));
+    set.push_back(std::move(s));
+    names.push_back(f.filename().string());
+  }
+  Source source;
+  source.settings = SettingsScenario(ReadJsonFile(files.front().string()),
+                                     GeneralistDefaults(t, max_uavs), user);
+  source.description = {{"scenarios", names}, {"uavs", {min_uavs, max_uavs}}, {"ues", nullptr}};
+  source.draw = std::make_unique<ScenarioDraw>(std::move(set), names, source.settings,
+                                               source.settings.agent.seed);
+  return source;
+}
+
+std::string Duration(double seconds) {
+  char text[32];
+  const auto s = static_cast<long long>(seconds + 0.5);
+  if (s >= 3600)
+    std::snprintf(text, sizeof text, "%lldh%02lldm", s / 3600, s / 60 % 60);
+  else
+    std::snprintf(text, sizeof text, "%lldm%02llds", s / 60, s % 60);
+  return text;
+}
+
+nlohmann::json ValidationJson(const std::vector<ValidationScore>& scores) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& s : scores)
+    rows.push_back({{"scenario", s.origin}, {"reward", s.final_reward}, {"n_los", s.n_los},
+                    {"n_ues", s.n_ues}});
+  return rows;
+}
+
+}  // namespace
+
+bool TrainsAcrossScenarios(const TrainOptions& t) {
+  return !t.generated.empty() || !t.scenarios_dir.empty();
+}
+
+int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) {
+  if (!t.generated.empty() && !t.scenarios_dir.empty())
+    throw ConfigError("--generated", "and --scenarios exclude each other");
+  if (!options.scenario_file.empty())
+    throw ConfigError("--scenario", "trains for one scenario; --generated and --scenarios for any");
+  if (t.steps <= 0)
+    throw ConfigError("--steps", "is required with --generated and --scenarios");
+  if (t.episodes > 0)
+    throw ConfigError("--episodes", "counts one scenario's episodes; give --steps instead");
+  const Source source = t.generated.empty() ? FolderSource(t, options.overrides)
+                                            : GeneratedSource(t, options.overrides);
+  const Scenario& settings = source.settings;
+  const fs::path out = t.out;
+  if (fs::exists(out))
+    throw ConfigError("--out", t.out + " already exists; choose another folder or remove it");
+  const fs::path partial = t.out + ".partial";
+  std::error_code ec;
+  fs::remove_all(partial, ec);
+  if (!fs::create_directories(partial, ec) || ec)
+    throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
+  try {
+    UavPositioningEnv example(settings);
+    PpoAgent agent(settings.agent, static_cast<int>(example.ObservationSpace().Dim()),
+                   example.ActionSpace().n, t.steps);
+    GeneralistOptions g;
+    g.steps = t.steps;
+    g.validation_scenarios = t.validation_scenarios;
+    std::ofstream curve(partial / "learning_curve.csv");
+    curve << "steps,episodes,train_final_reward,validation_reward,best_validation_reward\n";
+    const auto started = Clock::now();
+    auto last_print = started;
+    const auto on_progress = [&](const GeneralistProgress& p) {
+      curve << p.steps << ',' << p.episodes << ',' << p.train_final_reward << ',';
+      if (p.validation)
+        curve << *p.validation;
+      curve << ',';
+      if (p.best_validation)
+        curve << *p.best_validation;
+      curve << '\n';
+      const auto now = Clock::now();
+      if (!p.validation && now - last_print < std::chrono::seconds(5))
+        return;
+      last_print = now;
+      const double elapsed = std::chrono::duration<double>(now - started).count();
+      const double share = std::min(1.0, static_cast<double>(p.steps) / static_cast<double>(t.steps));
+      std::fprintf(stderr, "steps %lld/%lld (%.0f%%), episodes %lld, final reward %.3f",
+                   static_cast<long long>(p.steps), t.steps, 100 * share,
+                   static_cast<long long>(p.episodes), p.train_final_reward);
+      if (p.validation)
+        std::fprintf(stderr, ", validation %.4f (best %.4f)", *p.validation, *p.best_validation);
+      std::fprintf(stderr, ", %s, ETA %s\n", Duration(elapsed).c_str(),
+                   Duration(share > 0 ? elapsed * (1 - share) / share : 0).c_str());
+    };
+    // Episode e of a training from seed S starts from RngRun S * 1000000 + 1 + e, as
+    // per-scenario training's (its exploring start).
+    const std::uint64_t first_run = settings.agent.seed * 1000000 + 1;
+    const GeneralistResult r =
+        TrainGeneralist(*source.draw, agent, settings.agent, g, first_run, on_progress);
+    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    curve.close();
+    agent.Save(partial.string());
+    nlohmann::json result = {{"general", true},
+                             {"algorithm", settings.agent.algorithm},
+                             {"action_space", settings.env.action_space},
+                             {"fidelity", settings.env.fidelity},
+                             {"seed", settings.agent.seed},
+                             {"training", source.description},
+                             {"steps", r.steps},
+                             {"episodes", r.episodes},
+                             {"kept_at_steps", r.kept_at_steps},
+                             {"validation_reward", r.best_validation},
+                             {"validation", ValidationJson(r.validation)},
+                             {"train_seconds", seconds}};
+    result["training"]["seed"] = settings.agent.seed;
+    if (source.draw->Generated()) {
+      const std::uint64_t first = source.draw->FirstTrainingSeed();
+      result["training"]["generator_seeds"] = {first + r.first_draw, first + r.last_draw};
+      result["training"]["validation_seeds"] = {
+          kValidationSeedBase, kValidationSeedBase + static_cast<std::uint64_t>(t.validation_scenarios) - 1};
+    }
+    // The replay's runs: a general policy is flown greedy from the baseline with run 1.
+    result.update(SeedStreamJson(first_run, 1));
+    result["general"] = true;
+    std::ofstream(partial / "result.json") << result.dump(2) << '\n';
+    std::ofstream(partial / "scenario.json") << ToJson(settings).dump(2) << '\n';
+    fs::rename(partial, out);
+    if (t.json) {
+      std::cout << result.dump(2) << std::endl;
+    } else {
+      std::printf("trained a policy for any scenario (ppo, seed %llu): %lld steps, %lld episodes "
+                  "in %s; validation reward %.4f over %zu scenarios\npolicy in %s\n",
+                  static_cast<unsigned long long>(settings.agent.seed),
+                  static_cast<long long>(r.steps), static_cast<long long>(r.episodes),
+                  Duration(seconds).c_str(), r.best_validation, r.validation.size(),
+                  t.out.c_str());
+    }
+  } catch (...) {
+    fs::remove_all(partial, ec);
+    throw;
+  }
+  return kExitOk;
+}
+
+}  // namespace rlpos::sim

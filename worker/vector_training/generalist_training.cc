@@ -1,0 +1,192 @@
+#include "worker/vector_training/generalist_training.h"
+
+#include <algorithm>
+#include <memory>
+#include <numeric>
+#include <stdexcept>
+#include <thread>
+
+#include "worker/agent/trainer.h"
+#include "worker/uav_env/uav_positioning_env.h"
+#include "worker/vector_env/thread_pool.h"
+
+namespace rlpos {
+namespace {
+
+// The validation flights' RngRun (it shapes nothing at analytic fidelity, but is fixed).
+constexpr std::uint64_t kValidationRun = 1;
+
+double MeanReward(const std::vector<ValidationScore>& scores) {
+  double sum = 0.0;
+  for (const auto& s : scores)
+    sum += s.final_reward;
+  return scores.empty() ? 0.0 : sum / static_cast<double>(scores.size());
+}
+
+// One env of a round: its episode's scenario and where the episode stands.
+struct Lane {
+  std::unique_ptr<UavPositioningEnv> env;
+  std::vector<float> observation;  // normalised
+  ActionMask mask;
+  StepResult last;
+  bool running = false;
+  int steps = 0;
+};
+
+class Round {
+ public:
+  Round(const ScenarioDraw& draw, const AgentSpec& spec, const BoxSpace& space, ThreadPool& pool)
+      : draw_(draw), spec_(spec), space_(space), pool_(pool) {}
+
+  // Env i flies training episode first + i (its draw and run), for i < lanes.
+  void Start(std::int64_t first, std::size_t lanes, std::uint64_t episode_run) {
+    lanes_.resize(lanes);
+    pool_.ForEach(lanes, [&](std::size_t i) {
+      const auto episode = static_cast<std::uint64_t>(first) + i;
+      Lane& lane = lanes_[i];
+      lane.env = std::make_unique<UavPositioningEnv>(draw_.Training(episode).scenario);
+      if (lane.env->ObservationSpace().Dim() != space_.Dim())
+        throw std::logic_error("a drawn scenario's observation differs from the policy's");
+      const EpisodeOptions options = TrainingEpisodeOptions(spec_, static_cast<int>(episode));
+      lane.observation = space_.Normalise(lane.env->Reset(episode_run + episode, options.reset));
+      lane.mask = lane.env->ValidActions();
+      lane.running = true;
+      lane.steps = 0;
+    });
+  }
+
+  // Flies every lane to its episode's end; returns the transitions learnt from.
+  std::int64_t Fly(PpoAgent& agent, double& final_reward_sum) {
+    const int limit = spec_.train_episode_steps;
+    std::int64_t transitions_seen = 0;
+    std::vector<int> active;
+    for (;;) {
+      active.clear();
+      for (std::size_t i = 0; i < lanes_.size(); ++i) {
+        if (lanes_[i].running)
+          active.push_back(static_cast<int>(i));
+      }
+      if (active.empty())
+        return transitions_seen;
+      std::vector<std::vector<float>> batch(active.size());
+      std::vector<ActionMask> masks(active.size());
+      for (std::size_t k = 0; k < active.size(); ++k) {
+        Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
+        batch[k] = lane.observation;
+        masks[k] = lane.mask;
+      }
+      const std::vector<int> actions = agent.ActBatch(batch, masks);
+      pool_.ForEach(active.size(), [&](std::size_t k) {
+        Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
+        lane.last = lane.env->Step(actions[k]);
+      });
+      std::vector<Transition> transitions(active.size());
+      for (std::size_t k = 0; k < active.size(); ++k) {
+        Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
+        const StepResult& r = lane.last;
+        ++lane.steps;
+        const bool truncated = r.truncated || (limit > 0 && lane.steps >= limit);
+        Transition& t = transitions[k];
+        t.observation = std::move(batch[k]);
+        t.action = actions[k];
+        t.reward = static_cast<float>(r.reward);
+        t.next_observation = space_.Normalise(r.observation);
+        t.terminal = r.terminated;
+        t.next_mask = lane.env->ValidActions();
+        t.episode_end = r.terminated || truncated;
+        lane.observation = t.next_observation;
+        lane.mask = t.next_mask;
+        if (t.episode_end) {
+          lane.running = false;
+          final_reward_sum += r.reward;
+          lane.env.reset();  // its scenario's memory goes now, not with the next round
+        }
+      }
+      transitions_seen += static_cast<std::int64_t>(transitions.size());
+      agent.ObserveBatch(std::move(transitions), active);
+    }
+  }
+
+ private:
+  const ScenarioDraw& draw_;
+  const AgentSpec& spec_;
+  const BoxSpace& space_;
+  ThreadPool& pool_;
+  std::vector<Lane> lanes_;
+};
+
+}  // namespace
+
+std::vector<DrawnScenario> ValidationSet(const ScenarioDraw& draw, int count) {
+  std::vector<DrawnScenario> set;
+  for (int i = 0; i < count; ++i)
+    set.push_back(draw.Validation(static_cast<std::uint64_t>(i)));
+  return set;
+}
+
+std::vector<ValidationScore> ScoreGreedy(const std::vector<DrawnScenario>& scenarios, Agent& agent,
+                                         const AgentSpec& spec) {
+  std::vector<ValidationScore> scores;
+  for (const DrawnScenario& d : scenarios) {
+    UavPositioningEnv env(d.scenario);
+    const EpisodeRecord r =
+        RunEpisode(env, agent, kValidationRun, false, nullptr, GreedyEpisodeOptions(spec));
+    scores.push_back({d.origin, r.final_reward, r.final_info.n_los, d.scenario.ues.size()});
+  }
+  return scores;
+}
+
+GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, const AgentSpec& spec,
+                                 const GeneralistOptions& options, std::uint64_t episode_run,
+                                 const GeneralistProgressCallback& on_progress) {
+  if (options.steps <= 0)
+    throw std::invalid_argument("the training budget must be at least one step");
+  const auto n = static_cast<std::size_t>(spec.ppo.num_envs);
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  ThreadPool pool(options.threads > 0 ? options.threads : std::min(cores, n));
+  const std::vector<DrawnScenario> validation = ValidationSet(draw, options.validation_scenarios);
+  const BoxSpace space = UavPositioningEnv(validation.front().scenario).ObservationSpace();
+  const std::int64_t every =
+      options.validation_every > 0 ? options.validation_every : std::max<std::int64_t>(1, options.steps / 10);
+
+  GeneralistResult result;
+  result.first_draw = 0;
+  std::optional<double> best;
+  std::int64_t next_validation = every;
+  Round round(draw, spec, space, pool);
+  const auto validate = [&](GeneralistProgress& progress) {
+    std::vector<ValidationScore> scores = ScoreGreedy(validation, agent, spec);
+    const double mean = MeanReward(scores);
+    progress.validation = mean;
+    if (!best || mean >= *best) {
+      best = mean;
+      agent.KeepPolicy();
+      result.kept_at_steps = result.steps;
+      result.validation = std::move(scores);
+    }
+    progress.best_validation = best;
+  };
+  while (result.steps < options.steps) {
+    round.Start(result.episodes, n, episode_run);
+    double final_reward_sum = 0.0;
+    result.steps += round.Fly(agent, final_reward_sum);
+    result.episodes += static_cast<std::int64_t>(n);
+    GeneralistProgress progress;
+    progress.steps = result.steps;
+    progress.episodes = result.episodes;
+    progress.train_final_reward = final_reward_sum / static_cast<double>(n);
+    progress.best_validation = best;
+    if (result.steps >= next_validation || result.steps >= options.steps) {
+      validate(progress);
+      next_validation += every;
+    }
+    if (on_progress)
+      on_progress(progress);
+  }
+  result.last_draw = static_cast<std::uint64_t>(result.episodes) - 1;
+  result.best_validation = *best;
+  agent.RestoreKeptPolicy();
+  return result;
+}
+
+}  // namespace rlpos
