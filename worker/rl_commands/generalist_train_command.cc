@@ -162,7 +162,8 @@ std::string Duration(double seconds) {
 nlohmann::json ValidationJson(const std::vector<ValidationScore>& scores) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& s : scores)
-    rows.push_back({{"scenario", s.origin}, {"reward", s.final_reward}, {"n_los", s.n_los},
+    rows.push_back({{"scenario", s.origin}, {"reward", s.final_reward},
+                    {"oracle_reward", s.oracle_reward}, {"ratio", s.ratio}, {"n_los", s.n_los},
                     {"n_ues", s.n_ues}});
   return rows;
 }
@@ -201,13 +202,16 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     g.steps = t.steps;
     g.validation_scenarios = t.validation_scenarios;
     std::ofstream curve(partial / "learning_curve.csv");
-    curve << "steps,episodes,train_final_reward,validation_reward,best_validation_reward\n";
+    curve << "steps,episodes,train_final_reward,validation_ratio,validation_worst_ratio,"
+             "best_validation_ratio\n";
     const auto started = Clock::now();
     auto last_print = started;
     const auto on_progress = [&](const GeneralistProgress& p) {
       curve << p.steps << ',' << p.episodes << ',' << p.train_final_reward << ',';
       if (p.validation)
-        curve << *p.validation;
+        curve << *p.validation << ',' << *p.validation_worst;
+      else
+        curve << ',';
       curve << ',';
       if (p.best_validation)
         curve << *p.best_validation;
@@ -222,7 +226,8 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
                    static_cast<long long>(p.steps), t.steps, 100 * share,
                    static_cast<long long>(p.episodes), p.train_final_reward);
       if (p.validation)
-        std::fprintf(stderr, ", validation %.4f (best %.4f)", *p.validation, *p.best_validation);
+        std::fprintf(stderr, ", validation %.3f of the oracle, worst %.3f (best mean %.3f)",
+                     *p.validation, *p.validation_worst, *p.best_validation);
       std::fprintf(stderr, ", %s, ETA %s\n", Duration(elapsed).c_str(),
                    Duration(share > 0 ? elapsed * (1 - share) / share : 0).c_str());
     };
@@ -243,7 +248,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
                              {"steps", r.steps},
                              {"episodes", r.episodes},
                              {"kept_at_steps", r.kept_at_steps},
-                             {"validation_reward", r.best_validation},
+                             {"validation_ratio", r.best_validation},
                              {"validation", ValidationJson(r.validation)},
                              {"train_seconds", seconds}};
     result["training"]["seed"] = settings.agent.seed;
@@ -263,7 +268,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
       std::cout << result.dump(2) << std::endl;
     } else {
       std::printf("trained a policy for any scenario (ppo, seed %llu): %lld steps, %lld episodes "
-                  "in %s; validation reward %.4f over %zu scenarios\npolicy in %s\n",
+                  "in %s; %.3f of the oracle's reward on %zu validation scenarios\npolicy in %s\n",
                   static_cast<unsigned long long>(settings.agent.seed),
                   static_cast<long long>(r.steps), static_cast<long long>(r.episodes),
                   Duration(seconds).c_str(), r.best_validation, r.validation.size(),

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "worker/agent/trainer.h"
+#include "worker/positioners/positioners.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_env/thread_pool.h"
 
@@ -16,11 +17,23 @@ namespace {
 // The validation flights' RngRun (it shapes nothing at analytic fidelity, but is fixed).
 constexpr std::uint64_t kValidationRun = 1;
 
-double MeanReward(const std::vector<ValidationScore>& scores) {
+double MeanRatio(const std::vector<ValidationScore>& scores) {
   double sum = 0.0;
   for (const auto& s : scores)
-    sum += s.final_reward;
+    sum += s.ratio;
   return scores.empty() ? 0.0 : sum / static_cast<double>(scores.size());
+}
+
+double WorstRatio(const std::vector<ValidationScore>& scores) {
+  double worst = 1.0;
+  for (const auto& s : scores)
+    worst = std::min(worst, s.ratio);
+  return worst;
+}
+
+std::size_t ThreadsFor(std::size_t asked, std::size_t work) {
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  return asked > 0 ? asked : std::max<std::size_t>(1, std::min(cores, work));
 }
 
 // One env of a round: its episode's scenario and where the episode stands.
@@ -117,21 +130,29 @@ class Round {
 
 }  // namespace
 
-std::vector<DrawnScenario> ValidationSet(const ScenarioDraw& draw, int count) {
-  std::vector<DrawnScenario> set;
-  for (int i = 0; i < count; ++i)
-    set.push_back(draw.Validation(static_cast<std::uint64_t>(i)));
+std::vector<ValidationScenario> ValidationSet(const ScenarioDraw& draw, int count,
+                                              std::size_t threads) {
+  std::vector<ValidationScenario> set(static_cast<std::size_t>(count));
+  ThreadPool pool(ThreadsFor(threads, set.size()));
+  pool.ForEach(set.size(), [&](std::size_t i) {
+    set[i].drawn = draw.Validation(i);
+    OracleOptions analytic_only;
+    analytic_only.packet_candidates = 0;
+    set[i].oracle_reward = OracleSearch(set[i].drawn.scenario, analytic_only).front().analytic_reward;
+  });
   return set;
 }
 
-std::vector<ValidationScore> ScoreGreedy(const std::vector<DrawnScenario>& scenarios, Agent& agent,
-                                         const AgentSpec& spec) {
+std::vector<ValidationScore> ScoreGreedy(const std::vector<ValidationScenario>& scenarios,
+                                         Agent& agent, const AgentSpec& spec) {
   std::vector<ValidationScore> scores;
-  for (const DrawnScenario& d : scenarios) {
-    UavPositioningEnv env(d.scenario);
+  for (const ValidationScenario& v : scenarios) {
+    UavPositioningEnv env(v.drawn.scenario);
     const EpisodeRecord r =
         RunEpisode(env, agent, kValidationRun, false, nullptr, GreedyEpisodeOptions(spec));
-    scores.push_back({d.origin, r.final_reward, r.final_info.n_los, d.scenario.ues.size()});
+    const double ratio = v.oracle_reward > 0 ? r.final_reward / v.oracle_reward : 1.0;
+    scores.push_back({v.drawn.origin, r.final_reward, v.oracle_reward, ratio, r.final_info.n_los,
+                      v.drawn.scenario.ues.size()});
   }
   return scores;
 }
@@ -142,10 +163,10 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
   if (options.steps <= 0)
     throw std::invalid_argument("the training budget must be at least one step");
   const auto n = static_cast<std::size_t>(spec.ppo.num_envs);
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  ThreadPool pool(options.threads > 0 ? options.threads : std::min(cores, n));
-  const std::vector<DrawnScenario> validation = ValidationSet(draw, options.validation_scenarios);
-  const BoxSpace space = UavPositioningEnv(validation.front().scenario).ObservationSpace();
+  ThreadPool pool(ThreadsFor(options.threads, n));
+  const std::vector<ValidationScenario> validation =
+      ValidationSet(draw, options.validation_scenarios, options.threads);
+  const BoxSpace space = UavPositioningEnv(validation.front().drawn.scenario).ObservationSpace();
   const std::int64_t every =
       options.validation_every > 0 ? options.validation_every : std::max<std::int64_t>(1, options.steps / 10);
 
@@ -156,8 +177,9 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
   Round round(draw, spec, space, pool);
   const auto validate = [&](GeneralistProgress& progress) {
     std::vector<ValidationScore> scores = ScoreGreedy(validation, agent, spec);
-    const double mean = MeanReward(scores);
+    const double mean = MeanRatio(scores);
     progress.validation = mean;
+    progress.validation_worst = WorstRatio(scores);
     if (!best || mean >= *best) {
       best = mean;
       agent.KeepPolicy();

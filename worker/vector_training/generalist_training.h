@@ -28,14 +28,26 @@ struct GeneralistOptions {
 struct GeneralistProgress {
   std::int64_t steps = 0;
   std::int64_t episodes = 0;
-  double train_final_reward = 0.0;        // mean final reward of the last round's episodes
-  std::optional<double> validation;       // set when this progress follows a validation
-  std::optional<double> best_validation;  // the kept policy's
+  double train_final_reward = 0.0;  // mean final reward of the last round's episodes
+  // Set when this progress follows a validation: the policy's mean reward over the oracle's on
+  // the validation scenarios, and its worst.
+  std::optional<double> validation;
+  std::optional<double> validation_worst;
+  std::optional<double> best_validation;  // the kept policy's mean
+};
+
+// A validation scenario and the analytic oracle's best reward there (the grid search, no
+// packet-level re-score): what the policy's flight is measured against.
+struct ValidationScenario {
+  DrawnScenario drawn;
+  double oracle_reward = 0.0;
 };
 
 struct ValidationScore {
   std::string origin;  // what ScenarioDraw::Validation said of the scenario
   double final_reward = 0.0;
+  double oracle_reward = 0.0;
+  double ratio = 0.0;  // final_reward / oracle_reward (1 where the oracle's is 0)
   int n_los = 0;
   std::size_t n_ues = 0;
 };
@@ -44,7 +56,7 @@ struct GeneralistResult {
   std::int64_t steps = 0;
   std::int64_t episodes = 0;
   std::int64_t kept_at_steps = 0;  // when the kept policy was scored
-  double best_validation = 0.0;    // its mean final reward over the validation scenarios
+  double best_validation = 0.0;    // its mean reward over the oracle's on the validation set
   std::vector<ValidationScore> validation;  // its score on each
   std::uint64_t first_draw = 0;             // the training draws, first and last (inclusive)
   std::uint64_t last_draw = 0;
@@ -59,10 +71,12 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
                                  const GeneralistOptions& options, std::uint64_t episode_run,
                                  const GeneralistProgressCallback& on_progress = nullptr);
 
-// The draw's first `count` validation scenarios.
-std::vector<DrawnScenario> ValidationSet(const ScenarioDraw& draw, int count);
+// The draw's first `count` validation scenarios with their oracle rewards, searched over
+// `threads` threads (0: the cores).
+std::vector<ValidationScenario> ValidationSet(const ScenarioDraw& draw, int count,
+                                              std::size_t threads = 0);
 // The agent's greedy flight in each: from the baseline, over the env's whole episode.
-std::vector<ValidationScore> ScoreGreedy(const std::vector<DrawnScenario>& scenarios, Agent& agent,
-                                         const AgentSpec& spec);
+std::vector<ValidationScore> ScoreGreedy(const std::vector<ValidationScenario>& scenarios,
+                                         Agent& agent, const AgentSpec& spec);
 
 }  // namespace rlpos

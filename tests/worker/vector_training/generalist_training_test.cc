@@ -1,0 +1,109 @@
+// PPO across generated scenarios: seeded (the same policy twice, whatever the thread count),
+// within its budget, and keeping the policy it scored best.
+#include "worker/vector_training/generalist_training.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "worker/uav_env/uav_positioning_env.h"
+
+namespace rlpos {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Tiny: 4 envs of 10-step episodes, rollouts of 10 steps per env, a 20-step validation flight.
+Scenario Settings() {
+  Scenario s;
+  s.env.fidelity = "analytic";
+  s.env.observations = {"zone", "ues", "heights"};
+  s.env.observed_ues = 4;
+  s.env.height_map = 3;
+  s.env.episode_duration = 2;
+  s.agent.algorithm = "ppo";
+  s.agent.hidden = {16};
+  s.agent.seed = 5;
+  s.agent.train_episode_steps = 10;
+  s.agent.ppo.num_envs = 4;
+  s.agent.ppo.rollout_steps = 10;
+  s.agent.ppo.epochs = 2;
+  return s;
+}
+
+ScenarioDraw Draw() {
+  return ScenarioDraw({{GeneratorStyle::kUrban, GeneratorStyle::kSuburb}, {1, 1}, CountRange{4, 6}},
+                      Settings(), 5);
+}
+
+struct Trained {
+  GeneralistResult result;
+  std::string policy;  // policy.pt's bytes
+};
+
+Trained TrainTiny(std::size_t threads, std::int64_t steps = 200) {
+  const ScenarioDraw draw = Draw();
+  const Scenario example = draw.Validation(0).scenario;
+  UavPositioningEnv env(example);
+  PpoAgent agent(example.agent, static_cast<int>(env.ObservationSpace().Dim()),
+                 env.ActionSpace().n, steps);
+  GeneralistOptions options;
+  options.steps = steps;
+  options.validation_scenarios = 2;
+  options.validation_every = 80;
+  options.threads = threads;
+  Trained t{TrainGeneralist(draw, agent, example.agent, options, 5000001), ""};
+  const fs::path dir = fs::temp_directory_path() /
+                       ("rlpos-generalist-" + std::to_string(threads) + "-" + std::to_string(steps));
+  fs::remove_all(dir);
+  agent.Save(dir.string());
+  std::ifstream in(dir / "policy.pt", std::ios::binary);
+  t.policy.assign(std::istreambuf_iterator<char>(in), {});
+  fs::remove_all(dir);
+  return t;
+}
+
+TEST(GeneralistTraining, SpendsItsBudgetInWholeRoundsOfFreshScenarios) {
+  const Trained t = TrainTiny(1);
+  // Rounds of 4 episodes of 10 steps: 200 steps are 5 rounds.
+  EXPECT_EQ(t.result.steps, 200);
+  EXPECT_EQ(t.result.episodes, 20);
+  EXPECT_EQ(t.result.first_draw, 0u);
+  EXPECT_EQ(t.result.last_draw, 19u);
+  ASSERT_EQ(t.result.validation.size(), 2u);
+  // The kept policy's score is the mean of its flights' rewards over the oracle's.
+  for (const ValidationScore& v : t.result.validation) {
+    EXPECT_GT(v.oracle_reward, 0.0) << v.origin;
+    EXPECT_LE(v.final_reward, v.oracle_reward + 1e-12) << v.origin;  // nothing beats the oracle
+    EXPECT_DOUBLE_EQ(v.ratio, v.final_reward / v.oracle_reward) << v.origin;
+  }
+  EXPECT_DOUBLE_EQ(t.result.best_validation,
+                   (t.result.validation[0].ratio + t.result.validation[1].ratio) / 2);
+  EXPECT_GT(t.result.kept_at_steps, 0);
+  EXPECT_FALSE(t.policy.empty());
+}
+
+TEST(GeneralistTraining, TheSameSeedGivesTheSamePolicyOnAnyThreadCount) {
+  const Trained one = TrainTiny(1);
+  const Trained two = TrainTiny(2);
+  EXPECT_EQ(one.policy, two.policy);
+  EXPECT_EQ(one.result.best_validation, two.result.best_validation);
+  EXPECT_EQ(one.result.kept_at_steps, two.result.kept_at_steps);
+  // A longer budget trains on: another policy.
+  EXPECT_NE(TrainTiny(1, 280).policy, one.policy);
+}
+
+TEST(GeneralistTraining, RefusesAnEmptyBudget) {
+  const ScenarioDraw draw = Draw();
+  const Scenario example = draw.Validation(0).scenario;
+  UavPositioningEnv env(example);
+  PpoAgent agent(example.agent, static_cast<int>(env.ObservationSpace().Dim()),
+                 env.ActionSpace().n);
+  EXPECT_THROW(TrainGeneralist(draw, agent, example.agent, GeneralistOptions{}, 1),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rlpos
