@@ -1,6 +1,7 @@
 #include "common/campaign/campaign_policy.h"
 
 #include <filesystem>
+#include <optional>
 
 #include "common/config/config_error.h"
 #include "common/config/object_reader.h"
@@ -22,10 +23,42 @@ json StatedDocument(const CampaignScenario& s) {
   return stated;
 }
 
-// The policy's own scenario.json; the cheap parts of what `position --policy` reads.
-Scenario CheckPolicyFiles(const PolicyBundle& bundle, const std::string& folder,
-                          const std::string& where) {
+// What a campaign checks of a policy folder: its scenario.json, and whether it is a policy for
+// any scenario (result.json: "general", with the UAV counts it was trained for).
+struct PolicyFacts {
   Scenario trained;
+  bool general = false;
+  int min_uavs = 1;
+  int max_uavs = 1;
+};
+
+void ReadGeneral(const json& result, const std::string& folder, const std::string& where,
+                 PolicyFacts& facts) {
+  const json general = result.value("general", json(false));
+  if (!general.is_boolean())
+    throw ConfigError(where, "policy folder \"" + folder +
+                                 "\": result.json: /general: expected "
+                                 "true or false");
+  facts.general = general.get<bool>();
+  if (!facts.general)
+    return;
+  const json training = result.value("training", json::object());
+  const json uavs = training.is_object() ? training.value("uavs", json()) : json();
+  if (!uavs.is_array() || uavs.size() != 2 || !uavs[0].is_number_integer() ||
+      !uavs[1].is_number_integer() || uavs[0].get<int>() < 1 ||
+      uavs[0].get<int>() > uavs[1].get<int>()) {
+    throw ConfigError(where, "policy folder \"" + folder +
+                                 "\": result.json: /training/uavs: expected [min, max] UAV counts");
+  }
+  facts.min_uavs = uavs[0].get<int>();
+  facts.max_uavs = uavs[1].get<int>();
+}
+
+// The cheap parts of what `position --policy` reads.
+PolicyFacts CheckPolicyFiles(const PolicyBundle& bundle, const std::string& folder,
+                             const std::string& where) {
+  PolicyFacts facts;
+  Scenario& trained = facts.trained;
   for (const auto& f : bundle.files) {
     if (f.name.size() < 5 || f.name.compare(f.name.size() - 5, 5, ".json") != 0)
       continue;
@@ -43,6 +76,8 @@ Scenario CheckPolicyFiles(const PolicyBundle& bundle, const std::string& folder,
       throw ConfigError(where, "policy folder \"" + folder +
                                    "\": policy.json: /format: expected \"torchscript\"");
     }
+    if (f.name == "result.json")
+      ReadGeneral(document, folder, where, facts);
     if (f.name != "scenario.json")
       continue;
     try {
@@ -51,7 +86,23 @@ Scenario CheckPolicyFiles(const PolicyBundle& bundle, const std::string& folder,
       throw ConfigError(where, "policy folder \"" + folder + "\": scenario.json: " + e.describe());
     }
   }
-  return trained;
+  return facts;
+}
+
+// A policy for any scenario flies in the campaign's scenario with its own env and agent: the
+// scenario may restate them, not change them, and must have a UAV count it was trained for.
+std::optional<Contradiction> GeneralMisfit(const PolicyFacts& facts, const CampaignScenario& s) {
+  const json stated = StatedDocument(s);
+  Scenario target = ParseScenario(stated);
+  const int uavs = static_cast<int>(target.uavs.size());
+  if (uavs < facts.min_uavs || uavs > facts.max_uavs) {
+    return Contradiction{"/uavs", std::to_string(uavs) + " UAVs in the scenario, " +
+                                      std::to_string(facts.min_uavs) + "-" +
+                                      std::to_string(facts.max_uavs) + " in the policy"};
+  }
+  target.env = facts.trained.env;
+  target.agent = facts.trained.agent;
+  return FirstContradiction(target, stated);
 }
 
 CampaignPolicy ReadPolicyEntry(const json& v, const std::string& path, const PolicySource& source,
@@ -87,10 +138,12 @@ CampaignPolicy ReadPolicyEntry(const json& v, const std::string& path, const Pol
   if (!source)
     throw ConfigError(where, "a named policy cannot be read here");
   policy.bundle = source(policy.folder, where);
-  const Scenario trained = CheckPolicyFiles(policy.bundle, policy.folder, where);
+  const PolicyFacts facts = CheckPolicyFiles(policy.bundle, policy.folder, where);
+  const Scenario& trained = facts.trained;
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
     const CampaignScenario& s = scenarios[i];
-    const auto c = FirstContradiction(trained, StatedDocument(s));
+    const auto c =
+        facts.general ? GeneralMisfit(facts, s) : FirstContradiction(trained, StatedDocument(s));
     if (c) {
       throw ConfigError(where, "policy \"" + policy.folder + "\" (trained on " + trained.name +
                                    ") does not fit /scenarios/" + std::to_string(i) + " (" +

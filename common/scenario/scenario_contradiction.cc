@@ -47,6 +47,7 @@ json Comparable(const Scenario& s) {
   d["env"]["turn_steps"] = s.env.turn_steps;
   d["env"]["observed_ues"] = s.env.observed_ues;
   d["env"]["height_map"] = s.env.height_map;
+  d["env"]["coverage_map"] = s.env.coverage_map;
   return d;
 }
 

@@ -323,6 +323,7 @@ EnvSpec ReadEnv(const json& v) {
   e.height_map = static_cast<int>(r.Integer("height_map", e.height_map, 1, 33));
   if (e.height_map % 2 == 0)
     throw ConfigError(r.PathOf("height_map"), "must be odd (the UAV is over the middle cell)");
+  e.coverage_map = static_cast<int>(r.Integer("coverage_map", e.coverage_map, 1, 16));
   e.decision_interval = r.Number("decision_interval", e.decision_interval, Positive());
   e.episode_duration = r.Number("episode_duration", e.episode_duration, Positive());
   e.action_mask = r.Bool("action_mask", e.action_mask);
@@ -711,6 +712,8 @@ json ToJson(const Scenario& s) {
     document["env"]["observed_ues"] = s.env.observed_ues;
   if (general || s.env.height_map != defaults.height_map)
     document["env"]["height_map"] = s.env.height_map;
+  if (general || s.env.coverage_map != defaults.coverage_map)
+    document["env"]["coverage_map"] = s.env.coverage_map;
   if (s.uavs_listed) {
     document["uavs"] = uavs;
   } else {

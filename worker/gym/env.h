@@ -19,6 +19,10 @@ struct StepInfo {
   double throughput_mbps = 0.0;
   int demands_met = 0;
   std::vector<double> snr_db;
+  // The model's look around, where env.observations asks for it (general_observation.h):
+  // "coverage" (2 x env.coverage_map^2 + 3 values) and "lookahead" (one per move).
+  std::vector<double> coverage;
+  std::vector<double> lookahead;
 };
 
 struct StepResult {

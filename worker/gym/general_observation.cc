@@ -112,10 +112,34 @@ void AddOthers(const Scenario& s, const StepInfo& info, std::vector<double>& out
   }
 }
 
+// A look-around field copied from the step's info, which must hold `count` values.
+void AddComputed(const std::vector<double>& values, std::size_t count, const char* field,
+                 std::vector<double>& out) {
+  if (values.size() != count) {
+    throw std::logic_error(std::string("general observation: the step's info has no ") + field +
+                           " values");
+  }
+  out.insert(out.end(), values.begin(), values.end());
+}
+
+std::size_t CoverageCells(const Scenario& s) {
+  return static_cast<std::size_t>(s.env.coverage_map) *
+         static_cast<std::size_t>(s.env.coverage_map);
+}
+
 }  // namespace
 
 bool IsGeneralObservation(std::string_view field) {
   return IsOneOf(field, kGeneralObservations);
+}
+
+bool IsLookAroundObservation(std::string_view field) {
+  return field == "coverage" || field == "lookahead";
+}
+
+double CoverageRewardBound(const Scenario& s) {
+  const RewardSpec& r = s.env.reward;
+  return std::max(1e-9, std::max(0.0, r.w1) + std::max(0.0, r.w2) + std::max(0.0, r.w3));
 }
 
 void AddGeneralBounds(const Scenario& s, std::string_view field, BoxSpace& box) {
@@ -135,6 +159,11 @@ void AddGeneralBounds(const Scenario& s, std::string_view field, BoxSpace& box) 
       Add(box, 0.0, 1.0);
       Add(box, -kObservedOffsetLimit, kObservedOffsetLimit, 3);
     }
+  } else if (field == "coverage") {
+    Add(box, 0.0, 1.0, 2 * CoverageCells(s));
+    Add(box, -kObservedOffsetLimit, kObservedOffsetLimit, 3);
+  } else if (field == "lookahead") {
+    Add(box, -1.0, 1.0, s.env.actions.size());
   }
 }
 
@@ -152,6 +181,10 @@ void AddGeneralObservation(const Scenario& s, const StepInfo& info, std::string_
     AddHeights(s, info, out);
   } else if (field == "others") {
     AddOthers(s, info, out);
+  } else if (field == "coverage") {
+    AddComputed(info.coverage, 2 * CoverageCells(s) + 3, "coverage", out);
+  } else if (field == "lookahead") {
+    AddComputed(info.lookahead, s.env.actions.size(), "lookahead", out);
   }
 }
 

@@ -14,6 +14,17 @@
 //             row by row (y, then x): the top of the tallest building over each cell in units
 //             of kObservedRangeM (0 where there is none), clipped to kObservedHeightLimit;
 //   "others"  kOtherUavSlots slots of [present, dx, dy, dz], the other UAVs nearest first.
+// Two more are the model's look around (the analytic model, at any fidelity), which the env
+// computes into the step's info (StepInfo::coverage, ::lookahead):
+//   "coverage"  a coarse map of the UAV's zone, env.coverage_map cells per side, row by row
+//               (y, then x): for each cell, the best reward over the altitudes of the move
+//               lattice at the lattice column nearest the cell's centre (the other UAVs where
+//               they are), in units of the reward's bound (CoverageRewardBound); then each
+//               cell's best altitude within the zone, in [0, 1]. 0 and 0 where the column lies
+//               inside a building at every altitude; last, the offset from the UAV to the best
+//               cell's column at its best altitude (dx, dy, dz as for the UEs);
+//   "lookahead" for each of env.actions, the reward at the move's destination minus the reward
+//               here, in units of the reward's bound (0 for a move that goes nowhere).
 // A scenario with more UEs than slots shows the nearest; the slots and the cells hold no
 // scenario's size, so their layout is the same in every scenario of the same env settings.
 #include <cstddef>
@@ -33,8 +44,12 @@ constexpr int kUeSlotWidth = 7;
 constexpr int kOtherUavSlots = 5;
 constexpr int kOtherUavSlotWidth = 4;
 
-// True for "zone", "ues", "heights" and "others".
+// True for "zone", "ues", "heights", "others", "coverage" and "lookahead".
 bool IsGeneralObservation(std::string_view field);
+// Whether the field needs the env to evaluate positions other than the UAVs' own.
+bool IsLookAroundObservation(std::string_view field);
+// The most the scenario's reward can be (the sum of its weights), at least 1e-9.
+double CoverageRewardBound(const Scenario& scenario);
 
 // Appends the field's bounds to `box` / its values for the UAV info.active_uav to `out`.
 void AddGeneralBounds(const Scenario& scenario, std::string_view field, BoxSpace& box);

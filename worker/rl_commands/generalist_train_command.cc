@@ -1,6 +1,8 @@
 // rlpos-sim train --generated STYLES | --scenarios DIR: a policy for any scenario
 // (worker/vector_training/generalist_training.h), written as a policy folder that declares itself
 // general.
+#include "worker/rl_commands/generalist_train_command.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,7 +19,6 @@
 #include "worker/agent/ppo_agent.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/gym/general_observation.h"
-#include "worker/rl_commands/generalist_train_command.h"
 #include "worker/rl_commands/policy_folder.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_training/generalist_training.h"
@@ -52,10 +53,14 @@ std::vector<std::string> StyleNames(const std::vector<GeneratorStyle>& styles) {
 std::vector<std::string> GeneralistDefaults(const TrainOptions& t, int max_uavs) {
   std::vector<std::string> o = AlgorithmOverrides("ppo");
   o.push_back("env.fidelity=analytic");
-  o.push_back(max_uavs > 1 ? R"(env.observations=["zone","ues","heights","others"])"
-                           : R"(env.observations=["zone","ues","heights"])");
+  o.push_back(max_uavs > 1
+                  ? R"(env.observations=["zone","ues","heights","coverage","lookahead","others"])"
+                  : R"(env.observations=["zone","ues","heights","coverage","lookahead"])");
   o.push_back("agent.hidden=[128,128]");
   o.push_back("agent.ppo.num_envs=16");
+  o.push_back("agent.ppo.gamma=0.95");
+  o.push_back("agent.ppo.epochs=4");
+  o.push_back("agent.train_episode_steps=40");
   if (t.seed >= 0)
     o.push_back("agent.seed=" + std::to_string(t.seed));
   return o;
@@ -113,8 +118,7 @@ Source GeneratedSource(const TrainOptions& t, const std::vector<std::string>& us
   source.description = {{"generated", StyleNames(d.styles)},
                         {"uavs", {d.uavs.min, d.uavs.max}},
                         {"ues", d.ues ? nlohmann::json{d.ues->min, d.ues->max} : nullptr}};
-  source.draw =
-      std::make_unique<ScenarioDraw>(d, source.settings, source.settings.agent.seed);
+  source.draw = std::make_unique<ScenarioDraw>(d, source.settings, source.settings.agent.seed);
   return source;
 }
 
@@ -141,8 +145,8 @@ Source FolderSource(const TrainOptions& t, const std::vector<std::string>& user)
     names.push_back(f.filename().string());
   }
   Source source;
-  source.settings = SettingsScenario(ReadJsonFile(files.front().string()),
-                                     GeneralistDefaults(t, max_uavs), user);
+  source.settings =
+      SettingsScenario(ReadJsonFile(files.front().string()), GeneralistDefaults(t, max_uavs), user);
   source.description = {{"scenarios", names}, {"uavs", {min_uavs, max_uavs}}, {"ues", nullptr}};
   source.draw = std::make_unique<ScenarioDraw>(std::move(set), names, source.settings,
                                                source.settings.agent.seed);
@@ -162,8 +166,11 @@ std::string Duration(double seconds) {
 nlohmann::json ValidationJson(const std::vector<ValidationScore>& scores) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& s : scores)
-    rows.push_back({{"scenario", s.origin}, {"reward", s.final_reward},
-                    {"oracle_reward", s.oracle_reward}, {"ratio", s.ratio}, {"n_los", s.n_los},
+    rows.push_back({{"scenario", s.origin},
+                    {"reward", s.final_reward},
+                    {"oracle_reward", s.oracle_reward},
+                    {"ratio", s.ratio},
+                    {"n_los", s.n_los},
                     {"n_ues", s.n_ues}});
   return rows;
 }
@@ -183,6 +190,10 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     throw ConfigError("--steps", "is required with --generated and --scenarios");
   if (t.episodes > 0)
     throw ConfigError("--episodes", "counts one scenario's episodes; give --steps instead");
+  if (!t.algorithm.empty() && t.algorithm != "ppo")
+    throw ConfigError("--algorithm", "only ppo trains across scenarios in this version");
+  if (!t.fidelity.empty() && t.fidelity != "analytic")
+    throw ConfigError("--fidelity", "training across scenarios runs at analytic fidelity");
   const Source source = t.generated.empty() ? FolderSource(t, options.overrides)
                                             : GeneratedSource(t, options.overrides);
   const Scenario& settings = source.settings;
@@ -221,7 +232,8 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
         return;
       last_print = now;
       const double elapsed = std::chrono::duration<double>(now - started).count();
-      const double share = std::min(1.0, static_cast<double>(p.steps) / static_cast<double>(t.steps));
+      const double share =
+          std::min(1.0, static_cast<double>(p.steps) / static_cast<double>(t.steps));
       std::fprintf(stderr, "steps %lld/%lld (%.0f%%), episodes %lld, final reward %.3f",
                    static_cast<long long>(p.steps), t.steps, 100 * share,
                    static_cast<long long>(p.episodes), p.train_final_reward);
@@ -256,7 +268,8 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
       const std::uint64_t first = source.draw->FirstTrainingSeed();
       result["training"]["generator_seeds"] = {first + r.first_draw, first + r.last_draw};
       result["training"]["validation_seeds"] = {
-          kValidationSeedBase, kValidationSeedBase + static_cast<std::uint64_t>(t.validation_scenarios) - 1};
+          kValidationSeedBase,
+          kValidationSeedBase + static_cast<std::uint64_t>(t.validation_scenarios) - 1};
     }
     // The replay's runs: a general policy is flown greedy from the baseline with run 1.
     result.update(SeedStreamJson(first_run, 1));
@@ -267,12 +280,12 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     if (t.json) {
       std::cout << result.dump(2) << std::endl;
     } else {
-      std::printf("trained a policy for any scenario (ppo, seed %llu): %lld steps, %lld episodes "
-                  "in %s; %.3f of the oracle's reward on %zu validation scenarios\npolicy in %s\n",
-                  static_cast<unsigned long long>(settings.agent.seed),
-                  static_cast<long long>(r.steps), static_cast<long long>(r.episodes),
-                  Duration(seconds).c_str(), r.best_validation, r.validation.size(),
-                  t.out.c_str());
+      std::printf(
+          "trained a policy for any scenario (ppo, seed %llu): %lld steps, %lld episodes "
+          "in %s; %.3f of the oracle's reward on %zu validation scenarios\npolicy in %s\n",
+          static_cast<unsigned long long>(settings.agent.seed), static_cast<long long>(r.steps),
+          static_cast<long long>(r.episodes), Duration(seconds).c_str(), r.best_validation,
+          r.validation.size(), t.out.c_str());
     }
   } catch (...) {
     fs::remove_all(partial, ec);

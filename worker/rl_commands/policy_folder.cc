@@ -93,8 +93,8 @@ PolicyFolder ReadPolicyFolder(const std::string& dir) {
     throw ConfigError("--policy", dir + "/result.json: /general: expected true or false");
   folder.general = general != result.end() && general->get<bool>();
   if (folder.general) {
-    const nlohmann::json uavs = result.value("training", nlohmann::json::object()).value(
-        "uavs", nlohmann::json());
+    const nlohmann::json uavs =
+        result.value("training", nlohmann::json::object()).value("uavs", nlohmann::json());
     if (!uavs.is_array() || uavs.size() != 2 || !uavs[0].is_number_integer() ||
         !uavs[1].is_number_integer() || uavs[0].get<int>() < 1 ||
         uavs[0].get<int>() > uavs[1].get<int>()) {

@@ -228,7 +228,8 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   if (TrainsAcrossScenarios(t))
     return GeneralistTrainCommand(options, t);
   if (options.scenario_file.empty())
-    throw ConfigError("--scenario", "is required (or --generated or --scenarios, for any scenario)");
+    throw ConfigError("--scenario",
+                      "is required (or --generated or --scenarios, for any scenario)");
   if (t.steps > 0)
     throw ConfigError("--steps", "is for --generated and --scenarios; give --episodes");
   const Scenario s = LoadScenarioFor(options, TrainOverrides(t));

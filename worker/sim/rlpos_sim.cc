@@ -103,8 +103,9 @@ void AddTrain(CLI::App& app, Invocation& in) {
   in.train->add_option("--uavs", in.train_options.uavs, "--generated: UAVs, 1 or a range 1-3");
   in.train->add_option("--ues", in.train_options.ues,
                        "--generated: UEs, a count or a range 6-16 (default: the style's)");
-  in.train->add_option("--steps", in.train_options.steps,
-                       "--generated, --scenarios: env steps to train on")
+  in.train
+      ->add_option("--steps", in.train_options.steps,
+                   "--generated, --scenarios: env steps to train on")
       ->check(CLI::PositiveNumber);
   in.train
       ->add_option("--validation-scenarios", in.train_options.validation_scenarios,

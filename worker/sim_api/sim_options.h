@@ -43,9 +43,9 @@ struct TrainOptions {
   // episode of these styles ("urban,campus"), or on the scenarios of a folder.
   std::string generated;
   std::string scenarios_dir;
-  std::string uavs = "1";     // --generated: UAV counts, "1" or "1-3"
-  std::string ues;            // --generated: UE counts, "6-16" (empty: the generator's default)
-  long long steps = -1;       // env steps to train on (--generated, --scenarios)
+  std::string uavs = "1";  // --generated: UAV counts, "1" or "1-3"
+  std::string ues;         // --generated: UE counts, "6-16" (empty: the generator's default)
+  long long steps = -1;    // env steps to train on (--generated, --scenarios)
   int validation_scenarios = 24;
 };
 

@@ -9,6 +9,7 @@
 #include "worker/environment/uav_network.h"
 #include "worker/gym/moves.h"
 #include "worker/uav_env/analytic_evaluator.h"
+#include "worker/uav_env/look_around.h"
 
 namespace rlpos {
 
@@ -24,6 +25,16 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario,
   if (scenario_.env.fidelity == "analytic") {
     analytic_ = std::make_unique<AnalyticEvaluator>(scenario_, std::move(shared_memo));
   }
+  look_around_ = LookAround::For(scenario_);
+  if (look_around_ && !analytic_)
+    look_model_ = std::make_unique<AnalyticEvaluator>(scenario_);
+}
+
+void UavPositioningEnv::LookAroundFor(std::size_t uav, StepInfo& info) const {
+  AnalyticEvaluator& model = analytic_ ? *analytic_ : *look_model_;
+  look_around_->Fill(
+      placement_, uav, RewardOf(info), model, [this](const StepInfo& i) { return RewardOf(i); },
+      info);
 }
 
 UavPositioningEnv::~UavPositioningEnv() = default;
@@ -80,6 +91,8 @@ void UavPositioningEnv::Observe() {
     }
   }
   info.active_uav = static_cast<int>(active_);
+  if (look_around_)
+    LookAroundFor(active_, info);
 }
 
 std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
@@ -219,8 +232,15 @@ MultiStepResult UavPositioningEnv::MoveAllTo(const Placement& placement) {
 
 std::vector<std::vector<double>> UavPositioningEnv::AgentObservations() const {
   std::vector<std::vector<double>> observations;
-  for (std::size_t u = 0; u < scenario_.uavs.size(); ++u)
-    observations.push_back(AgentObservation(scenario_, info_, u));
+  for (std::size_t u = 0; u < scenario_.uavs.size(); ++u) {
+    if (!look_around_ || u == active_) {
+      observations.push_back(AgentObservation(scenario_, info_, u));
+      continue;
+    }
+    StepInfo view = info_;  // each UAV looks around from its own position
+    LookAroundFor(u, view);
+    observations.push_back(AgentObservation(scenario_, view, u));
+  }
   return observations;
 }
 

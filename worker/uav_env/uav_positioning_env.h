@@ -18,6 +18,7 @@ namespace rlpos {
 
 class UavNetwork;
 class AnalyticEvaluator;
+class LookAround;
 class SharedPlacementMemo;
 
 class UavPositioningEnv : public Env {
@@ -81,6 +82,11 @@ class UavPositioningEnv : public Env {
   std::unique_ptr<Reward> reward_;
   std::unique_ptr<UavNetwork> network_;          // packet fidelity
   std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
+  // The "coverage" and "lookahead" observations (null when not observed), on the analytic
+  // model: analytic_, or at packet level a model of their own.
+  std::unique_ptr<LookAround> look_around_;
+  std::unique_ptr<AnalyticEvaluator> look_model_;
+  void LookAroundFor(std::size_t uav, StepInfo& info) const;
   // Each discrete action's displacement (MoveDisplacement), worked out once: the action mask asks
   // for every action at every step.
   std::vector<Vec3> move_displacements_;

@@ -138,7 +138,8 @@ std::vector<ValidationScenario> ValidationSet(const ScenarioDraw& draw, int coun
     set[i].drawn = draw.Validation(i);
     OracleOptions analytic_only;
     analytic_only.packet_candidates = 0;
-    set[i].oracle_reward = OracleSearch(set[i].drawn.scenario, analytic_only).front().analytic_reward;
+    set[i].oracle_reward =
+        OracleSearch(set[i].drawn.scenario, analytic_only).front().analytic_reward;
   });
   return set;
 }
@@ -167,8 +168,9 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
   const std::vector<ValidationScenario> validation =
       ValidationSet(draw, options.validation_scenarios, options.threads);
   const BoxSpace space = UavPositioningEnv(validation.front().drawn.scenario).ObservationSpace();
-  const std::int64_t every =
-      options.validation_every > 0 ? options.validation_every : std::max<std::int64_t>(1, options.steps / 10);
+  const std::int64_t every = options.validation_every > 0
+                                 ? options.validation_every
+                                 : std::max<std::int64_t>(1, options.steps / 10);
 
   GeneralistResult result;
   result.first_draw = 0;

@@ -19,10 +19,10 @@
 namespace rlpos {
 
 struct GeneralistOptions {
-  std::int64_t steps = 0;           // env steps to learn from (the last round completes)
-  int validation_scenarios = 24;    // scored after every validation_every steps and at the end
+  std::int64_t steps = 0;             // env steps to learn from (the last round completes)
+  int validation_scenarios = 24;      // scored after every validation_every steps and at the end
   std::int64_t validation_every = 0;  // 0: steps / 10
-  std::size_t threads = 0;          // 0: min(cores, num_envs)
+  std::size_t threads = 0;            // 0: min(cores, num_envs)
 };
 
 struct GeneralistProgress {

@@ -66,7 +66,8 @@ ScenarioDraw::ScenarioDraw(GeneratedDistribution distribution, const Scenario& s
   if (distribution_.styles.empty())
     throw ConfigError("--generated", "names no style");
   if (seed_ > kMaxTrainingSeed)
-    throw ConfigError("--seed", "at most " + std::to_string(kMaxTrainingSeed) + " with --generated");
+    throw ConfigError("--seed",
+                      "at most " + std::to_string(kMaxTrainingSeed) + " with --generated");
 }
 
 ScenarioDraw::ScenarioDraw(std::vector<Scenario> set, std::vector<std::string> names,

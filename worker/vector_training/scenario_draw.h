@@ -18,7 +18,7 @@
 
 namespace rlpos {
 
-constexpr std::uint64_t kTrainingSeedBase = 1000000000;  // 1e9
+constexpr std::uint64_t kTrainingSeedBase = 1000000000;   // 1e9
 constexpr std::uint64_t kDrawsPerSeed = 100000000;        // 1e8 draws per training seed
 constexpr std::uint64_t kValidationSeedBase = 500000000;  // 5e8
 constexpr std::uint64_t kMaxTrainingSeed = 1000000;       // keeps every seed below 2**63

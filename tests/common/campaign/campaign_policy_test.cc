@@ -184,5 +184,34 @@ TEST(CampaignPolicy, BadFoldersAreOneLineErrorsAtTheirPath) {
   }
 }
 
+// A policy for any scenario (rlpos-sim train --generated) fits any campaign scenario that has a
+// UAV count it was trained for and restates its env settings, not changes them.
+TEST(CampaignPolicy, APolicyForAnyScenarioFitsOtherScenariosWithinItsUavCounts) {
+  TempDir dir;
+  const std::string folder = dir.File("policies/p1");
+  const auto general = [&](const std::string& uavs) {
+    WriteTrainedPolicy(folder, SourcePath("campaigns/scenarios/c.json"));
+    WriteFile(folder + "/result.json",
+              R"({"algorithm": "ppo", "first_episode_run": 1, "general": true,
+                  "training": {"uavs": )" + uavs + "}}");
+  };
+  // Trained "on" C's settings, it places UAVs in B.
+  general("[1, 3]");
+  EXPECT_EQ(ErrorOf(dir, NamedP1()), "accepted");
+  // B has one UAV.
+  general("[2, 3]");
+  EXPECT_EQ(ErrorOf(dir, NamedP1()),
+            "/positioners/1/rl/policy: policy \"policies/p1\" (trained on C) does not fit "
+            "/scenarios/0 (" +
+                SourcePath("campaigns/scenarios/b.json") +
+                "): /uavs: 1 UAVs in the scenario, 2-3 in the policy");
+  general("[3, 2]");
+  EXPECT_NE(ErrorOf(dir, NamedP1()).find("/training/uavs: expected [min, max] UAV counts"),
+            std::string::npos);
+  // The same folder without "general" is C's policy: B contradicts it.
+  WriteTrainedPolicy(folder, SourcePath("campaigns/scenarios/c.json"));
+  EXPECT_NE(ErrorOf(dir, NamedP1()).find("(trained on C) does not fit"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -188,8 +188,9 @@ TEST_F(TrainCommand, JointStepsMoveEveryUavInEachStepAndReplay) {
         EXPECT_EQ(rows_per_step[step], joint ? 3 : 1) << algorithm << " step " << step;
         steps_moving_several += moved_per_step[step] > 1;
       }
-      if (joint)
+      if (joint) {
         EXPECT_GT(steps_moving_several, 0) << algorithm << ": no step moved several UAVs";
+      }
       const auto replay =
           RunCommand(Sim("position --scenario " + urban3 + " --positioner rl --json --policy " +
                          out.string() + sets));

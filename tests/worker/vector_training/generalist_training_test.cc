@@ -47,16 +47,16 @@ Trained TrainTiny(std::size_t threads, std::int64_t steps = 200) {
   const ScenarioDraw draw = Draw();
   const Scenario example = draw.Validation(0).scenario;
   UavPositioningEnv env(example);
-  PpoAgent agent(example.agent, static_cast<int>(env.ObservationSpace().Dim()),
-                 env.ActionSpace().n, steps);
+  PpoAgent agent(example.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n,
+                 steps);
   GeneralistOptions options;
   options.steps = steps;
   options.validation_scenarios = 2;
   options.validation_every = 80;
   options.threads = threads;
   Trained t{TrainGeneralist(draw, agent, example.agent, options, 5000001), ""};
-  const fs::path dir = fs::temp_directory_path() /
-                       ("rlpos-generalist-" + std::to_string(threads) + "-" + std::to_string(steps));
+  const fs::path dir = fs::temp_directory_path() / ("rlpos-generalist-" + std::to_string(threads) +
+                                                    "-" + std::to_string(steps));
   fs::remove_all(dir);
   agent.Save(dir.string());
   std::ifstream in(dir / "policy.pt", std::ios::binary);

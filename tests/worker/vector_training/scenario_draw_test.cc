@@ -82,7 +82,8 @@ TEST(ScenarioDraw, NeverDrawsTheScenarioSetsSeeds) {
   EXPECT_LT(kValidationSeedBase + kDrawsPerSeed, kTrainingSeedBase + 1);
   EXPECT_GE(draw.Validation(0).generator_seed, kValidationSeedBase);
   EXPECT_LT(draw.Validation(0).generator_seed, kTrainingSeedBase);
-  EXPECT_THROW(ScenarioDraw(UrbanAndOpen({1, 1}), DrawSettings(), kMaxTrainingSeed + 1), ConfigError);
+  EXPECT_THROW(ScenarioDraw(UrbanAndOpen({1, 1}), DrawSettings(), kMaxTrainingSeed + 1),
+               ConfigError);
 }
 
 TEST(ScenarioDraw, AUsersSetIsDrawnFromWithTheSettings) {

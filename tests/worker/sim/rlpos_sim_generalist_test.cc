@@ -1,0 +1,159 @@
+// rlpos-sim train --generated: a policy for any scenario, trained on fresh generated scenarios,
+// recorded (what it trained on, the generator seeds), the same twice, and placed in scenarios it
+// never saw; bad input is one line and leaves nothing behind.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/command.h"
+#include "tests/worker/sim/sim_test_support.h"
+
+namespace rlpos::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A tiny training: 4 envs of 10-step episodes, 2 validation scenarios, a small network.
+const std::string kTiny =
+    " --generated urban,open --steps 240 --seed 3 --validation-scenarios 2"
+    " --set agent.ppo.num_envs=4 --set agent.train_episode_steps=10"
+    " --set agent.ppo.rollout_steps=10 --set agent.hidden=[16] --set env.episode_duration=2"
+    " --set env.coverage_map=4 --set env.observed_ues=4 --set env.height_map=3";
+
+std::string Bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+class Generalist : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("rlpos-generalist-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    trained_ = new CommandResult(RunCommand(Sim("train" + kTiny + " --json --out " + Policy())));
+  }
+  static void TearDownTestSuite() {
+    delete trained_;
+    fs::remove_all(dir_);
+  }
+  static std::string Policy() { return (dir_ / "policy").string(); }
+  CommandResult Position(const std::string& scenario, const std::string& extra = "") {
+    return RunCommand(Sim("position --positioner rl --json --scenario " + scenario + " --policy " +
+                          Policy() + extra));
+  }
+
+  static fs::path dir_;
+  static CommandResult* trained_;
+};
+fs::path Generalist::dir_;
+CommandResult* Generalist::trained_ = nullptr;
+
+TEST_F(Generalist, RecordsWhatItTrainedOnAndPlacesUavsInScenariosItNeverSaw) {
+  ASSERT_EQ(trained_->exit_code, 0) << trained_->err;
+  const auto result = nlohmann::json::parse(trained_->out);
+  EXPECT_EQ(result, nlohmann::json::parse(std::ifstream(Policy() + "/result.json")));
+  EXPECT_TRUE(result["general"].get<bool>());
+  EXPECT_EQ(result["training"]["generated"], (nlohmann::json{"urban", "open"}));
+  EXPECT_EQ(result["training"]["uavs"], (nlohmann::json{1, 1}));
+  // 240 steps in rounds of 4 episodes of 10 steps: 6 rounds, 24 episodes, each its own draw
+  // from training seed 3's range.
+  EXPECT_EQ(result["steps"], 240);
+  EXPECT_EQ(result["episodes"], 24);
+  EXPECT_EQ(
+      result["training"]["generator_seeds"],
+      (nlohmann::json{1000000000ULL + 3 * 100000000ULL, 1000000000ULL + 3 * 100000000ULL + 23}));
+  EXPECT_EQ(result["training"]["validation_seeds"], (nlohmann::json{500000000, 500000001}));
+  ASSERT_EQ(result["validation"].size(), 2u);
+  for (const auto& v : result["validation"]) {
+    EXPECT_GT(v["oracle_reward"].get<double>(), 0.0) << v;
+    EXPECT_LE(v["ratio"].get<double>(), 1.0 + 1e-12) << v;
+  }
+  // The curve: a header and a row per round.
+  std::ifstream curve(Policy() + "/learning_curve.csv");
+  std::string line;
+  int rows = -1;
+  while (std::getline(curve, line))
+    ++rows;
+  EXPECT_EQ(rows, 6);
+  // Placed in the shipped scenarios, none of which it trained on.
+  for (const char* name : {"a.json", "b.json", "c.json"}) {
+    const auto p = Position(kScenarios + name);
+    ASSERT_EQ(p.exit_code, 0) << name << ": " << p.err;
+    const auto placed = nlohmann::json::parse(p.out);
+    EXPECT_EQ(placed["positioner"], "rl");
+    EXPECT_GE(placed["reward"].get<double>(), 0.0);
+  }
+}
+
+TEST_F(Generalist, TheSameCommandTrainsTheSamePolicy) {
+  ASSERT_EQ(trained_->exit_code, 0) << trained_->err;
+  const std::string again = (dir_ / "again").string();
+  const auto r = RunCommand(Sim("train" + kTiny + " --out " + again));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(Bytes(again + "/policy.pt"), Bytes(Policy() + "/policy.pt"));
+  EXPECT_FALSE(Bytes(again + "/policy.pt").empty());
+  // Another seed, another policy.
+  const std::string other = (dir_ / "other").string();
+  std::string tiny_seed_4 = kTiny;
+  tiny_seed_4.replace(tiny_seed_4.find("--seed 3"), 8, "--seed 4");
+  ASSERT_EQ(RunCommand(Sim("train" + tiny_seed_4 + " --out " + other)).exit_code, 0);
+  EXPECT_NE(Bytes(other + "/policy.pt"), Bytes(Policy() + "/policy.pt"));
+}
+
+TEST_F(Generalist, APlacementOutsideWhatItWasTrainedForIsRefused) {
+  ASSERT_EQ(trained_->exit_code, 0) << trained_->err;
+  // Trained for one UAV; urban3 has three.
+  ExpectOneLineRefusal(Position(kScenarios + "urban3.json"), Policy(), "has 3");
+  // Its env settings travel with it: a scenario may restate them, not change them.
+  ExpectOneLineRefusal(Position(kScenarioB, " --set env.step=10"), Policy(), "/env/step");
+  EXPECT_EQ(Position(kScenarioB, " --set env.step=5").exit_code, 0);
+}
+
+struct BadTrain {
+  std::string args;
+  std::string names;  // what the one line must name
+};
+
+class GeneralistBadInput : public ::testing::TestWithParam<BadTrain> {};
+
+TEST_P(GeneralistBadInput, IsOneLineAnExitOf2AndNothingWritten) {
+  const fs::path out =
+      fs::temp_directory_path() / ("rlpos-generalist-bad-" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const auto r = RunCommand(Sim("train " + GetParam().args + " --out " + out.string()));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("rlpos-sim: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().names), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Refusals, GeneralistBadInput,
+    ::testing::Values(
+        BadTrain{"--generated mars --steps 100", "--generated: unknown style \"mars\""},
+        BadTrain{"--generated urban", "--steps: is required"},
+        BadTrain{"--generated urban --steps 100 --scenario " + kScenarioB, "--scenario"},
+        BadTrain{"--generated urban --steps 100 --uavs 0-2", "--uavs"},
+        BadTrain{"--generated urban --steps 100 --uavs 2-1", "--uavs"},
+        BadTrain{"--generated urban --steps 100 --ues 500", "--ues"},
+        BadTrain{"--generated urban --steps 100 --episodes 5", "--episodes"},
+        BadTrain{"--generated urban --steps 100 --algorithm dqn", "--algorithm"},
+        BadTrain{"--generated urban --steps 100 --fidelity packet", "--fidelity"},
+        BadTrain{"--generated urban --steps 100 --set env.observations=[\\\"x\\\",\\\"zone\\\"]",
+                 "\"x\" is one scenario's own"},
+        BadTrain{"--generated urban --steps 100 --set agent.ppo.gamma=7",
+                 "--set agent.ppo.gamma=7"},
+        BadTrain{"--scenarios /nonexistent/rlpos --steps 100", "--scenarios"},
+        BadTrain{"--generated urban --scenarios " + kScenarios + " --steps 100", "exclude"},
+        BadTrain{"", "--scenario: is required"},
+        BadTrain{"--scenario " + kScenarioB + " --steps 100", "--steps"}));
+
+}  // namespace
+}  // namespace rlpos::testing

@@ -1,0 +1,124 @@
+// The model's look around ("coverage" and "lookahead" observations): the values are the analytic
+// model's rewards where they say, the map is no better than the oracle's grid, and the map of one
+// UAV is worked out once.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "common/scenario/scenario_checks.h"
+#include "common/scenario_generator/scenario_generator.h"
+#include "worker/environment/scenario_loading.h"
+#include "worker/gym/general_observation.h"
+#include "worker/gym/moves.h"
+#include "worker/gym/reward.h"
+#include "worker/uav_env/analytic_evaluator.h"
+#include "worker/uav_env/uav_positioning_env.h"
+
+namespace rlpos {
+namespace {
+
+Scenario Observing(Scenario s, std::vector<std::string> fields) {
+  s.env.fidelity = "analytic";
+  s.env.observations = std::move(fields);
+  s.env.coverage_map = 4;
+  return s;
+}
+
+Scenario GeneratedUrban(int uavs) {
+  GeneratorOptions options;
+  options.seed = 77;
+  options.style = GeneratorStyle::kUrban;
+  options.uavs = uavs;
+  return GenerateScenario(options).scenario;
+}
+
+// The best reward over the zone's move grid, by brute force.
+double GridBest(const Scenario& s) {
+  AnalyticEvaluator model(s);
+  const auto reward = MakeReward(s.env.reward);
+  double best = 0.0;
+  const Box& z = s.uavs[0].zone;
+  const Vec3& o = s.uavs[0].initial;
+  const double step = s.env.step;
+  for (double x = o.x - step * std::floor((o.x - z.xmin) / step); x <= z.xmax; x += step) {
+    for (double y = o.y - step * std::floor((o.y - z.ymin) / step); y <= z.ymax; y += step) {
+      for (double h = o.z - step * std::floor((o.z - z.zmin) / step); h <= z.zmax; h += step) {
+        if (BuildingContaining(s, {x, y, h}) >= 0)
+          continue;
+        const StepInfo i = model.Evaluate({{x, y, h}});
+        best =
+            std::max(best, (*reward)(RewardInputOf(s, i.n_los, i.throughput_mbps, i.demands_met)));
+      }
+    }
+  }
+  return best;
+}
+
+TEST(LookAround, TheMapsBestIsAModelRewardWhereItsPointerLeadsAndNoBetterThanTheGrid) {
+  const Scenario s = Observing(GeneratedUrban(1), {"coverage"});
+  UavPositioningEnv env(s);
+  const std::vector<double> o = env.Reset(1);
+  ASSERT_EQ(o.size(), 2u * 16 + 3);
+  const double bound = CoverageRewardBound(s);
+  const double best = *std::max_element(o.begin(), o.begin() + 16) * bound;
+  const Vec3& at = env.LastInfo().positions[0];
+  const Vec3 pointed{at.x + o[32] * kObservedRangeM, at.y + o[33] * kObservedRangeM,
+                     at.z + o[34] * kObservedRangeM};
+  EXPECT_NEAR(AnalyticReward(s, {pointed}), best, 1e-12);
+  EXPECT_LE(best, GridBest(s) + 1e-12);
+  EXPECT_GT(best, 0.0);
+  // Altitudes are within [0, 1]; the map stays while the UAV moves, the pointer follows it.
+  for (int k = 16; k < 32; ++k) {
+    EXPECT_GE(o[static_cast<std::size_t>(k)], 0.0);
+    EXPECT_LE(o[static_cast<std::size_t>(k)], 1.0);
+  }
+  const StepResult moved = env.Step(0);  // up
+  EXPECT_TRUE(std::equal(o.begin(), o.begin() + 32, moved.observation.begin()));
+  const Vec3& now = moved.info.positions[0];
+  EXPECT_NEAR(moved.observation[34] * kObservedRangeM, pointed.z - now.z, 1e-9);
+}
+
+TEST(LookAround, EachMovesValueIsTheRewardItWouldReachMinusTheRewardHere) {
+  const Scenario s = Observing(GeneratedUrban(1), {"lookahead"});
+  UavPositioningEnv env(s);
+  env.Reset(1);
+  const double bound = CoverageRewardBound(s);
+  for (int step = 0; step < 5; ++step) {
+    const StepResult here = env.Step(static_cast<int>(step % 2 == 0 ? 4 : 2));  // left, forward
+    const std::vector<double> look = here.observation;
+    ASSERT_EQ(look.size(), s.env.actions.size());
+    for (std::size_t a = 0; a < look.size(); ++a) {
+      const Placement from = here.info.positions;
+      const Placement to = ApplyDisplacement(s, 0, MoveDisplacement(s, static_cast<int>(a)), from);
+      const double expected = std::clamp((AnalyticReward(s, to) - here.reward) / bound, -1.0, 1.0);
+      EXPECT_NEAR(look[a], expected, 1e-12) << "move " << s.env.actions[a] << " step " << step;
+    }
+  }
+}
+
+TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
+  Scenario s = Observing(GeneratedUrban(2), {"coverage"});
+  s.env.coverage_map = 3;
+  UavPositioningEnv env(s);
+  env.Reset(1);
+  const auto views = env.AgentObservations();
+  ASSERT_EQ(views.size(), 2u);
+  const double bound = CoverageRewardBound(s);
+  const Placement& p = env.LastInfo().positions;
+  for (std::size_t u = 0; u < 2; ++u) {
+    const std::vector<double>& v = views[u];
+    ASSERT_EQ(v.size(), 2u * 9 + 3);
+    // UAV u's map is of its own zone, the other UAV where it is: its best is where its pointer
+    // leads UAV u.
+    Placement there = p;
+    there[u] = {p[u].x + v[18] * kObservedRangeM, p[u].y + v[19] * kObservedRangeM,
+                p[u].z + v[20] * kObservedRangeM};
+    EXPECT_NEAR(AnalyticReward(s, there), *std::max_element(v.begin(), v.begin() + 9) * bound,
+                1e-12)
+        << "UAV " << u;
+  }
+  EXPECT_NE(views[0], views[1]);
+}
+
+}  // namespace
+}  // namespace rlpos

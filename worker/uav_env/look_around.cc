@@ -1,0 +1,149 @@
+#include "worker/uav_env/look_around.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/scenario/scenario_checks.h"
+#include "worker/gym/general_observation.h"
+#include "worker/gym/moves.h"
+#include "worker/uav_env/analytic_evaluator.h"
+
+namespace rlpos {
+namespace {
+
+// The lattice value (through `origin`, `step` apart) nearest `target` within [low, high]; the
+// origin itself when no lattice value lies there.
+double NearestOnLattice(double target, double origin, double step, double low, double high) {
+  double v = origin + std::round((target - origin) / step) * step;
+  if (v > high)
+    v -= step * std::ceil((v - high) / step);
+  if (v < low)
+    v += step * std::ceil((low - v) / step);
+  return v >= low && v <= high ? v : origin;
+}
+
+// Every lattice altitude of the zone, lowest first.
+std::vector<double> LatticeAltitudes(double origin, double step, double low, double high) {
+  std::vector<double> levels;
+  double z = origin - step * std::floor((origin - low) / step);
+  for (; z <= high + 1e-9; z += step) {
+    if (z >= low - 1e-9)
+      levels.push_back(z);
+  }
+  return levels;
+}
+
+bool Same(const Vec3& a, const Vec3& b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+bool SameOthers(const Placement& a, const Placement& b, std::size_t active) {
+  if (a.size() != b.size())
+    return false;
+  for (std::size_t u = 0; u < a.size(); ++u) {
+    if (u != active && !Same(a[u], b[u]))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::unique_ptr<LookAround> LookAround::For(const Scenario& scenario) {
+  const auto& o = scenario.env.observations;
+  if (std::none_of(o.begin(), o.end(),
+                   [](const std::string& f) { return IsLookAroundObservation(f); }))
+    return nullptr;
+  return std::make_unique<LookAround>(scenario);
+}
+
+LookAround::LookAround(const Scenario& scenario)
+    : scenario_(scenario), bound_(CoverageRewardBound(scenario)) {
+  const auto& o = scenario.env.observations;
+  coverage_ = std::find(o.begin(), o.end(), "coverage") != o.end();
+  lookahead_ = std::find(o.begin(), o.end(), "lookahead") != o.end();
+  for (std::size_t a = 0; a < scenario.env.actions.size(); ++a)
+    moves_.push_back(MoveDisplacement(scenario, static_cast<int>(a)));
+}
+
+void LookAround::Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
+                          const RewardOf& reward_of, std::vector<double>& out) {
+  if (!coverage_values_.empty() && active == coverage_active_ &&
+      SameOthers(placement, coverage_for_, active)) {
+    out = coverage_values_;
+    return;
+  }
+  const Box& zone = scenario_.uavs[active].zone;
+  const Vec3& origin = scenario_.uavs[active].initial;
+  const double step = scenario_.env.step;
+  const int cells = scenario_.env.coverage_map;
+  const std::vector<double> levels = LatticeAltitudes(origin.z, step, zone.zmin, zone.zmax);
+  const auto n = static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells);
+  std::vector<double> values(2 * n, 0.0);
+  Placement probe = placement;
+  double best_of_map = -1.0;
+  best_point_ = placement[active];
+  for (int row = 0; row < cells; ++row) {
+    const double cy = zone.ymin + (row + 0.5) * (zone.ymax - zone.ymin) / cells;
+    const double y = NearestOnLattice(cy, origin.y, step, zone.ymin, zone.ymax);
+    for (int col = 0; col < cells; ++col) {
+      const double cx = zone.xmin + (col + 0.5) * (zone.xmax - zone.xmin) / cells;
+      const double x = NearestOnLattice(cx, origin.x, step, zone.xmin, zone.xmax);
+      double best = -1.0, best_z = 0.0;
+      for (double z : levels) {
+        probe[active] = {x, y, z};
+        if (BuildingContaining(scenario_, probe[active]) >= 0)
+          continue;
+        const double r = reward_of(model.Evaluate(probe));
+        if (r > best) {
+          best = r;
+          best_z = z;
+        }
+      }
+      const auto cell = static_cast<std::size_t>(row * cells + col);
+      if (best > best_of_map) {
+        best_of_map = best;
+        best_point_ = {x, y, best_z};
+      }
+      if (best >= 0) {
+        values[cell] = std::clamp(best / bound_, 0.0, 1.0);
+        values[n + cell] =
+            zone.zmax > zone.zmin
+                ? std::clamp((best_z - zone.zmin) / (zone.zmax - zone.zmin), 0.0, 1.0)
+                : 0.0;
+      }
+    }
+  }
+  coverage_for_ = placement;
+  coverage_active_ = active;
+  coverage_values_ = values;
+  out = std::move(values);
+}
+
+void LookAround::AddPointer(const Vec3& from, std::vector<double>& out) const {
+  const auto offset = [](double metres) {
+    return std::clamp(metres / kObservedRangeM, -kObservedOffsetLimit, kObservedOffsetLimit);
+  };
+  out.push_back(offset(best_point_.x - from.x));
+  out.push_back(offset(best_point_.y - from.y));
+  out.push_back(offset(best_point_.z - from.z));
+}
+
+void LookAround::Fill(const Placement& placement, std::size_t active, double here,
+                      AnalyticEvaluator& model, const RewardOf& reward_of, StepInfo& info) {
+  if (coverage_) {
+    Coverage(placement, active, model, reward_of, info.coverage);
+    AddPointer(placement[active], info.coverage);
+  }
+  if (!lookahead_)
+    return;
+  info.lookahead.assign(moves_.size(), 0.0);
+  for (std::size_t a = 0; a < moves_.size(); ++a) {
+    const Placement to = ApplyDisplacement(scenario_, active, moves_[a], placement);
+    if (Same(to[active], placement[active]))
+      continue;
+    info.lookahead[a] = std::clamp((reward_of(model.Evaluate(to)) - here) / bound_, -1.0, 1.0);
+  }
+}
+
+}  // namespace rlpos

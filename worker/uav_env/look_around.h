@@ -1,0 +1,47 @@
+#pragma once
+// The model's look around for the "coverage" and "lookahead" observations
+// (worker/gym/general_observation.h): what the analytic model says of positions the UAV whose
+// turn it is could take, the other UAVs where they are. The coverage map is worked out once per
+// placement of the other UAVs (with one UAV, once per env) and reused.
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "common/scenario/scenario.h"
+#include "worker/gym/env.h"
+
+namespace rlpos {
+
+class AnalyticEvaluator;
+
+class LookAround {
+ public:
+  using RewardOf = std::function<double(const StepInfo&)>;
+  // Null when the scenario's observations need neither field.
+  static std::unique_ptr<LookAround> For(const Scenario& scenario);
+
+  explicit LookAround(const Scenario& scenario);
+  // Fills info.coverage and info.lookahead (those the observations name) for UAV `active` of
+  // `placement`, whose reward is `here`.
+  void Fill(const Placement& placement, std::size_t active, double here, AnalyticEvaluator& model,
+            const RewardOf& reward_of, StepInfo& info);
+
+ private:
+  void Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
+                const RewardOf& reward_of, std::vector<double>& out);
+  // The offset from `from` to the map's best cell's column at its best altitude.
+  void AddPointer(const Vec3& from, std::vector<double>& out) const;
+
+  const Scenario& scenario_;
+  bool coverage_ = false;
+  bool lookahead_ = false;
+  double bound_ = 1.0;
+  std::vector<Vec3> moves_;  // each action's displacement
+  // The last coverage map and what it was worked out for.
+  Placement coverage_for_;
+  std::size_t coverage_active_ = 0;
+  std::vector<double> coverage_values_;
+  Vec3 best_point_;  // the map's best: its column at its best altitude
+};
+
+}  // namespace rlpos
