@@ -6,9 +6,12 @@ with that many UAVs, by the set's index.tsv), the policy places the UAVs with
 `rlpos-sim position --positioner rl --policy DIR` (loading the policy and flying it greedy from
 the baseline, the whole process timed), and the oracle with `rlpos.oracle(packet_candidates=0)`
 (the best point of the analytic grid search, timed). Both are scored by the analytic model.
-Prints one row per scenario (reward, oracle, ratio, seconds) and the summary the acceptance of a
-policy for any scenario reads: median and P10 of the ratio, the share of scenarios at or above
-0.95, and the worst case.
+Beside them, the best cell of the coarse map the policy observes ("coverage", its
+env.coverage_map from the policy's scenario.json): what flying straight to the map's best would
+give, so that the policy's own part can be told from the map's. Prints one row per scenario
+(rewards, ratios to the oracle, seconds) and the summary the acceptance of a policy for any
+scenario reads: median and P10 of the ratio, the share of scenarios at or above 0.95, and the
+worst case.
 
   scripts/bench_zero_shot.py --policy DIR --scenarios DIR [--uavs 1] [--build DIR] [--jobs 2]
                              [--csv FILE]
@@ -57,6 +60,18 @@ def oracle(rlpos, scenario):
     return best["analytic_reward"], time.monotonic() - started
 
 
+def map_best(rlpos, scenario, cells):
+    """The best reward of the coarse map ("coverage") at the baseline."""
+    with open(scenario) as f:
+        weights = json.load(f).get("env", {}).get("reward", {})
+    bound = max(1e-9, sum(max(0.0, weights.get(w, d)) for w, d in
+                          (("w1", 0.8), ("w2", 0.2), ("w3", 0.0))))
+    env = rlpos.make(scenario, fidelity="analytic",
+                     overrides={"env.observations": ["coverage"], "env.coverage_map": cells})
+    observation, _ = env.reset(seed=1)
+    return float(max(observation[:cells * cells])) * bound
+
+
 def percentile(values, share):
     ordered = sorted(values)
     return ordered[min(len(ordered) - 1, int(share * (len(ordered) - 1) + 0.5))]
@@ -80,21 +95,28 @@ def main():
     scenarios = scenarios_of(args.scenarios, args.uavs)
     if not scenarios:
         fail("no scenario in %s with %s UAVs" % (args.scenarios, args.uavs))
+    with open(os.path.join(args.policy, "scenario.json")) as f:
+        cells = json.load(f).get("env", {}).get("coverage_map", 8)
     rows = []
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         rl = {s: pool.submit(placed, sim, args.policy, s) for s in scenarios}
         best = {s: pool.submit(oracle, rlpos, s) for s in scenarios}
-        print("| scenario | rl | oracle | rl / oracle | rl s | oracle s |")
-        print("|---|---|---|---|---|---|")
+        print("| scenario | rl | map's best | oracle | rl / oracle | map / oracle | rl s | oracle s |")
+        print("|---|---|---|---|---|---|---|---|")
         for s in scenarios:
             reward, rl_s = rl[s].result()
             top, oracle_s = best[s].result()
+            coarse = map_best(rlpos, s, cells)
             ratio = reward / top if top > 0 else 1.0
-            rows.append({"scenario": os.path.basename(s), "reward": reward, "oracle": top,
-                         "ratio": ratio, "rl_s": rl_s, "oracle_s": oracle_s})
-            print("| %s | %.4f | %.4f | %.3f | %.2f | %.2f |" %
-                  (os.path.basename(s), reward, top, ratio, rl_s, oracle_s), flush=True)
+            map_ratio = coarse / top if top > 0 else 1.0
+            rows.append({"scenario": os.path.basename(s), "reward": reward, "map_best": coarse,
+                         "oracle": top, "ratio": ratio, "map_ratio": map_ratio, "rl_s": rl_s,
+                         "oracle_s": oracle_s})
+            print("| %s | %.4f | %.4f | %.4f | %.3f | %.3f | %.2f | %.2f |" %
+                  (os.path.basename(s), reward, coarse, top, ratio, map_ratio, rl_s, oracle_s),
+                  flush=True)
     ratios = [r["ratio"] for r in rows]
+    map_ratios = [r["map_ratio"] for r in rows]
     worst = min(rows, key=lambda r: r["ratio"])
     print()
     print("%d scenarios: median %.3f, P10 %.3f, >= 0.95 in %d (%.0f%%), worst %.3f (%s); "
@@ -103,6 +125,9 @@ def main():
            sum(r >= 0.95 for r in ratios), 100.0 * sum(r >= 0.95 for r in ratios) / len(ratios),
            worst["ratio"], worst["scenario"], statistics.median(r["rl_s"] for r in rows),
            statistics.median(r["oracle_s"] for r in rows)))
+    print("the map's best alone: median %.3f, P10 %.3f, >= 0.95 in %d, worst %.3f" %
+          (statistics.median(map_ratios), percentile(map_ratios, 0.10),
+           sum(r >= 0.95 for r in map_ratios), min(map_ratios)))
     if args.csv:
         with open(args.csv, "w", newline="") as f:
             writer = csv.DictWriter(f, fieldnames=list(rows[0]))

@@ -161,7 +161,7 @@ void AddGeneralBounds(const Scenario& s, std::string_view field, BoxSpace& box) 
     }
   } else if (field == "coverage") {
     Add(box, 0.0, 1.0, 2 * CoverageCells(s));
-    Add(box, -kObservedOffsetLimit, kObservedOffsetLimit, 3);
+    Add(box, -kPointerStepLimit, kPointerStepLimit, 3);
   } else if (field == "lookahead") {
     Add(box, -1.0, 1.0, s.env.actions.size());
   }

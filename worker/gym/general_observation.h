@@ -22,9 +22,11 @@
 //               they are), in units of the reward's bound (CoverageRewardBound); then each
 //               cell's best altitude within the zone, in [0, 1]. 0 and 0 where the column lies
 //               inside a building at every altitude; last, the offset from the UAV to the best
-//               cell's column at its best altitude (dx, dy, dz as for the UEs);
+//               cell's column at its best altitude (dx, dy, dz in moves of env.step, clipped to
+//               +-kPointerStepLimit);
 //   "lookahead" for each of env.actions, the reward at the move's destination minus the reward
-//               here, in units of the reward's bound (0 for a move that goes nowhere).
+//               here, times kLookaheadGain over the reward's bound, clipped to [-1, 1] (0 for a
+//               move that goes nowhere).
 // A scenario with more UEs than slots shows the nearest; the slots and the cells hold no
 // scenario's size, so their layout is the same in every scenario of the same env settings.
 #include <cstddef>
@@ -43,6 +45,12 @@ constexpr double kObservedHeightLimit = 4.0;
 constexpr int kUeSlotWidth = 7;
 constexpr int kOtherUavSlots = 5;
 constexpr int kOtherUavSlotWidth = 4;
+// "coverage"'s pointer to the map's best, in moves (env.step), clipped: one move is a quarter of
+// its range, so that the last moves to the best stand out after scaling to [-1, 1].
+constexpr double kPointerStepLimit = 4.0;
+// "lookahead"'s reward changes, in tenths of the reward's bound (clipped to [-1, 1]): one UE of
+// ten coming into LoS is 0.8, not 0.08.
+constexpr double kLookaheadGain = 10.0;
 
 // True for "zone", "ues", "heights", "others", "coverage" and "lookahead".
 bool IsGeneralObservation(std::string_view field);

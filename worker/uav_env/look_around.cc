@@ -121,8 +121,9 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
 }
 
 void LookAround::AddPointer(const Vec3& from, std::vector<double>& out) const {
-  const auto offset = [](double metres) {
-    return std::clamp(metres / kObservedRangeM, -kObservedOffsetLimit, kObservedOffsetLimit);
+  const double step = scenario_.env.step;
+  const auto offset = [step](double metres) {
+    return std::clamp(metres / step, -kPointerStepLimit, kPointerStepLimit);
   };
   out.push_back(offset(best_point_.x - from.x));
   out.push_back(offset(best_point_.y - from.y));
@@ -142,7 +143,8 @@ void LookAround::Fill(const Placement& placement, std::size_t active, double her
     const Placement to = ApplyDisplacement(scenario_, active, moves_[a], placement);
     if (Same(to[active], placement[active]))
       continue;
-    info.lookahead[a] = std::clamp((reward_of(model.Evaluate(to)) - here) / bound_, -1.0, 1.0);
+    info.lookahead[a] =
+        std::clamp(kLookaheadGain * (reward_of(model.Evaluate(to)) - here) / bound_, -1.0, 1.0);
   }
 }
 

@@ -17,8 +17,10 @@
 namespace rlpos {
 namespace {
 
+// With 40 m moves the pointer (clipped to kPointerStepLimit moves) spans a generated zone.
 Scenario Observing(Scenario s, std::vector<std::string> fields) {
   s.env.fidelity = "analytic";
+  s.env.step = 40;
   s.env.observations = std::move(fields);
   s.env.coverage_map = 4;
   return s;
@@ -62,8 +64,8 @@ TEST(LookAround, TheMapsBestIsAModelRewardWhereItsPointerLeadsAndNoBetterThanThe
   const double bound = CoverageRewardBound(s);
   const double best = *std::max_element(o.begin(), o.begin() + 16) * bound;
   const Vec3& at = env.LastInfo().positions[0];
-  const Vec3 pointed{at.x + o[32] * kObservedRangeM, at.y + o[33] * kObservedRangeM,
-                     at.z + o[34] * kObservedRangeM};
+  const Vec3 pointed{at.x + o[32] * s.env.step, at.y + o[33] * s.env.step,
+                     at.z + o[34] * s.env.step};
   EXPECT_NEAR(AnalyticReward(s, {pointed}), best, 1e-12);
   EXPECT_LE(best, GridBest(s) + 1e-12);
   EXPECT_GT(best, 0.0);
@@ -75,7 +77,7 @@ TEST(LookAround, TheMapsBestIsAModelRewardWhereItsPointerLeadsAndNoBetterThanThe
   const StepResult moved = env.Step(0);  // up
   EXPECT_TRUE(std::equal(o.begin(), o.begin() + 32, moved.observation.begin()));
   const Vec3& now = moved.info.positions[0];
-  EXPECT_NEAR(moved.observation[34] * kObservedRangeM, pointed.z - now.z, 1e-9);
+  EXPECT_NEAR(moved.observation[34] * s.env.step, pointed.z - now.z, 1e-9);
 }
 
 TEST(LookAround, EachMovesValueIsTheRewardItWouldReachMinusTheRewardHere) {
@@ -90,7 +92,8 @@ TEST(LookAround, EachMovesValueIsTheRewardItWouldReachMinusTheRewardHere) {
     for (std::size_t a = 0; a < look.size(); ++a) {
       const Placement from = here.info.positions;
       const Placement to = ApplyDisplacement(s, 0, MoveDisplacement(s, static_cast<int>(a)), from);
-      const double expected = std::clamp((AnalyticReward(s, to) - here.reward) / bound, -1.0, 1.0);
+      const double expected =
+          std::clamp(kLookaheadGain * (AnalyticReward(s, to) - here.reward) / bound, -1.0, 1.0);
       EXPECT_NEAR(look[a], expected, 1e-12) << "move " << s.env.actions[a] << " step " << step;
     }
   }
@@ -111,8 +114,8 @@ TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
     // UAV u's map is of its own zone, the other UAV where it is: its best is where its pointer
     // leads UAV u.
     Placement there = p;
-    there[u] = {p[u].x + v[18] * kObservedRangeM, p[u].y + v[19] * kObservedRangeM,
-                p[u].z + v[20] * kObservedRangeM};
+    there[u] = {p[u].x + v[18] * s.env.step, p[u].y + v[19] * s.env.step,
+                p[u].z + v[20] * s.env.step};
     EXPECT_NEAR(AnalyticReward(s, there), *std::max_element(v.begin(), v.begin() + 9) * bound,
                 1e-12)
         << "UAV " << u;
