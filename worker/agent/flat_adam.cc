@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "worker/agent/state_stream.h"
+
 namespace rlpos {
 
 FlatAdam::FlatAdam(std::size_t size, double learning_rate, double eps, double beta1, double beta2)
@@ -38,6 +40,21 @@ void FlatAdam::Step(std::vector<float>& parameters, const std::vector<float>& gr
     const float denom = std::sqrt(v[i]) / root_correction2 + eps;
     p[i] = p[i] + step * m[i] / denom;
   }
+}
+
+void FlatAdam::SaveState(std::ostream& out) const {
+  state::Write(out, learning_rate_);
+  state::Write(out, steps_);
+  state::WriteVector(out, first_moment_);
+  state::WriteVector(out, second_moment_);
+}
+
+void FlatAdam::LoadState(std::istream& in) {
+  learning_rate_ = state::Read<double>(in);
+  steps_ = state::Read<std::int64_t>(in);
+  const std::size_t n = first_moment_.size();
+  state::ReadVector(in, first_moment_, n, "Adam's first moments");
+  state::ReadVector(in, second_moment_, n, "Adam's second moments");
 }
 
 }  // namespace rlpos

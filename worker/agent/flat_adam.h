@@ -3,6 +3,7 @@
 // decay, no amsgrad): the same formula and float arithmetic, one loop instead of a dozen tensor
 // ops per parameter tensor.
 #include <cstdint>
+#include <iosfwd>
 #include <vector>
 
 namespace rlpos {
@@ -15,6 +16,9 @@ class FlatAdam {
   void Step(std::vector<float>& parameters, const std::vector<float>& gradients);
   double LearningRate() const { return learning_rate_; }
   void SetLearningRate(double rate) { learning_rate_ = rate; }
+  // Its exact state (moments, step count, rate), for a checkpoint (state_stream.h).
+  void SaveState(std::ostream& out) const;
+  void LoadState(std::istream& in);
 
  private:
   double learning_rate_;

@@ -1,9 +1,12 @@
 #include "worker/agent/ppo_agent.h"
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <numeric>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 
 #include "worker/agent/dense_network.h"
@@ -12,6 +15,7 @@
 #include "worker/agent/mlp.h"
 #include "worker/agent/ppo_objective.h"
 #include "worker/agent/running_moments.h"
+#include "worker/agent/state_stream.h"
 
 namespace rlpos {
 namespace {
@@ -430,6 +434,89 @@ void PpoAgent::Load(const std::string& directory) {
   if (std::filesystem::exists(value)) {
     LoadNetwork(value, impl_->critic, impl_->spec.hidden, impl_->observation_dim, 1);
     CopyParameters(impl_->critic, impl_->critic_net);
+  }
+}
+
+namespace {
+constexpr char kStateMagic[] = "rlpos-ppo-state-1";
+}  // namespace
+
+bool PpoAgent::AtRolloutStart() const {
+  // What the last act chose with is consumed by its observe; the next act starts afresh.
+  return impl_->rollout.empty();
+}
+
+void PpoAgent::SaveTrainingState(const std::string& file) const {
+  if (!AtRolloutStart())
+    throw std::logic_error("PPO's training state is saved between rollouts only");
+  const Impl& m = *impl_;
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(kStateMagic, sizeof kStateMagic);
+  state::Write<std::int32_t>(out, m.observation_dim);
+  state::Write<std::int32_t>(out, m.action_count);
+  state::WriteVector(out, m.actor_net.Parameters());
+  state::WriteVector(out, m.critic_net.Parameters());
+  m.actor_adam.SaveState(out);
+  m.critic_adam.SaveState(out);
+  std::ostringstream rng;
+  rng << m.rng;
+  const std::string text = rng.str();
+  state::WriteVector(out, std::vector<char>(text.begin(), text.end()));
+  m.reward_moments.SaveState(out);
+  state::WriteVector(out, m.kept_actor);
+  state::WriteVector(out, m.kept_critic);
+  state::Write(out, m.done_updates);
+  state::Write(out, m.planned_updates);
+  if (!out.flush())
+    throw std::runtime_error(file + ": cannot write");
+}
+
+void PpoAgent::LoadTrainingState(const std::string& file) {
+  Impl& m = *impl_;
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+    throw std::runtime_error(file + ": cannot open");
+  try {
+    char magic[sizeof kStateMagic] = {};
+    in.read(magic, sizeof magic);
+    if (!in || std::memcmp(magic, kStateMagic, sizeof magic) != 0)
+      throw std::runtime_error("not a PPO training state of this version");
+    if (state::Read<std::int32_t>(in) != m.observation_dim ||
+        state::Read<std::int32_t>(in) != m.action_count)
+      throw std::runtime_error("the state of an agent with other spaces");
+    state::ReadVector(in, m.actor_net.Parameters(), m.actor_net.Parameters().size(), "actor");
+    state::ReadVector(in, m.critic_net.Parameters(), m.critic_net.Parameters().size(), "critic");
+    m.actor_adam.LoadState(in);
+    m.critic_adam.LoadState(in);
+    std::vector<char> text;
+    const auto size = state::Read<std::uint64_t>(in);
+    if (size > 100000)
+      throw std::runtime_error("damaged generator state");
+    text.resize(size);
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    std::istringstream rng(std::string(text.begin(), text.end()));
+    rng >> m.rng;
+    if (!in || !rng)
+      throw std::runtime_error("damaged generator state");
+    m.reward_moments.LoadState(in);
+    const auto kept = state::Read<std::uint64_t>(in);
+    if (kept != 0 && kept != m.actor_net.Parameters().size())
+      throw std::runtime_error("kept actor of another size");
+    m.kept_actor.resize(kept);
+    in.read(reinterpret_cast<char*>(m.kept_actor.data()),
+            static_cast<std::streamsize>(kept * sizeof(float)));
+    const auto kept_critic = state::Read<std::uint64_t>(in);
+    if (kept_critic != 0 && kept_critic != m.critic_net.Parameters().size())
+      throw std::runtime_error("kept critic of another size");
+    m.kept_critic.resize(kept_critic);
+    in.read(reinterpret_cast<char*>(m.kept_critic.data()),
+            static_cast<std::streamsize>(kept_critic * sizeof(float)));
+    m.done_updates = state::Read<std::int64_t>(in);
+    m.planned_updates = state::Read<std::int64_t>(in);
+    if (!in || in.peek() != std::char_traits<char>::eof())
+      throw std::runtime_error("damaged or truncated");
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(file + ": " + e.what());
   }
 }
 

@@ -48,6 +48,15 @@ class PpoAgent : public Agent {
                                    const ActionMask& mask) const;
   // The learning rate of the last update (agent.ppo.learning_rate before the first).
   double LearningRate() const;
+  // Whether the rollout is empty (just after an update, or before the first step): the moment
+  // a checkpoint can hold the whole training state.
+  bool AtRolloutStart() const;
+  // The exact training state (networks, Adam, the generator, reward statistics, the kept policy,
+  // the updates done) into / from FILE, so that a resumed training computes what the
+  // uninterrupted one would have. Save: std::logic_error unless AtRolloutStart(). Load: a
+  // std::runtime_error naming the file for a file of another agent's shape, or damaged.
+  void SaveTrainingState(const std::string& file) const;
+  void LoadTrainingState(const std::string& file);
 
  private:
   struct Impl;

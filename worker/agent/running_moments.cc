@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "worker/agent/state_stream.h"
+
 namespace rlpos {
 
 void RunningMoments::Add(double x) {
@@ -18,6 +20,18 @@ double RunningMoments::StdDev() const {
 float RunningMoments::Standardise(double x) const {
   const double sd = StdDev();
   return static_cast<float>(sd > 1e-12 ? (x - mean_) / sd : x - mean_);
+}
+
+void RunningMoments::SaveState(std::ostream& out) const {
+  state::Write(out, count_);
+  state::Write(out, mean_);
+  state::Write(out, m2_);
+}
+
+void RunningMoments::LoadState(std::istream& in) {
+  count_ = state::Read<std::int64_t>(in);
+  mean_ = state::Read<double>(in);
+  m2_ = state::Read<double>(in);
 }
 
 }  // namespace rlpos

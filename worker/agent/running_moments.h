@@ -1,6 +1,7 @@
 #pragma once
 // Running mean and variance (Welford) of a stream, e.g. the rewards an agent has seen.
 #include <cstdint>
+#include <iosfwd>
 
 namespace rlpos {
 
@@ -11,6 +12,9 @@ class RunningMoments {
   double StdDev() const;
   // (x - mean) / std; a stream with no spread yet is only centred.
   float Standardise(double x) const;
+  // Its exact state, for a checkpoint (state_stream.h).
+  void SaveState(std::ostream& out) const;
+  void LoadState(std::istream& in);
 
  private:
   std::int64_t count_ = 0;

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "common/config/config_error.h"
+#include "common/hash/sha256.h"
 #include "common/scenario/names.h"
 #include "common/scenario/scenario_parser.h"
 #include "common/scenario_generator/scenario_generator.h"
@@ -19,6 +20,7 @@
 #include "worker/agent/ppo_agent.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/gym/general_observation.h"
+#include "worker/rl_commands/generalist_checkpoint.h"
 #include "worker/rl_commands/policy_folder.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_training/generalist_training.h"
@@ -201,10 +203,17 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
   if (fs::exists(out))
     throw ConfigError("--out", t.out + " already exists; choose another folder or remove it");
   const fs::path partial = t.out + ".partial";
+  // What the training is: a checkpoint of anything else is not resumed.
+  const GeneralistCheckpoint checkpoint(
+      partial, Sha256Hex(ToJson(settings).dump() + source.description.dump() + "|" +
+                         std::to_string(t.steps) + "|" + std::to_string(t.validation_scenarios)));
+  const std::optional<SavedCheckpoint> resumed = checkpoint.Find();
   std::error_code ec;
-  fs::remove_all(partial, ec);
-  if (!fs::create_directories(partial, ec) || ec)
-    throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
+  if (!resumed) {
+    fs::remove_all(partial, ec);
+    if (!fs::create_directories(partial, ec) || ec)
+      throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
+  }
   try {
     UavPositioningEnv example(settings);
     PpoAgent agent(settings.agent, static_cast<int>(example.ObservationSpace().Dim()),
@@ -212,10 +221,37 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     GeneralistOptions g;
     g.steps = t.steps;
     g.validation_scenarios = t.validation_scenarios;
-    std::ofstream curve(partial / "learning_curve.csv");
-    curve << "steps,episodes,train_final_reward,validation_ratio,validation_worst_ratio,"
-             "best_validation_ratio\n";
-    const auto started = Clock::now();
+    const fs::path curve_file = partial / "learning_curve.csv";
+    std::ofstream curve;
+    GeneralistCheckpoints checkpoints;
+    double seconds_before = 0.0;
+    if (resumed) {
+      checkpoint.LoadAgent(agent);
+      // The curve as it stood at the checkpoint: rows written after it are flown again.
+      fs::resize_file(curve_file, resumed->curve_bytes);
+      curve.open(curve_file, std::ios::app);
+      checkpoints.resume = &resumed->state;
+      seconds_before = resumed->seconds;
+      std::fprintf(stderr, "resuming from the checkpoint in %s: step %lld of %lld\n",
+                   partial.string().c_str(), static_cast<long long>(resumed->state.result.steps),
+                   t.steps);
+    } else {
+      curve.open(curve_file);
+      curve << "steps,episodes,train_final_reward,validation_ratio,validation_worst_ratio,"
+               "best_validation_ratio\n";
+    }
+    const auto started = Clock::now() - std::chrono::duration_cast<Clock::duration>(
+                                            std::chrono::duration<double>(seconds_before));
+    auto last_checkpoint = Clock::now();
+    checkpoints.due = [&] {
+      return Clock::now() - last_checkpoint >= std::chrono::duration<double>(t.checkpoint_seconds);
+    };
+    checkpoints.save = [&](const GeneralistState& state) {
+      curve.flush();
+      const double elapsed = std::chrono::duration<double>(Clock::now() - started).count();
+      checkpoint.Save(state, agent, static_cast<std::uint64_t>(fs::file_size(curve_file)), elapsed);
+      last_checkpoint = Clock::now();
+    };
     auto last_print = started;
     const auto on_progress = [&](const GeneralistProgress& p) {
       curve << p.steps << ',' << p.episodes << ',' << p.train_final_reward << ',';
@@ -246,8 +282,8 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     // Episode e of a training from seed S starts from RngRun S * 1000000 + 1 + e, as
     // per-scenario training's (its exploring start).
     const std::uint64_t first_run = settings.agent.seed * 1000000 + 1;
-    const GeneralistResult r =
-        TrainGeneralist(*source.draw, agent, settings.agent, g, first_run, on_progress);
+    const GeneralistResult r = TrainGeneralist(*source.draw, agent, settings.agent, g, first_run,
+                                               on_progress, checkpoints);
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
     curve.close();
     agent.Save(partial.string());
@@ -276,6 +312,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     result["general"] = true;
     std::ofstream(partial / "result.json") << result.dump(2) << '\n';
     std::ofstream(partial / "scenario.json") << ToJson(settings).dump(2) << '\n';
+    checkpoint.Remove();
     fs::rename(partial, out);
     if (t.json) {
       std::cout << result.dump(2) << std::endl;
@@ -288,7 +325,8 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
           r.validation.size(), t.out.c_str());
     }
   } catch (...) {
-    fs::remove_all(partial, ec);
+    if (!checkpoint.Exists())  // a checkpoint stays, for the same command to go on from
+      fs::remove_all(partial, ec);
     throw;
   }
   return kExitOk;

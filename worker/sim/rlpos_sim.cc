@@ -112,6 +112,11 @@ void AddTrain(CLI::App& app, Invocation& in) {
                    "--generated, --scenarios: scenarios the kept policy is chosen on (default 24)")
       ->check(CLI::Range(1, 1000));
   in.train
+      ->add_option("--checkpoint-every", in.train_options.checkpoint_seconds,
+                   "--generated, --scenarios: seconds between checkpoints (default 60); the same "
+                   "command resumes from the last")
+      ->check(CLI::NonNegativeNumber);
+  in.train
       ->add_option("--algorithm", in.train_options.algorithm,
                    rlpos::Choices(rlpos::kAlgorithms) +
                        " (default: agent.algorithm); sac acts on the continuous action space")

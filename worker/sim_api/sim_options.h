@@ -47,6 +47,7 @@ struct TrainOptions {
   std::string ues;         // --generated: UE counts, "6-16" (empty: the generator's default)
   long long steps = -1;    // env steps to train on (--generated, --scenarios)
   int validation_scenarios = 24;
+  double checkpoint_seconds = 60;  // between checkpoints (--generated, --scenarios)
 };
 
 struct PositionOptions {

@@ -160,7 +160,8 @@ std::vector<ValidationScore> ScoreGreedy(const std::vector<ValidationScenario>& 
 
 GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, const AgentSpec& spec,
                                  const GeneralistOptions& options, std::uint64_t episode_run,
-                                 const GeneralistProgressCallback& on_progress) {
+                                 const GeneralistProgressCallback& on_progress,
+                                 const GeneralistCheckpoints& checkpoints) {
   if (options.steps <= 0)
     throw std::invalid_argument("the training budget must be at least one step");
   const auto n = static_cast<std::size_t>(spec.ppo.num_envs);
@@ -176,6 +177,11 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
   result.first_draw = 0;
   std::optional<double> best;
   std::int64_t next_validation = every;
+  if (checkpoints.resume) {
+    result = checkpoints.resume->result;
+    best = checkpoints.resume->best;
+    next_validation = checkpoints.resume->next_validation;
+  }
   Round round(draw, spec, space, pool);
   const auto validate = [&](GeneralistProgress& progress) {
     std::vector<ValidationScore> scores = ScoreGreedy(validation, agent, spec);
@@ -206,6 +212,9 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
     }
     if (on_progress)
       on_progress(progress);
+    if (checkpoints.save && result.steps < options.steps && agent.AtRolloutStart() &&
+        (!checkpoints.due || checkpoints.due()))
+      checkpoints.save({result, best, next_validation});
   }
   result.last_draw = static_cast<std::uint64_t>(result.episodes) - 1;
   result.best_validation = *best;

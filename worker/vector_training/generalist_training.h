@@ -64,12 +64,30 @@ struct GeneralistResult {
 
 using GeneralistProgressCallback = std::function<void(const GeneralistProgress&)>;
 
+// Where a training stands between two rounds: with the agent's training state
+// (PpoAgent::SaveTrainingState), all a resumed training needs to go on exactly as the
+// uninterrupted one.
+struct GeneralistState {
+  GeneralistResult result;  // so far
+  std::optional<double> best;
+  std::int64_t next_validation = 0;
+};
+
+// Checkpoints: after a round that leaves the agent between rollouts, when due() says so, save()
+// is given the state. `resume`: the state to go on from (the agent's own already loaded).
+struct GeneralistCheckpoints {
+  std::function<bool()> due;
+  std::function<void(const GeneralistState&)> save;
+  const GeneralistState* resume = nullptr;
+};
+
 // Trains `agent` (built for the draw's spaces and spec) on training draws 0, 1, ... until
 // options.steps transitions; leaves the kept policy in the agent. `episode_run`: the RngRun of
 // training episode e is episode_run + e (its exploring start).
 GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, const AgentSpec& spec,
                                  const GeneralistOptions& options, std::uint64_t episode_run,
-                                 const GeneralistProgressCallback& on_progress = nullptr);
+                                 const GeneralistProgressCallback& on_progress = nullptr,
+                                 const GeneralistCheckpoints& checkpoints = {});
 
 // The draw's first `count` validation scenarios with their oracle rewards, searched over
 // `threads` threads (0: the cores).

@@ -2,6 +2,8 @@
 // recorded (what it trained on, the generator seeds), the same twice, and placed in scenarios it
 // never saw; bad input is one line and leaves nothing behind.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -10,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/command.h"
+#include "tests/support/wait_for.h"
 #include "tests/worker/sim/sim_test_support.h"
 
 namespace rlpos::testing {
@@ -112,6 +115,56 @@ TEST_F(Generalist, APlacementOutsideWhatItWasTrainedForIsRefused) {
   // Its env settings travel with it: a scenario may restate them, not change them.
   ExpectOneLineRefusal(Position(kScenarioB, " --set env.step=10"), Policy(), "/env/step");
   EXPECT_EQ(Position(kScenarioB, " --set env.step=5").exit_code, 0);
+}
+
+// Killed once its first checkpoint is written, the same command goes on from it and ends with
+// the uninterrupted run's policy, curve and result.
+TEST_F(Generalist, KilledAndRunAgainItResumesToTheSamePolicy) {
+  std::string longer = kTiny + " --checkpoint-every 0";
+  longer.replace(longer.find("--steps 240"), 11, "--steps 12000");
+  const std::string whole = (dir_ / "whole").string();
+  const std::string resumed = (dir_ / "resumed").string();
+  ASSERT_EQ(RunCommand(Sim("train" + longer + " --out " + whole)).exit_code, 0);
+
+  const std::string command = Sim("train" + longer + " --out " + resumed);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::execl("/bin/sh", "sh", "-c", ("exec " + command + " 2>/dev/null").c_str(),
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const fs::path progress = resumed + ".partial/checkpoint/progress.json";
+  const bool checkpointed = WaitFor([&] { return fs::exists(progress); }, 120.0);
+  ::kill(child, SIGKILL);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(checkpointed) << "no checkpoint within 120 s";
+  ASSERT_FALSE(fs::exists(resumed)) << "it ended before it was killed: give it more steps";
+
+  const auto again = RunCommand(Sim("train" + longer + " --out " + resumed));
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("resuming from the checkpoint in " + resumed + ".partial"),
+            std::string::npos)
+      << again.err;
+  EXPECT_EQ(Bytes(resumed + "/policy.pt"), Bytes(whole + "/policy.pt"));
+  EXPECT_EQ(Bytes(resumed + "/learning_curve.csv"), Bytes(whole + "/learning_curve.csv"));
+  auto result = nlohmann::json::parse(std::ifstream(resumed + "/result.json"));
+  auto expected = nlohmann::json::parse(std::ifstream(whole + "/result.json"));
+  result.erase("train_seconds");
+  expected.erase("train_seconds");
+  EXPECT_EQ(result, expected);
+  EXPECT_FALSE(fs::exists(resumed + "/checkpoint"));
+  EXPECT_FALSE(fs::exists(resumed + ".partial"));
+
+  // Another budget is another training: its checkpoint is not taken for this one's.
+  fs::remove_all(resumed);
+  fs::create_directories(resumed + ".partial/checkpoint");
+  std::ofstream(progress) << R"({"fingerprint": "another"})";
+  const auto other = RunCommand(Sim("train" + longer + " --out " + resumed));
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("holds the checkpoint of another training"), std::string::npos)
+      << other.err;
 }
 
 struct BadTrain {
