@@ -3,7 +3,8 @@
 # trained on B by `rlpos-sim train` is packed at submit, travels to the workers by its hash, is
 # flown there by `position --positioner rl --policy`, and its evals (labelled rl+<folder>) sit at
 # the placement `rlpos-sim position --policy` prints on this machine. Bad folders are refused at
-# submit, --dry-run included, with one line and nothing run.
+# submit, --dry-run included, with one line and nothing run. A policy for any scenario enters a
+# campaign on scenarios it never saw.
 source "$(dirname "$0")/lib.sh"
 SIM=$BIN/rlpos-sim
 DB=$WORK/rlpos.db
@@ -94,4 +95,38 @@ same=$("$CAMPAIGN" run "$WORK/campaign.json" --dry-run | sed -n 's/^campaign \([
 other=$("$CAMPAIGN" run "$WORK/other/campaign.json" --dry-run | sed -n 's/^campaign \([0-9a-f]*\) .*/\1/p')
 expect_eq "the dry run's campaign id" "$same" "$ID"
 [ -n "$other" ] && [ "$other" != "$ID" ] || fail "another policy kept the campaign id $ID"
-echo "ok: named-policy campaign $ID; rl+tiny evaluated at $expected, the policy's own placement"
+
+# A policy for any scenario (trained on generated ones, none of them B or C) enters a campaign on
+# B and C, and each eval sits where `rlpos-sim position --policy` puts it in that scenario.
+"$SIM" train --generated urban,open --steps 240 --seed 3 --validation-scenarios 2 \
+  --set agent.ppo.num_envs=4 --set agent.train_episode_steps=10 --set agent.ppo.rollout_steps=10 \
+  --set agent.hidden=[16] --set env.coverage_map=4 --set env.observed_ues=4 --set env.height_map=3 \
+  --out "$WORK/policies/gen" >"$WORK/train_gen.log" 2>&1 \
+  || fail "training across scenarios failed: $(tail -n 3 "$WORK/train_gen.log")"
+C=$SRC/campaigns/scenarios/c.json
+for s in B C; do
+  file=$B; [ "$s" = C ] && file=$C
+  "$SIM" position --positioner rl --policy "$WORK/policies/gen" --scenario "$file" --json \
+    >"$WORK/gen_$s.json" 2>"$WORK/gen_$s.log" || fail "position in $s: $(cat "$WORK/gen_$s.log")"
+done
+cat >"$WORK/general.json" <<JSON
+{
+  "name": "general-policy",
+  "scenarios": ["$B", "$C"],
+  "rng_runs": [1, 1],
+  "positioners": [{"rl": {"policy": "policies/gen"}}],
+  "eval": {"duration": 1, "warmup": 0.5},
+  "retries": 0,
+  "job_timeout_s": 300
+}
+JSON
+"$CAMPAIGN" run "$WORK/general.json" --workers 2 --db "$WORK/general.db" --tag "$TAG" --no-progress \
+  >"$WORK/gen_out.txt" 2>"$WORK/gen_err.txt" || { rc=$?; cat "$WORK/gen_err.txt" >&2; fail "general run exited $rc"; }
+expect_complete "$WORK/general.db" 4
+for s in B C; do
+  got=$(sql "$WORK/general.db" "SELECT printf('%.3f,%.3f,%.3f', x, y, z) FROM v_eval_runs
+    WHERE positioner = 'rl+gen' AND scenario = '$s'")
+  expect_eq "rl+gen eval in $s" "$got" "$(at "$WORK/gen_$s.json")"
+done
+echo "ok: named-policy campaign $ID; rl+tiny evaluated at $expected, the policy's own placement;"
+echo "    a policy for any scenario placed in B and C as on this machine"
