@@ -499,18 +499,9 @@ void PpoAgent::LoadTrainingState(const std::string& file) {
     if (!in || !rng)
       throw std::runtime_error("damaged generator state");
     m.reward_moments.LoadState(in);
-    const auto kept = state::Read<std::uint64_t>(in);
-    if (kept != 0 && kept != m.actor_net.Parameters().size())
-      throw std::runtime_error("kept actor of another size");
-    m.kept_actor.resize(kept);
-    in.read(reinterpret_cast<char*>(m.kept_actor.data()),
-            static_cast<std::streamsize>(kept * sizeof(float)));
-    const auto kept_critic = state::Read<std::uint64_t>(in);
-    if (kept_critic != 0 && kept_critic != m.critic_net.Parameters().size())
-      throw std::runtime_error("kept critic of another size");
-    m.kept_critic.resize(kept_critic);
-    in.read(reinterpret_cast<char*>(m.kept_critic.data()),
-            static_cast<std::streamsize>(kept_critic * sizeof(float)));
+    // No policy kept yet: empty.
+    state::ReadVector(in, m.kept_actor, m.actor_net.Parameters().size(), "kept actor", true);
+    state::ReadVector(in, m.kept_critic, m.critic_net.Parameters().size(), "kept critic", true);
     m.done_updates = state::Read<std::int64_t>(in);
     m.planned_updates = state::Read<std::int64_t>(in);
     if (!in || in.peek() != std::char_traits<char>::eof())

@@ -32,10 +32,16 @@ void WriteVector(std::ostream& out, const std::vector<T>& values) {
             static_cast<std::streamsize>(values.size() * sizeof(T)));
 }
 
-// Reads a vector that must have `expected` elements (the size the reader's own state has).
+// Reads a vector that must have `expected` elements (the size the reader's own state has), or
+// none where `may_be_empty`.
 template <typename T>
-void ReadVector(std::istream& in, std::vector<T>& values, std::size_t expected, const char* what) {
+void ReadVector(std::istream& in, std::vector<T>& values, std::size_t expected, const char* what,
+                bool may_be_empty = false) {
   const auto size = Read<std::uint64_t>(in);
+  if (may_be_empty && size == 0) {
+    values.clear();
+    return;
+  }
   if (size != expected) {
     throw std::runtime_error(std::string(what) + ": " + std::to_string(size) +
                              " values, expected " + std::to_string(expected));

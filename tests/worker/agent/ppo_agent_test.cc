@@ -150,5 +150,67 @@ TEST(PpoAgent, RestoresTheKeptPolicyAfterLearningOn) {
   EXPECT_EQ(agent.Probabilities({0.5f}, {}), kept);
 }
 
+// Acts and learns on the chain for `steps` steps from where `env` stands; the actions taken.
+std::vector<int> Drive(ChainEnv& env, PpoAgent& agent, int steps) {
+  const BoxSpace space = env.ObservationSpace();
+  std::vector<int> actions;
+  std::vector<float> observation = space.Normalise({static_cast<double>(
+      env.LastInfo().positions.empty() ? 0.0 : env.LastInfo().positions[0].x)});
+  for (int k = 0; k < steps; ++k) {
+    const int action = agent.Act(observation, {}, true);
+    const StepResult r = env.Step(action);
+    Transition t;
+    t.observation = observation;
+    t.action = action;
+    t.reward = static_cast<float>(r.reward);
+    t.next_observation = space.Normalise(r.observation);
+    t.terminal = r.terminated;
+    t.episode_end = r.terminated || r.truncated;
+    agent.Observe(t);
+    actions.push_back(action);
+    observation = t.episode_end ? space.Normalise(env.Reset(0)) : t.next_observation;
+  }
+  return actions;
+}
+
+TEST(PpoAgent, ATrainingStateResumesExactlyWhereItWasSaved) {
+  const AgentSpec spec = PpoSpecFor(5, 5);  // rollouts of 64 steps
+  const auto file = std::filesystem::temp_directory_path() / "rlpos-ppo-state";
+  ChainEnv env_a;
+  env_a.Reset(0);
+  PpoAgent a(spec, 1, 2, 640);
+  Drive(env_a, a, 100);
+  EXPECT_FALSE(a.AtRolloutStart());
+  EXPECT_THROW(a.SaveTrainingState(file.string()), std::logic_error);
+  Drive(env_a, a, 28);  // 128: two rollouts learnt, none begun
+  ASSERT_TRUE(a.AtRolloutStart());
+  a.KeepPolicy();
+  a.SaveTrainingState(file.string());
+
+  // Another seed's agent, given the state, goes on as the first does.
+  ChainEnv env_b = env_a;
+  PpoAgent b(PpoSpecFor(99, 5), 1, 2, 640);
+  b.LoadTrainingState(file.string());
+  EXPECT_EQ(Drive(env_b, b, 300), Drive(env_a, a, 300));
+  EXPECT_EQ(b.Probabilities({0.5f}, {}), a.Probabilities({0.5f}, {}));
+  EXPECT_EQ(b.LearningRate(), a.LearningRate());
+  a.RestoreKeptPolicy();
+  b.RestoreKeptPolicy();
+  EXPECT_EQ(b.Probabilities({0.5f}, {}), a.Probabilities({0.5f}, {}));
+
+  // Another shape, or a damaged file: a runtime_error that names the file.
+  PpoAgent wider(spec, 3, 2);
+  try {
+    wider.LoadTrainingState(file.string());
+    ADD_FAILURE() << "loaded the state of another shape";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string() + ": "), std::string::npos) << e.what();
+  }
+  std::filesystem::resize_file(file, std::filesystem::file_size(file) - 5);
+  EXPECT_THROW(b.LoadTrainingState(file.string()), std::runtime_error);
+  std::filesystem::remove(file);
+  EXPECT_THROW(b.LoadTrainingState(file.string()), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -167,12 +167,38 @@ TEST_F(Generalist, KilledAndRunAgainItResumesToTheSamePolicy) {
       << other.err;
 }
 
+// --scenarios DIR: the same training over a user's own set, recorded by file name.
+TEST_F(Generalist, TrainsOnAUsersOwnSet) {
+  const fs::path set = dir_ / "set";
+  fs::create_directories(set);
+  fs::copy_file(kScenarios + "a.json", set / "a.json");
+  fs::copy_file(kScenarioB, set / "b.json");
+  std::string args = kTiny;
+  args.replace(args.find("--generated urban,open"), 22, "--scenarios " + set.string());
+  const std::string out = (dir_ / "on-set").string();
+  const auto r = RunCommand(Sim("train" + args + " --json --out " + out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto result = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(result["general"].get<bool>());
+  EXPECT_EQ(result["training"]["scenarios"], (nlohmann::json{"a.json", "b.json"}));
+  EXPECT_EQ(result["training"]["uavs"], (nlohmann::json{1, 1}));
+  EXPECT_FALSE(result["training"].contains("generator_seeds"));
+  const auto p = RunCommand(
+      Sim("position --positioner rl --scenario " + kScenarios + "c.json --policy " + out));
+  EXPECT_EQ(p.exit_code, 0) << p.err;
+}
+
 struct BadTrain {
+  std::string name;  // the test's
   std::string args;
   std::string names;  // what the one line must name
 };
 
 class GeneralistBadInput : public ::testing::TestWithParam<BadTrain> {};
+
+std::string NameOf(const ::testing::TestParamInfo<BadTrain>& p) {
+  return p.param.name;
+}
 
 TEST_P(GeneralistBadInput, IsOneLineAnExitOf2AndNothingWritten) {
   const fs::path out =
@@ -190,23 +216,28 @@ TEST_P(GeneralistBadInput, IsOneLineAnExitOf2AndNothingWritten) {
 INSTANTIATE_TEST_SUITE_P(
     Refusals, GeneralistBadInput,
     ::testing::Values(
-        BadTrain{"--generated mars --steps 100", "--generated: unknown style \"mars\""},
-        BadTrain{"--generated urban", "--steps: is required"},
-        BadTrain{"--generated urban --steps 100 --scenario " + kScenarioB, "--scenario"},
-        BadTrain{"--generated urban --steps 100 --uavs 0-2", "--uavs"},
-        BadTrain{"--generated urban --steps 100 --uavs 2-1", "--uavs"},
-        BadTrain{"--generated urban --steps 100 --ues 500", "--ues"},
-        BadTrain{"--generated urban --steps 100 --episodes 5", "--episodes"},
-        BadTrain{"--generated urban --steps 100 --algorithm dqn", "--algorithm"},
-        BadTrain{"--generated urban --steps 100 --fidelity packet", "--fidelity"},
-        BadTrain{"--generated urban --steps 100 --set env.observations=[\\\"x\\\",\\\"zone\\\"]",
+        BadTrain{"UnknownStyle", "--generated mars --steps 100",
+                 "--generated: unknown style \"mars\""},
+        BadTrain{"NoSteps", "--generated urban", "--steps: is required"},
+        BadTrain{"ScenarioToo", "--generated urban --steps 100 --scenario " + kScenarioB,
+                 "--scenario"},
+        BadTrain{"UavsFromZero", "--generated urban --steps 100 --uavs 0-2", "--uavs"},
+        BadTrain{"UavsDescending", "--generated urban --steps 100 --uavs 2-1", "--uavs"},
+        BadTrain{"TooManyUes", "--generated urban --steps 100 --ues 500", "--ues"},
+        BadTrain{"Episodes", "--generated urban --steps 100 --episodes 5", "--episodes"},
+        BadTrain{"Dqn", "--generated urban --steps 100 --algorithm dqn", "--algorithm"},
+        BadTrain{"PacketFidelity", "--generated urban --steps 100 --fidelity packet", "--fidelity"},
+        BadTrain{"OwnObservation",
+                 "--generated urban --steps 100 --set env.observations=[\\\"x\\\",\\\"zone\\\"]",
                  "\"x\" is one scenario's own"},
-        BadTrain{"--generated urban --steps 100 --set agent.ppo.gamma=7",
+        BadTrain{"BadSetting", "--generated urban --steps 100 --set agent.ppo.gamma=7",
                  "--set agent.ppo.gamma=7"},
-        BadTrain{"--scenarios /nonexistent/rlpos --steps 100", "--scenarios"},
-        BadTrain{"--generated urban --scenarios " + kScenarios + " --steps 100", "exclude"},
-        BadTrain{"", "--scenario: is required"},
-        BadTrain{"--scenario " + kScenarioB + " --steps 100", "--steps"}));
+        BadTrain{"MissingFolder", "--scenarios /nonexistent/rlpos --steps 100", "--scenarios"},
+        BadTrain{"BothSources", "--generated urban --scenarios " + kScenarios + " --steps 100",
+                 "exclude"},
+        BadTrain{"NoSource", "", "--scenario: is required"},
+        BadTrain{"StepsForOneScenario", "--scenario " + kScenarioB + " --steps 100", "--steps"}),
+    NameOf);
 
 }  // namespace
 }  // namespace rlpos::testing
