@@ -188,6 +188,22 @@ TEST_F(Generalist, TrainsOnAUsersOwnSet) {
   EXPECT_EQ(p.exit_code, 0) << p.err;
 }
 
+// The policies shipped in policies/ still load with this build and place a UAV in B, where the
+// oracle's reward is 1 (every UE in LoS, every demand carried).
+TEST(ShippedPolicies, EachPlacesAUavInB) {
+  int shipped = 0;
+  for (const auto& entry : fs::directory_iterator(std::string(RLPOS_SOURCE_DIR) + "/policies")) {
+    if (!entry.is_directory())
+      continue;
+    ++shipped;
+    const auto r = RunCommand(Sim("position --positioner rl --json --scenario " + kScenarioB +
+                                  " --policy " + entry.path().string()));
+    ASSERT_EQ(r.exit_code, 0) << entry.path() << ": " << r.err;
+    EXPECT_GE(nlohmann::json::parse(r.out)["reward"].get<double>(), 0.95) << entry.path();
+  }
+  EXPECT_GE(shipped, 1);
+}
+
 struct BadTrain {
   std::string name;  // the test's
   std::string args;
