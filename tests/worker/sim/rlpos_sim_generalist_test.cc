@@ -252,6 +252,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadTrain{"BothSources", "--generated urban --scenarios " + kScenarios + " --steps 100",
                  "exclude"},
         BadTrain{"NoSource", "", "--scenario: is required"},
+        BadTrain{"SeedBeyondTheDrawRanges", "--generated urban --steps 100 --seed 2000000",
+                 "--seed: at most 1000000"},
         BadTrain{"StepsForOneScenario", "--scenario " + kScenarioB + " --steps 100", "--steps"}),
     NameOf);
 
