@@ -140,7 +140,12 @@ Source FolderSource(const TrainOptions& t, const std::vector<std::string>& user)
   std::vector<std::string> names;
   int max_uavs = 1, min_uavs = 1000;
   for (const fs::path& f : files) {
-    Scenario s = LoadScenario(f.string(), {});
+    Scenario s;
+    try {
+      s = LoadScenario(f.string(), {});
+    } catch (const ConfigError& e) {
+      throw ConfigError("--scenarios", f.string() + ": " + e.describe());
+    }
     max_uavs = std::max(max_uavs, static_cast<int>(s.uavs.size()));
     min_uavs = std::min(min_uavs, static_cast<int>(s.uavs.size()));
     set.push_back(std::move(s));
@@ -196,6 +201,8 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     throw ConfigError("--algorithm", "only ppo trains across scenarios in this version");
   if (!t.fidelity.empty() && t.fidelity != "analytic")
     throw ConfigError("--fidelity", "training across scenarios runs at analytic fidelity");
+  if (!t.scenarios_dir.empty() && (t.uavs != "1" || !t.ues.empty()))
+    throw ConfigError("--uavs", "and --ues shape --generated's draws; --scenarios takes the set's");
   const Source source = t.generated.empty() ? FolderSource(t, options.overrides)
                                             : GeneratedSource(t, options.overrides);
   const Scenario& settings = source.settings;

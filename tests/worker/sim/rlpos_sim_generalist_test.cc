@@ -249,6 +249,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadTrain{"BadSetting", "--generated urban --steps 100 --set agent.ppo.gamma=7",
                  "--set agent.ppo.gamma=7"},
         BadTrain{"MissingFolder", "--scenarios /nonexistent/rlpos --steps 100", "--scenarios"},
+        BadTrain{"BadScenarioInTheSet",
+                 "--scenarios " + std::string(RLPOS_SOURCE_DIR) + "/tests/e2e/campaigns" +
+                     " --steps 100",
+                 "--scenarios: " + std::string(RLPOS_SOURCE_DIR) + "/tests/e2e/campaigns/"},
+        BadTrain{"UavsWithASet", "--scenarios " + kScenarios + " --uavs 2 --steps 100", "--uavs"},
         BadTrain{"BothSources", "--generated urban --scenarios " + kScenarios + " --steps 100",
                  "exclude"},
         BadTrain{"NoSource", "", "--scenario: is required"},
