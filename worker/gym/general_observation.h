@@ -24,8 +24,8 @@
 //               inside a building at every altitude; last, the offset from the UAV to the best
 //               cell's column at its best altitude (dx, dy, dz in moves of env.step, clipped to
 //               +-kPointerStepLimit);
-//   "lookahead" for each of env.actions, the reward at the move's destination minus the reward
-//               here, times kLookaheadGain over the reward's bound, clipped to [-1, 1] (0 for a
+//   "lookahead" for each of env.actions, the model's reward at the move's destination minus its
+//               reward here, times kLookaheadGain over the reward's bound, clipped to [-1, 1] (0 for a
 //               move that goes nowhere).
 // A scenario with more UEs than slots shows the nearest; the slots and the cells hold no
 // scenario's size, so their layout is the same in every scenario of the same env settings.

@@ -32,9 +32,10 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario,
 
 void UavPositioningEnv::LookAroundFor(std::size_t uav, StepInfo& info) const {
   AnalyticEvaluator& model = analytic_ ? *analytic_ : *look_model_;
-  look_around_->Fill(
-      placement_, uav, RewardOf(info), model, [this](const StepInfo& i) { return RewardOf(i); },
-      info);
+  // The model's reward here, not ns-3's measured one: a lookahead is the model's change.
+  const double here = analytic_ ? RewardOf(info) : RewardOf(model.Evaluate(placement_));
+  const auto reward_of = [this](const StepInfo& i) { return RewardOf(i); };
+  look_around_->Fill(placement_, uav, here, model, reward_of, info);
 }
 
 UavPositioningEnv::~UavPositioningEnv() = default;

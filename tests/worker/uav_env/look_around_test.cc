@@ -123,5 +123,22 @@ TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
   EXPECT_NE(views[0], views[1]);
 }
 
+// At packet level the look around is the analytic model's too: the same values as at analytic
+// fidelity, while the step's own metrics come from ns-3.
+TEST(LookAround, PacketLevelLooksAroundWithTheAnalyticModel) {
+  Scenario s = LoadScenario(
+      std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json",
+      {"env.episode_duration=0.5", "env.decision_interval=0.25", "simulation.warmup=0.5",
+       "env.coverage_map=3", R"(env.observations=["coverage","lookahead"])"});
+  s.env.fidelity = "packet";
+  UavPositioningEnv packet(s);
+  const std::vector<double> at_packet = packet.Reset(1001);
+  s.env.fidelity = "analytic";
+  UavPositioningEnv analytic(s);
+  const std::vector<double> at_analytic = analytic.Reset(1);
+  ASSERT_EQ(at_packet.size(), 2u * 9 + 3 + s.env.actions.size());
+  EXPECT_EQ(at_packet, at_analytic);
+}
+
 }  // namespace
 }  // namespace rlpos
