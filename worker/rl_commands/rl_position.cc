@@ -31,9 +31,11 @@ Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options)
   Scenario target = LoadScenarioFor(options, {});
   const int uavs = static_cast<int>(target.uavs.size());
   if (uavs < folder.min_uavs || uavs > folder.max_uavs) {
-    throw ConfigError("--policy", folder.dir + " was trained for " +
-                                      std::to_string(folder.min_uavs) + "-" +
-                                      std::to_string(folder.max_uavs) + " UAVs; " +
+    const std::string trained =
+        folder.min_uavs == folder.max_uavs
+            ? std::to_string(folder.min_uavs)
+            : std::to_string(folder.min_uavs) + "-" + std::to_string(folder.max_uavs);
+    throw ConfigError("--policy", folder.dir + " was trained for " + trained + " UAV(s); " +
                                       options.scenario_file + " has " + std::to_string(uavs));
   }
   target.env = folder.trained.env;
