@@ -7,6 +7,7 @@
 #include "common/config/object_reader.h"
 #include "common/scenario/scenario_contradiction.h"
 #include "common/scenario/scenario_parser.h"
+#include "common/wire/general_policy.h"
 #include "common/wire/identifiers.h"
 #include "common/wire/policy_bundle_files.h"
 
@@ -23,36 +24,12 @@ json StatedDocument(const CampaignScenario& s) {
   return stated;
 }
 
-// What a campaign checks of a policy folder: its scenario.json, and whether it is a policy for
-// any scenario (result.json: "general", with the UAV counts it was trained for).
+// What a campaign checks of a policy folder: its scenario.json, and what its result.json says
+// of a policy for any scenario.
 struct PolicyFacts {
   Scenario trained;
-  bool general = false;
-  int min_uavs = 1;
-  int max_uavs = 1;
+  GeneralPolicyScope scope;
 };
-
-void ReadGeneral(const json& result, const std::string& folder, const std::string& where,
-                 PolicyFacts& facts) {
-  const json general = result.value("general", json(false));
-  if (!general.is_boolean())
-    throw ConfigError(where, "policy folder \"" + folder +
-                                 "\": result.json: /general: expected "
-                                 "true or false");
-  facts.general = general.get<bool>();
-  if (!facts.general)
-    return;
-  const json training = result.value("training", json::object());
-  const json uavs = training.is_object() ? training.value("uavs", json()) : json();
-  if (!uavs.is_array() || uavs.size() != 2 || !uavs[0].is_number_integer() ||
-      !uavs[1].is_number_integer() || uavs[0].get<int>() < 1 ||
-      uavs[0].get<int>() > uavs[1].get<int>()) {
-    throw ConfigError(where, "policy folder \"" + folder +
-                                 "\": result.json: /training/uavs: expected [min, max] UAV counts");
-  }
-  facts.min_uavs = uavs[0].get<int>();
-  facts.max_uavs = uavs[1].get<int>();
-}
 
 // The cheap parts of what `position --policy` reads.
 PolicyFacts CheckPolicyFiles(const PolicyBundle& bundle, const std::string& folder,
@@ -76,8 +53,13 @@ PolicyFacts CheckPolicyFiles(const PolicyBundle& bundle, const std::string& fold
       throw ConfigError(where, "policy folder \"" + folder +
                                    "\": policy.json: /format: expected \"torchscript\"");
     }
-    if (f.name == "result.json")
-      ReadGeneral(document, folder, where, facts);
+    if (f.name == "result.json") {
+      try {
+        facts.scope = ReadGeneralPolicyScope(document);
+      } catch (const std::invalid_argument& e) {
+        throw ConfigError(where, "policy folder \"" + folder + "\": result.json: " + e.what());
+      }
+    }
     if (f.name != "scenario.json")
       continue;
     try {
@@ -95,10 +77,10 @@ std::optional<Contradiction> GeneralMisfit(const PolicyFacts& facts, const Campa
   const json stated = StatedDocument(s);
   Scenario target = ParseScenario(stated);
   const int uavs = static_cast<int>(target.uavs.size());
-  if (uavs < facts.min_uavs || uavs > facts.max_uavs) {
+  if (uavs < facts.scope.min_uavs || uavs > facts.scope.max_uavs) {
     return Contradiction{"/uavs", std::to_string(uavs) + " UAVs in the scenario, " +
-                                      std::to_string(facts.min_uavs) + "-" +
-                                      std::to_string(facts.max_uavs) + " in the policy"};
+                                      std::to_string(facts.scope.min_uavs) + "-" +
+                                      std::to_string(facts.scope.max_uavs) + " in the policy"};
   }
   target.env = facts.trained.env;
   target.agent = facts.trained.agent;
@@ -142,8 +124,8 @@ CampaignPolicy ReadPolicyEntry(const json& v, const std::string& path, const Pol
   const Scenario& trained = facts.trained;
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
     const CampaignScenario& s = scenarios[i];
-    const auto c =
-        facts.general ? GeneralMisfit(facts, s) : FirstContradiction(trained, StatedDocument(s));
+    const auto c = facts.scope.general ? GeneralMisfit(facts, s)
+                                       : FirstContradiction(trained, StatedDocument(s));
     if (c) {
       throw ConfigError(where, "policy \"" + policy.folder + "\" (trained on " + trained.name +
                                    ") does not fit /scenarios/" + std::to_string(i) + " (" +

@@ -1,6 +1,8 @@
 #include "common/scenario/number_text.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <system_error>
 
@@ -24,6 +26,19 @@ std::string DescribePlacement(const Placement& placement) {
     std::snprintf(buffer, sizeof buffer, "%s(%.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x, p.y,
                   p.z);
     text += buffer;
+  }
+  return text;
+}
+
+std::string FormatDuration(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  char text[32];
+  if (s >= 3600) {
+    std::snprintf(text, sizeof text, "%ldh%02ldm", s / 3600, (s % 3600) / 60);
+  } else if (s >= 60) {
+    std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
+  } else {
+    std::snprintf(text, sizeof text, "%lds", s);
   }
   return text;
 }

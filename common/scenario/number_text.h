@@ -12,5 +12,7 @@ std::string FormatNumber(double x);
 std::string FormatPosition(const Vec3& p);
 // For people: "(80.0, 90.0, 12.0) (80.0, 10.0, 12.0)", one decimal, a triple per UAV.
 std::string DescribePlacement(const Placement& placement);
+// For people: a duration as "1h02m", "3m20s", "42s".
+std::string FormatDuration(double seconds);
 
 }  // namespace rlpos

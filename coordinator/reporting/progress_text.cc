@@ -6,19 +6,6 @@
 
 namespace rlpos {
 
-std::string FormatDuration(double seconds) {
-  const long s = std::lround(std::max(0.0, seconds));
-  char text[32];
-  if (s >= 3600) {
-    std::snprintf(text, sizeof text, "%ldh%02ldm", s / 3600, (s % 3600) / 60);
-  } else if (s >= 60) {
-    std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
-  } else {
-    std::snprintf(text, sizeof text, "%lds", s);
-  }
-  return text;
-}
-
 std::optional<double> EstimateRemainingSeconds(const CampaignProgress& progress,
                                                const CampaignTiming& timing, double now) {
   const int done = progress.succeeded + progress.failed + progress.cancelled;

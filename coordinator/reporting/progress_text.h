@@ -6,12 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "common/scenario/number_text.h"  // FormatDuration
 #include "common/store/store_records.h"
 
 namespace rlpos {
-
-// "1h02m", "3m20s", "42s".
-std::string FormatDuration(double seconds);
 
 // Remaining seconds, or nothing before the first job finished (or when all are done).
 std::optional<double> EstimateRemainingSeconds(const CampaignProgress& progress,

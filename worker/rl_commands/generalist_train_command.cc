@@ -14,6 +14,7 @@
 #include "common/config/config_error.h"
 #include "common/hash/sha256.h"
 #include "common/scenario/names.h"
+#include "common/scenario/number_text.h"
 #include "common/scenario/scenario_parser.h"
 #include "common/scenario_generator/scenario_generator.h"
 #include "worker/agent/make_agent.h"
@@ -160,16 +161,6 @@ Source FolderSource(const TrainOptions& t, const std::vector<std::string>& user)
   return source;
 }
 
-std::string Duration(double seconds) {
-  char text[32];
-  const auto s = static_cast<long long>(seconds + 0.5);
-  if (s >= 3600)
-    std::snprintf(text, sizeof text, "%lldh%02lldm", s / 3600, s / 60 % 60);
-  else
-    std::snprintf(text, sizeof text, "%lldm%02llds", s / 60, s % 60);
-  return text;
-}
-
 nlohmann::json ValidationJson(const std::vector<ValidationScore>& scores) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& s : scores)
@@ -283,8 +274,8 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
       if (p.validation)
         std::fprintf(stderr, ", validation %.3f of the oracle, worst %.3f (best mean %.3f)",
                      *p.validation, *p.validation_worst, *p.best_validation);
-      std::fprintf(stderr, ", %s, ETA %s\n", Duration(elapsed).c_str(),
-                   Duration(share > 0 ? elapsed * (1 - share) / share : 0).c_str());
+      std::fprintf(stderr, ", %s, ETA %s\n", FormatDuration(elapsed).c_str(),
+                   FormatDuration(share > 0 ? elapsed * (1 - share) / share : 0).c_str());
     };
     // Episode e of a training from seed S starts from RngRun S * 1000000 + 1 + e, as
     // per-scenario training's (its exploring start).
@@ -328,7 +319,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
           "trained a policy for any scenario (ppo, seed %llu): %lld steps, %lld episodes "
           "in %s; %.3f of the oracle's reward on %zu validation scenarios\npolicy in %s\n",
           static_cast<unsigned long long>(settings.agent.seed), static_cast<long long>(r.steps),
-          static_cast<long long>(r.episodes), Duration(seconds).c_str(), r.best_validation,
+          static_cast<long long>(r.episodes), FormatDuration(seconds).c_str(), r.best_validation,
           r.validation.size(), t.out.c_str());
     }
   } catch (...) {

@@ -88,21 +88,10 @@ PolicyFolder ReadPolicyFolder(const std::string& dir) {
   CheckAgrees(result, "algorithm", s.agent.algorithm, dir);
   CheckAgrees(result, "action_space", s.env.action_space, dir);
   CheckAgrees(result, "fidelity", s.env.fidelity, dir);
-  const auto general = result.find(kGeneral);
-  if (general != result.end() && !general->is_boolean())
-    throw ConfigError("--policy", dir + "/result.json: /general: expected true or false");
-  folder.general = general != result.end() && general->get<bool>();
-  if (folder.general) {
-    const nlohmann::json uavs =
-        result.value("training", nlohmann::json::object()).value("uavs", nlohmann::json());
-    if (!uavs.is_array() || uavs.size() != 2 || !uavs[0].is_number_integer() ||
-        !uavs[1].is_number_integer() || uavs[0].get<int>() < 1 ||
-        uavs[0].get<int>() > uavs[1].get<int>()) {
-      throw ConfigError("--policy",
-                        dir + "/result.json: /training/uavs: expected [min, max] UAV counts");
-    }
-    folder.min_uavs = uavs[0].get<int>();
-    folder.max_uavs = uavs[1].get<int>();
+  try {
+    folder.scope = ReadGeneralPolicyScope(result);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError("--policy", dir + "/result.json: " + e.what());
   }
   folder.first_episode_run = Run(result, kFirstEpisodeRun, dir);
   folder.eval_run = result.contains(kEvalRun) ? Run(result, kEvalRun, dir)

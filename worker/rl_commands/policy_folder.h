@@ -12,6 +12,7 @@
 #include <string>
 
 #include "common/scenario/scenario.h"
+#include "common/wire/general_policy.h"
 #include "worker/rl_commands/torchscript_manifest.h"
 
 namespace rlpos::sim {
@@ -23,11 +24,9 @@ struct PolicyFolder {
   std::uint64_t eval_run =
       0;  // RngRun of the final evaluation episode, whose end result.json reports
   // A general policy (rlpos-sim train --generated or --scenarios) is placed in any scenario with
-  // a UAV count in [min_uavs, max_uavs]: it flies there with its own env settings
+  // a UAV count in [scope.min_uavs, scope.max_uavs]: it flies there with its own env settings
   // (trained.env) from the baseline.
-  bool general = false;
-  int min_uavs = 1;
-  int max_uavs = 1;
+  GeneralPolicyScope scope;
   // Set for a TorchScript folder (model.pt is its policy); unset for ours (the agent of
   // trained.agent is).
   std::optional<TorchScriptManifest> torchscript;

@@ -30,11 +30,11 @@ void RefuseContradiction(const PolicyFolder& folder, const CommonOptions& option
 Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options) {
   Scenario target = LoadScenarioFor(options, {});
   const int uavs = static_cast<int>(target.uavs.size());
-  if (uavs < folder.min_uavs || uavs > folder.max_uavs) {
+  if (uavs < folder.scope.min_uavs || uavs > folder.scope.max_uavs) {
     const std::string trained =
-        folder.min_uavs == folder.max_uavs
-            ? std::to_string(folder.min_uavs)
-            : std::to_string(folder.min_uavs) + "-" + std::to_string(folder.max_uavs);
+        folder.scope.min_uavs == folder.scope.max_uavs
+            ? std::to_string(folder.scope.min_uavs)
+            : std::to_string(folder.scope.min_uavs) + "-" + std::to_string(folder.scope.max_uavs);
     throw ConfigError("--policy", folder.dir + " was trained for " + trained + " UAV(s); " +
                                       options.scenario_file + " has " + std::to_string(uavs));
   }
@@ -56,7 +56,7 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
   if (policy.empty())
     throw ConfigError("--policy", "is required for the rl positioner");
   const PolicyFolder folder = ReadPolicyFolder(policy);
-  if (folder.general && !folder.torchscript) {
+  if (folder.scope.general && !folder.torchscript) {
     UavPositioningEnv env(GeneralTarget(folder, options));
     const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
     agent->Load(policy);

@@ -42,6 +42,7 @@ struct Lane {
   std::vector<float> observation;  // normalised
   ActionMask mask;
   StepResult last;
+  ActionMask next_mask;  // the mask after the last step
   bool running = false;
   int steps = 0;
 };
@@ -92,6 +93,7 @@ class Round {
       pool_.ForEach(active.size(), [&](std::size_t k) {
         Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
         lane.last = lane.env->Step(actions[k]);
+        lane.next_mask = lane.env->ValidActions();  // on the pool too: it probes every move
       });
       std::vector<Transition> transitions(active.size());
       for (std::size_t k = 0; k < active.size(); ++k) {
@@ -105,7 +107,7 @@ class Round {
         t.reward = static_cast<float>(r.reward);
         t.next_observation = space_.Normalise(r.observation);
         t.terminal = r.terminated;
-        t.next_mask = lane.env->ValidActions();
+        t.next_mask = std::move(lane.next_mask);
         t.episode_end = r.terminated || truncated;
         lane.observation = t.next_observation;
         lane.mask = t.next_mask;
