@@ -8,8 +8,8 @@ throughput_ccdf_<scenario>.png and delay_cdf_<scenario>.png. With --learning-cur
 (learning_curves.csv: scenario, label, episode, phase, total_reward, mean_loss, epsilon) it also
 draws learning_curve_<scenario>.png: reward and loss per training episode, one line per train
 job. With --optimality-cdf (optimality_cdf.csv: algorithm, uavs, ratio, p) it draws
-optimality_cdf.png: the CDF of rl's reward over the oracle's, one step curve per algorithm and
-number of UAVs.
+optimality_cdf.png: the CDF of each placement's reward over the oracle's, one step curve per
+algorithm (named policy, positioner) and number of UAVs.
 
 Prints "wrote <path>" for every file written. Exit status: 0 done, 1 error, 2 bad arguments,
 3 matplotlib is not available (the caller may try another interpreter).
@@ -73,7 +73,7 @@ def plot_optimality(plt, curves, title, path):
     for name, (xs, ps) in curves.items():
         axes.plot([xs[0]] + xs, [0.0] + ps, drawstyle="steps-post", label=name)
     axes.axvline(0.95, color="grey", linestyle="--", linewidth=1)
-    axes.set_xlabel("rl reward / oracle reward")
+    axes.set_xlabel("reward / oracle reward")
     axes.set_ylabel("P(ratio \u2264 x)")
     axes.set_ylim(-0.02, 1.02)
     axes.set_title(title)
@@ -191,7 +191,7 @@ def main():
     if args.optimality_cdf:
         curves = read_optimality(args.optimality_cdf)
         if curves:
-            plot_optimality(plt, curves, f"{prefix}optimality: rl against the oracle",
+            plot_optimality(plt, curves, f"{prefix}optimality: each placement against the oracle",
                             os.path.join(args.out_dir, "optimality_cdf.png"))
     return 0
 

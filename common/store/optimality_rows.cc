@@ -12,30 +12,33 @@ constexpr const char* kOracle =
     "FROM v_eval_runs v WHERE v.campaign_id = ?1 AND v.positioner = 'oracle' "
     "AND v.reward IS NOT NULL GROUP BY v.scenario";
 
-// rl evals are labelled "rl" or "rl@..." (campaign/expansion.h: EvalLabel); each depends on
-// the train job that found its placement, whose result names the algorithm it trained. A named
-// policy's evals ("rl+<name>") depend on its rl position job: their "algorithm" is their label,
-// so that no summary counts them with a trained algorithm.
+// Every placement's evals against the oracle's: each eval depends on the job that found its
+// placement. rl evals ("rl", "rl@...") depend on a train job, whose result names the algorithm it
+// trained; a named policy's ("rl+<name>") and the other positioners' (baseline, centroid, the
+// oracle itself) on a position job: their "algorithm" is their label, so that no summary counts
+// them with a trained algorithm. The offsets around rl's position are no placement of their own.
+// The placement's seconds are its job's, or the job's whose result the cache gave it.
 const std::string kSelect =
     std::string(
         "SELECT r.scenario, o.uavs, CASE WHEN t.kind = 'train' THEN "
         "COALESCE(json_extract(t.result_json, '$.algorithm'), '') ELSE r.positioner END, "
-        "COALESCE(t.train_seed, 0), r.positioner, COUNT(*), AVG(r.reward), o.reward "
+        "CASE WHEN t.kind = 'train' THEN COALESCE(t.train_seed, 0) ELSE 0 END, r.positioner, "
+        "COUNT(*), AVG(r.reward), o.reward, t.kind = 'train', "
+        "MAX(COALESCE(s.finished_at - s.started_at, t.finished_at - t.started_at)) "
         "FROM v_eval_runs r "
         "JOIN jobs e ON e.id = r.job_id "
-        "JOIN jobs t ON t.id = e.depends_on AND (t.kind = 'train' OR (t.kind = 'position' AND "
-        "t.positioner = 'rl')) "
+        "JOIN jobs t ON t.id = e.depends_on "
+        "LEFT JOIN jobs s ON s.id = t.cached_from "
         "JOIN (") +
     kOracle +
     ") o ON o.scenario = r.scenario "
     // Scenarios in campaign order (their first job), found once, as the metric readers do.
     "JOIN (SELECT scenario AS order_scenario, MIN(seq) AS order_seq FROM jobs "
     "WHERE campaign_id = ?1 GROUP BY scenario) f ON f.order_scenario = r.scenario "
-    "WHERE r.campaign_id = ?1 AND (r.positioner = 'rl' OR substr(r.positioner, 1, 3) IN ('rl@', "
-    "'rl+')) "
-    "AND r.reward IS NOT NULL "
+    "WHERE r.campaign_id = ?1 AND r.reward IS NOT NULL AND (t.kind = 'position' OR "
+    "(t.kind = 'train' AND (r.positioner = 'rl' OR substr(r.positioner, 1, 3) = 'rl@'))) "
     "GROUP BY r.scenario, r.positioner "
-    // Named policies after the trained rl of their scenario.
+    // The trained rl of a scenario first, then the placements of position jobs.
     "ORDER BY f.order_seq, MAX(t.kind = 'position'), MIN(t.seq)";
 
 }  // namespace
@@ -44,6 +47,10 @@ std::optional<double> OptimalityRow::Ratio() const {
   if (!(oracle_reward > 0))
     return std::nullopt;
   return rl_reward / oracle_reward;
+}
+
+bool OptimalityRow::IsRl() const {
+  return label == "rl" || label.rfind("rl@", 0) == 0 || label.rfind("rl+", 0) == 0;
 }
 
 std::vector<OptimalityRow> ReadOptimalityRows(Database& db, const std::string& campaign_id) {
@@ -60,6 +67,8 @@ std::vector<OptimalityRow> ReadOptimalityRows(Database& db, const std::string& c
     row.runs = static_cast<int>(select.Int(5));
     row.rl_reward = select.Double(6);
     row.oracle_reward = select.Double(7);
+    row.trained = select.Int(8) != 0;
+    row.placement_s = select.OptionalDouble(9);
     out.push_back(std::move(row));
   }
   return out;

@@ -115,7 +115,8 @@ std::string ResultsTables(ResultsReader& store, const std::string& campaign_id) 
     out += "\nper UAV:\n" + FormatUavSummaryText(uavs);
   const auto optimality = SummarizeOptimality(store.Optimality(campaign_id));
   if (!optimality.empty())
-    out += "\noptimality (rl reward / oracle reward):\n" + FormatOptimalityText(optimality);
+    out += "\noptimality (each placement's reward / the oracle's):\n" +
+           FormatOptimalityText(optimality);
   return out;
 }
 

@@ -6,23 +6,32 @@
 #include <set>
 #include <tuple>
 
+#include "common/scenario/names.h"
 #include "common/scenario/scenario_parser.h"
 #include "common/stats/descriptive.h"
-#include "common/stats/empirical_distribution.h"
 #include "coordinator/reporting/csv_cells.h"
 #include "coordinator/reporting/text_table.h"
 
 namespace rlpos {
 namespace {
 
-// (rank in AllAlgorithms(), name, UAVs): the known algorithms first, in their order.
+// (rank, name, UAVs): the trained algorithms first, in AllAlgorithms() order (an unrecorded
+// one after them), then the named policies by name, then the other positioners in kPositioners
+// order, the oracle's own placements among them.
 using GroupKey = std::tuple<std::size_t, std::string, int>;
 
-GroupKey KeyOf(const OptimalityRow& row) {
+std::size_t RankOf(const OptimalityRow& row) {
   const auto& all = AllAlgorithms();
-  const auto rank =
-      static_cast<std::size_t>(std::find(all.begin(), all.end(), row.algorithm) - all.begin());
-  return {rank, row.algorithm, row.uavs};
+  if (row.trained)
+    return static_cast<std::size_t>(std::find(all.begin(), all.end(), row.algorithm) - all.begin());
+  if (row.IsRl())
+    return all.size() + 1;
+  const auto positioner = std::find(kPositioners.begin(), kPositioners.end(), row.label);
+  return all.size() + 2 + static_cast<std::size_t>(positioner - kPositioners.begin());
+}
+
+GroupKey KeyOf(const OptimalityRow& row) {
+  return {RankOf(row), row.algorithm, row.uavs};
 }
 
 // The rows with a ratio, per group, in group order.
@@ -42,17 +51,22 @@ OptimalitySummary Summarize(const std::vector<const OptimalityRow*>& runs) {
   s.uavs = runs.front()->uavs;
   s.runs = static_cast<int>(runs.size());
   std::vector<double> ratios;
+  std::vector<double> seconds;
   std::set<std::string> scenarios;
   for (const OptimalityRow* run : runs) {
     const double ratio = *run->Ratio();
     ratios.push_back(ratio);
     scenarios.insert(run->scenario);
     s.near_optimal_runs += ratio >= kNearOptimalRatio ? 1 : 0;
+    if (run->placement_s)
+      seconds.push_back(*run->placement_s);
   }
   s.scenarios = static_cast<int>(scenarios.size());
   s.median = Median(ratios);
   s.p10 = Quantile(ratios, 0.1);
   s.worst = *std::min_element(ratios.begin(), ratios.end());
+  if (!seconds.empty())
+    s.median_placement_s = Median(seconds);
   return s;
 }
 
@@ -60,10 +74,18 @@ std::string AlgorithmText(const std::string& algorithm) {
   return algorithm.empty() ? "-" : algorithm;
 }
 
+// Seconds to one decimal below 100 s, whole above; "-" when unknown.
+std::string SecondsText(std::optional<double> seconds) {
+  if (!seconds || !std::isfinite(*seconds))
+    return "-";
+  return TableNumber(*seconds, *seconds < 100 ? 1 : 0);
+}
+
 const std::vector<TableColumn>& SummaryColumns() {
   static const std::vector<TableColumn> columns{
-      {"algorithm", true}, {"UAVs", false}, {"runs", false},  {"scenarios", false},
-      {"median", false},   {"P10", false},  {"worst", false}, {">= 0.95", false}};
+      {"algorithm", true},  {"UAVs", false},    {"runs", false},
+      {"scenarios", false}, {"median", false},  {"P10", false},
+      {"worst", false},     {">= 0.95", false}, {"placement s", false}};
   return columns;
 }
 
@@ -74,7 +96,8 @@ std::vector<std::vector<std::string>> SummaryRows(const std::vector<OptimalitySu
                     std::to_string(s.scenarios), TableNumber(s.median, 3), TableNumber(s.p10, 3),
                     TableNumber(s.worst, 3),
                     std::to_string(s.near_optimal_runs) + "/" + std::to_string(s.runs) + " (" +
-                        TableNumber(100.0 * s.NearOptimalShare(), 0) + " %)"});
+                        TableNumber(100.0 * s.NearOptimalShare(), 0) + " %)",
+                    SecondsText(s.median_placement_s)});
   }
   return rows;
 }
@@ -83,6 +106,10 @@ std::vector<std::vector<std::string>> SummaryRows(const std::vector<OptimalitySu
 
 std::vector<OptimalitySummary> SummarizeOptimality(const std::vector<OptimalityRow>& rows) {
   std::vector<OptimalitySummary> out;
+  // The oracle against itself alone compares nothing.
+  if (std::none_of(rows.begin(), rows.end(),
+                   [](const OptimalityRow& r) { return r.label != "oracle" && r.Ratio(); }))
+    return out;
   for (const auto& group : Groups(rows))
     out.push_back(Summarize(group.second));
   return out;
@@ -91,7 +118,7 @@ std::vector<OptimalitySummary> SummarizeOptimality(const std::vector<OptimalityR
 std::vector<OptimalityRow> RunsBelowNearOptimal(const std::vector<OptimalityRow>& rows) {
   std::vector<OptimalityRow> out;
   for (const auto& row : rows) {
-    if (row.Ratio() && *row.Ratio() < kNearOptimalRatio)
+    if (row.IsRl() && row.Ratio() && *row.Ratio() < kNearOptimalRatio)
       out.push_back(row);
   }
   std::stable_sort(out.begin(), out.end(), [](const OptimalityRow& a, const OptimalityRow& b) {
@@ -110,12 +137,12 @@ std::string FormatOptimalityMarkdown(const std::vector<OptimalitySummary>& summa
 
 std::string FormatOptimalitySummaryCsv(const std::vector<OptimalitySummary>& summary) {
   std::string out = CsvLine({"algorithm", "uavs", "runs", "scenarios", "median", "p10", "worst",
-                             "near_optimal_runs", "near_optimal_share"});
+                             "near_optimal_runs", "near_optimal_share", "median_placement_s"});
   for (const auto& s : summary) {
     out += CsvLine({CsvText(s.algorithm), std::to_string(s.uavs), std::to_string(s.runs),
                     std::to_string(s.scenarios), CsvNumber(s.median), CsvNumber(s.p10),
                     CsvNumber(s.worst), std::to_string(s.near_optimal_runs),
-                    CsvNumber(s.NearOptimalShare())});
+                    CsvNumber(s.NearOptimalShare()), CsvNumber(s.median_placement_s)});
   }
   return out;
 }
@@ -131,18 +158,22 @@ nlohmann::json OptimalityToJson(const std::vector<OptimalitySummary>& summary) {
                    {"p10", s.p10},
                    {"worst", s.worst},
                    {"near_optimal_runs", s.near_optimal_runs},
-                   {"near_optimal_share", s.NearOptimalShare()}});
+                   {"near_optimal_share", s.NearOptimalShare()},
+                   {"median_placement_s", std::isfinite(s.median_placement_s)
+                                              ? nlohmann::json(s.median_placement_s)
+                                              : nlohmann::json(nullptr)}});
   }
   return out;
 }
 
 std::string FormatOptimalityRowsCsv(const std::vector<OptimalityRow>& rows) {
   std::string out = CsvLine({"scenario", "uavs", "algorithm", "train_seed", "label", "runs",
-                             "rl_reward", "oracle_reward", "ratio"});
+                             "rl_reward", "oracle_reward", "ratio", "placement_s"});
   for (const auto& r : rows) {
     out += CsvLine({CsvText(r.scenario), std::to_string(r.uavs), CsvText(r.algorithm),
                     std::to_string(r.train_seed), CsvText(r.label), std::to_string(r.runs),
-                    CsvNumber(r.rl_reward), CsvNumber(r.oracle_reward), CsvNumber(r.Ratio())});
+                    CsvNumber(r.rl_reward), CsvNumber(r.oracle_reward), CsvNumber(r.Ratio()),
+                    CsvNumber(r.placement_s)});
   }
   return out;
 }
@@ -152,7 +183,8 @@ std::string FormatOptimalityRowsMarkdown(const std::vector<OptimalityRow>& rows)
   for (const auto& r : rows) {
     cells.push_back({r.scenario, std::to_string(r.uavs), AlgorithmText(r.algorithm),
                      std::to_string(r.train_seed), r.label, TableNumber(r.rl_reward, 4),
-                     TableNumber(r.oracle_reward, 4), TableNumber(r.Ratio(), 3)});
+                     TableNumber(r.oracle_reward, 4), TableNumber(r.Ratio(), 3),
+                     SecondsText(r.placement_s)});
   }
   return FormatMarkdownTable({{"scenario", true},
                               {"UAVs", false},
@@ -161,19 +193,30 @@ std::string FormatOptimalityRowsMarkdown(const std::vector<OptimalityRow>& rows)
                               {"label", true},
                               {"rl reward", false},
                               {"oracle reward", false},
-                              {"ratio", false}},
+                              {"ratio", false},
+                              {"placement s", false}},
                              cells);
+}
+
+std::vector<OptimalityCurve> OptimalityCdf(const std::vector<OptimalityRow>& rows) {
+  std::vector<OptimalityCurve> out;
+  for (const auto& group : Groups(rows)) {
+    if (std::get<1>(group.first) == "oracle")
+      continue;  // the oracle against itself: a step at 1
+    std::vector<double> ratios;
+    for (const OptimalityRow* row : group.second)
+      ratios.push_back(*row->Ratio());
+    out.push_back({std::get<1>(group.first), std::get<2>(group.first), EmpiricalCdf(ratios)});
+  }
+  return out;
 }
 
 std::string FormatOptimalityCdfCsv(const std::vector<OptimalityRow>& rows) {
   std::string out = CsvLine({"algorithm", "uavs", "ratio", "p"});
-  for (const auto& group : Groups(rows)) {
-    std::vector<double> ratios;
-    for (const OptimalityRow* row : group.second)
-      ratios.push_back(*row->Ratio());
-    for (const DistributionPoint& point : EmpiricalCdf(ratios)) {
-      out += CsvLine({CsvText(std::get<1>(group.first)), std::to_string(std::get<2>(group.first)),
-                      CsvNumber(point.x), CsvNumber(point.p)});
+  for (const OptimalityCurve& curve : OptimalityCdf(rows)) {
+    for (const DistributionPoint& point : curve.points) {
+      out += CsvLine({CsvText(curve.algorithm), std::to_string(curve.uavs), CsvNumber(point.x),
+                      CsvNumber(point.p)});
     }
   }
   return out;

@@ -61,19 +61,23 @@ std::string FormatOptimalitySection(const std::vector<OptimalityRow>& rows) {
   const std::vector<OptimalitySummary> summary = SummarizeOptimality(rows);
   if (summary.empty())
     return "";
-  std::string out = "\n## Optimality: rl against the oracle\n\n";
+  std::string out = "\n## Optimality: each placement against the oracle\n\n";
   out += FormatOptimalityMarkdown(summary);
   out +=
-      "\nA run is one rl placement (one scenario, algorithm and train seed); its ratio is its "
-      "reward over the oracle's at the same scenario, both the env's reward (`env.reward`) of "
-      "the placement by the analytic model, the `reward` of their evals. With several UAVs the "
-      "oracle is a coordinate descent, which rl may beat (a ratio above 1). Per algorithm and "
-      "number of UAVs: the median ratio, its 10th percentile (P10), the worst run, and the runs "
-      "at or above 0.95. Files: `optimality.csv` (every run), `optimality_summary.csv`, "
-      "`optimality_cdf.csv` and `optimality_cdf.png` (the ratio's CDF).\n";
+      "\nA run is one placement: rl's (one scenario, algorithm and train seed), a named policy's "
+      "(`rl+<name>`: a policy trained elsewhere, for any scenario or for this one, placing with no "
+      "training here), or another positioner's, per scenario; its ratio is its reward over the "
+      "oracle's at the same scenario, both the env's reward (`env.reward`) of the placement by "
+      "the analytic model, the `reward` of their evals. With several UAVs the oracle is a "
+      "coordinate descent, which rl may beat (a ratio above 1). Per algorithm (named policy, "
+      "positioner) and number of UAVs: the median ratio, its 10th percentile (P10), the worst "
+      "run, the runs at or above 0.95, and the median wall seconds of the job that found a "
+      "placement (a training, or a position job with its process start). Files: "
+      "`optimality.csv` (every run), `optimality_summary.csv`, `optimality_cdf.csv` and "
+      "`optimality_cdf.png` (the ratio's CDF).\n";
   const std::vector<OptimalityRow> below = RunsBelowNearOptimal(rows);
   if (!below.empty()) {
-    out += "\n### Runs under 95 % of the oracle, worst first\n\n";
+    out += "\n### rl runs under 95 % of the oracle, worst first\n\n";
     out += FormatOptimalityRowsMarkdown(below);
   }
   return out;

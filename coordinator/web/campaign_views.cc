@@ -6,6 +6,7 @@
 #include "coordinator/reporting/progress_text.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/uav_summary.h"
+#include "coordinator/web/plot_views.h"
 
 namespace rlpos::web {
 namespace {
@@ -174,11 +175,22 @@ json OptimalityJson(ResultsReader& store, const std::string& campaign_id) {
                     {"label", r.label},
                     {"rl_reward", r.rl_reward},
                     {"oracle_reward", r.oracle_reward},
-                    {"ratio", OptionalNumber(r.Ratio())}});
+                    {"ratio", OptionalNumber(r.Ratio())},
+                    {"placement_s", OptionalNumber(r.placement_s)}});
+  }
+  json cdf = json::array();
+  for (const OptimalityCurve& curve : OptimalityCdf(rows)) {
+    json x = json::array(), p = json::array();
+    for (std::size_t i : ThinnedIndices(curve.points.size(), kMaxCurvePoints)) {
+      x.push_back(curve.points[i].x);
+      p.push_back(curve.points[i].p);
+    }
+    cdf.push_back({{"algorithm", curve.algorithm}, {"uavs", curve.uavs}, {"x", x}, {"p", p}});
   }
   return {{"summary", OptimalityToJson(SummarizeOptimality(rows))},
           {"runs", runs},
-          {"runs_total", rows.size()}};
+          {"runs_total", rows.size()},
+          {"cdf", cdf}};
 }
 
 }  // namespace rlpos::web

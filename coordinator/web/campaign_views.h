@@ -26,9 +26,11 @@ nlohmann::json CampaignListJson(ResultsReader& store, double now);
 nlohmann::json CampaignDetailJson(ResultsReader& store, const std::string& campaign_id, double now);
 
 // The report's optimality section (coordinator/reporting/optimality.h): {"summary": per
-// algorithm and UAV count, median, P10, worst and share >= 0.95 of rl's reward over the
-// oracle's; "runs": each scenario, algorithm and train seed with both rewards and the ratio;
-// "runs_total"}. Both lists are empty when no scenario has rl and oracle rewards.
+// algorithm (named policy, positioner) and UAV count, median, P10, worst and share >= 0.95 of the
+// placement's reward over the oracle's, and the median seconds per placement; "runs": each
+// placement with both rewards, the ratio and its seconds (the first kMaxListedOptimalityRuns);
+// "runs_total"; "cdf": the ratio's CDF per group, [{algorithm, uavs, x, p}], each curve thinned
+// to kMaxCurvePoints}. All empty when no scenario has oracle rewards.
 nlohmann::json OptimalityJson(ResultsReader& store, const std::string& campaign_id);
 
 }  // namespace rlpos::web

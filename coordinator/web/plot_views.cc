@@ -29,19 +29,6 @@ std::optional<double> ValueOf(const MetricRow& row, const MetricTableEntry& def)
   return static_cast<double>(row.*def.run_count);
 }
 
-// Indices 0..n-1 thinned to at most `max` (max >= 2), evenly, first and last kept.
-std::vector<std::size_t> Thinned(std::size_t n, std::size_t max) {
-  std::vector<std::size_t> out;
-  if (n <= max) {
-    for (std::size_t i = 0; i < n; ++i)
-      out.push_back(i);
-    return out;
-  }
-  for (std::size_t k = 0; k < max; ++k)
-    out.push_back(k * (n - 1) / (max - 1));
-  return out;
-}
-
 // The reporting layer's curves where it has them (the report's throughput CCDF and delay CDF),
 // the same empirical distributions over the other metrics.
 std::vector<CurvePoint> Curves(const std::vector<MetricRow>& rows, const MetricTableEntry& def,
@@ -76,7 +63,7 @@ json CurvesJson(const std::vector<CurvePoint>& points) {
            points[end].positioner == points[begin].positioner)
       ++end;
     json x = json::array(), p = json::array();
-    for (std::size_t i : Thinned(end - begin, kMaxCurvePoints)) {
+    for (std::size_t i : ThinnedIndices(end - begin, kMaxCurvePoints)) {
       x.push_back(points[begin + i].x);
       p.push_back(points[begin + i].p);
     }
@@ -91,6 +78,18 @@ json CurvesJson(const std::vector<CurvePoint>& points) {
 }
 
 }  // namespace
+
+std::vector<std::size_t> ThinnedIndices(std::size_t n, std::size_t max) {
+  std::vector<std::size_t> out;
+  if (n <= max) {
+    for (std::size_t i = 0; i < n; ++i)
+      out.push_back(i);
+    return out;
+  }
+  for (std::size_t k = 0; k < max; ++k)
+    out.push_back(k * (n - 1) / (max - 1));
+  return out;
+}
 
 json DistributionJson(ResultsReader& store, const std::string& campaign_id,
                       const std::string& metric, const std::string& kind,
@@ -134,7 +133,7 @@ json LearningCurvesJson(ResultsReader& store, const std::string& campaign_id,
     const auto& curve = curves[key];
     json episode = json::array(), reward = json::array(), loss = json::array(),
          epsilon = json::array();
-    for (std::size_t i : Thinned(curve.size(), kMaxLearningPoints)) {
+    for (std::size_t i : ThinnedIndices(curve.size(), kMaxLearningPoints)) {
       episode.push_back(curve[i]->episode);
       reward.push_back(curve[i]->total_reward);
       loss.push_back(curve[i]->mean_loss);

@@ -5,6 +5,7 @@
 // response.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "common/store/results_reader.h"
 
@@ -24,6 +25,9 @@ nlohmann::json DistributionJson(ResultsReader& store, const std::string& campaig
 // "epsilon": [...]}], "warnings": [...]}: the train phase of each train job's curve.
 nlohmann::json LearningCurvesJson(ResultsReader& store, const std::string& campaign_id,
                                   const std::string& scenario);
+
+// Indices 0..n-1 thinned to at most `max` (max >= 2), evenly, first and last kept.
+std::vector<std::size_t> ThinnedIndices(std::size_t n, std::size_t max);
 
 // The metric keys a distribution can be asked for, with their names and units.
 nlohmann::json DistributionMetricsJson();

@@ -72,6 +72,14 @@ def check_plots(driver, positioners, scenarios):
     rows = driver.find_elements(By.CSS_SELECTOR, "#summary-table tbody tr")
     if len(rows) != positioners * scenarios:
         fail(f"summary: {len(rows)} rows, expected {positioners * scenarios}")
+    # Each placement against the oracle: a row per positioner (one-UAV scenarios), with its
+    # seconds, and a CDF curve per positioner but the oracle.
+    rows = driver.find_elements(By.CSS_SELECTOR, "#optimality-table tbody tr")
+    if len(rows) != positioners:
+        fail(f"optimality: {len(rows)} rows, expected {positioners}")
+    curves = driver.find_elements(By.CSS_SELECTOR, '#optimality-plot svg[data-plot="optimality"] path.series')
+    if len(curves) != positioners - 1:
+        fail(f"optimality CDF: {len(curves)} curves, expected {positioners - 1}")
 
 
 def check_legend_toggle(driver):

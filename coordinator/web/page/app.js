@@ -317,10 +317,11 @@ function renderTables(c) {
   document.getElementById('optimality-section').hidden = !optimality.summary.length;
   document.getElementById('optimality-table').replaceChildren(optimality.summary.length ? objectTable(optimality.summary, [
     ['algorithm', 'algorithm'], ['uavs', 'UAVs'], ['runs', 'runs'], ['median', 'median'], ['p10', 'P10'],
-    ['worst', 'worst'], ['near_optimal_share', 'share >= 0.95']]) : '');
+    ['worst', 'worst'], ['near_optimal_share', 'share >= 0.95'], ['median_placement_s', 'placement s']]) : '');
+  document.getElementById('optimality-plot').replaceChildren(...optimalityPlot(optimality.cdf));
   document.getElementById('optimality-runs').replaceChildren(optimality.runs.length ? objectTable(optimality.runs, [
     ['scenario', 'scenario'], ['uavs', 'UAVs'], ['algorithm', 'algorithm'], ['train_seed', 'train seed'],
-    ['rl_reward', 'rl reward'], ['oracle_reward', 'oracle reward'], ['ratio', 'rl / oracle']]) : '');
+    ['rl_reward', 'reward'], ['oracle_reward', 'oracle reward'], ['ratio', 'ratio'], ['placement_s', 'placement s']]) : '');
   document.getElementById('per-uav-section').hidden = !c.per_uav.length;
   document.getElementById('per-uav-table').replaceChildren(c.per_uav.length ? objectTable(c.per_uav) : '');
 }
@@ -345,6 +346,21 @@ function renderArtifacts(c) {
 }
 
 // --- Plots
+// The ratio's CDF, one curve per algorithm (named policy, positioner) and UAV count: per-scenario
+// training and a policy for any scenario side by side.
+function optimalityPlot(curves) {
+  if (!curves.length) return [];
+  // With one UAV count, a curve is named (and coloured) as its positioner is everywhere else.
+  const single = new Set(curves.map(c => c.uavs)).size === 1;
+  const name = c => single ? (c.algorithm || '-') : `${c.algorithm || '-'}, ${c.uavs} UAV${c.uavs === 1 ? '' : 's'}`;
+  const plot = linePlot({
+    kind: 'cdf', xLabel: 'reward / oracle reward', yLabel: 'P(ratio \u2264 x)', yDomain: [0, 1],
+    series: curves.map(c => ({ name: name(c), color: colorOf(name(c)), x: c.x, y: c.p, step: 'cdf' })),
+  });
+  plot.setAttribute('data-plot', 'optimality');
+  return [el('div', { class: 'plot-card' }, el('h3', {}, 'CDF of each placement\u2019s reward over the oracle\u2019s'), plot)];
+}
+
 function renderDistributions(data) {
   const box = document.getElementById('distribution-plots');
   box.replaceChildren();

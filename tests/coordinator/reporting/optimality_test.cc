@@ -1,15 +1,18 @@
-// The optimality section: rl's reward over the oracle's (common/store/optimality_rows.h) and its
-// statistics per algorithm and UAV count (coordinator/reporting/optimality.h), from hand-made
-// rows and from a results store, and in the report folder.
+// The optimality section: each placement's reward over the oracle's
+// (common/store/optimality_rows.h) and its statistics per algorithm (named policy, positioner) and
+// UAV count (coordinator/reporting/optimality.h), from hand-made rows and from a results store,
+// and in the report folder.
 #include "coordinator/reporting/optimality.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "common/store/optimality_rows.h"
+#include "common/store/sqlite_db.h"
 #include "coordinator/reporting/report_markdown.h"
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/scheduling/coordinator_store.h"
@@ -30,6 +33,7 @@ OptimalityRow Row(const std::string& scenario, int uavs, const std::string& algo
   row.algorithm = algorithm;
   row.train_seed = seed;
   row.label = "rl@" + algorithm + (seed > 1 ? "@seed" + std::to_string(seed) : "");
+  row.trained = true;
   row.runs = 1;
   row.rl_reward = rl;
   row.oracle_reward = oracle;
@@ -112,12 +116,13 @@ TEST(Optimality, TablesCsvJsonAndCdf) {
       << FormatOptimalityMarkdown(summary);
   const std::string csv = FormatOptimalitySummaryCsv(summary);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "algorithm,uavs,runs,scenarios,median,p10,worst,near_optimal_runs,near_optimal_share");
-  EXPECT_NE(csv.find("\ndqn,1,5,5,0.97,0.66,0.5,3,0.6\n"), std::string::npos) << csv;
+            "algorithm,uavs,runs,scenarios,median,p10,worst,near_optimal_runs,near_optimal_share,"
+            "median_placement_s");
+  EXPECT_NE(csv.find("\ndqn,1,5,5,0.97,0.66,0.5,3,0.6,\n"), std::string::npos) << csv;
   EXPECT_EQ(OptimalityToJson(summary)[2]["near_optimal_share"], 0.5);
   const std::string all = FormatOptimalityRowsCsv(rows);
-  EXPECT_NE(all.find("\nS2,2,ppo,1,rl@ppo,1,1.02,1,1.02\n"), std::string::npos) << all;
-  EXPECT_NE(all.find("\nA,1,sac,1,rl@sac,1,0,0,\n"), std::string::npos) << all;  // no ratio
+  EXPECT_NE(all.find("\nS2,2,ppo,1,rl@ppo,1,1.02,1,1.02,\n"), std::string::npos) << all;
+  EXPECT_NE(all.find("\nA,1,sac,1,rl@sac,1,0,0,,\n"), std::string::npos) << all;  // no ratio
   // The CDF per group: dqn's five ratios, P(ratio <= x) from 0.2 to 1.
   const std::string cdf = FormatOptimalityCdfCsv(rows);
   EXPECT_EQ(cdf.substr(0, cdf.find("ppo")),
@@ -125,13 +130,82 @@ TEST(Optimality, TablesCsvJsonAndCdf) {
             "dqn,1,0.99,0.8\ndqn,1,1,1\n");
 }
 
+// A placement of a position job: a named policy's (rl+<name>) or another positioner's.
+OptimalityRow Placed(const std::string& scenario, const std::string& label, double reward,
+                     double oracle, double seconds) {
+  OptimalityRow row;
+  row.scenario = scenario;
+  row.algorithm = label;
+  row.label = label;
+  row.runs = 1;
+  row.rl_reward = reward;
+  row.oracle_reward = oracle;
+  row.placement_s = seconds;
+  return row;
+}
+
+// Per-scenario training, a policy for any scenario and the other positioners side by side: the
+// trained algorithms first, then the named policies, then the positioners (the oracle last),
+// each with its median seconds per placement; the oracle's own placements are no curve of the
+// CDF and no run to look at, and centroid's misses are not rl's.
+TEST(Optimality, ZeroShotPerScenarioAndPositionersSideBySide) {
+  std::vector<OptimalityRow> rows;
+  for (const char* scenario : {"A", "B", "C"}) {
+    OptimalityRow trained = Row(scenario, 1, "ppo", 1, 0.5, 0.5);
+    trained.placement_s = scenario[0] == 'A' ? 30.0 : 40.0;
+    rows.push_back(trained);
+    rows.push_back(Placed(scenario, "oracle", 0.5, 0.5, 3.0));
+    rows.push_back(Placed(scenario, "centroid", 0.3, 0.5, 1.0));
+    rows.push_back(Placed(scenario, "rl+generalist", scenario[0] == 'C' ? 0.45 : 0.5, 0.5, 0.8));
+  }
+  const std::vector<OptimalitySummary> summary = SummarizeOptimality(rows);
+  ASSERT_EQ(summary.size(), 4u);
+  EXPECT_EQ(summary[0].algorithm, "ppo");
+  EXPECT_DOUBLE_EQ(summary[0].median_placement_s, 40.0);
+  EXPECT_EQ(summary[1].algorithm, "rl+generalist");
+  EXPECT_NEAR(summary[1].median, 1.0, 1e-12);
+  EXPECT_NEAR(summary[1].worst, 0.9, 1e-12);
+  EXPECT_DOUBLE_EQ(summary[1].median_placement_s, 0.8);
+  EXPECT_EQ(summary[2].algorithm, "centroid");
+  EXPECT_EQ(summary[2].near_optimal_runs, 0);
+  EXPECT_EQ(summary[3].algorithm, "oracle");
+  EXPECT_DOUBLE_EQ(summary[3].median_placement_s, 3.0);
+  EXPECT_NE(FormatOptimalityText(summary).find("0.8"), std::string::npos);
+  EXPECT_NE(FormatOptimalityMarkdown(summary).find(" | 3/3 (100 %) | 40.0 |"), std::string::npos)
+      << FormatOptimalityMarkdown(summary);
+  EXPECT_EQ(OptimalityToJson(summary)[1]["median_placement_s"], 0.8);
+
+  const std::vector<OptimalityCurve> cdf = OptimalityCdf(rows);
+  ASSERT_EQ(cdf.size(), 3u);  // no oracle curve
+  EXPECT_EQ(cdf[0].algorithm, "ppo");
+  EXPECT_EQ(cdf[1].algorithm, "rl+generalist");
+  EXPECT_EQ(cdf[2].algorithm, "centroid");
+  EXPECT_EQ(FormatOptimalityCdfCsv(rows).find("oracle"), std::string::npos);
+
+  const std::vector<OptimalityRow> below = RunsBelowNearOptimal(rows);
+  ASSERT_EQ(below.size(), 1u);  // centroid's three are no rl run
+  EXPECT_EQ(below[0].label, "rl+generalist");
+  EXPECT_NE(FormatOptimalityRowsCsv(rows).find("\nC,1,centroid,0,centroid,1,0.3,0.5,0.6,1\n"),
+            std::string::npos)
+      << FormatOptimalityRowsCsv(rows);
+}
+
+TEST(Optimality, TheOracleAloneComparesNothing) {
+  EXPECT_TRUE(SummarizeOptimality({Placed("A", "oracle", 0.5, 0.5, 1.0)}).empty());
+  EXPECT_EQ(FormatOptimalitySection({Placed("A", "oracle", 0.5, 0.5, 1.0)}), "");
+  EXPECT_EQ(SummarizeOptimality(
+                {Placed("A", "oracle", 0.5, 0.5, 1.0), Placed("A", "centroid", 0.4, 0.5, 1.0)})
+                .size(),
+            2u);
+}
+
 TEST(Optimality, TheReportSectionIsAbsentWithoutRatios) {
   EXPECT_EQ(FormatOptimalitySection({}), "");
   EXPECT_EQ(FormatOptimalitySection({Row("A", 1, "sac", 1, 0.0, 0.0)}), "");
   const std::string section = FormatOptimalitySection(OptimalityRows());
-  EXPECT_NE(section.find("## Optimality: rl against the oracle"), std::string::npos);
-  EXPECT_NE(section.find("### Runs under 95 % of the oracle, worst first"), std::string::npos);
-  EXPECT_NE(section.find("| D | 1 | dqn | 1 | rl@dqn | 0.2500 | 0.5000 | 0.500 |"),
+  EXPECT_NE(section.find("## Optimality: each placement against the oracle"), std::string::npos);
+  EXPECT_NE(section.find("### rl runs under 95 % of the oracle, worst first"), std::string::npos);
+  EXPECT_NE(section.find("| D | 1 | dqn | 1 | rl@dqn | 0.2500 | 0.5000 | 0.500 | - |"),
             std::string::npos)
       << section;
 }
@@ -202,10 +276,10 @@ class OptimalityStoreTest : public ::testing::Test {
   CoordinatorStore store_;
 };
 
-TEST_F(OptimalityStoreTest, OneRowPerRlLabelOfAScenarioWithAnOracleReward) {
+TEST_F(OptimalityStoreTest, OneRowPerLabelOfAScenarioWithAnOracleReward) {
   RecordResults();
   const std::vector<OptimalityRow> rows = store_.reader.Optimality(campaign_.id);
-  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows.size(), 4u);  // B's three rl labels, then B's oracle; C has no oracle reward
   // The train jobs' order: dqn before sac, seeds as listed.
   EXPECT_EQ(rows[0].label, "rl@dqn");
   EXPECT_EQ(rows[0].algorithm, "dqn");
@@ -221,6 +295,11 @@ TEST_F(OptimalityStoreTest, OneRowPerRlLabelOfAScenarioWithAnOracleReward) {
   EXPECT_EQ(rows[2].label, "rl@sac");
   EXPECT_EQ(rows[2].algorithm, "sac");
   EXPECT_DOUBLE_EQ(*rows[2].Ratio(), 0.95);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_TRUE(rows[i].trained && rows[i].IsRl()) << i;
+  EXPECT_EQ(rows[3].label, "oracle");
+  EXPECT_FALSE(rows[3].trained || rows[3].IsRl());
+  EXPECT_DOUBLE_EQ(*rows[3].Ratio(), 1.0);
   for (const auto& row : rows) {
     EXPECT_EQ(row.scenario, "B");
     EXPECT_EQ(row.uavs, 1);
@@ -249,7 +328,8 @@ TEST_F(OptimalityStoreTest, TheReportHasTheSectionItsFilesAndItsPlot) {
 }
 
 // A named policy's evals have a row of their own, under their label as algorithm: no summary
-// counts them with the trained rl of the scenario's algorithm.
+// counts them with the trained rl of the scenario's algorithm. Beside them, centroid's and the
+// oracle's, each with the seconds of the job that placed it (a cached job: its source's).
 TEST(OptimalityNamedPolicy, ANamedPolicyIsNeverCountedAsTrainedRl) {
   testing::TempDir dir;
   const std::string folder = dir.File("policies/p1");
@@ -258,10 +338,11 @@ TEST(OptimalityNamedPolicy, ANamedPolicyIsNeverCountedAsTrainedRl) {
                      testing::ReadFile(testing::SourcePath("campaigns/scenarios/b.json")));
   testing::WriteFile(folder + "/result.json", R"({"algorithm": "dqn"})");
   testing::WriteFile(folder + "/policy.pt", "weights");
-  const json document = {{"name", "named"},
-                         {"scenarios", {"scenarios/b.json"}},
-                         {"rng_runs", {1, 1}},
-                         {"positioners", {"oracle", "rl", {{"rl", {{"policy", "policies/p1"}}}}}}};
+  const json document = {
+      {"name", "named"},
+      {"scenarios", {"scenarios/b.json"}},
+      {"rng_runs", {1, 1}},
+      {"positioners", {"oracle", "centroid", "rl", {{"rl", {{"policy", "policies/p1"}}}}}}};
   ExpandedCampaign campaign =
       ExpandCampaign(ParseCampaign(document, FileScenarioSource(testing::SourcePath("campaigns")),
                                    FilePolicySource(dir.path())));
@@ -284,19 +365,54 @@ TEST(OptimalityNamedPolicy, ANamedPolicyIsNeverCountedAsTrainedRl) {
   trained["algorithm"] = "dqn";
   succeed("train/B/seed1", trained);
   succeed("position/B/rl+p1", testing::PositionResult(40, 30, 12));
+  succeed("position/B/centroid", testing::PositionResult(45, 40, 20));
+  {
+    // The jobs' clocks, set by hand: the training 30 s, the policy's flight 0.5 s, centroid's
+    // placement taken from another job of the cache (its own clock says 0.01 s).
+    Database db(dir.File("rlpos.db"), false, 1000);
+    const auto clock = [&](const std::string& key, double started, double finished) {
+      db.Exec("UPDATE jobs SET started_at = " + std::to_string(started) + ", finished_at = " +
+              std::to_string(finished) + " WHERE id = '" + campaign.id + "/" + key + "'");
+    };
+    clock("train/B/seed1", 100, 130);
+    clock("position/B/rl+p1", 200, 200.5);
+    clock("position/B/oracle", 300, 304);
+    clock("position/B/centroid", 400, 400.01);
+    db.Exec("UPDATE jobs SET cached_from = '" + campaign.id + "/position/B/oracle' WHERE id = '" +
+            campaign.id + "/position/B/centroid'");
+  }
   eval("oracle", 0.8);
+  eval("centroid", 0.6);
   eval("rl", 0.4);
   eval("rl+p1", 0.8);
   const std::vector<OptimalityRow> rows = store.reader.Optimality(campaign.id);
-  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0].label, "rl");
   EXPECT_EQ(rows[0].algorithm, "dqn");
+  EXPECT_TRUE(rows[0].trained);
   EXPECT_DOUBLE_EQ(*rows[0].Ratio(), 0.5);
-  EXPECT_EQ(rows[1].label, "rl+p1");
-  EXPECT_EQ(rows[1].algorithm, "rl+p1");
-  EXPECT_EQ(rows[1].train_seed, 0u);
-  EXPECT_DOUBLE_EQ(*rows[1].Ratio(), 1.0);
-  EXPECT_EQ(SummarizeOptimality(rows).size(), 2u);
+  EXPECT_NEAR(*rows[0].placement_s, 30.0, 1e-9);
+  // The position jobs' placements, by label.
+  std::map<std::string, const OptimalityRow*> by_label;
+  for (const auto& row : rows)
+    by_label[row.label] = &row;
+  ASSERT_EQ(by_label.size(), 4u);
+  const OptimalityRow& named = *by_label.at("rl+p1");
+  EXPECT_EQ(named.algorithm, "rl+p1");
+  EXPECT_EQ(named.train_seed, 0u);
+  EXPECT_FALSE(named.trained);
+  EXPECT_TRUE(named.IsRl());
+  EXPECT_DOUBLE_EQ(*named.Ratio(), 1.0);
+  EXPECT_NEAR(*named.placement_s, 0.5, 1e-9);
+  EXPECT_DOUBLE_EQ(*by_label.at("centroid")->Ratio(), 0.75);
+  EXPECT_NEAR(*by_label.at("centroid")->placement_s, 4.0, 1e-9);  // the cache's source's
+  EXPECT_NEAR(*by_label.at("oracle")->placement_s, 4.0, 1e-9);
+  const std::vector<OptimalitySummary> summary = SummarizeOptimality(rows);
+  ASSERT_EQ(summary.size(), 4u);
+  EXPECT_EQ(summary[0].algorithm, "dqn");
+  EXPECT_EQ(summary[1].algorithm, "rl+p1");
+  EXPECT_EQ(summary[2].algorithm, "centroid");
+  EXPECT_EQ(summary[3].algorithm, "oracle");
 }
 
 }  // namespace

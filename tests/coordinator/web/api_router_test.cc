@@ -97,16 +97,25 @@ TEST_F(ApiRouterTest, ShowsOneCampaignWithItsTables) {
   EXPECT_EQ(c["summary"].size(), SummarizeCampaign(Reader(), db_.id()).size());
   EXPECT_EQ(c["scenarios"], json({"B", "C"}));
   EXPECT_EQ(c["positioners"], json({"baseline", "centroid", "oracle", "rl"}));
-  // rl in B: reward 0.72 against the oracle's 0.9; C has no rl.
+  // rl in B: reward 0.72 against the oracle's 0.9, then the oracle's own; C has no rl, and B's
+  // centroid no reward.
   const json& optimality = c["optimality"];
-  ASSERT_EQ(optimality["runs"].size(), 1u);
-  EXPECT_EQ(optimality["runs_total"], 1);
+  ASSERT_EQ(optimality["runs"].size(), 2u);
+  EXPECT_EQ(optimality["runs_total"], 2);
   EXPECT_EQ(optimality["runs"][0]["scenario"], "B");
   EXPECT_EQ(optimality["runs"][0]["train_seed"], 1);
   EXPECT_DOUBLE_EQ(optimality["runs"][0]["ratio"].get<double>(), 0.8);
-  ASSERT_EQ(optimality["summary"].size(), 1u);
+  EXPECT_TRUE(optimality["runs"][0]["placement_s"].is_number());
+  EXPECT_EQ(optimality["runs"][1]["label"], "oracle");
+  ASSERT_EQ(optimality["summary"].size(), 2u);
   EXPECT_DOUBLE_EQ(optimality["summary"][0]["worst"].get<double>(), 0.8);
   EXPECT_EQ(optimality["summary"][0]["near_optimal_runs"], 0);
+  EXPECT_EQ(optimality["summary"][1]["algorithm"], "oracle");
+  // The ratio's CDF: rl's one step at 0.8; the oracle's own is no curve.
+  ASSERT_EQ(optimality["cdf"].size(), 1u);
+  ASSERT_EQ(optimality["cdf"][0]["x"].size(), 1u);
+  EXPECT_DOUBLE_EQ(optimality["cdf"][0]["x"][0].get<double>(), 0.8);
+  EXPECT_EQ(optimality["cdf"][0]["p"], json({1.0}));
   ASSERT_EQ(c["artifacts"].size(), 1u);
   EXPECT_EQ(c["artifacts"][0]["name"], "learning_curve.csv");
   EXPECT_FALSE(c["metrics"].empty());
