@@ -119,8 +119,9 @@ def fitting(files, policies):
         misfits = [p for p, (low, high) in policies.items() if not low <= uavs <= high]
         if misfits:
             low, high = policies[misfits[0]]
+            places = f"{low}" if low == high else f"{low}-{high}"
             print(f"bench_generality: left out {os.path.basename(f)} ({uavs} UAV(s)): "
-                  f"{misfits[0]} places {low}-{high}", file=sys.stderr)
+                  f"{misfits[0]} places {places} UAV(s)", file=sys.stderr)
         else:
             kept.append(f)
     if not kept:
