@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
-# Writes a named set of generated scenarios: "train" to tune on, "heldout" to report on. Each
-# scenario is written by rlpos-sim generate and checked by rlpos-sim validate; the set appears
-# whole (written beside DIR, then renamed) or not at all.
-#   scripts/generate_scenario_set.sh --set train|heldout --out DIR [--build BUILD_DIR]
-# Seeds are fixed and the two sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
+# Writes a named set of generated scenarios: "train" to tune on, "heldout" to report on, and
+# "train-many" and "heldout-many" the same with four to six UAVs. Each scenario is written by
+# rlpos-sim generate and checked by rlpos-sim validate; the set appears whole (written beside DIR,
+# then renamed) or not at all.
+#   scripts/generate_scenario_set.sh --set train|heldout|train-many|heldout-many --out DIR
+#                                    [--build BUILD_DIR]
+# Seeds are fixed and the sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
 #   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
 #   base: train 10000, heldout 90000; style: urban 0, campus 1, suburb 2, open 3.
-# Scenarios per style and UAV count (1, 2, 3): 8, 2, 2 in each set (48).
+# Scenarios per style and UAV count: train and heldout 8, 2, 2 for 1, 2, 3 UAVs (48 each);
+# train-many and heldout-many 2, 2, 2 for 4, 5, 6 UAVs (24 each).
 # DIR/index.tsv lists file, seed, style, UAVs and UEs.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 set_name="" out="" build="$here/build"
-usage() { echo "usage: $0 --set train|heldout --out DIR [--build BUILD_DIR]" >&2; exit 2; }
+usage() { echo "usage: $0 --set train|heldout|train-many|heldout-many --out DIR [--build BUILD_DIR]" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --set) set_name=${2:-}; shift 2 || usage ;;
@@ -20,10 +23,13 @@ while [ $# -gt 0 ]; do
     *) usage ;;
   esac
 done
+# counts[k]: scenarios per style with first_uavs + k UAVs.
 case "$set_name" in
-  train) base=10000; counts=(8 2 2) ;;
-  heldout) base=90000; counts=(8 2 2) ;;
-  *) echo "generate_scenario_set: --set must be train or heldout" >&2; exit 2 ;;
+  train) base=10000; first_uavs=1; counts=(8 2 2) ;;
+  heldout) base=90000; first_uavs=1; counts=(8 2 2) ;;
+  train-many) base=10000; first_uavs=4; counts=(2 2 2) ;;
+  heldout-many) base=90000; first_uavs=4; counts=(2 2 2) ;;
+  *) echo "generate_scenario_set: --set must be train, heldout, train-many or heldout-many" >&2; exit 2 ;;
 esac
 [ -n "$out" ] || usage
 sim="$build/bin/rlpos-sim"
@@ -38,9 +44,10 @@ trap 'rm -rf "$work"' EXIT
 
 styles=(urban campus suburb open)
 printf 'file\tseed\tstyle\tuavs\tues\n' > "$work/index.tsv"
-for uavs in 1 2 3; do
+for ((k = 0; k < ${#counts[@]}; k++)); do
+  uavs=$((first_uavs + k))
   for s in 0 1 2 3; do
-    for ((i = 0; i < counts[uavs - 1]; i++)); do
+    for ((i = 0; i < counts[k]; i++)); do
       seed=$((base + 1000 * uavs + 100 * s + i))
       file="${styles[s]}-${uavs}uav-s$seed.json"
       "$sim" generate --seed "$seed" --style "${styles[s]}" --uavs "$uavs" --out "$work/$file"

@@ -45,9 +45,9 @@ int DefaultUeCount(GeneratorStyle style, int uavs) {
 
 GeneratorOptions ResolvedOptions(const GeneratorOptions& options) {
   if (options.uavs < 1 || options.uavs > kMaxGeneratedUavs) {
-    throw ConfigError("--uavs",
-                      std::to_string(options.uavs) + " UAVs; a generated scenario has 1 to " +
-                          std::to_string(kMaxGeneratedUavs) + " (one 160 MHz channel each)");
+    throw ConfigError("--uavs", std::to_string(options.uavs) +
+                                    " UAVs; a generated scenario has 1 to " +
+                                    std::to_string(kMaxGeneratedUavs) + " (a Wi-Fi channel each)");
   }
   if (options.ues && (*options.ues < 1 || *options.ues > kMaxGeneratedUes)) {
     throw ConfigError("--ues", std::to_string(*options.ues) +

@@ -13,8 +13,9 @@ namespace rlpos {
 // with open space between; suburb: sparse low houses; open: free space.
 enum class GeneratorStyle { kUrban, kCampus, kSuburb, kOpen };
 
-// The UAVs a generated scenario can hold: one 160 MHz channel each (50, 114, 163).
-constexpr int kMaxGeneratedUavs = 3;
+// The UAVs a generated scenario can hold, each on a channel of its own: up to three on 160 MHz
+// channels (50, 114, 163), four to six on 80 MHz channels (42, 58, 106, 122, 138, 155).
+constexpr int kMaxGeneratedUavs = 6;
 // The most UEs a generated scenario holds (placement stays quick, as does every evaluation).
 constexpr int kMaxGeneratedUes = 100;
 

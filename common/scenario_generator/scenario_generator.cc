@@ -28,6 +28,8 @@ std::optional<Scenario> DrawScenario(const GeneratorOptions& o, PortableRandom& 
   if (!layout)
     return std::nullopt;
   Scenario s;
+  s.wifi.width_mhz = GeneratedChannelWidthMhz(o.uavs);
+  s.wifi.channel = GeneratedUavChannels(o.uavs).front();
   const PhyProfile phy{s.wifi.standard, s.wifi.width_mhz, s.wifi.guard_interval_ns,
                        s.wifi.spatial_streams};
   const auto ues = DrawUes(*layout, *o.ues, o.uavs, phy, random);

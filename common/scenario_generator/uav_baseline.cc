@@ -28,9 +28,14 @@ double HalfMetre(double v) {
 
 }  // namespace
 
-const std::vector<int>& GeneratedUavChannels() {
-  static const std::vector<int> channels{50, 114, 163};
-  return channels;
+int GeneratedChannelWidthMhz(int uavs) {
+  return uavs <= 3 ? 160 : 80;
+}
+
+const std::vector<int>& GeneratedUavChannels(int uavs) {
+  static const std::vector<int> wide{50, 114, 163};
+  static const std::vector<int> narrow{42, 58, 106, 122, 138, 155};
+  return GeneratedChannelWidthMhz(uavs) == 160 ? wide : narrow;
 }
 
 int CentralBuilding(const Venue& venue, const std::vector<BuildingSpec>& buildings) {
@@ -57,7 +62,7 @@ std::vector<UavSpec> BaselineUavs(const Venue& venue, const std::vector<Building
   for (int i = 0; i < count; ++i) {
     UavSpec uav;
     uav.name = count == 1 ? "uav" : "uav" + std::to_string(i + 1);
-    uav.channel = count == 1 ? 0 : GeneratedUavChannels()[static_cast<std::size_t>(i)];
+    uav.channel = count == 1 ? 0 : GeneratedUavChannels(count)[static_cast<std::size_t>(i)];
     uav.zone = {0, venue.width, 0, venue.depth, kZoneFloor, venue.height};
     if (central < 0) {
       const double offset = 5.0 * (i - (count - 1) / 2.0);

@@ -10,8 +10,12 @@
 
 namespace rlpos {
 
-// The 160 MHz channels of the generated UAVs, in order.
-const std::vector<int>& GeneratedUavChannels();
+// The Wi-Fi channel width of a generated scenario with `uavs` UAVs: 160 MHz while the 5 GHz band
+// holds a channel that wide for each (three), 80 MHz for four to six.
+int GeneratedChannelWidthMhz(int uavs);
+// The channels of the generated UAVs of a scenario with `uavs` UAVs, in order: distinct channels
+// of GeneratedChannelWidthMhz(uavs).
+const std::vector<int>& GeneratedUavChannels(int uavs);
 
 // Index of the building nearest the venue's centre (distance from the centre to its footprint,
 // then to the footprint's centre, then the lower index), or -1 without buildings.

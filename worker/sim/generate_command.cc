@@ -52,7 +52,7 @@ void AddGenerate(CLI::App& app, GenerateCommand& g) {
       ->required();
   g.command->add_option("--style", g.style,
                         "urban|campus|suburb|open (default: the seed's, seed mod 4 in this order)");
-  g.command->add_option("--uavs", g.uavs, "UAVs, 1-3 (default 1)");
+  g.command->add_option("--uavs", g.uavs, "UAVs, 1-6 (default 1; 4-6 on 80 MHz channels)");
   g.command->add_option("--ues", g.ues, "UEs, 1-100 (default: the style's, 4 more per extra UAV)");
   g.command->add_option("--mobility", g.mobility,
                         "random_waypoint|gauss_markov|crowd: every UE moves so (default: static)");

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -117,6 +118,26 @@ TEST(ScenarioGenerator, SeedSelectsTheStyleWhenNoneIsGiven) {
     EXPECT_EQ(*g.options.style, AllGeneratorStyles()[seed % 4]);
     EXPECT_EQ(g.json_text, GenerateScenario(Options(seed, *g.options.style, 1)).json_text);
   }
+}
+
+// Each UAV has a channel of its own: up to three on 160 MHz channels, four to six on 80 MHz ones
+// (the 5 GHz band holds three 160 MHz channels), the scenario's Wi-Fi width with them.
+TEST(ScenarioGenerator, EveryUavHasAChannelOfItsOwnUpToSix) {
+  for (int uavs = 1; uavs <= kMaxGeneratedUavs; ++uavs) {
+    const GeneratedScenario g = GenerateScenario(Options(7, GeneratorStyle::kCampus, uavs));
+    SCOPED_TRACE(GenerateCommandLine(g.options));
+    ASSERT_EQ(g.scenario.uavs.size(), static_cast<std::size_t>(uavs));
+    EXPECT_EQ(g.scenario.wifi.width_mhz, uavs <= 3 ? 160 : 80);
+    std::set<int> channels;
+    for (const auto& uav : g.scenario.uavs)
+      channels.insert(uav.channel == 0 ? g.scenario.wifi.channel : uav.channel);
+    EXPECT_EQ(channels.size(), static_cast<std::size_t>(uavs));
+    for (int channel : channels) {
+      const auto& allowed = GeneratedUavChannels(uavs);
+      EXPECT_NE(std::find(allowed.begin(), allowed.end(), channel), allowed.end()) << channel;
+    }
+  }
+  EXPECT_EQ(kMaxGeneratedUavs, 6);
 }
 
 TEST(ScenarioGenerator, UeCountDefaultsAndOverrides) {

@@ -80,9 +80,9 @@ TEST(RlposSimGenerate, BadOptionsAreOneLineErrors) {
   ExpectOneLineError(RunCommand(Sim("generate --seed 1 --style downtown")),
                      "--style: unknown style \"downtown\" (urban, campus, suburb or open)");
   ExpectOneLineError(RunCommand(Sim("generate --seed 1 --uavs 0")),
-                     "--uavs: 0 is out of range (1 to 3)");
-  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --uavs 4")),
-                     "--uavs: 4 is out of range (1 to 3)");
+                     "--uavs: 0 is out of range (1 to 6)");
+  ExpectOneLineError(RunCommand(Sim("generate --seed 1 --uavs 7")),
+                     "--uavs: 7 is out of range (1 to 6)");
   ExpectOneLineError(RunCommand(Sim("generate --seed 1 --ues 0")),
                      "--ues: 0 is out of range (1 to 100)");
   ExpectOneLineError(RunCommand(Sim("generate --seed 1 --ues 1000000")),
@@ -136,22 +136,30 @@ std::vector<std::vector<std::string>> IndexRows(const std::string& folder) {
   return rows;
 }
 
-TEST(GenerateScenarioSet, TrainAndHeldOutAreDisjointAndCoverTheStyles) {
+TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
   TempDir dir;
   const std::string script = std::string(RLPOS_SOURCE_DIR) + "/scripts/generate_scenario_set.sh";
   const std::string build =
       std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
-  for (const std::string set : {"train", "heldout"}) {
+  for (const std::string set : {"train", "heldout", "train-many", "heldout-many"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    std::map<std::string, int> one_uav, more_uavs;  // per style
+    std::map<std::string, int> one_uav, more_uavs;      // per style
+    std::map<std::string, std::set<std::string>> uavs;  // per style: its UAV counts
     for (const auto& row : IndexRows(dir.File(set))) {
       ASSERT_EQ(row.size(), 5u);
       EXPECT_TRUE(std::filesystem::exists(dir.File(set) + "/" + row[0])) << row[0];
       seeds[set].insert(row[1]);
       (row[3] == "1" ? one_uav : more_uavs)[row[2]] += 1;
+      uavs[row[2]].insert(row[3]);
+    }
+    if (set.size() > 5 && set.substr(set.size() - 5) == "-many") {
+      EXPECT_EQ(uavs.size(), 4u) << set << ": every style";
+      for (const auto& [style, counts] : uavs)
+        EXPECT_EQ(counts, (std::set<std::string>{"4", "5", "6"})) << set << ", " << style;
+      continue;
     }
     EXPECT_EQ(one_uav.size(), 4u) << set << ": every style with one UAV";
     EXPECT_EQ(more_uavs.size(), 4u) << set << ": every style with two or three";
@@ -165,8 +173,15 @@ TEST(GenerateScenarioSet, TrainAndHeldOutAreDisjointAndCoverTheStyles) {
       EXPECT_GE(more, 15);
     }
   }
-  for (const auto& seed : seeds["train"])
-    EXPECT_EQ(seeds["heldout"].count(seed), 0u) << "seed " << seed << " in both sets";
+  for (const auto& [set, mine] : seeds) {
+    for (const auto& [other, theirs] : seeds) {
+      for (const auto& seed : mine) {
+        if (set != other) {
+          EXPECT_EQ(theirs.count(seed), 0u) << "seed " << seed << " in " << set << " and " << other;
+        }
+      }
+    }
+  }
   // A set is never written over another.
   const auto again =
       RunCommand(script + " --set train --out " + dir.File("train") + " --build " + build);

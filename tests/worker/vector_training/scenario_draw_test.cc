@@ -74,10 +74,11 @@ TEST(ScenarioDraw, DrawsStayInTheDistributionAndCarryTheSettings) {
 }
 
 TEST(ScenarioDraw, NeverDrawsTheScenarioSetsSeeds) {
-  // scripts/generate_scenario_set.sh: train 10000-13999, held-out 90000-93999.
+  // scripts/generate_scenario_set.sh: train 10000-16999, held-out 90000-96999 (with the -many
+  // sets of four to six UAVs).
   const ScenarioDraw draw(UrbanAndOpen({1, 1}), DrawSettings(), 0);
-  EXPECT_GT(draw.FirstTrainingSeed(), 93999u);
-  EXPECT_GT(kValidationSeedBase, 93999u);
+  EXPECT_GT(draw.FirstTrainingSeed(), 96999u);
+  EXPECT_GT(kValidationSeedBase, 96999u);
   // The validation range ends before the training ranges begin.
   EXPECT_LT(kValidationSeedBase + kDrawsPerSeed, kTrainingSeedBase + 1);
   EXPECT_GE(draw.Validation(0).generator_seed, kValidationSeedBase);
