@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 
+#include "worker/environment/block_ack_guard.h"
 #include "worker/environment/ns3_object_spec.h"
 #include "worker/environment/uav_network_impl.h"
 
@@ -99,6 +100,9 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallWifi(ns3::WifiHelper& wifi) {
   ns3::NetDeviceContainer devices = InstallUavRadios(wifi, phy_of, mac);
   devices.Add(InstallUeRadios(wifi, phy_of, mac));
   ConfigureRateManagers(devices, w);
+  // ns-3.37 mishandles an A-MPDU sent under a Block Ack agreement its recipient still holds as
+  // pending (block_ack_guard.h).
+  GuardBlockAckRecipients(devices);
   return devices;
 }
 
