@@ -26,8 +26,11 @@ void RefuseContradiction(const PolicyFolder& folder, const CommonOptions& option
 }
 
 // A general policy flies in the caller's scenario with its own env and agent settings: the
-// caller may restate them, not change them (env.fidelity aside: it flies at its own).
-Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options) {
+// caller may restate them, not change them (env.fidelity aside: it flies at its own). A run in
+// which the UEs move (track) may set its own env.decision_interval: how often it asks the policy;
+// each flight stays the policy's own episode (its interval sets the episode's steps).
+Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options,
+                       bool run_decides_interval = false) {
   Scenario target = LoadScenarioFor(options, {});
   const int uavs = static_cast<int>(target.uavs.size());
   if (uavs < folder.scope.min_uavs || uavs > folder.scope.max_uavs) {
@@ -38,10 +41,14 @@ Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options)
     throw ConfigError("--policy", folder.dir + " was trained for " + trained + " UAV(s); " +
                                       options.scenario_file + " has " + std::to_string(uavs));
   }
+  const double run_interval = target.env.decision_interval;
   target.env = folder.trained.env;
   target.agent = folder.trained.agent;
+  Scenario checked = target;
+  if (run_decides_interval)
+    checked.env.decision_interval = run_interval;
   const auto contradiction =
-      FirstContradiction(target, ScenarioDocument(options.scenario_file, options.overrides));
+      FirstContradiction(checked, ScenarioDocument(options.scenario_file, options.overrides));
   if (contradiction) {
     throw ConfigError("--policy", folder.dir + " (a policy for any scenario) does not fit " +
                                       options.scenario_file + ": " + contradiction->path + ": " +
@@ -77,13 +84,45 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
       .final_info.positions;
 }
 
+TrackDecision PolicyTrack(const CommonOptions& options, const std::string& policy) {
+  if (policy.empty())
+    throw ConfigError("--policy", "is required for the rl positioner");
+  const PolicyFolder folder = ReadPolicyFolder(policy);
+  if (!folder.scope.general || folder.torchscript) {
+    throw ConfigError("--policy",
+                      folder.dir +
+                          " is not a policy for any scenario: as the UEs move, the "
+                          "scenario changes; train one with rlpos-sim train --generated");
+  }
+  const Scenario target = GeneralTarget(folder, options, true);
+  UavPositioningEnv first(target);
+  std::shared_ptr<Agent> agent = MakeAgent(target.agent, first);
+  agent->Load(policy);
+  const std::uint64_t run = folder.eval_run;
+  const EpisodeOptions greedy = GreedyEpisodeOptions(target.agent);
+  return [target, agent, run, greedy](const std::vector<Vec3>& ue_positions,
+                                      const Placement& uavs_now) {
+    // The scenario of this moment: its UEs standing where they are, its UAVs starting where
+    // they are (the first decision: the baseline, as `position` flies it).
+    Scenario now = target;
+    for (std::size_t i = 0; i < ue_positions.size() && i < now.ues.size(); ++i) {
+      now.ues[i].position = ue_positions[i];
+      now.ues[i].mobility = MobilitySpec{};
+    }
+    for (std::size_t u = 0; u < uavs_now.size() && u < now.uavs.size(); ++u)
+      now.uavs[u].initial = uavs_now[u];
+    UavPositioningEnv env(now);
+    return RunEpisode(env, *agent, run, false, nullptr, greedy).final_info.positions;
+  };
+}
+
 }  // namespace rlpos::sim
 
-extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v4() {
+extern "C" const rlpos::sim::RlCommands* rlpos_rl_commands_v5() {
   // rlpos-sim asks for the commands before it trains or loads a policy: the moment to size
   // libtorch's pool.
   rlpos::UseOneTorchThreadUnlessAsked();
-  static const rlpos::sim::RlCommands commands{rlpos::sim::TrainCommand,
-                                               rlpos::sim::PolicyPlacement};
+  static const rlpos::sim::RlCommands commands{
+      rlpos::sim::TrainCommand, rlpos::sim::PolicyPlacement, rlpos::sim::PolicyTrack};
   return &commands;
 }

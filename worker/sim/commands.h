@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/scenario/scenario.h"
+#include "worker/sim_api/rl_plugin_api.h"
 #include "worker/sim_api/sim_options.h"
 
 namespace rlpos::sim {
@@ -18,5 +19,8 @@ int RunPosition(const CommonOptions& options, const PositionOptions& position);
 // The rl positioner: the trained policy's greedy final placement (from the RL module), replayed
 // in the scenario it was trained on. A scenario (options) that contradicts it is a ConfigError.
 Placement RlPlacement(const CommonOptions& options, const std::string& policy);
+// The rl positioner online (track): a policy for any scenario, flown at each decision (from the
+// RL module). A per-scenario policy, or a scenario outside its scope, is a ConfigError.
+TrackDecision RlTrackDecision(const CommonOptions& options, const std::string& policy);
 
 }  // namespace rlpos::sim

@@ -30,9 +30,9 @@ const RlCommands& Load() {
     void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!module)
       throw std::runtime_error("cannot load the RL commands: " + std::string(dlerror()));
-    auto entry = reinterpret_cast<const RlCommands* (*)()>(dlsym(module, "rlpos_rl_commands_v4"));
+    auto entry = reinterpret_cast<const RlCommands* (*)()>(dlsym(module, "rlpos_rl_commands_v5"));
     if (!entry)
-      throw std::runtime_error(path + ": no rlpos_rl_commands_v4 entry point");
+      throw std::runtime_error(path + ": no rlpos_rl_commands_v5 entry point");
     return entry();
   }();
   return *commands;
@@ -46,6 +46,10 @@ int RunTrain(const CommonOptions& options, const TrainOptions& train) {
 
 Placement RlPlacement(const CommonOptions& options, const std::string& policy) {
   return Load().policy_placement(options, policy);
+}
+
+TrackDecision RlTrackDecision(const CommonOptions& options, const std::string& policy) {
+  return Load().policy_track(options, policy);
 }
 
 }  // namespace rlpos::sim

@@ -14,6 +14,18 @@
 namespace rlpos::sim {
 namespace {
 
+// A positioner whose every decision another part makes (the RL module's policy).
+class DecidingTrackPositioner : public TrackPositioner {
+ public:
+  explicit DecidingTrackPositioner(TrackDecision decide) : decide_(std::move(decide)) {}
+  Placement Decide(const std::vector<Vec3>& ue_positions, const Placement& uavs_now) override {
+    return decide_(ue_positions, uavs_now);
+  }
+
+ private:
+  TrackDecision decide_;
+};
+
 nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackResult& r) {
   nlohmann::json uavs = nlohmann::json::array();
   for (std::size_t u = 0; u < r.uavs.size(); ++u) {
@@ -38,21 +50,24 @@ nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackR
       interval["serving_uav"] = i.serving;
     series.push_back(interval);
   }
-  return {{"scenario", s.name},
-          {"positioner", t.positioner},
-          {"fidelity", t.fidelity},
-          {"duration", t.duration},
-          {"decision_interval", s.env.decision_interval},
-          {"run", s.simulation.run},
-          {"intervals", r.intervals.size()},
-          {"n_ues", s.ues.size()},
-          {"mean_reward", r.mean_reward},
-          {"mean_throughput_mbps", r.mean_throughput_mbps},
-          {"outage_share", r.outage_share},
-          {"los_share", r.los_share},
-          {"distance_flown_m", r.distance_flown_m},
-          {"uavs", uavs},
-          {"series", series}};
+  nlohmann::json out = {{"scenario", s.name},
+                        {"positioner", t.positioner},
+                        {"fidelity", t.fidelity},
+                        {"duration", t.duration},
+                        {"decision_interval", s.env.decision_interval},
+                        {"run", s.simulation.run},
+                        {"intervals", r.intervals.size()},
+                        {"n_ues", s.ues.size()},
+                        {"mean_reward", r.mean_reward},
+                        {"mean_throughput_mbps", r.mean_throughput_mbps},
+                        {"outage_share", r.outage_share},
+                        {"los_share", r.los_share},
+                        {"distance_flown_m", r.distance_flown_m},
+                        {"uavs", uavs},
+                        {"series", series}};
+  if (!t.policy.empty())
+    out["policy"] = t.policy;
+  return out;
 }
 
 void PrintResult(const Scenario& s, const TrackCommand& t, const TrackResult& r) {
@@ -86,10 +101,13 @@ void AddTrack(CLI::App& app, TrackCommand& t, CommonOptions& options) {
   t.command
       ->add_option("--positioner", t.positioner,
                    Choices(kTrackPositioners) +
-                       "; the *-track ones decide again every env.decision_interval, the others "
-                       "once for t = 0 (rl and offsets: not in track)")
+                       "; the *-track ones and rl decide again every env.decision_interval, the "
+                       "others once for t = 0 (offsets: not in track)")
       ->required()
       ->check(CLI::IsMember(NameList(kTrackPositioners)));
+  t.command->add_option("--policy", t.policy,
+                        "rl: a policy for any scenario (rlpos-sim train --generated), flown "
+                        "greedy from where the UAVs are at every decision");
   t.command->add_option("--duration", t.duration, "Seconds of the run")->required();
   t.command->add_option("--RngRun,--run", t.run, "RngRun: the UEs' trajectories (simulation.run)")
       ->required()
@@ -107,8 +125,17 @@ int RunTrackCommand(const CommonOptions& options, const TrackCommand& t) {
                       "packet is not yet supported by track (UAVs that move during an ns-3 run); "
                       "use analytic");
   }
+  if (!t.policy.empty() && t.positioner != "rl")
+    throw ConfigError("--policy", "only the rl positioner flies a policy, not " + t.positioner);
   const Scenario s = LoadScenarioFor(options, {"simulation.run=" + std::to_string(t.run)});
-  auto positioner = MakeTrackPositioner(t.positioner, s);
+  std::unique_ptr<TrackPositioner> positioner;
+  if (t.positioner == "rl") {
+    if (t.policy.empty())
+      throw ConfigError("--policy", "is required for the rl positioner in track");
+    positioner = std::make_unique<DecidingTrackPositioner>(RlTrackDecision(options, t.policy));
+  } else {
+    positioner = MakeTrackPositioner(t.positioner, s);
+  }
   const TrackResult result = RunTrack(s, *positioner, t.duration);
   if (t.json)
     std::cout << ResultJson(s, t, result).dump(2) << std::endl;

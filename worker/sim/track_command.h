@@ -1,8 +1,9 @@
 #pragma once
-// rlpos-sim track --scenario S --positioner P --duration T --RngRun N [--fidelity analytic]
-// [--json] [--set PATH=VALUE]...: one run in which the UEs walk their trajectories and the UAVs
-// follow the positioner within their speed limits (worker/track), scored by the analytic model
-// every decision interval. Prints the run's means; --json adds the per-interval series.
+// rlpos-sim track --scenario S --positioner P [--policy DIR] --duration T --RngRun N
+// [--fidelity analytic] [--json] [--set PATH=VALUE]...: one run in which the UEs walk their
+// trajectories and the UAVs follow the positioner within their speed limits (worker/track),
+// scored by the analytic model every decision interval. rl flies a policy for any scenario
+// (--policy) online. Prints the run's means; --json adds the per-interval series.
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -13,6 +14,7 @@ namespace rlpos::sim {
 struct TrackCommand {
   CLI::App* command = nullptr;
   std::string positioner;
+  std::string policy;     // rl: a policy for any scenario
   double duration = 0.0;  // s; checked against env.decision_interval by the run
   long long run = 0;
   std::string fidelity = "analytic";

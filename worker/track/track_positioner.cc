@@ -80,8 +80,8 @@ std::unique_ptr<TrackPositioner> MakeTrackPositioner(const std::string& name,
     return std::make_unique<OracleTrack>(scenario);
   if (name == "rl") {
     throw ConfigError("--positioner",
-                      "rl is not supported in track yet: it needs a policy that flies online in "
-                      "any scenario; use oracle-track or centroid-track");
+                      "rl flies a policy, which the RL module loads: rlpos-sim track "
+                      "--positioner rl --policy DIR (a policy for any scenario)");
   }
   if (name == "offsets") {
     throw ConfigError("--positioner",

@@ -18,8 +18,9 @@ class TrackPositioner {
   virtual Placement Decide(const std::vector<Vec3>& ue_positions, const Placement& uavs_now) = 0;
 };
 
-// `name` of kTrackPositioners for `scenario`. Throws ConfigError at "--positioner" for rl (no
-// policy flies online yet), offsets (placed around rl's position) and any other name.
+// `name` of kTrackPositioners for `scenario`. Throws ConfigError at "--positioner" for rl (a
+// policy, which the RL module flies: rlpos-sim track --policy), offsets (placed around rl's
+// position) and any other name.
 // The oracle is the analytic one (no packet-level re-score): a track run at analytic fidelity
 // scores every placement with the analytic model.
 std::unique_ptr<TrackPositioner> MakeTrackPositioner(const std::string& name,

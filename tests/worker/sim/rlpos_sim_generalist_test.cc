@@ -117,6 +117,53 @@ TEST_F(Generalist, APlacementOutsideWhatItWasTrainedForIsRefused) {
   EXPECT_EQ(Position(kScenarioB, " --set env.step=5").exit_code, 0);
 }
 
+// The UEs walk and the policy flies online: asked again every decision interval (the run's own),
+// from where the UAV is. Its decision for t = 0 is the placement `position` gives: the same
+// flight from the baseline.
+TEST_F(Generalist, FliesOnlineInARunWhereTheUesWalk) {
+  ASSERT_EQ(trained_->exit_code, 0) << trained_->err;
+  const std::string walk = (dir_ / "walk.json").string();
+  ASSERT_EQ(RunCommand(Sim("generate --seed 4 --style campus --mobility random_waypoint --out " +
+                           walk))
+                .exit_code,
+            0);
+  const std::string track = "track --positioner rl --policy " + Policy() + " --scenario " + walk +
+                            " --duration 3 --RngRun 2 --json --set env.decision_interval=0.5";
+  const auto first = RunCommand(Sim(track));
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_EQ(RunCommand(Sim(track)).out, first.out);  // seeded: the same bytes
+  const auto run = nlohmann::json::parse(first.out);
+  EXPECT_EQ(run["positioner"], "rl");
+  EXPECT_EQ(run["policy"], Policy());
+  EXPECT_EQ(run["intervals"], 6);
+  const auto placed = Position(walk);
+  ASSERT_EQ(placed.exit_code, 0) << placed.err;
+  EXPECT_EQ(run["series"][0]["positions"][0], nlohmann::json::parse(placed.out)["position"]);
+  for (const auto& interval : run["series"]) {
+    EXPECT_GE(interval["reward"].get<double>(), 0.0) << interval;
+    EXPECT_LE(interval["reward"].get<double>(), 1.0) << interval;
+  }
+  // Refused in one line: no policy, a policy for another positioner, a per-scenario policy.
+  const std::string base = "track --scenario " + walk + " --duration 1 --RngRun 1 ";
+  const auto bare = RunCommand(Sim(base + "--positioner rl"));
+  EXPECT_EQ(bare.exit_code, 2);
+  EXPECT_NE(bare.err.find("--policy: is required for the rl positioner"), std::string::npos)
+      << bare.err;
+  const auto other = RunCommand(Sim(base + "--positioner oracle --policy " + Policy()));
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("only the rl positioner flies a policy"), std::string::npos)
+      << other.err;
+  const fs::path one = dir_ / "one-scenario";
+  fs::create_directories(one);
+  for (const char* file : {"policy.pt", "scenario.json"})
+    fs::copy_file(fs::path(Policy()) / file, one / file, fs::copy_options::overwrite_existing);
+  auto result = nlohmann::json::parse(std::ifstream(Policy() + "/result.json"));
+  result["general"] = false;
+  std::ofstream(one / "result.json") << result.dump();
+  ExpectOneLineRefusal(RunCommand(Sim(base + "--positioner rl --policy " + one.string())),
+                       one.string(), "is not a policy for any scenario");
+}
+
 // Killed once its first checkpoint is written, the same command goes on from it and ends with
 // the uninterrupted run's policy, curve and result.
 TEST_F(Generalist, KilledAndRunAgainItResumesToTheSamePolicy) {

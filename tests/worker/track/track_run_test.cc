@@ -108,7 +108,7 @@ TEST(TrackRun, RefusesWhatItCannotRun) {
                 "--duration: must be at least env.decision_interval (0.1 s), got -1");
   ExpectRefused([&] { Track(b, "oracle", 0.05); }, "--duration: must be at least");
   ExpectRefused([&] { MakeTrackPositioner("rl", b); },
-                "--positioner: rl is not supported in track");
+                "--positioner: rl flies a policy, which the RL module loads");
   ExpectRefused([&] { MakeTrackPositioner("offsets", b); }, "--positioner: offsets are placed");
   ExpectRefused([&] { MakeTrackPositioner("teleport", b); },
                 "--positioner: unknown positioner \"teleport\"");
