@@ -76,7 +76,9 @@ expect_error() {  # expect_error FRAGMENT ARGS...
     || fail "track $*: expected '$fragment', got: $(cat "$WORK/err.txt")"
 }
 expect_error "teleport" --scenario "$B" --positioner teleport --duration 10 --RngRun 1
-expect_error "rl is not supported in track yet" --scenario "$B" --positioner rl --duration 10 --RngRun 1
+expect_error "--policy: is required for the rl positioner in track" --scenario "$B" --positioner rl --duration 10 --RngRun 1
+expect_error "--policy: only the rl positioner flies a policy" --scenario "$B" --positioner oracle \
+  --policy "$SRC/policies/generalist-1uav" --duration 10 --RngRun 1
 expect_error "--duration: must be at least env.decision_interval" \
   --scenario "$B" --positioner oracle --duration -5 --RngRun 1
 expect_error "--fidelity: packet is not yet supported" \
