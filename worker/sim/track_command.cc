@@ -2,7 +2,10 @@
 
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "common/config/config_error.h"
 #include "common/scenario/names.h"
