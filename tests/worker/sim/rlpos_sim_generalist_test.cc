@@ -123,10 +123,10 @@ TEST_F(Generalist, APlacementOutsideWhatItWasTrainedForIsRefused) {
 TEST_F(Generalist, FliesOnlineInARunWhereTheUesWalk) {
   ASSERT_EQ(trained_->exit_code, 0) << trained_->err;
   const std::string walk = (dir_ / "walk.json").string();
-  ASSERT_EQ(RunCommand(Sim("generate --seed 4 --style campus --mobility random_waypoint --out " +
-                           walk))
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      RunCommand(Sim("generate --seed 4 --style campus --mobility random_waypoint --out " + walk))
+          .exit_code,
+      0);
   const std::string track = "track --positioner rl --policy " + Policy() + " --scenario " + walk +
                             " --duration 3 --RngRun 2 --json --set env.decision_interval=0.5";
   const auto first = RunCommand(Sim(track));
