@@ -53,6 +53,10 @@ bool OptimalityRow::IsRl() const {
   return label == "rl" || label.rfind("rl@", 0) == 0 || label.rfind("rl+", 0) == 0;
 }
 
+bool OptimalityRow::IsOracle() const {
+  return !trained && label == "oracle";
+}
+
 std::vector<OptimalityRow> ReadOptimalityRows(Database& db, const std::string& campaign_id) {
   Statement select = db.Prepare(kSelect);
   select.Bind(campaign_id);

@@ -37,6 +37,8 @@ struct OptimalityRow {
   std::optional<double> Ratio() const;
   // An rl placement: trained or a named policy's (the rows the report lists when under 0.95).
   bool IsRl() const;
+  // The oracle's own placement (ratio 1: there for its time, compared with nothing).
+  bool IsOracle() const;
 };
 
 // One row per eval label (offsets excepted) of a scenario that has oracle evals with a reward

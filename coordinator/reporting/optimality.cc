@@ -108,7 +108,7 @@ std::vector<OptimalitySummary> SummarizeOptimality(const std::vector<OptimalityR
   std::vector<OptimalitySummary> out;
   // The oracle against itself alone compares nothing.
   if (std::none_of(rows.begin(), rows.end(),
-                   [](const OptimalityRow& r) { return r.label != "oracle" && r.Ratio(); }))
+                   [](const OptimalityRow& r) { return !r.IsOracle() && r.Ratio(); }))
     return out;
   for (const auto& group : Groups(rows))
     out.push_back(Summarize(group.second));
@@ -201,7 +201,7 @@ std::string FormatOptimalityRowsMarkdown(const std::vector<OptimalityRow>& rows)
 std::vector<OptimalityCurve> OptimalityCdf(const std::vector<OptimalityRow>& rows) {
   std::vector<OptimalityCurve> out;
   for (const auto& group : Groups(rows)) {
-    if (std::get<1>(group.first) == "oracle")
+    if (group.second.front()->IsOracle())
       continue;  // the oracle against itself: a step at 1
     std::vector<double> ratios;
     for (const OptimalityRow* row : group.second)
