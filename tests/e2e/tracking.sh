@@ -2,7 +2,8 @@
 # rlpos-sim track as a user runs it: UEs that walk (a generated random_waypoint scenario) and
 # UAVs that follow within their speed limits. A static scenario scores every interval as
 # `position` scores the placement; the same RngRun gives the same bytes; the tracking oracle
-# beats the oracle held at its t = 0 placement; bad input is a one-line error.
+# beats the oracle held at its t = 0 placement; at packet level the warm-up's intervals are not
+# scored; bad input is a one-line error.
 source "$(dirname "$0")/lib.sh" "$1" "$2"
 SIM=$BIN/rlpos-sim
 B=$SRC/campaigns/scenarios/b.json
@@ -64,6 +65,16 @@ for a, b in zip(d['series'], d['series'][1:]):
 print(bad, round(longest, 6))
 " "$WORK/slow.json")" "0 2.0"
 
+# Packet level: one ns-3 run in which the UAV flies; the intervals that start within the
+# warm-up (1 s) are flown, listed and not scored; the packets give each interval its delay.
+"$SIM" track --scenario "$B" --positioner centroid-track --duration 2 --RngRun 1 --json \
+  --fidelity packet --set env.decision_interval=0.5 >"$WORK/packet.json" || fail "track packet"
+expect_eq "packet: intervals, scored, scored flags, delays" "$(json "$WORK/packet.json" \
+  "len(d['series']), d['scored_intervals'], [i['scored'] for i in d['series']],
+   sum(1 for i in d['series'] if i['mean_delay_ms'] > 0)")" "4 2 [False, False, True, True] 4"
+expect_eq "packet: the mean reward of the scored intervals" "$(json "$WORK/packet.json" \
+  "abs(d['mean_reward'] - sum(i['reward'] for i in d['series'][2:]) / 2) < 1e-12")" "True"
+
 # Bad input: one line on stderr, exit code 2, nothing on stdout.
 expect_error() {  # expect_error FRAGMENT ARGS...
   local fragment=$1 rc=0
@@ -81,10 +92,10 @@ expect_error "--policy: only the rl positioner flies a policy" --scenario "$B" -
   --policy "$SRC/policies/generalist-1uav" --duration 10 --RngRun 1
 expect_error "--duration: must be at least env.decision_interval" \
   --scenario "$B" --positioner oracle --duration -5 --RngRun 1
-expect_error "--fidelity: packet is not yet supported" \
-  --scenario "$B" --positioner oracle --duration 10 --RngRun 1 --fidelity packet
+expect_error "--duration: leaves no interval after simulation.warmup (1 s) at packet level" \
+  --scenario "$B" --positioner oracle --duration 1 --RngRun 1 --fidelity packet
 expect_error "--set uav.max_speed=-1: /uav/max_speed" \
   --scenario "$B" --positioner oracle --duration 10 --RngRun 1 --set uav.max_speed=-1
 expect_error "/uav/max_climb" \
   --scenario "$B" --positioner oracle --duration 10 --RngRun 1 --set uav.max_climb=1000
-echo "ok: track scores static runs as position does, repeats itself, follows walking UEs within the speed limits, and refuses bad input"
+echo "ok: track scores static runs as position does, repeats itself, follows walking UEs within the speed limits, runs at packet level, and refuses bad input"

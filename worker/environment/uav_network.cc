@@ -13,6 +13,7 @@
 #include <ns3/mobility-helper.h>
 #include <ns3/neighbor-cache-helper.h>
 #include <ns3/onoff-application.h>
+#include <ns3/waypoint-mobility-model.h>
 #include <ns3/wifi-phy.h>
 #include <ns3/wifi-remote-station-manager.h>
 
@@ -91,10 +92,21 @@ void UavNetwork::Impl::BuildNodes(const Placement& placement) {
   uavs.Create(static_cast<uint32_t>(scenario.uavs.size()));
   InstallUeMobility(scenario, ues);
   ns3::MobilityHelper uav_mobility;
-  uav_mobility.SetMobilityModel("ns3::ConstantPositionMobilityModel");
-  uav_mobility.Install(uavs);
-  for (std::size_t u = 0; u < placement.size(); ++u) {
-    UavMobility(u)->SetPosition(ToNs3(placement[u]));
+  if (!uavs_fly) {
+    uav_mobility.SetMobilityModel("ns3::ConstantPositionMobilityModel");
+    uav_mobility.Install(uavs);
+    for (std::size_t u = 0; u < placement.size(); ++u)
+      UavMobility(u)->SetPosition(ToNs3(placement[u]));
+  } else {
+    // The first waypoint is where the UAV holds until the next one that FlyUav adds.
+    uav_mobility.SetMobilityModel("ns3::WaypointMobilityModel");
+    uav_mobility.Install(uavs);
+    for (std::size_t u = 0; u < placement.size(); ++u) {
+      uavs.Get(static_cast<uint32_t>(u))
+          ->GetObject<ns3::WaypointMobilityModel>()
+          ->AddWaypoint(ns3::Waypoint(ns3::Seconds(0), ToNs3(placement[u])));
+    }
+    last_waypoint_ns.assign(placement.size(), 0);
   }
   ns3::BuildingsHelper::Install(ues);
   ns3::BuildingsHelper::Install(uavs);
@@ -132,7 +144,8 @@ void UavNetwork::Impl::InstallInternet(const ns3::NetDeviceContainer& devices) {
   }
 }
 
-UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement, Handover handover)
+UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement, Handover handover,
+                       UavMotion motion)
     : impl_(std::make_unique<Impl>()) {
   if (placement.size() != scenario.uavs.size()) {
     throw std::invalid_argument(std::to_string(placement.size()) + " positions for " +
@@ -141,6 +154,7 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement, Han
   Impl& m = *impl_;
   m.scenario = scenario;
   m.handover = handover == Handover::kOn;
+  m.uavs_fly = motion == UavMotion::kFlies;
   ns3::Simulator::Destroy();  // a clean slate: node and building lists are global
   ns3::RngSeedManager::SetSeed(scenario.simulation.seed);
   ns3::RngSeedManager::SetRun(scenario.simulation.run);
@@ -206,6 +220,8 @@ const Scenario& UavNetwork::scenario() const {
 }
 
 void UavNetwork::SetUavPositions(const Placement& placement) {
+  if (impl_->uavs_fly)
+    throw std::logic_error("SetUavPositions on a network whose UAVs fly: use FlyUav");
   if (placement.size() != impl_->uavs.GetN())
     throw std::invalid_argument("a placement of another size than the UAVs");
   for (std::size_t u = 0; u < placement.size(); ++u)
@@ -215,7 +231,38 @@ void UavNetwork::SetUavPositions(const Placement& placement) {
 void UavNetwork::SetUavPosition(std::size_t uav, const Vec3& position) {
   if (uav >= impl_->uavs.GetN())
     throw std::out_of_range("no UAV " + std::to_string(uav));
+  if (impl_->uavs_fly)
+    throw std::logic_error("SetUavPosition on a network whose UAVs fly: use FlyUav");
   impl_->UavMobility(uav)->SetPosition(ToNs3(position));
+}
+
+void UavNetwork::FlyUav(std::size_t uav, const Vec3& to, double arrive_at) {
+  Impl& m = *impl_;
+  if (uav >= m.uavs.GetN())
+    throw std::out_of_range("no UAV " + std::to_string(uav));
+  if (!m.uavs_fly)
+    throw std::logic_error("FlyUav on a network built with UavMotion::kFixed");
+  const int64_t now = ns3::Simulator::Now().GetNanoSeconds();
+  const int64_t arrive = std::llround(arrive_at * 1e9);
+  if (arrive <= now) {
+    throw std::invalid_argument("FlyUav: an arrival at " + std::to_string(arrive_at) +
+                                " s, not after now");
+  }
+  if (arrive <= m.last_waypoint_ns[uav]) {
+    throw std::logic_error("FlyUav: UAV " + std::to_string(uav) +
+                           " arrives before the end of its last leg");
+  }
+  auto mobility = m.uavs.Get(static_cast<uint32_t>(uav))->GetObject<ns3::WaypointMobilityModel>();
+  const ns3::Vector from = mobility->GetPosition();  // consumes the waypoints up to now
+  if (from.x == to.x && from.y == to.y && from.z == to.z)
+    return;  // after its last waypoint the model holds the UAV where it is
+  // A waypoint now, where the UAV is: past its last waypoint the model dates its position at
+  // -1 s, and would spread the next leg from then on. A leg given before the last one ends
+  // starts where that one ends.
+  if (m.last_waypoint_ns[uav] <= now)
+    mobility->AddWaypoint(ns3::Waypoint(ns3::NanoSeconds(now), from));
+  mobility->AddWaypoint(ns3::Waypoint(ns3::NanoSeconds(arrive), ToNs3(to)));
+  m.last_waypoint_ns[uav] = arrive;
 }
 
 Placement UavNetwork::UavPositions() const {

@@ -21,6 +21,10 @@ struct LinkState {
 // Reassociate can move its flow; kOff, one radio, in its serving UAV's BSS.
 enum class Handover { kOff, kOn };
 
+// kFixed holds each UAV where SetUavPositions puts it; kFlies moves it along the legs FlyUav
+// gives it (ns-3's WaypointMobilityModel), so that the links change during the run.
+enum class UavMotion { kFixed, kFlies };
+
 class UavNetwork {
  public:
   // Validates the ns-3 side of the scenario (TypeIds, attributes, channels), then builds it with
@@ -28,14 +32,21 @@ class UavNetwork {
   // positions given here (environment/association.h), and changes UAV only through Reassociate.
   // Throws ConfigError on a bad scenario, std::invalid_argument on a placement of another size.
   UavNetwork(const Scenario& scenario, const Placement& placement,
-             Handover handover = Handover::kOff);
+             Handover handover = Handover::kOff, UavMotion motion = UavMotion::kFixed);
   ~UavNetwork();
   UavNetwork(const UavNetwork&) = delete;
   UavNetwork& operator=(const UavNetwork&) = delete;
 
   const Scenario& scenario() const;
+  // Move the UAVs at once (UavMotion::kFixed; std::logic_error on a network whose UAVs fly).
   void SetUavPositions(const Placement& placement);
   void SetUavPosition(std::size_t uav, const Vec3& position);
+  // UAV `uav` flies from where it is now to `to` in a straight line at constant velocity,
+  // arriving at absolute time `arrive_at` (s, rounded to whole nanoseconds as the UEs' knots
+  // are), and holds there. A leg to where it is already is a hold; a leg given before the last
+  // one ends starts at its end. Throws std::logic_error on a network built with UavMotion::kFixed
+  // or for an arrival before the last leg's, std::invalid_argument for one not after now.
+  void FlyUav(std::size_t uav, const Vec3& to, double arrive_at);
   Placement UavPositions() const;
   // Each UE's position as ns-3's mobility model gives it now (scenario.ues' order): a moving
   // UE's trajectory (common/mobility) at the simulator's time.

@@ -65,6 +65,8 @@ struct UavNetwork::Impl {
   ns3::NodeContainer uavs;
   std::vector<ns3::Ptr<ns3::WifiNetDevice>> uav_devices;
   bool handover = false;  // built with a radio per UAV on every UE (Reassociate allowed)
+  bool uavs_fly = false;  // UavMotion::kFlies: waypoint mobility, moved by FlyUav
+  std::vector<int64_t> last_waypoint_ns;  // per UAV: the time of its last waypoint (kFlies)
   // Per UE, per UAV: its radio linked to that UAV. Without handover only the serving UAV's.
   std::vector<std::vector<ns3::Ptr<ns3::WifiNetDevice>>> ue_devices;
   std::vector<ns3::Ipv4Address> uav_addresses;

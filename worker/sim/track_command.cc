@@ -1,5 +1,6 @@
 #include "worker/sim/track_command.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -29,6 +30,18 @@ class DecidingTrackPositioner : public TrackPositioner {
   TrackDecision decide_;
 };
 
+// NaN (no packet received) is null in JSON.
+nlohmann::json JsonNumber(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+std::size_t ScoredIntervals(const TrackResult& r) {
+  std::size_t n = 0;
+  for (const TrackInterval& i : r.intervals)
+    n += i.scored ? 1 : 0;
+  return n;
+}
+
 nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackResult& r) {
   nlohmann::json uavs = nlohmann::json::array();
   for (std::size_t u = 0; u < r.uavs.size(); ++u) {
@@ -43,12 +56,15 @@ nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackR
   const double n_ues = static_cast<double>(s.ues.size());
   for (const TrackInterval& i : r.intervals) {
     nlohmann::json interval = {{"time", i.time},
+                               {"scored", i.scored},
                                {"reward", i.reward},
                                {"throughput_mbps", i.throughput_mbps},
                                {"los_share", i.n_los / n_ues},
                                {"n_los", i.n_los},
                                {"demands_met", i.demands_met},
                                {"positions", PlacementJson(i.positions)}};
+    if (t.fidelity == "packet")
+      interval["mean_delay_ms"] = JsonNumber(i.mean_delay_ms);
     if (s.uavs.size() > 1)
       interval["serving_uav"] = i.serving;
     series.push_back(interval);
@@ -63,23 +79,34 @@ nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackR
                         {"n_ues", s.ues.size()},
                         {"mean_reward", r.mean_reward},
                         {"mean_throughput_mbps", r.mean_throughput_mbps},
+                        {"scored_intervals", ScoredIntervals(r)},
                         {"outage_share", r.outage_share},
                         {"los_share", r.los_share},
                         {"distance_flown_m", r.distance_flown_m},
                         {"uavs", uavs},
                         {"series", series}};
+  if (t.fidelity == "packet") {
+    out["warmup"] = s.simulation.warmup;
+    out["mean_delay_ms"] = JsonNumber(r.mean_delay_ms);
+  }
   if (!t.policy.empty())
     out["policy"] = t.policy;
   return out;
 }
 
 void PrintResult(const Scenario& s, const TrackCommand& t, const TrackResult& r) {
-  std::printf("%s in %s, %s s in %zu intervals of %s s, RngRun %llu\n", t.positioner.c_str(),
+  std::printf("%s in %s, %s s in %zu intervals of %s s, RngRun %llu, %s\n", t.positioner.c_str(),
               s.name.c_str(), FormatNumber(t.duration).c_str(), r.intervals.size(),
               FormatNumber(s.env.decision_interval).c_str(),
-              static_cast<unsigned long long>(s.simulation.run));
+              static_cast<unsigned long long>(s.simulation.run), t.fidelity.c_str());
+  if (ScoredIntervals(r) < r.intervals.size()) {
+    std::printf("  (the %zu intervals that start within the %s s warm-up are not scored)\n",
+                r.intervals.size() - ScoredIntervals(r), FormatNumber(s.simulation.warmup).c_str());
+  }
   std::printf("  mean_reward           %.4f\n", r.mean_reward);
   std::printf("  mean_throughput_mbps  %.2f\n", r.mean_throughput_mbps);
+  if (t.fidelity == "packet")
+    std::printf("  mean_delay_ms         %.2f\n", r.mean_delay_ms);
   std::printf("  outage_share          %.4f\n", r.outage_share);
   std::printf("  los_share             %.4f\n", r.los_share);
   std::printf("  distance_flown_m      %.1f\n", r.distance_flown_m);
@@ -117,17 +144,14 @@ void AddTrack(CLI::App& app, TrackCommand& t, CommonOptions& options) {
       ->check(CLI::NonNegativeNumber);
   t.command
       ->add_option("--fidelity", t.fidelity,
-                   Choices(kFidelities) + " (default analytic; packet is not yet supported)")
+                   Choices(kFidelities) +
+                       " (default analytic; packet: one ns-3 run in which the UAVs fly, "
+                       "intervals in simulation.warmup not scored)")
       ->check(CLI::IsMember(NameList(kFidelities)));
   t.command->add_flag("--json", t.json, "Print the result and the per-interval series as JSON");
 }
 
 int RunTrackCommand(const CommonOptions& options, const TrackCommand& t) {
-  if (t.fidelity == "packet") {
-    throw ConfigError("--fidelity",
-                      "packet is not yet supported by track (UAVs that move during an ns-3 run); "
-                      "use analytic");
-  }
   if (!t.policy.empty() && t.positioner != "rl")
     throw ConfigError("--policy", "only the rl positioner flies a policy, not " + t.positioner);
   const Scenario s = LoadScenarioFor(options, {"simulation.run=" + std::to_string(t.run)});
@@ -139,7 +163,9 @@ int RunTrackCommand(const CommonOptions& options, const TrackCommand& t) {
   } else {
     positioner = MakeTrackPositioner(t.positioner, s);
   }
-  const TrackResult result = RunTrack(s, *positioner, t.duration);
+  const TrackResult result =
+      RunTrack(s, *positioner, t.duration,
+               t.fidelity == "packet" ? TrackFidelity::kPacket : TrackFidelity::kAnalytic);
   if (t.json)
     std::cout << ResultJson(s, t, result).dump(2) << std::endl;
   else

@@ -1,8 +1,8 @@
 #pragma once
 // rlpos-sim track --scenario S --positioner P [--policy DIR] --duration T --RngRun N
-// [--fidelity analytic] [--json] [--set PATH=VALUE]...: one run in which the UEs walk their
+// [--fidelity analytic|packet] [--json] [--set PATH=VALUE]...: one run in which the UEs walk their
 // trajectories and the UAVs follow the positioner within their speed limits (worker/track),
-// scored by the analytic model every decision interval. rl flies a policy for any scenario
+// scored every decision interval by the analytic model or by ns-3's packets. rl flies a policy for any scenario
 // (--policy) online. Prints the run's means; --json adds the per-interval series.
 #include <CLI/CLI.hpp>
 #include <string>

@@ -69,4 +69,10 @@ Vec3 FlyToward(const Scenario& s, std::size_t uav, const Placement& now, const V
   return from;
 }
 
+double FlightSeconds(const UavSpec& uav, const Vec3& from, const Vec3& to) {
+  const double horizontal = std::hypot(to.x - from.x, to.y - from.y);
+  const double vertical = std::abs(to.z - from.z);
+  return std::max(horizontal / uav.max_speed, vertical / uav.max_climb);
+}
+
 }  // namespace rlpos

@@ -14,4 +14,8 @@ namespace rlpos {
 Vec3 FlyToward(const Scenario& scenario, std::size_t uav, const Placement& now, const Vec3& target,
                double seconds);
 
+// The seconds the straight leg from `from` to `to` takes at the UAV's limits: the longer of its
+// horizontal and its vertical part (both flown at once, as FlyToward's legs are).
+double FlightSeconds(const UavSpec& uav, const Vec3& from, const Vec3& to);
+
 }  // namespace rlpos
