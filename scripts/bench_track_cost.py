@@ -44,7 +44,9 @@ def timed(command):
         out.seek(0)
         err.seek(0)
         if process.returncode != 0:
-            fail("%s: %s" % (" ".join(command[1:4]), err.read().decode().strip()))
+            how = ("killed by signal %d" % -process.returncode if process.returncode < 0
+                   else "exit code %d" % process.returncode)
+            fail("%s (%s): %s" % (" ".join(command[1:]), how, err.read().decode().strip()))
         return out.read().decode(), usage.ru_utime + usage.ru_stime
 
 

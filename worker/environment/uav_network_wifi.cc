@@ -133,9 +133,10 @@ ns3::NetDeviceContainer UavNetwork::Impl::InstallUeRadios(ns3::WifiHelper& wifi,
         continue;
       if (scenario.wifi.mode == "adhoc") {
         mac.SetType("ns3::AdhocWifiMac");
-      } else if (handover) {
-        // The radios stay in their BSS: beacons lost in a saturated shared channel must not
-        // drop one (ns-3.37 then flushes a MAC queue with frames in flight, and crashes).
+      } else if (handover || uavs_fly) {
+        // The radios stay in their BSS: beacons lost in a saturated shared channel, or while a
+        // UAV flies behind a building, must not drop one (ns-3.37 then flushes a MAC queue with
+        // frames in flight, and crashes). Fixed UAVs without handover keep ns-3's default.
         mac.SetType("ns3::StaWifiMac", "Ssid", ns3::SsidValue(SsidOf(u)), "MaxMissedBeacons",
                     ns3::UintegerValue(std::numeric_limits<uint32_t>::max()));
       } else {
