@@ -83,6 +83,7 @@ nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackR
                         {"outage_share", r.outage_share},
                         {"los_share", r.los_share},
                         {"distance_flown_m", r.distance_flown_m},
+                        {"handovers", r.handovers},
                         {"uavs", uavs},
                         {"series", series}};
   if (t.fidelity == "packet") {
@@ -112,6 +113,7 @@ void PrintResult(const Scenario& s, const TrackCommand& t, const TrackResult& r)
   std::printf("  distance_flown_m      %.1f\n", r.distance_flown_m);
   if (s.uavs.size() < 2)
     return;
+  std::printf("  handovers             %zu\n", r.handovers);
   std::printf("per UAV:  distance_flown_m  mean_ues_served  los_share  outage_share\n");
   for (std::size_t u = 0; u < r.uavs.size(); ++u) {
     const TrackUavSummary& summary = r.uavs[u];

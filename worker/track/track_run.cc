@@ -53,6 +53,12 @@ void Summarize(const Scenario& s, TrackResult& result) {
       outage[u] += i.demand_met[ue] ? 0 : 1;
     }
   }
+  for (std::size_t i = 1; i < result.intervals.size(); ++i) {
+    const std::vector<int>& before = result.intervals[i - 1].serving;
+    const std::vector<int>& now = result.intervals[i].serving;
+    for (std::size_t ue = 0; ue < now.size(); ++ue)
+      result.handovers += now[ue] != before[ue] ? 1 : 0;
+  }
   const double ue_intervals = intervals * static_cast<double>(s.ues.size());
   result.mean_reward /= intervals;
   result.mean_throughput_mbps /= intervals;

@@ -48,6 +48,8 @@ struct TrackResult {
   double los_share = 0.0;         // of all UE-intervals
   double outage_share = 0.0;      // of all UE-intervals: demand not met
   double distance_flown_m = 0.0;  // all UAVs
+  // Times a UE's UAV changed from one interval to the next (all intervals; several UAVs).
+  std::size_t handovers = 0;
   std::vector<TrackUavSummary> uavs;
 };
 

@@ -87,8 +87,9 @@ TEST(PacketTrack, AUeThatMissesItsUavsBeaconsStaysInItsBss) {
   const TrackResult r = RunTrack(s, *oracle, 5.0, TrackFidelity::kPacket);
   ASSERT_EQ(r.intervals.size(), 5u);
   for (const TrackInterval& i : r.intervals) {
-    if (i.scored)
+    if (i.scored) {
       EXPECT_GT(i.throughput_mbps, 0.0) << i.time;
+    }
   }
 }
 

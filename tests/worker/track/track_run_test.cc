@@ -72,6 +72,19 @@ TEST(TrackRun, NoUavFliesFasterThanItsLimits) {
   }
 }
 
+TEST(TrackRun, UesThatWalkFromOneUavToAnotherAreHandedOver) {
+  const Scenario s = Walking(2, 1);
+  const TrackResult r = Track(s, "centroid-track", 60.0);
+  std::size_t changes = 0;
+  for (std::size_t i = 1; i < r.intervals.size(); ++i) {
+    for (std::size_t ue = 0; ue < s.ues.size(); ++ue)
+      changes += r.intervals[i].serving[ue] != r.intervals[i - 1].serving[ue] ? 1 : 0;
+  }
+  EXPECT_GT(changes, 0u) << "no UE walked from one UAV to the other: pick another walk";
+  EXPECT_EQ(r.handovers, changes);
+  EXPECT_EQ(Track(Walking(1, 1), "centroid-track", 60.0).handovers, 0u);
+}
+
 TEST(TrackRun, TheSameRngRunGivesTheSameNumbers) {
   const auto series = [](const TrackResult& r) {
     std::vector<double> values;
