@@ -77,19 +77,13 @@ nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackR
                         {"run", s.simulation.run},
                         {"intervals", r.intervals.size()},
                         {"n_ues", s.ues.size()},
-                        {"mean_reward", r.mean_reward},
-                        {"mean_throughput_mbps", r.mean_throughput_mbps},
                         {"scored_intervals", ScoredIntervals(r)},
-                        {"outage_share", r.outage_share},
-                        {"los_share", r.los_share},
-                        {"distance_flown_m", r.distance_flown_m},
-                        {"handovers", r.handovers},
                         {"uavs", uavs},
                         {"series", series}};
-  if (t.fidelity == "packet") {
+  for (const TrackMetricDef& m : kTrackMetrics)
+    out[m.key] = JsonNumber(r.metrics.*(m.field));
+  if (t.fidelity == "packet")
     out["warmup"] = s.simulation.warmup;
-    out["mean_delay_ms"] = JsonNumber(r.mean_delay_ms);
-  }
   if (!t.policy.empty())
     out["policy"] = t.policy;
   return out;
@@ -104,16 +98,13 @@ void PrintResult(const Scenario& s, const TrackCommand& t, const TrackResult& r)
     std::printf("  (the %zu intervals that start within the %s s warm-up are not scored)\n",
                 r.intervals.size() - ScoredIntervals(r), FormatNumber(s.simulation.warmup).c_str());
   }
-  std::printf("  mean_reward           %.4f\n", r.mean_reward);
-  std::printf("  mean_throughput_mbps  %.2f\n", r.mean_throughput_mbps);
-  if (t.fidelity == "packet")
-    std::printf("  mean_delay_ms         %.2f\n", r.mean_delay_ms);
-  std::printf("  outage_share          %.4f\n", r.outage_share);
-  std::printf("  los_share             %.4f\n", r.los_share);
-  std::printf("  distance_flown_m      %.1f\n", r.distance_flown_m);
+  for (const TrackMetricDef& m : kTrackMetrics) {
+    const double v = r.metrics.*(m.field);
+    if (std::isfinite(v))
+      std::printf("  %-22s %.4f\n", m.key, v);
+  }
   if (s.uavs.size() < 2)
     return;
-  std::printf("  handovers             %zu\n", r.handovers);
   std::printf("per UAV:  distance_flown_m  mean_ues_served  los_share  outage_share\n");
   for (std::size_t u = 0; u < r.uavs.size(); ++u) {
     const TrackUavSummary& summary = r.uavs[u];

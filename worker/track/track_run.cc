@@ -7,6 +7,7 @@
 #include "common/config/config_error.h"
 #include "common/mobility/ue_trajectories.h"
 #include "common/scenario/number_text.h"
+#include "common/stats/descriptive.h"
 #include "worker/gym/reward.h"
 #include "worker/track/track_scoring.h"
 #include "worker/track/uav_flight.h"
@@ -29,23 +30,28 @@ std::size_t IntervalsIn(double duration, double interval) {
   return n;
 }
 
-// The means and the per-UAV shares over the scored intervals.
+double P5(const std::vector<double>& over_time) {
+  return Quantile(over_time, 0.05);
+}
+
+// The metrics and the per-UAV shares over the scored intervals.
 void Summarize(const Scenario& s, TrackResult& result) {
   const std::size_t k = s.uavs.size();
+  const double n_ues = static_cast<double>(s.ues.size());
   std::vector<double> served(k), los(k), outage(k);
-  double intervals = 0.0, delays = 0.0, n_los = 0.0, not_met = 0.0;
+  std::vector<double> rewards, throughputs, los_shares, met_shares;
+  double delays = 0.0, delay_sum = 0.0;
   for (const TrackInterval& i : result.intervals) {
     if (!i.scored)
       continue;
-    intervals += 1;
-    result.mean_reward += i.reward;
-    result.mean_throughput_mbps += i.throughput_mbps;
+    rewards.push_back(i.reward);
+    throughputs.push_back(i.throughput_mbps);
+    los_shares.push_back(i.n_los / n_ues);
+    met_shares.push_back(i.demands_met / n_ues);
     if (std::isfinite(i.mean_delay_ms)) {
-      result.mean_delay_ms += i.mean_delay_ms;
+      delay_sum += i.mean_delay_ms;
       delays += 1;
     }
-    n_los += i.n_los;
-    not_met += static_cast<double>(s.ues.size()) - i.demands_met;
     for (std::size_t ue = 0; ue < i.serving.size(); ++ue) {
       const auto u = static_cast<std::size_t>(i.serving[ue]);
       served[u] += 1;
@@ -53,22 +59,26 @@ void Summarize(const Scenario& s, TrackResult& result) {
       outage[u] += i.demand_met[ue] ? 0 : 1;
     }
   }
+  const double intervals = static_cast<double>(rewards.size());
+  TrackMetrics& m = result.metrics;
+  m.mean_reward = Mean(rewards);
+  m.reward_p5 = P5(rewards);
+  m.mean_throughput_mbps = Mean(throughputs);
+  m.throughput_p5_mbps = P5(throughputs);
+  m.mean_delay_ms = delays > 0 ? delay_sum / delays : std::numeric_limits<double>::quiet_NaN();
+  m.los_share = Mean(los_shares);
+  m.los_share_p5 = P5(los_shares);
+  m.outage_share = 1.0 - Mean(met_shares);
+  m.demands_met_share_p5 = P5(met_shares);
   for (std::size_t i = 1; i < result.intervals.size(); ++i) {
     const std::vector<int>& before = result.intervals[i - 1].serving;
     const std::vector<int>& now = result.intervals[i].serving;
     for (std::size_t ue = 0; ue < now.size(); ++ue)
-      result.handovers += now[ue] != before[ue] ? 1 : 0;
+      m.handovers += now[ue] != before[ue] ? 1 : 0;
   }
-  const double ue_intervals = intervals * static_cast<double>(s.ues.size());
-  result.mean_reward /= intervals;
-  result.mean_throughput_mbps /= intervals;
-  result.mean_delay_ms =
-      delays > 0 ? result.mean_delay_ms / delays : std::numeric_limits<double>::quiet_NaN();
-  result.los_share = n_los / ue_intervals;
-  result.outage_share = not_met / ue_intervals;
   for (std::size_t u = 0; u < k; ++u) {
     TrackUavSummary& summary = result.uavs[u];
-    result.distance_flown_m += summary.distance_flown_m;
+    m.distance_flown_m += summary.distance_flown_m;
     summary.mean_ues_served = served[u] / intervals;
     summary.los_share = served[u] > 0 ? los[u] / served[u] : 0.0;
     summary.outage_share = served[u] > 0 ? outage[u] / served[u] : 0.0;

@@ -11,6 +11,7 @@
 // or over the interval by the packets (throughput and delay measured, LoS and SNR at its end).
 #include <vector>
 
+#include "common/metrics/track_metrics.h"
 #include "common/scenario/scenario.h"
 #include "worker/track/track_positioner.h"
 
@@ -41,15 +42,8 @@ struct TrackUavSummary {
 
 struct TrackResult {
   std::vector<TrackInterval> intervals;
-  // The means are over the scored intervals.
-  double mean_reward = 0.0;
-  double mean_throughput_mbps = 0.0;
-  double mean_delay_ms = 0.0;     // of the scored intervals that received any; NaN when analytic
-  double los_share = 0.0;         // of all UE-intervals
-  double outage_share = 0.0;      // of all UE-intervals: demand not met
-  double distance_flown_m = 0.0;  // all UAVs
-  // Times a UE's UAV changed from one interval to the next (all intervals; several UAVs).
-  std::size_t handovers = 0;
+  // Over the scored intervals (common/metrics/track_metrics.h).
+  TrackMetrics metrics;
   std::vector<TrackUavSummary> uavs;
 };
 

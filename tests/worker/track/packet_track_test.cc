@@ -64,13 +64,13 @@ TEST(PacketTrack, FliesTheAnalyticLegsScoredByThePacketsTheSameEveryTime) {
     }
     EXPECT_TRUE(std::isnan(a.mean_delay_ms));
   }
-  EXPECT_GT(packet.distance_flown_m, 0.0) << "the UAVs never followed";
-  EXPECT_DOUBLE_EQ(packet.mean_reward, scored_reward / 3);
-  EXPECT_NEAR(packet.distance_flown_m, analytic.distance_flown_m, 1e-9);
+  EXPECT_GT(packet.metrics.distance_flown_m, 0.0) << "the UAVs never followed";
+  EXPECT_DOUBLE_EQ(packet.metrics.mean_reward, scored_reward / 3);
+  EXPECT_NEAR(packet.metrics.distance_flown_m, analytic.metrics.distance_flown_m, 1e-9);
 
   const TrackResult again = Track(s, 2.0, TrackFidelity::kPacket);
   EXPECT_EQ(Series(packet), Series(again));
-  EXPECT_EQ(packet.mean_reward, again.mean_reward);
+  EXPECT_EQ(packet.metrics.mean_reward, again.metrics.mean_reward);
 }
 
 TEST(PacketTrack, AUeThatMissesItsUavsBeaconsStaysInItsBss) {

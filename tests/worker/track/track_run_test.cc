@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/config/config_error.h"
@@ -32,15 +33,15 @@ TEST(TrackRun, StaticUesScoreEveryIntervalAsThePlacementIsScored) {
     ASSERT_EQ(r.intervals.size(), 10u) << name;
     for (const TrackInterval& i : r.intervals)
       EXPECT_EQ(i.reward, expected) << name << " at " << i.time;
-    EXPECT_EQ(r.mean_reward, expected) << name;
-    EXPECT_EQ(r.distance_flown_m, 0.0) << name;
+    EXPECT_EQ(r.metrics.mean_reward, expected) << name;
+    EXPECT_EQ(r.metrics.distance_flown_m, 0.0) << name;
   }
   // The UEs stay: so does the tracking oracle, at the held oracle's placement.
   const TrackResult held_oracle = Track(b, "oracle", 2.0);
   const TrackResult tracking = Track(b, "oracle-track", 2.0);
   for (const TrackInterval& i : tracking.intervals)
     EXPECT_EQ(i.reward, held_oracle.intervals.front().reward) << i.time;
-  EXPECT_EQ(tracking.distance_flown_m, 0.0);
+  EXPECT_EQ(tracking.metrics.distance_flown_m, 0.0);
 }
 
 TEST(TrackRun, NoUavFliesFasterThanItsLimits) {
@@ -66,8 +67,8 @@ TEST(TrackRun, NoUavFliesFasterThanItsLimits) {
       }
       before = i.positions;
     }
-    EXPECT_NEAR(r.distance_flown_m, flown, 1e-6) << positioner;
-    EXPECT_GT(r.distance_flown_m, 0.0) << positioner << ": the UAVs never followed";
+    EXPECT_NEAR(r.metrics.distance_flown_m, flown, 1e-6) << positioner;
+    EXPECT_GT(r.metrics.distance_flown_m, 0.0) << positioner << ": the UAVs never followed";
     EXPECT_NEAR(fastest, 1.5, 1e-9) << positioner << ": the slow UAV's limit never bound";
   }
 }
@@ -81,8 +82,25 @@ TEST(TrackRun, UesThatWalkFromOneUavToAnotherAreHandedOver) {
       changes += r.intervals[i].serving[ue] != r.intervals[i - 1].serving[ue] ? 1 : 0;
   }
   EXPECT_GT(changes, 0u) << "no UE walked from one UAV to the other: pick another walk";
-  EXPECT_EQ(r.handovers, changes);
-  EXPECT_EQ(Track(Walking(1, 1), "centroid-track", 60.0).handovers, 0u);
+  EXPECT_EQ(r.metrics.handovers, static_cast<double>(changes));
+  EXPECT_EQ(Track(Walking(1, 1), "centroid-track", 60.0).metrics.handovers, 0.0);
+}
+
+TEST(TrackRun, P5OverTimeIsTheFifthPercentileOfTheIntervals) {
+  const TrackResult r = Track(Walking(1, 2), "centroid-track", 41.0);  // 41 intervals
+  std::vector<double> rewards, throughputs;
+  for (const TrackInterval& i : r.intervals) {
+    rewards.push_back(i.reward);
+    throughputs.push_back(i.throughput_mbps);
+  }
+  // Type 7 over 41 values: (41 - 1) * 0.05 = 2, the third smallest exactly.
+  std::sort(rewards.begin(), rewards.end());
+  std::sort(throughputs.begin(), throughputs.end());
+  EXPECT_EQ(r.metrics.reward_p5, rewards[2]);
+  EXPECT_EQ(r.metrics.throughput_p5_mbps, throughputs[2]);
+  EXPECT_LT(r.metrics.reward_p5, rewards.back()) << "a walk whose reward never changes";
+  EXPECT_LE(r.metrics.demands_met_share_p5, 1.0 - r.metrics.outage_share);
+  EXPECT_LE(r.metrics.los_share_p5, r.metrics.los_share);
 }
 
 TEST(TrackRun, TheSameRngRunGivesTheSameNumbers) {
@@ -100,7 +118,7 @@ TEST(TrackRun, TheSameRngRunGivesTheSameNumbers) {
   const TrackResult again = Track(Walking(1, 3), "oracle-track", 20.0);
   const TrackResult other = Track(Walking(1, 4), "oracle-track", 20.0);
   EXPECT_EQ(series(first), series(again));
-  EXPECT_EQ(first.mean_reward, again.mean_reward);
+  EXPECT_EQ(first.metrics.mean_reward, again.metrics.mean_reward);
   EXPECT_NE(series(first), series(other)) << "another RngRun, the same walk";
 }
 
