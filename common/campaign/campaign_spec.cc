@@ -1,6 +1,7 @@
 #include "common/campaign/campaign_spec.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -55,8 +56,9 @@ std::uint64_t ReadUnsigned(const json& v, const std::string& path, std::uint64_t
   throw ConfigError(JoinPath(parent, key), "is required" + hint);
 }
 
-const std::vector<std::string> kCampaignKeys{"name",  "scenarios", "rng_runs", "positioners",
-                                             "train", "eval",      "retries",  "job_timeout_s"};
+const std::vector<std::string> kCampaignKeys{"name",        "scenarios", "rng_runs",
+                                             "positioners", "train",     "eval",
+                                             "track",       "retries",   "job_timeout_s"};
 
 const json& NonEmptyArray(const json& v, const std::string& path) {
   if (!v.is_array() || v.empty()) {
@@ -180,6 +182,55 @@ EvalSettings ReadEval(const json& v) {
   return eval;
 }
 
+TrackSettings ReadTrack(const json& v) {
+  ObjectReader r(v, "/track");
+  TrackSettings track;
+  const json* positioners = r.Child("positioners");
+  if (!positioners)
+    throw ConfigError("/track/positioners", "is required (for example [\"oracle-track\"])");
+  for (std::size_t i = 0; i < positioners->size() && positioners->is_array(); ++i) {
+    const json& p = (*positioners)[i];
+    if ((p.is_string() && p == "rl") || (p.is_object() && p.contains("rl"))) {
+      throw ConfigError(JoinPath("/track/positioners", i),
+                        "rl is not supported in a campaign's track section yet; fly a policy "
+                        "with rlpos-sim track --positioner rl --policy DIR");
+    }
+  }
+  track.positioners = ReadCanonicalList(*positioners, "/track/positioners", TrackPositionerNames(),
+                                        "track positioner");
+  if (!r.Has("duration"))
+    throw ConfigError("/track/duration", "is required (s of each run)");
+  track.duration = r.Number("duration", 0, Positive());
+  if (track.duration > 86400)
+    throw ConfigError("/track/duration", "must be at most 86400 s");
+  track.fidelity = r.String("fidelity", track.fidelity, NameList(kFidelities));
+  r.Finish();
+  return track;
+}
+
+// The track runs of `entry` fit: at least one interval, one scored at packet level, and not
+// more than the wire carries back.
+void CheckTrackFits(const TrackSettings& track, const CampaignScenario& entry,
+                    const std::string& path) {
+  const Scenario& s = entry.scenario;
+  const double interval = s.env.decision_interval;
+  const double count = std::floor(track.duration / interval + 1e-9);
+  const std::string of = "scenario \"" + s.name + "\" (" + path + ", env.decision_interval " +
+                         FormatNumber(interval) + " s)";
+  if (count < 1)
+    throw ConfigError("/track/duration", "is shorter than one interval of " + of);
+  if (count > kMaxTrackIntervals) {
+    throw ConfigError("/track/duration",
+                      "makes " + FormatNumber(count) + " intervals in " + of + ", more than " +
+                          std::to_string(kMaxTrackIntervals) +
+                          "; lengthen its env.decision_interval (\"set\") or shorten the runs");
+  }
+  if (track.fidelity == "packet" && (count - 1) * interval < s.simulation.warmup) {
+    throw ConfigError("/track/duration", "leaves no interval after simulation.warmup (" +
+                                             FormatNumber(s.simulation.warmup) + " s) in " + of);
+  }
+}
+
 CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
                                    const ScenarioSource& source, const EvalSettings& eval) {
   CampaignScenario entry;
@@ -253,6 +304,16 @@ const std::vector<std::string>& AllPositioners() {
   return all;
 }
 
+const std::vector<std::string>& TrackPositionerNames() {
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> names = NameList(kPlacingPositioners);
+    for (const std::string& name : NameList(kTrackingPositioners))
+      names.push_back(name);
+    return names;
+  }();
+  return all;
+}
+
 bool CampaignSpec::Uses(const std::string& positioner) const {
   return std::find(positioners.begin(), positioners.end(), positioner) != positioners.end();
 }
@@ -308,6 +369,8 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source,
     spec.train = ReadTrain(*train);
   if (const json* eval = r.Child("eval"))
     spec.eval = ReadEval(*eval);
+  if (const json* track = r.Child("track"))
+    spec.track = ReadTrack(*track);
 
   const json* scenarios = r.Child("scenarios");
   if (!scenarios) {
@@ -333,7 +396,11 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source,
   }
   spec.rng_runs = ReadRngRuns(*runs, "/rng_runs");
 
-  if (const json* positioners = r.Child("positioners")) {
+  const json* positioners = r.Child("positioners");
+  if (positioners && positioners->is_array() && positioners->empty() &&
+      !spec.track.positioners.empty()) {
+    // [] with a track section: a campaign of track runs only.
+  } else if (positioners) {
     spec.positioners =
         ReadCanonicalList(*positioners, "/positioners", AllPositioners(), "positioner", true);
     spec.policies = ReadPolicies(*positioners, "/positioners", policies, spec.scenarios);
@@ -343,6 +410,10 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source,
   spec.retries = static_cast<int>(r.Integer("retries", spec.retries, 0, 100));
   spec.job_timeout_s = r.Number("job_timeout_s", spec.job_timeout_s, Positive());
   r.Finish();
+  if (!spec.track.positioners.empty()) {
+    for (std::size_t i = 0; i < spec.scenarios.size(); ++i)
+      CheckTrackFits(spec.track, spec.scenarios[i], JoinPath("/scenarios", i));
+  }
   CheckJobSettings(spec);
   return spec;
 }
@@ -386,6 +457,11 @@ json ToJson(const CampaignSpec& spec) {
               {"eval", eval},
               {"retries", spec.retries},
               {"job_timeout_s", spec.job_timeout_s}};
+  if (!spec.track.positioners.empty()) {  // absent otherwise: older campaigns keep their ids
+    out["track"] = {{"positioners", spec.track.positioners},
+                    {"duration", spec.track.duration},
+                    {"fidelity", spec.track.fidelity}};
+  }
   // Absent without named policies, so older campaigns keep their ids; with them, each one's
   // sha256 makes the same campaign with another policy another campaign.
   if (!spec.policies.empty()) {

@@ -53,6 +53,23 @@ struct EvalSettings {
   std::optional<double> warmup;    // s; unset: the scenario's simulation.warmup
 };
 
+// Limits a track section's runs: a run's intervals travel back in its result, whose size the
+// wire bounds (wire::kMaxResultJson).
+constexpr int kMaxTrackIntervals = 600;
+
+// Runs in which the UEs walk and the UAVs follow (rlpos-sim track): one job per scenario,
+// positioner and RngRun. "track": {"positioners": [...], "duration": D, "fidelity": F}.
+struct TrackSettings {
+  // Held (baseline, centroid, oracle) and tracking (oracle-track, centroid-track) ones, in
+  // TrackPositionerNames() order. Empty: no track section, no track jobs.
+  std::vector<std::string> positioners;
+  double duration = 0.0;  // s of each run
+  std::string fidelity = "analytic";
+};
+
+// The positioners a campaign's track section may select, in canonical order.
+const std::vector<std::string>& TrackPositionerNames();
+
 struct CampaignSpec {
   std::string name;
   std::vector<CampaignScenario> scenarios;
@@ -61,6 +78,7 @@ struct CampaignSpec {
   std::vector<CampaignPolicy> policies;  // named policies, as listed
   TrainSettings train;
   EvalSettings eval;
+  TrackSettings track;
   int retries = 2;               // extra attempts after the first
   double job_timeout_s = 600.0;  // a running job older than this is failed
 

@@ -55,6 +55,17 @@ JobParams EvalParams(const CampaignSpec& spec, const CampaignScenario& s, std::u
   return p;
 }
 
+// A track job's: the track section's duration and fidelity, the run, the positioner.
+JobParams TrackParams(const CampaignSpec& spec, const CampaignScenario& s,
+                      const std::string& positioner, std::uint64_t run) {
+  JobParams p = ScenarioParams(spec, s, JobKind::kTrack);
+  p.duration_s = spec.track.duration;
+  p.fidelity = spec.track.fidelity;
+  p.positioner = positioner;
+  p.rng_run = run;
+  return p;
+}
+
 // "" trains with the scenario's own agent.algorithm, under the plain labels.
 std::vector<std::string> TrainAlgorithms(const CampaignSpec& spec) {
   std::vector<std::string> algorithms = spec.train.algorithms;
@@ -63,8 +74,12 @@ std::vector<std::string> TrainAlgorithms(const CampaignSpec& spec) {
   return algorithms;
 }
 
-// Where the campaign fixes the setting of a JobParams field.
-std::string CampaignFieldOf(const std::string& field) {
+// Where the campaign fixes the setting of a JobParams field of a job of `kind`.
+std::string CampaignFieldOf(const std::string& field, JobKind kind) {
+  if (kind == JobKind::kTrack && field == "duration_s")
+    return "/track/duration";
+  if (kind == JobKind::kTrack && field == "fidelity")
+    return "/track/fidelity";
   static const std::map<std::string, std::string> fields{
       {"train_seed", "/train/seeds"},        {"fidelity", "/train/fidelity"},
       {"train_episodes", "/train/episodes"}, {"rng_run", "/rng_runs"},
@@ -113,7 +128,7 @@ void CheckJobSettings(const CampaignSpec& spec) {
     const auto add = [&](const JobParams& p) {
       for (const auto& setting : JobSettings(p)) {
         fixed.push_back(setting.setting);
-        where.push_back(CampaignFieldOf(setting.field));
+        where.push_back(CampaignFieldOf(setting.field, p.kind));
       }
       for (std::size_t k = s.overrides.size(); k < p.overrides.size(); ++k) {
         fixed.push_back(p.overrides[k]);
@@ -130,6 +145,10 @@ void CheckJobSettings(const CampaignSpec& spec) {
     if (NeedsTraining(spec, s) || PositionJobs(spec) > 0) {
       for (const std::uint64_t run : spec.rng_runs)
         add(EvalParams(spec, s, run));
+    }
+    for (const std::string& positioner : spec.track.positioners) {
+      for (const std::uint64_t run : spec.rng_runs)
+        add(TrackParams(spec, s, positioner, run));
     }
     if (const auto c = FindContradiction(Overrides(s), fixed)) {
       const std::size_t k = c->override_index;
@@ -173,6 +192,7 @@ std::size_t CampaignPlan::JobCount() const {
     const std::size_t labels = producers + trains * ((spec.Uses("rl") ? 1 : 0) +
                                                      (UsesOffsets(spec, s) ? kOffsetCount : 0));
     count += producers + trains + labels * spec.rng_runs.size();
+    count += spec.track.positioners.size() * spec.rng_runs.size();
   }
   return count;
 }
@@ -251,6 +271,17 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
         job.position_rule = source.rule;
         job.params = EvalParams(spec, s, run);
         job.params.train_seed = source.train_seed;
+        add(std::move(job));
+      }
+    }
+
+    // Track runs depend on no job: each decides its own placements as the UEs walk.
+    for (const std::string& positioner : spec.track.positioners) {
+      for (const std::uint64_t run : spec.rng_runs) {
+        Job job;
+        job.key = "track/" + name + "/" + positioner + "/run" + std::to_string(run);
+        job.label = positioner;
+        job.params = TrackParams(spec, s, positioner, run);
         add(std::move(job));
       }
     }

@@ -12,6 +12,9 @@
 //                                       position: baseline|centroid|oracle and rl+<name> on
 //                                       their position job;
 //                                       rl and offset1..offset5 on the train job.
+//   track/<scenario>/<positioner>/run<R> per track positioner and RngRun (a "track" section):
+//                                       a run in which the UEs walk and the UAVs follow; no
+//                                       dependency.
 // Several train seeds: every seed gets its own rl/offset evals. The first seed's labels are the
 // plain "rl", "offset1".."offset5" (the paper's curves); later seeds' carry "@seed<N>"
 // ("rl@seed2", "offset3@seed2"), so adding a seed never renames the first seed's results.

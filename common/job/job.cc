@@ -12,6 +12,8 @@ const char* ToString(JobKind kind) {
       return "position";
     case JobKind::kEval:
       return "eval";
+    case JobKind::kTrack:
+      return "track";
   }
   return "?";
 }
@@ -23,6 +25,8 @@ JobKind ParseJobKind(const std::string& text) {
     return JobKind::kPosition;
   if (text == "eval")
     return JobKind::kEval;
+  if (text == "track")
+    return JobKind::kTrack;
   throw std::invalid_argument("unknown job kind \"" + text + "\"");
 }
 

@@ -23,7 +23,8 @@ enum JobKinds : unsigned {
   kTrainJob = 1u << static_cast<unsigned>(JobKind::kTrain),
   kPositionJob = 1u << static_cast<unsigned>(JobKind::kPosition),
   kEvalJob = 1u << static_cast<unsigned>(JobKind::kEval),
-  kEveryKind = kTrainJob | kPositionJob | kEvalJob,
+  kTrackJob = 1u << static_cast<unsigned>(JobKind::kTrack),
+  kEveryKind = kTrainJob | kPositionJob | kEvalJob | kTrackJob,
 };
 
 constexpr bool Includes(unsigned kinds, JobKind kind) {
@@ -54,13 +55,14 @@ inline constexpr auto kJobFields = std::make_tuple(
     Field("scenario", &JobParams::scenario, kNoKind, nullptr),
     // An eval carries its train job's seed to say where its position came from.
     Field("train_seed", &JobParams::train_seed, kTrainJob, "/agent/seed"),
-    Field("fidelity", &JobParams::fidelity, kTrainJob, "/env/fidelity"),
+    // Track's goes on its command line (--fidelity), as the positioner does.
+    Field("fidelity", &JobParams::fidelity, kTrainJob | kTrackJob, "/env/fidelity"),
     Field("train_episodes", &JobParams::train_episodes, kTrainJob, "/agent/train_episodes"),
-    Field("positioner", &JobParams::positioner, kPositionJob, nullptr),  // --positioner
+    Field("positioner", &JobParams::positioner, kPositionJob | kTrackJob, nullptr),  // --positioner
     // The policy a named-policy rl position job flies (--policy): another policy, another
     // placement, so it is part of the content.
     Field("policy_sha256", &JobParams::policy_sha256, kPositionJob, nullptr),
-    Field("rng_run", &JobParams::rng_run, kEvalJob, "/simulation/run"),
+    Field("rng_run", &JobParams::rng_run, kEvalJob | kTrackJob, "/simulation/run"),
     Field("duration_s", &JobParams::duration_s, kEveryKind, "/simulation/duration"),
     Field("warmup_s", &JobParams::warmup_s, kEveryKind, "/simulation/warmup"),
     Field("overrides", &JobParams::overrides, kEveryKind, nullptr));

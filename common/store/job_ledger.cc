@@ -155,12 +155,14 @@ std::vector<ReadyJob> JobLedger::ListReady(std::size_t per_campaign) {
   std::vector<ReadyJob> out;
   for (const auto& campaign : campaigns) {
     std::size_t taken = 0;
-    for (const char* kind : {"train", "position", "eval"}) {
+    for (const JobKind kind : kJobKinds) {
       if (per_campaign != 0 && taken >= per_campaign)
         break;
       select.Reset();
-      select.Bind(campaign).Bind(kind).Bind(
-          per_campaign == 0 ? std::int64_t{-1} : static_cast<std::int64_t>(per_campaign - taken));
+      select.Bind(campaign)
+          .Bind(ToString(kind))
+          .Bind(per_campaign == 0 ? std::int64_t{-1}
+                                  : static_cast<std::int64_t>(per_campaign - taken));
       while (select.Step()) {
         ReadyJob job;
         job.id = select.Text(0);

@@ -12,7 +12,7 @@ namespace rlpos {
 // The last schema version written by hand (store/schema.cc) before the metrics' own.
 constexpr int kLastHandWrittenSchema = 10;
 // Versions written by hand after it (store/schema.cc): a metric's version skips them.
-constexpr int kHandWrittenSchemasAfterMetrics[] = {12};
+constexpr int kHandWrittenSchemasAfterMetrics[] = {12, 13};
 
 // A metric's new columns; the uav_* are empty for a metric of the run only.
 struct MetricColumn {

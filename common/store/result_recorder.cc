@@ -13,6 +13,7 @@
 #include "common/store/sqlite_db.h"
 #include "common/store/store_db.h"
 #include "common/store/store_error.h"
+#include "common/store/track_rows.h"
 
 namespace rlpos {
 namespace {
@@ -37,10 +38,9 @@ JobUpdate ResultRecorder::RecordSuccess(const std::string& job_id, int attempt, 
   if (const auto ignored = ReadSettling(job_id, attempt, worker_id, job))
     return *ignored;
   // Check the result before anything is written: a malformed one is a failed attempt.
-  EvalResult eval;
-  Placement produced;
+  CheckedResult checked;
   try {
-    CheckResult(job_id, job, result, eval, produced);
+    CheckResult(job_id, job, result, checked);
   } catch (const std::invalid_argument& e) {
     return FailSettling(job_id, attempt, job, std::string("malformed result: ") + e.what(),
                         transaction);
@@ -54,11 +54,13 @@ JobUpdate ResultRecorder::RecordSuccess(const std::string& job_id, int attempt, 
     }
   }
   MarkSucceeded(job_id, attempt, result, provenance);
+  const EvalRowKey key{job_id, job.campaign_id, job.scenario, job.label, job.rng_run.value_or(0)};
   if (job.kind == JobKind::kEval) {
-    InsertEvalMetrics(
-        *db_, {job_id, job.campaign_id, job.scenario, job.label, job.rng_run.value_or(0)}, eval);
+    InsertEvalMetrics(*db_, key, checked.eval);
+  } else if (job.kind == JobKind::kTrack) {
+    InsertTrackRun(*db_, key, checked.track);
   } else {
-    dependants_.Bind(job_id, produced);
+    dependants_.Bind(job_id, checked.produced);
   }
   cache_.ServeWaiting(job_id);
   ledger_.UpdateCampaignState(job.campaign_id);
@@ -71,7 +73,7 @@ std::optional<JobUpdate> ResultRecorder::ReadSettling(const std::string& job_id,
                                                       SettlingJob& job) {
   Statement select = db_->Prepare(
       "SELECT state, attempt, max_attempts, campaign_id, label, worker_id, kind, scenario, "
-      "rng_run, x, y, z, positions_json FROM jobs WHERE id = ?");
+      "rng_run, x, y, z, positions_json, positioner, fidelity, duration_s FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step())
     return JobUpdate::kUnknown;
@@ -85,6 +87,9 @@ std::optional<JobUpdate> ResultRecorder::ReadSettling(const std::string& job_id,
   job.kind = ParseJobKind(select.Text(6));
   job.scenario = select.Text(7);
   job.rng_run = select.OptionalInt(8);
+  job.positioner = select.OptionalText(13).value_or("");
+  job.fidelity = select.OptionalText(14).value_or("");
+  job.duration_s = select.OptionalDouble(15);
   try {
     job.placement = ReadPlacement(select, 9);
   } catch (const std::exception& e) {
@@ -95,8 +100,19 @@ std::optional<JobUpdate> ResultRecorder::ReadSettling(const std::string& job_id,
 }
 
 void ResultRecorder::CheckResult(const std::string& job_id, const SettlingJob& job,
-                                 const json& result, EvalResult& eval, Placement& produced) {
-  if (job.kind == JobKind::kEval) {
+                                 const json& result, CheckedResult& checked) {
+  EvalResult& eval = checked.eval;
+  if (job.kind == JobKind::kTrack) {
+    checked.track = ParseTrackResult(result);
+    const TrackRunResult& t = checked.track;
+    if (!job.rng_run || static_cast<std::int64_t>(t.run) != *job.rng_run ||
+        t.positioner != job.positioner || t.fidelity != job.fidelity || !job.duration_s ||
+        t.duration_s != *job.duration_s) {
+      throw std::invalid_argument(
+          "result is of another run, positioner, fidelity or duration "
+          "than the job's");
+    }
+  } else if (job.kind == JobKind::kEval) {
     eval = ParseEvalResult(result);
     if (eval.run && job.rng_run && static_cast<std::int64_t>(*eval.run) != *job.rng_run) {
       throw std::invalid_argument("result is of RngRun " + std::to_string(*eval.run) +
@@ -105,8 +121,8 @@ void ResultRecorder::CheckResult(const std::string& job_id, const SettlingJob& j
     if (job.placement && !SamePlacement(*job.placement, eval.placement))
       throw std::invalid_argument("result is of another placement than the job's");
   } else {
-    produced = ProducedPlacement(result);
-    dependants_.Check(job_id, produced);
+    checked.produced = ProducedPlacement(result);
+    dependants_.Check(job_id, checked.produced);
   }
 }
 

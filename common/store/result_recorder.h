@@ -1,8 +1,8 @@
 #pragma once
 // Result recording: a running job's successful attempt, checked and written with its
-// provenance, metrics (eval jobs) and artifacts, in one transaction with what it sets off: the
-// dependants' placements (a DependantRule), the identical jobs that waited for it (the result
-// cache) and its campaign's state (the ledger).
+// provenance, metrics (eval and track jobs) and artifacts, in one transaction with what it sets
+// off: the dependants' placements (a DependantRule), the identical jobs that waited for it (the
+// result cache) and its campaign's state (the ledger).
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -11,7 +11,9 @@
 
 #include "common/campaign/expansion.h"
 #include "common/provenance/provenance.h"
+#include "common/store/job_result.h"
 #include "common/store/store_records.h"
+#include "common/store/track_result.h"
 #include "common/wire/artifacts.h"
 
 namespace rlpos {
@@ -22,7 +24,6 @@ class JobLedger;
 class ResultCache;
 class StoreDb;
 class Transaction;
-struct EvalResult;
 
 class ResultRecorder {
  public:
@@ -47,14 +48,21 @@ class ResultRecorder {
     JobKind kind = JobKind::kEval;
     std::optional<std::int64_t> rng_run;
     std::optional<Placement> placement;
+    std::string positioner, fidelity;  // position and track jobs; train and track jobs
+    std::optional<double> duration_s;
+  };
+  // A result as its job's kind reads it.
+  struct CheckedResult {
+    EvalResult eval;       // eval jobs
+    TrackRunResult track;  // track jobs
+    Placement produced;    // train and position jobs
   };
   // kUnknown or kStale when the attempt is not the job's running one; else fills `job`.
   std::optional<JobUpdate> ReadSettling(const std::string& job_id, int attempt,
                                         const std::string& worker_id, SettlingJob& job);
-  // Throws std::invalid_argument for a result the job refuses; fills `eval` (eval jobs) or
-  // `produced` (the others).
+  // Throws std::invalid_argument for a result the job refuses; fills `checked`.
   void CheckResult(const std::string& job_id, const SettlingJob& job, const nlohmann::json& result,
-                   EvalResult& eval, Placement& produced);
+                   CheckedResult& checked);
   // The attempt fails instead of succeeding; commits.
   JobUpdate FailSettling(const std::string& job_id, int attempt, const SettlingJob& job,
                          const std::string& error, Transaction& transaction);

@@ -109,6 +109,10 @@ std::vector<UavMetricRow> ResultsReader::UavMetrics(const std::string& campaign_
   return ReadUavMetricRows(*db_, campaign_id);
 }
 
+std::vector<TrackRunRow> ResultsReader::TrackRuns(const std::string& campaign_id) {
+  return ReadTrackRunRows(*db_, campaign_id);
+}
+
 std::vector<OptimalityRow> ResultsReader::Optimality(const std::string& campaign_id) {
   return ReadOptimalityRows(*db_, campaign_id);
 }

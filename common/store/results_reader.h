@@ -10,6 +10,7 @@
 #include "common/store/metric_rows.h"
 #include "common/store/optimality_rows.h"
 #include "common/store/store_records.h"
+#include "common/store/track_rows.h"
 
 namespace rlpos {
 
@@ -33,6 +34,8 @@ class ResultsReader {
   std::vector<MetricRow> Metrics(const std::string& campaign_id);
   // One row per UAV of each succeeded eval, in the order of Metrics, then by UAV.
   std::vector<UavMetricRow> UavMetrics(const std::string& campaign_id);
+  // One row per succeeded track job, by scenario (campaign order), positioner, rng_run.
+  std::vector<TrackRunRow> TrackRuns(const std::string& campaign_id);
   // rl's reward against the oracle's, per scenario, algorithm and train seed (optimality_rows.h).
   std::vector<OptimalityRow> Optimality(const std::string& campaign_id);
 

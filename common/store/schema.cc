@@ -310,6 +310,97 @@ constexpr const char* kVersion12 = R"sql(
 ALTER TABLE jobs ADD COLUMN policy_sha256 TEXT;
 )sql";
 
+// Version 13: runs in which the UEs walk and the UAVs follow (track jobs).
+//  - jobs.kind may be 'track' (AllowTrackJobs);
+//  - track_runs: one row per track job, its metrics over time (common/metrics/track_metrics.h:
+//    each kTrackMetrics key is a column);
+//  - track_intervals: its intervals, in order: the metrics of each and where the UAVs were at its
+//    end ([[x, y, z], ...] in the scenario's order).
+constexpr const char* kVersion13 = R"sql(
+CREATE TABLE track_runs (
+  job_id               TEXT PRIMARY KEY REFERENCES jobs(id),
+  campaign_id          TEXT NOT NULL REFERENCES campaigns(id),
+  scenario             TEXT NOT NULL,
+  label                TEXT NOT NULL,
+  rng_run              INTEGER NOT NULL,
+  fidelity             TEXT NOT NULL,
+  duration_s           REAL NOT NULL,
+  decision_interval_s  REAL NOT NULL,
+  intervals            INTEGER NOT NULL,
+  scored_intervals     INTEGER NOT NULL,
+  mean_reward          REAL NOT NULL,
+  reward_p5            REAL NOT NULL,
+  mean_throughput_mbps REAL NOT NULL,
+  throughput_p5_mbps   REAL NOT NULL,
+  mean_delay_ms        REAL,
+  los_share            REAL NOT NULL,
+  los_share_p5         REAL NOT NULL,
+  outage_share         REAL NOT NULL,
+  demands_met_share_p5 REAL NOT NULL,
+  distance_flown_m     REAL NOT NULL,
+  handovers            REAL NOT NULL
+);
+CREATE INDEX track_runs_by_campaign ON track_runs(campaign_id, scenario, label, rng_run);
+
+CREATE TABLE track_intervals (
+  job_id            TEXT NOT NULL REFERENCES jobs(id),
+  interval          INTEGER NOT NULL CHECK (interval >= 0),
+  campaign_id       TEXT NOT NULL REFERENCES campaigns(id),
+  scenario          TEXT NOT NULL,
+  label             TEXT NOT NULL,
+  rng_run           INTEGER NOT NULL,
+  time_s            REAL NOT NULL,
+  scored            INTEGER NOT NULL CHECK (scored IN (0, 1)),
+  reward            REAL NOT NULL,
+  throughput_mbps   REAL NOT NULL,
+  delay_ms          REAL,
+  los_share         REAL NOT NULL,
+  demands_met_share REAL NOT NULL,
+  positions_json    TEXT NOT NULL,
+  PRIMARY KEY (job_id, interval)
+);
+CREATE INDEX track_intervals_by_campaign
+  ON track_intervals(campaign_id, scenario, label, rng_run, interval);
+
+CREATE VIEW v_track_runs AS
+SELECT c.id AS campaign_id, c.name AS campaign, t.scenario, t.label AS positioner, t.rng_run,
+       t.fidelity, t.duration_s, t.decision_interval_s, t.intervals, t.scored_intervals,
+       t.mean_reward, t.reward_p5, t.mean_throughput_mbps, t.throughput_p5_mbps,
+       t.mean_delay_ms, t.los_share, t.los_share_p5, t.outage_share, t.demands_met_share_p5,
+       t.distance_flown_m, t.handovers, t.job_id
+FROM track_runs t
+JOIN campaigns c ON c.id = t.campaign_id;
+
+CREATE VIEW v_track_intervals AS
+SELECT c.id AS campaign_id, c.name AS campaign, i.scenario, i.label AS positioner, i.rng_run,
+       i.interval, i.time_s, i.scored, i.reward, i.throughput_mbps, i.delay_ms, i.los_share,
+       i.demands_met_share, i.positions_json, i.job_id
+FROM track_intervals i
+JOIN campaigns c ON c.id = i.campaign_id;
+)sql";
+
+// SQLite cannot alter a CHECK constraint. Its documented way for a constraint change that leaves
+// every stored row as it is (sqlite.org/lang_altertable.html, "writable_schema"): rewrite the
+// table's SQL in the schema and bump the schema cookie, so that every connection reloads it.
+void AllowTrackJobs(Database& db) {
+  const std::string before = "CHECK (kind IN ('train', 'position', 'eval'))";
+  const std::string after = "CHECK (kind IN ('train', 'position', 'eval', 'track'))";
+  Statement cookie = db.Prepare("PRAGMA schema_version");
+  cookie.Step();
+  const std::int64_t version = cookie.Int(0);
+  cookie.Reset();
+  db.Exec("PRAGMA writable_schema = ON");
+  Statement rewrite = db.Prepare(
+      "UPDATE sqlite_master SET sql = replace(sql, ?, ?) "
+      "WHERE type = 'table' AND name = 'jobs' AND instr(sql, ?) > 0");
+  rewrite.Bind(before).Bind(after).Bind(before).Run();
+  const int rewritten = db.Changes();
+  db.Exec("PRAGMA schema_version = " + std::to_string(version + 1));
+  db.Exec("PRAGMA writable_schema = OFF");
+  if (rewritten != 1)
+    throw StoreError(db.file(), "table jobs has no kind constraint to extend: " + before);
+}
+
 const std::vector<Migration>& Migrations() {
   static const std::vector<Migration> migrations = [] {
     std::vector<Migration> out{{1, kVersion1, nullptr, nullptr},
@@ -326,6 +417,7 @@ const std::vector<Migration>& Migrations() {
     for (auto& migration : DerivedMetricMigrations())
       out.push_back(std::move(migration));
     out.push_back({12, kVersion12, nullptr, nullptr});
+    out.push_back({13, kVersion13, AllowTrackJobs, nullptr});
     std::stable_sort(out.begin(), out.end(),
                      [](const Migration& a, const Migration& b) { return a.version < b.version; });
     return out;

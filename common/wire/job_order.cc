@@ -36,6 +36,28 @@ void CheckDuration(const std::optional<double>& v, const char* field, bool zero_
   }
 }
 
+// A track job: a positioner that flies no trained-per-scenario policy (rl names one), a
+// fidelity, an RngRun and a duration (track's command line needs both).
+void CheckTrackParams(const JobParams& p) {
+  if (p.positioner == "rl") {
+    if (!IsSha256Hex(p.policy_sha256))
+      Bad("policy_sha256", "an rl track job needs its policy's sha256");
+  } else if (!IsOneOf(p.positioner, kPlacingPositioners) &&
+             !IsOneOf(p.positioner, kTrackingPositioners)) {
+    Bad("positioner", "must be " + Alternatives(kPlacingPositioners) + ", " +
+                          Alternatives(kTrackingPositioners) + " or rl, got \"" +
+                          wire::Printable(p.positioner) + "\"");
+  }
+  if (!IsOneOf(p.fidelity, kFidelities)) {
+    Bad("fidelity",
+        "must be " + Alternatives(kFidelities) + ", got \"" + wire::Printable(p.fidelity) + "\"");
+  }
+  if (!p.rng_run || *p.rng_run < 1 || *p.rng_run > 4294967295ULL)
+    Bad("rng_run", "a track job needs one in 1..4294967295");
+  if (!p.duration_s)
+    Bad("duration_s", "a track job needs one");
+}
+
 void CheckParams(const JobParams& p) {
   if (!wire::IsSafeName(p.scenario, wire::kMaxNameLength)) {
     Bad("scenario", "not a scenario name: \"" + wire::Printable(p.scenario) + "\"");
@@ -68,11 +90,16 @@ void CheckParams(const JobParams& p) {
         Bad("rng_run", "an eval job needs one in 1..4294967295");
       }
       break;
+    case JobKind::kTrack:
+      CheckTrackParams(p);
+      break;
     default:
       Bad("kind", "unknown job kind " + std::to_string(static_cast<int>(p.kind)));
   }
-  if (!(p.kind == JobKind::kPosition && p.positioner == "rl") && !p.policy_sha256.empty())
-    Bad("policy_sha256", "only an rl position job has one");
+  const bool flies_policy =
+      (p.kind == JobKind::kPosition || p.kind == JobKind::kTrack) && p.positioner == "rl";
+  if (!flies_policy && !p.policy_sha256.empty())
+    Bad("policy_sha256", "only an rl position or track job has one");
   CheckDuration(p.duration_s, "duration_s", false);
   CheckDuration(p.warmup_s, "warmup_s", true);
   if (p.overrides.size() > wire::kMaxOverrides)
@@ -140,7 +167,8 @@ CheckedOrder CheckJobOrder(const JobOrder& order, double max_timeout_s) {
   }
   CheckParams(order.params);
   if (order.params.policy_sha256.empty() != !order.policy)
-    Bad("policy", order.policy ? "only an rl position job carries one" : "the job's is missing");
+    Bad("policy",
+        order.policy ? "only an rl position or track job carries one" : "the job's is missing");
   if (order.policy) {
     if (const std::string problem = CheckPolicyBundle(*order.policy); !problem.empty())
       Bad("policy", problem);

@@ -39,12 +39,14 @@ int SubmitCampaign(const std::string& campaign_file, bool use_cache, const DdsOp
 int CancelCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int RetryCampaign(const std::string& campaign_id, const DdsOptions& dds, double timeout_s);
 int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch, double period_s);
-// The summary per scenario and positioner; with `per_uav`, per UAV of the scenarios with several
-// instead. The table format shows both (the second when there is any).
+// Which results `results` shows: the summary per scenario and positioner (the table format
+// adds the others that have rows), or only the per-UAV, optimality or track one.
+enum class ResultsView { kSummary, kPerUav, kOptimality, kTrack };
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
-                bool per_uav, bool optimality);
-// The summary table, then the per-UAV one when the campaign has scenarios of several UAVs, then
-// the optimality one when a scenario has rl and oracle rewards (reporting/optimality.h).
+                ResultsView view);
+// The summary table, then the per-UAV one when the campaign has scenarios of several UAVs, the
+// optimality one when a scenario has rl and oracle rewards (reporting/optimality.h), and the
+// track one when it has track runs (reporting/track_summary.h).
 std::string ResultsTables(ResultsReader& store, const std::string& campaign_id);
 // security init DIR; security add-worker|add-client DIR NAME.
 int InitSecurity(const std::string& dir, int days);

@@ -167,7 +167,10 @@ void PrintPlan(const CampaignPlan& campaign) {
   for (const auto& scenario : order) {
     auto& c = counts[scenario];
     std::cout << "  " << scenario << ": " << c["train"] << " train, " << c["position"]
-              << " position, " << c["eval"] << " eval\n";
+              << " position, " << c["eval"] << " eval";
+    if (c["track"] > 0)
+      std::cout << ", " << c["track"] << " track";
+    std::cout << "\n";
   }
 }
 

@@ -16,6 +16,7 @@
 #include "coordinator/reporting/report_writer.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/scenario_maps.h"
+#include "coordinator/reporting/track_summary.h"
 #include "coordinator/reporting/uav_summary.h"
 
 namespace rlpos {
@@ -72,11 +73,22 @@ int ShowStatus(const std::string& db, const std::string& campaign_id, bool watch
 }
 
 int ShowResults(const std::string& db, const std::string& campaign_id, const std::string& format,
-                bool per_uav, bool optimality) {
+                ResultsView view) {
   StoreDb opened(db, ReadOnly());
   ResultsReader store(opened);
   store.Progress(campaign_id);  // StoreError for an unknown campaign
-  if (optimality) {
+  if (view == ResultsView::kTrack) {
+    const auto tracks = SummarizeTracks(store.TrackRuns(campaign_id));
+    if (format == "csv") {
+      std::cout << FormatTrackSummaryCsv(tracks);
+    } else if (format == "json") {
+      std::cout << TrackSummaryToJson(tracks).dump(2) << "\n";
+    } else {
+      std::cout << FormatTrackSummaryText(tracks);
+    }
+    return kExitOk;
+  }
+  if (view == ResultsView::kOptimality) {
     const auto summary = SummarizeOptimality(store.Optimality(campaign_id));
     if (format == "csv") {
       std::cout << FormatOptimalitySummaryCsv(summary);
@@ -87,7 +99,7 @@ int ShowResults(const std::string& db, const std::string& campaign_id, const std
     }
     return kExitOk;
   }
-  if (per_uav) {
+  if (view == ResultsView::kPerUav) {
     const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
     if (format == "csv") {
       std::cout << FormatUavSummaryCsv(uavs);
@@ -109,7 +121,10 @@ int ShowResults(const std::string& db, const std::string& campaign_id, const std
 }
 
 std::string ResultsTables(ResultsReader& store, const std::string& campaign_id) {
-  std::string out = FormatSummaryText(SummarizeCampaign(store, campaign_id));
+  const auto summary = SummarizeCampaign(store, campaign_id);
+  const auto tracks = SummarizeTracks(store.TrackRuns(campaign_id));
+  // A campaign of track runs only has no eval summary to show.
+  std::string out = summary.empty() && !tracks.empty() ? "" : FormatSummaryText(summary);
   const auto uavs = SummarizeUavs(store.UavMetrics(campaign_id));
   if (!uavs.empty())
     out += "\nper UAV:\n" + FormatUavSummaryText(uavs);
@@ -117,6 +132,10 @@ std::string ResultsTables(ResultsReader& store, const std::string& campaign_id) 
   if (!optimality.empty())
     out += "\noptimality (each placement's reward / the oracle's):\n" +
            FormatOptimalityText(optimality);
+  if (!tracks.empty())
+    out += std::string(out.empty() ? "" : "\n") +
+           "track runs (means over the RngRuns of each run's time mean and P5):\n" +
+           FormatTrackSummaryText(tracks);
   return out;
 }
 

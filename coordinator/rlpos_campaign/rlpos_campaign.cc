@@ -2,7 +2,7 @@
 //   run CAMPAIGN.json [--workers N] [--db FILE]   embedded coordinator + N workers (loopback)
 //   submit CAMPAIGN.json                          to a running rlpos-coordinator (DDS)
 //   status [ID] [--watch] [--db FILE]             jobs by state, workers, progress, ETA
-//   results ID [--format table|csv|json] [--per-uav|--optimality] [--db FILE]
+//   results ID [--format table|csv|json] [--per-uav|--optimality|--track] [--db FILE]
 //   report ID --out DIR [--db FILE]
 //   cancel ID | retry ID                          via the coordinator (DDS)
 //   serve [--db FILE] [--listen ADDR:PORT] [--token-file F]   the campaign page (read-only)
@@ -36,7 +36,7 @@ struct CommandLine {
   std::string db = "results/rlpos.db";
   RunOptions run_options;
   std::string campaign_file, campaign_id, format = "table", out_dir, artifacts_out;
-  bool use_cache = true, watch = false, per_uav = false, optimality = false;
+  bool use_cache = true, watch = false, per_uav = false, optimality = false, track = false;
   double period_s = 2;
   DdsOptions dds;
   double timeout_s = 10;
@@ -106,6 +106,12 @@ void AddReadCommands(CLI::App& app, CommandLine& cli) {
       ->add_flag("--optimality", cli.optimality,
                  "rl's reward over the oracle's per algorithm and UAV count (also in the table)")
       ->excludes("--per-uav");
+  results
+      ->add_flag("--track", cli.track,
+                 "The track runs: per scenario and positioner, each metric's mean over the "
+                 "RngRuns (also in the table)")
+      ->excludes("--per-uav")
+      ->excludes("--optimality");
   AddDbOption(results, cli.db);
 
   auto* report = app.add_subcommand("report", "Write CSV, Markdown and PNG plots of a campaign");
@@ -183,7 +189,11 @@ int RunCommand(CommandLine& cli) {
   if (cli.status->parsed())
     return ShowStatus(cli.db, cli.campaign_id, cli.watch, cli.period_s);
   if (cli.results->parsed())
-    return ShowResults(cli.db, cli.campaign_id, cli.format, cli.per_uav, cli.optimality);
+    return ShowResults(cli.db, cli.campaign_id, cli.format,
+                       cli.track        ? ResultsView::kTrack
+                       : cli.optimality ? ResultsView::kOptimality
+                       : cli.per_uav    ? ResultsView::kPerUav
+                                        : ResultsView::kSummary);
   if (cli.report->parsed())
     return WriteCampaignReport(cli.db, cli.campaign_id, cli.out_dir);
   if (cli.artifacts->parsed())

@@ -14,8 +14,10 @@ int KindRank(JobKind kind) {
       return 1;
     case JobKind::kEval:
       return 2;
+    case JobKind::kTrack:
+      return 3;
   }
-  return 3;
+  return 4;
 }
 
 struct CampaignQueue {

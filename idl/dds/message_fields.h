@@ -17,7 +17,8 @@ namespace rlpos::codec {
 // The C++ enums are the IDL's, value for value.
 static_assert(static_cast<int>(JobKind::kTrain) == rlpos_msg_JOB_TRAIN &&
               static_cast<int>(JobKind::kPosition) == rlpos_msg_JOB_POSITION &&
-              static_cast<int>(JobKind::kEval) == rlpos_msg_JOB_EVAL);
+              static_cast<int>(JobKind::kEval) == rlpos_msg_JOB_EVAL &&
+              static_cast<int>(JobKind::kTrack) == rlpos_msg_JOB_TRACK);
 static_assert(static_cast<int>(msg::JobState::kStarted) == rlpos_msg_JOB_STARTED &&
               static_cast<int>(msg::JobState::kProgress) == rlpos_msg_JOB_PROGRESS &&
               static_cast<int>(msg::JobState::kSucceeded) == rlpos_msg_JOB_SUCCEEDED &&
@@ -29,16 +30,22 @@ static_assert(static_cast<int>(msg::RequestKind::kSubmit) == rlpos_msg_REQUEST_S
 // JobParams' texts that travel as enums, indexed by the IDL's values: the names of
 // common/scenario/names.h, in the IDL's order.
 constexpr std::array<const char*, 2> kFidelities{"analytic", "packet"};
-// "rl": a named policy's position job (its policy travels with it).
-constexpr std::array<const char*, 5> kPositioners{"", "baseline", "centroid", "oracle", "rl"};
+// "rl": a named policy's position job (its policy travels with it). The tracking ones: track
+// jobs.
+constexpr std::array<const char*, 7> kPositioners{"",   "baseline",     "centroid",      "oracle",
+                                                  "rl", "oracle-track", "centroid-track"};
 static_assert(rlpos_msg_FIDELITY_PACKET == 1 && rlpos_msg_POSITIONER_ORACLE == 3 &&
-              rlpos_msg_POSITIONER_RL == 4);
+              rlpos_msg_POSITIONER_RL == 4 && rlpos_msg_POSITIONER_ORACLE_TRACK == 5 &&
+              rlpos_msg_POSITIONER_CENTROID_TRACK == 6);
 static_assert(kFidelities.size() == rlpos::kFidelities.size() &&
               kFidelities[0] == rlpos::kFidelities[0] && kFidelities[1] == rlpos::kFidelities[1]);
-static_assert(kPositioners.size() == rlpos::kPlacingPositioners.size() + 2 &&
+static_assert(kPositioners.size() ==
+                  rlpos::kPlacingPositioners.size() + 2 + rlpos::kTrackingPositioners.size() &&
               kPositioners[1] == rlpos::kPlacingPositioners[0] &&
               kPositioners[2] == rlpos::kPlacingPositioners[1] &&
-              kPositioners[3] == rlpos::kPlacingPositioners[2]);
+              kPositioners[3] == rlpos::kPlacingPositioners[2] &&
+              kPositioners[5] == rlpos::kTrackingPositioners[0] &&
+              kPositioners[6] == rlpos::kTrackingPositioners[1]);
 
 template <typename M>
 struct Message;
@@ -75,7 +82,7 @@ struct Message<msg::JobAssignment> {
     io.Value(order.attempt, c.attempt);
     io.Text(order.campaign_id, c.campaign_id, "campaign_id");
     io.Value(order.timeout_s, c.timeout_s);
-    io.Enum(p.kind, c.kind, rlpos_msg_JOB_EVAL, "kind");
+    io.Enum(p.kind, c.kind, rlpos_msg_JOB_TRACK, "kind");
     io.Text(p.scenario, c.scenario, "scenario");
     io.Octets(order.scenario_document, c.scenario_document, wire::kMaxScenarioDocument,
               "scenario_document");
@@ -85,8 +92,11 @@ struct Message<msg::JobAssignment> {
                   io.Text(o.value, c_o.value, "override value");
                 });
     io.Optional(p.train_seed, c.has_train_seed, c.train_seed);
-    // Each kind carries only its own parameters: a fidelity for train, an rng run for eval.
-    io.NamedEnum(p.fidelity, c.fidelity, kFidelities, "fidelity", p.kind == JobKind::kTrain);
+    // Each kind carries only its own parameters: a fidelity for train and track, an rng run
+    // for eval and track.
+    const bool track = p.kind == JobKind::kTrack;
+    io.NamedEnum(p.fidelity, c.fidelity, kFidelities, "fidelity",
+                 p.kind == JobKind::kTrain || track);
     io.OptionalOrZero(p.train_episodes, c.train_episodes);
     io.NamedEnum(p.positioner, c.positioner, kPositioners, "positioner");
     io.OptionalSequence(order.placement, c.positions, wire::kMaxUavPositions, "positions",
@@ -95,7 +105,7 @@ struct Message<msg::JobAssignment> {
                           io.Value(q.y, c_q.y);
                           io.Value(q.z, c_q.z);
                         });
-    io.OptionalWhen(p.rng_run, c.rng_run, p.kind == JobKind::kEval);
+    io.OptionalWhen(p.rng_run, c.rng_run, p.kind == JobKind::kEval || track);
     io.Optional(p.duration_s, c.has_duration, c.duration_s);
     io.Optional(p.warmup_s, c.has_warmup, c.warmup_s);
     io.Text(p.policy_sha256, c.policy_sha256, "policy_sha256");

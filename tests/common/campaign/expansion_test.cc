@@ -181,6 +181,9 @@ TEST(Expansion, EachKindCarriesOnlyItsFields) {
         EXPECT_EQ(p.positioner, "");
         break;
       }
+      case JobKind::kTrack:
+        ADD_FAILURE() << "a campaign without a track section made a track job";
+        break;
     }
   }
 }

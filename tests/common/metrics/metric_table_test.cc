@@ -92,13 +92,15 @@ TEST(MetricTable, SchemaColumnsAreTheTables) {
 
 TEST(MetricTable, TheRewardIsTheOneMetricNewerThanTheHandWrittenSchema) {
   // Version 11 adds the reward to metrics and v_eval_runs (a run's only: a UAV has none);
-  // version 12, hand-written after it, a named policy's hash on jobs; nothing is newer.
+  // versions 12 and 13, hand-written after it, a named policy's hash on jobs and the track
+  // jobs' tables; nothing is newer.
   const std::vector<Migration> derived = DerivedMetricMigrations();
   ASSERT_EQ(derived.size(), 1u);
   EXPECT_EQ(derived[0].version, kLastHandWrittenSchema + 1);
-  EXPECT_EQ(LatestSchemaVersion(), kLastHandWrittenSchema + 2);
-  EXPECT_EQ(std::size(kHandWrittenSchemasAfterMetrics), 1u);
+  EXPECT_EQ(LatestSchemaVersion(), kLastHandWrittenSchema + 3);
+  EXPECT_EQ(std::size(kHandWrittenSchemasAfterMetrics), 2u);
   EXPECT_EQ(kHandWrittenSchemasAfterMetrics[0], kLastHandWrittenSchema + 2);
+  EXPECT_EQ(kHandWrittenSchemasAfterMetrics[1], kLastHandWrittenSchema + 3);
   testing::TempDir dir;
   Database db(dir.File("reward.db"), false, 1000);
   MigrateUpTo(db, LatestSchemaVersion());

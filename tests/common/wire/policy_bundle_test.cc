@@ -183,9 +183,9 @@ TEST(PolicyBundleOrders, OnlyAnRlPositionJobCarriesItsOwnPolicy) {
   EXPECT_EQ(ErrorOfOrder(order), "policy_sha256: an rl position job needs its policy's sha256");
   order = RlPosition(bundle);
   order.params.positioner = "oracle";
-  EXPECT_EQ(ErrorOfOrder(order), "policy_sha256: only an rl position job has one");
+  EXPECT_EQ(ErrorOfOrder(order), "policy_sha256: only an rl position or track job has one");
   order.params.policy_sha256.clear();
-  EXPECT_EQ(ErrorOfOrder(order), "policy: only an rl position job carries one");
+  EXPECT_EQ(ErrorOfOrder(order), "policy: only an rl position or track job carries one");
 }
 
 }  // namespace
