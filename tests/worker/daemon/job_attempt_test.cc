@@ -87,6 +87,13 @@ TEST(SimCommandLine, OneCommandPerKindFromTypedFieldsOnly) {
   EXPECT_EQ(SimCommandLine(OrderOf(JobKind::kEval), sim, folder),
             (std::vector<std::string>{sim, "eval", "--scenario", folder + "/scenario.json",
                                       "--position", "50,35.5,10", "--json", "--no-progress"}));
+  JobOrder track = OrderOf(JobKind::kTrack);
+  track.params.positioner = "oracle-track";
+  track.params.duration_s = 120;
+  EXPECT_EQ(SimCommandLine(track, sim, folder),
+            (std::vector<std::string>{sim, "track", "--scenario", folder + "/scenario.json",
+                                      "--positioner", "oracle-track", "--duration", "120",
+                                      "--RngRun", "3", "--fidelity", "packet", "--json"}));
   JobOrder three = OrderOf(JobKind::kEval);
   three.placement = Placement{{1, 2, 3}, {4, 5, 6}, {7, 8, 9.5}};
   EXPECT_EQ(SimCommandLine(three, sim, folder),
@@ -107,6 +114,15 @@ TEST(SimCommandLine, NoTextOfTheOrderReachesTheCommandLine) {
       EXPECT_EQ(arg.find(';'), std::string::npos) << arg;
     }
   }
+  // A track job spells its positioner and fidelity on the command line: one that is none of
+  // the known names is refused, never copied.
+  order.params.kind = JobKind::kTrack;
+  order.params.duration_s = 10;
+  EXPECT_THROW(SimCommandLine(order, "/bin/sim", "/w"), std::invalid_argument);
+  order.params.positioner = "centroid-track";
+  EXPECT_THROW(SimCommandLine(order, "/bin/sim", "/w"), std::invalid_argument);
+  order.params.fidelity = "analytic";
+  EXPECT_NO_THROW(SimCommandLine(order, "/bin/sim", "/w"));
 }
 
 class TailOfLogTest : public ::testing::Test {

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Track runs in a campaign, at packet level: a "track" section on a generated campus whose UEs
+# walk. A worker killed (SIGKILL) in the middle of a track run: the job runs again and the
+# campaign completes. The same campaign run again into another store, without the result cache,
+# gives the same series, interval by interval, the retried run's included. `results --track`
+# has one row per positioner, averaged over the RngRuns.
+source "$(dirname "$0")/lib.sh" "$1" "$2"
+SIM=$BIN/rlpos-sim
+DB=$WORK/rlpos.db
+"$SIM" generate --seed 4 --style campus --mobility random_waypoint --out "$WORK/walk.json" \
+  || fail "generate"
+cat >"$WORK/track.json" <<'JSON'
+{
+  "name": "track-e2e",
+  "scenarios": [{"file": "walk.json", "set": ["env.step=10", "env.decision_interval=0.5"]}],
+  "rng_runs": [1, 2],
+  "positioners": [],
+  "track": {"positioners": ["centroid", "oracle-track"], "duration": 3, "fidelity": "packet"},
+  "retries": 2,
+  "job_timeout_s": 300
+}
+JSON
+start_run "$WORK/track.json"
+running_on_w0() {
+  [ -f "$DB" ] && [ "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE state = 'running'
+    AND kind = 'track' AND worker_id = '$TAG-w0'" 2>/dev/null)" = 1 ]
+}
+wait_until 240 running_on_w0 || fail "no track job ever ran on worker w0"
+JOB=$(sql "$DB" "SELECT id FROM jobs WHERE state = 'running' AND worker_id = '$TAG-w0'")
+W0=$(pgrep -f -- "rlpos-worker --id $TAG-w0 ") || fail "no process for worker w0"
+sim_running() { pgrep -P "$W0" -f -- "rlpos-sim track" >/dev/null; }
+wait_until 60 sim_running || fail "the track run never started on w0"
+pkill -KILL -f -- "rlpos-worker --id $TAG-w0 " || fail "could not kill worker w0"
+wait "$RUN" || { cat "$WORK/err.txt" >&2; fail "run exited non-zero"; }
+
+expect_complete "$DB" 4
+expect_eq "attempt of the killed job" "$(sql "$DB" "SELECT attempt FROM jobs WHERE id = '$JOB'")" 2
+expect_eq "track runs, intervals" "$(sql "$DB" "SELECT COUNT(*), SUM(intervals) FROM track_runs")" \
+  "4|24"
+expect_eq "intervals stored" "$(sql "$DB" "SELECT COUNT(*) FROM track_intervals")" 24
+# The warm-up (1 s) leaves 4 of the 6 half-second intervals scored.
+expect_eq "scored intervals per run" "$(sql "$DB" \
+  "SELECT DISTINCT scored_intervals FROM track_runs")" 4
+
+SERIES="SELECT positioner, rng_run, interval, time_s, scored, reward, throughput_mbps, delay_ms,
+  los_share, demands_met_share, positions_json FROM v_track_intervals
+  ORDER BY positioner, rng_run, interval"
+"$CAMPAIGN" run "$WORK/track.json" --workers 2 --db "$WORK/again.db" --tag "$TAG-again" \
+  --no-progress --no-cache >"$WORK/again.out" 2>"$WORK/again.err" \
+  || { cat "$WORK/again.err" >&2; fail "the second run failed"; }
+[ "$(sql "$DB" "$SERIES")" = "$(sql "$WORK/again.db" "$SERIES")" ] \
+  || fail "the same campaign gave other series (the killed job's retry included)"
+expect_eq "cached results in the second store" "$(sql "$WORK/again.db" \
+  "SELECT COUNT(*) FROM jobs WHERE cached_from IS NOT NULL")" 0
+
+ID=$(sql "$DB" "SELECT id FROM campaigns")
+"$CAMPAIGN" results "$ID" --db "$DB" --track --format json >"$WORK/results.json" \
+  || fail "results --track"
+expect_eq "results --track rows" "$(python3 -c "
+import json, sys
+rows = json.load(open(sys.argv[1]))
+print([(r['positioner'], r['runs'], r['fidelity']) for r in rows])
+" "$WORK/results.json")" "[('centroid', 2, 'packet'), ('oracle-track', 2, 'packet')]"
+# The mean over the RngRuns is the runs' own, as stored.
+expect_eq "oracle-track's mean reward" "$(python3 -c "
+import json, sys
+print(round([r for r in json.load(open(sys.argv[1])) if r['positioner'] == 'oracle-track'][0]
+            ['mean_reward'], 9))
+" "$WORK/results.json")" "$(sql "$DB" "SELECT ROUND(AVG(mean_reward), 9) FROM track_runs
+  WHERE label = 'oracle-track'")"
+echo "ok: track runs at packet level in a campaign, a killed one retried, the same series twice"
