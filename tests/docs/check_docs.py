@@ -18,6 +18,7 @@ import sys
 # name of a generated block -> the command (program in BIN_DIR, then its arguments).
 GENERATORS = {
     'metrics': ['rlpos-sim', 'describe', 'metrics'],
+    'track-metrics': ['rlpos-sim', 'describe', 'track-metrics'],
 }
 # The exit codes' one declaration: the ExitCode enum of rlpos-campaign. The docs' table explains
 # each code at more length, so only its set of codes is checked against the enum.

@@ -1,8 +1,10 @@
 #pragma once
-// rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]: the tables that mirror
-// the code, printed as Markdown from their one declaration (common/metrics/eval_metrics.h,
-// common/scenario/*_hyperparameters.h). The docs hold this output (docs/scenarios.md between
-// its "GENERATED metrics" markers, docs/hyperparameters.md), and tests check that they still do.
+// rlpos-sim describe metrics | track-metrics | hyperparameters [--algorithm dqn|ppo|sac]: the
+// tables that mirror the code, printed as Markdown from their one declaration
+// (common/metrics/eval_metrics.h, track_metrics.h, common/scenario/*_hyperparameters.h). The docs
+// hold this output (docs/scenarios.md between its "GENERATED metrics" markers, docs/campaigns.md
+// between its "GENERATED track-metrics" ones, docs/hyperparameters.md), and tests check that
+// they still do.
 #include <CLI/CLI.hpp>
 #include <string>
 
@@ -11,6 +13,7 @@ namespace rlpos::sim {
 struct DescribeCommand {
   CLI::App* command = nullptr;
   CLI::App* metrics = nullptr;
+  CLI::App* track_metrics = nullptr;
   CLI::App* hyperparameters = nullptr;
   std::string algorithm;  // hyperparameters: dqn|ppo|sac; empty: every algorithm
 };
