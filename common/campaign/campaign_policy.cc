@@ -73,9 +73,14 @@ PolicyFacts CheckPolicyFiles(const PolicyBundle& bundle, const std::string& fold
 
 // A policy for any scenario flies in the campaign's scenario with its own env and agent: the
 // scenario may restate them, not change them, and must have a UAV count it was trained for.
-std::optional<Contradiction> GeneralMisfit(const PolicyFacts& facts, const CampaignScenario& s) {
-  const json stated = StatedDocument(s);
+// `own_interval`: the scenario keeps its env.decision_interval (a track run asks the policy
+// that often).
+std::optional<Contradiction> GeneralMisfit(const PolicyFacts& facts, const CampaignScenario& s,
+                                           bool own_interval = false) {
+  json stated = StatedDocument(s);
   Scenario target = ParseScenario(stated);
+  if (own_interval && stated.contains("env") && stated["env"].is_object())
+    stated["env"].erase("decision_interval");
   const int uavs = static_cast<int>(target.uavs.size());
   if (uavs < facts.scope.min_uavs || uavs > facts.scope.max_uavs) {
     return Contradiction{"/uavs", std::to_string(uavs) + " UAVs in the scenario, " +
@@ -88,7 +93,8 @@ std::optional<Contradiction> GeneralMisfit(const PolicyFacts& facts, const Campa
 }
 
 CampaignPolicy ReadPolicyEntry(const json& v, const std::string& path, const PolicySource& source,
-                               const std::vector<CampaignScenario>& scenarios) {
+                               const std::vector<CampaignScenario>& scenarios,
+                               bool tracked = false) {
   ObjectReader outer(v, path);
   const json* rl = outer.Child("rl");
   outer.Finish();  // an unknown key, misspelt "rl" included, is named here
@@ -122,9 +128,17 @@ CampaignPolicy ReadPolicyEntry(const json& v, const std::string& path, const Pol
   policy.bundle = source(policy.folder, where);
   const PolicyFacts facts = CheckPolicyFiles(policy.bundle, policy.folder, where);
   const Scenario& trained = facts.trained;
+  if (tracked && (!facts.scope.general || policy.bundle.format != PolicyFormat::kTrained)) {
+    throw ConfigError(where, "policy \"" + policy.folder +
+                                 "\" is not a policy for any scenario of the trained format "
+                                 "(rlpos-sim train --generated): a track run flies it in the "
+                                 "scenario of each moment");
+  }
+  policy.placed = !tracked;
+  policy.tracked = tracked;
   for (std::size_t i = 0; i < scenarios.size(); ++i) {
     const CampaignScenario& s = scenarios[i];
-    const auto c = facts.scope.general ? GeneralMisfit(facts, s)
+    const auto c = facts.scope.general ? GeneralMisfit(facts, s, tracked)
                                        : FirstContradiction(trained, StatedDocument(s));
     if (c) {
       throw ConfigError(where, "policy \"" + policy.folder + "\" (trained on " + trained.name +
@@ -159,6 +173,34 @@ std::vector<CampaignPolicy> ReadPolicies(const json& v, const std::string& path,
     policies.push_back(std::move(policy));
   }
   return policies;
+}
+
+void ReadTrackPolicies(const json& v, const std::string& path, const PolicySource& source,
+                       const std::vector<CampaignScenario>& scenarios,
+                       std::vector<CampaignPolicy>& policies) {
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!v[i].is_object())
+      continue;
+    const std::string item_path = JoinPath(path, i);
+    CampaignPolicy policy = ReadPolicyEntry(v[i], item_path, source, scenarios, true);
+    bool merged = false;
+    for (auto& other : policies) {
+      if (other.name != policy.name)
+        continue;
+      if (other.tracked || other.bundle.sha256 != policy.bundle.sha256) {
+        throw ConfigError(item_path, "policy name \"" + policy.name +
+                                         "\" is already used; give another with \"name\"");
+      }
+      other.tracked = merged = true;
+    }
+    if (merged)
+      continue;
+    if (policies.size() == kMaxCampaignPolicies) {
+      throw ConfigError(item_path,
+                        "more than " + std::to_string(kMaxCampaignPolicies) + " named policies");
+    }
+    policies.push_back(std::move(policy));
+  }
 }
 
 std::string PolicyLabel(const std::string& name) {

@@ -18,4 +18,13 @@ std::vector<CampaignPolicy> ReadPolicies(const nlohmann::json& v, const std::str
                                          const PolicySource& source,
                                          const std::vector<CampaignScenario>& scenarios);
 
+// The objects of "track"'s positioners list `v` at `path`, added to `policies` (marked tracked;
+// a folder listed in both lists is one policy, placed and tracked). Each must be a policy for
+// any scenario in the trained format (track flies it from where the UAVs are at every
+// decision), and fit every scenario but for env.decision_interval, which a track run sets.
+// Throws ConfigError at the entry.
+void ReadTrackPolicies(const nlohmann::json& v, const std::string& path, const PolicySource& source,
+                       const std::vector<CampaignScenario>& scenarios,
+                       std::vector<CampaignPolicy>& policies);
+
 }  // namespace rlpos

@@ -189,15 +189,15 @@ TrackSettings ReadTrack(const json& v) {
   if (!positioners)
     throw ConfigError("/track/positioners", "is required (for example [\"oracle-track\"])");
   for (std::size_t i = 0; i < positioners->size() && positioners->is_array(); ++i) {
-    const json& p = (*positioners)[i];
-    if ((p.is_string() && p == "rl") || (p.is_object() && p.contains("rl"))) {
+    if ((*positioners)[i] == "rl") {
       throw ConfigError(JoinPath("/track/positioners", i),
-                        "rl is not supported in a campaign's track section yet; fly a policy "
-                        "with rlpos-sim track --positioner rl --policy DIR");
+                        "rl in a track section flies a policy for any scenario: "
+                        "{\"rl\": {\"policy\": \"FOLDER\"}}");
     }
   }
+  // Named policies ({"rl": {...}}) are read with the scenarios (ReadTrackPolicies).
   track.positioners = ReadCanonicalList(*positioners, "/track/positioners", TrackPositionerNames(),
-                                        "track positioner");
+                                        "track positioner", true);
   if (!r.Has("duration"))
     throw ConfigError("/track/duration", "is required (s of each run)");
   track.duration = r.Number("duration", 0, Positive());
@@ -314,6 +314,13 @@ const std::vector<std::string>& TrackPositionerNames() {
   return all;
 }
 
+bool CampaignSpec::Tracks() const {
+  if (!track.positioners.empty())
+    return true;
+  return std::any_of(policies.begin(), policies.end(),
+                     [](const CampaignPolicy& p) { return p.tracked; });
+}
+
 bool CampaignSpec::Uses(const std::string& positioner) const {
   return std::find(positioners.begin(), positioners.end(), positioner) != positioners.end();
 }
@@ -369,7 +376,8 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source,
     spec.train = ReadTrain(*train);
   if (const json* eval = r.Child("eval"))
     spec.eval = ReadEval(*eval);
-  if (const json* track = r.Child("track"))
+  const json* track = r.Child("track");
+  if (track)
     spec.track = ReadTrack(*track);
 
   const json* scenarios = r.Child("scenarios");
@@ -397,8 +405,7 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source,
   spec.rng_runs = ReadRngRuns(*runs, "/rng_runs");
 
   const json* positioners = r.Child("positioners");
-  if (positioners && positioners->is_array() && positioners->empty() &&
-      !spec.track.positioners.empty()) {
+  if (positioners && positioners->is_array() && positioners->empty() && track) {
     // [] with a track section: a campaign of track runs only.
   } else if (positioners) {
     spec.positioners =
@@ -409,8 +416,11 @@ CampaignSpec ParseCampaign(const json& document, const ScenarioSource& source,
   }
   spec.retries = static_cast<int>(r.Integer("retries", spec.retries, 0, 100));
   spec.job_timeout_s = r.Number("job_timeout_s", spec.job_timeout_s, Positive());
+  if (track)
+    ReadTrackPolicies((*track)["positioners"], "/track/positioners", policies, spec.scenarios,
+                      spec.policies);
   r.Finish();
-  if (!spec.track.positioners.empty()) {
+  if (spec.Tracks()) {
     for (std::size_t i = 0; i < spec.scenarios.size(); ++i)
       CheckTrackFits(spec.track, spec.scenarios[i], JoinPath("/scenarios", i));
   }
@@ -457,7 +467,7 @@ json ToJson(const CampaignSpec& spec) {
               {"eval", eval},
               {"retries", spec.retries},
               {"job_timeout_s", spec.job_timeout_s}};
-  if (!spec.track.positioners.empty()) {  // absent otherwise: older campaigns keep their ids
+  if (spec.Tracks()) {  // absent otherwise: older campaigns keep their ids
     out["track"] = {{"positioners", spec.track.positioners},
                     {"duration", spec.track.duration},
                     {"fidelity", spec.track.fidelity}};
@@ -467,10 +477,15 @@ json ToJson(const CampaignSpec& spec) {
   if (!spec.policies.empty()) {
     json policies = json::array();
     for (const auto& p : spec.policies) {
-      policies.push_back({{"folder", p.folder},
-                          {"name", p.name},
-                          {"format", ToString(p.bundle.format)},
-                          {"sha256", p.bundle.sha256}});
+      json policy = {{"folder", p.folder},
+                     {"name", p.name},
+                     {"format", ToString(p.bundle.format)},
+                     {"sha256", p.bundle.sha256}};
+      if (p.tracked)  // the defaults absent: older campaigns keep their ids
+        policy["track"] = true;
+      if (!p.placed)
+        policy["placed"] = false;
+      policies.push_back(policy);
     }
     out["policies"] = policies;
   }

@@ -28,12 +28,15 @@ struct CampaignScenario {
 };
 
 // An rl positioner that names a policy folder instead of training one:
-// {"rl": {"policy": "policies/p1", "name": "p1"}} in "positioners". Its evals are labelled
-// PolicyLabel(name); the folder travels packed, as its bundle.
+// {"rl": {"policy": "policies/p1", "name": "p1"}} in "positioners" (or in "track"'s, a policy
+// for any scenario flown online). Its evals and track runs are labelled PolicyLabel(name); the
+// folder travels packed, as its bundle.
 struct CampaignPolicy {
-  std::string folder;   // as written in the campaign
-  std::string name;     // "name", or the folder's last component
-  PolicyBundle bundle;  // its files and their sha256
+  std::string folder;    // as written in the campaign
+  std::string name;      // "name", or the folder's last component
+  PolicyBundle bundle;   // its files and their sha256
+  bool placed = true;    // listed in "positioners": a position job and its evals
+  bool tracked = false;  // listed in "track"'s positioners: track runs that fly it online
 };
 
 // "rl+<name>": a named policy's eval label, apart from trained rl's "rl" and "rl@...".
@@ -61,7 +64,8 @@ constexpr int kMaxTrackIntervals = 600;
 // positioner and RngRun. "track": {"positioners": [...], "duration": D, "fidelity": F}.
 struct TrackSettings {
   // Held (baseline, centroid, oracle) and tracking (oracle-track, centroid-track) ones, in
-  // TrackPositionerNames() order. Empty: no track section, no track jobs.
+  // TrackPositionerNames() order; named policies are CampaignSpec::policies marked tracked.
+  // Neither: no track section, no track jobs.
   std::vector<std::string> positioners;
   double duration = 0.0;  // s of each run
   std::string fidelity = "analytic";
@@ -75,7 +79,7 @@ struct CampaignSpec {
   std::vector<CampaignScenario> scenarios;
   std::vector<std::uint64_t> rng_runs;   // sorted, unique
   std::vector<std::string> positioners;  // canonical order, unique
-  std::vector<CampaignPolicy> policies;  // named policies, as listed
+  std::vector<CampaignPolicy> policies;  // named policies, as listed ("positioners", "track")
   TrainSettings train;
   EvalSettings eval;
   TrackSettings track;
@@ -83,6 +87,8 @@ struct CampaignSpec {
   double job_timeout_s = 600.0;  // a running job older than this is failed
 
   bool Uses(const std::string& positioner) const;
+  // True when the campaign has a track section (track positioners or tracked policies).
+  bool Tracks() const;
   // True when train jobs are needed ("rl" or "offsets" selected).
   bool NeedsTraining() const;
 };

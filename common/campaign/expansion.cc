@@ -1,5 +1,6 @@
 #include "common/campaign/expansion.h"
 
+#include <algorithm>
 #include <map>
 
 #include "common/campaign/campaign_id.h"
@@ -109,7 +110,9 @@ bool NeedsTraining(const CampaignSpec& spec, const CampaignScenario& s) {
 // Position jobs of a scenario, one per selected positioner that gives a position and one per
 // named policy.
 std::size_t PositionJobs(const CampaignSpec& spec) {
-  std::size_t producers = spec.policies.size();
+  std::size_t producers =
+      static_cast<std::size_t>(std::count_if(spec.policies.begin(), spec.policies.end(),
+                                             [](const CampaignPolicy& p) { return p.placed; }));
   for (std::string_view positioner : kPlacingPositioners)
     producers += spec.Uses(std::string(positioner)) ? 1 : 0;
   return producers;
@@ -149,6 +152,15 @@ void CheckJobSettings(const CampaignSpec& spec) {
     for (const std::string& positioner : spec.track.positioners) {
       for (const std::uint64_t run : spec.rng_runs)
         add(TrackParams(spec, s, positioner, run));
+    }
+    for (const CampaignPolicy& policy : spec.policies) {
+      if (!policy.tracked)
+        continue;
+      for (const std::uint64_t run : spec.rng_runs) {
+        JobParams p = TrackParams(spec, s, "rl", run);
+        p.policy_sha256 = policy.bundle.sha256;
+        add(p);
+      }
     }
     if (const auto c = FindContradiction(Overrides(s), fixed)) {
       const std::size_t k = c->override_index;
@@ -192,7 +204,10 @@ std::size_t CampaignPlan::JobCount() const {
     const std::size_t labels = producers + trains * ((spec.Uses("rl") ? 1 : 0) +
                                                      (UsesOffsets(spec, s) ? kOffsetCount : 0));
     count += producers + trains + labels * spec.rng_runs.size();
-    count += spec.track.positioners.size() * spec.rng_runs.size();
+    const auto tracked =
+        static_cast<std::size_t>(std::count_if(spec.policies.begin(), spec.policies.end(),
+                                               [](const CampaignPolicy& p) { return p.tracked; }));
+    count += (spec.track.positioners.size() + tracked) * spec.rng_runs.size();
   }
   return count;
 }
@@ -227,6 +242,8 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
 
     // A named policy places the UAVs as a position job: `position --positioner rl --policy`.
     for (const CampaignPolicy& policy : spec.policies) {
+      if (!policy.placed)
+        continue;
       Job job;
       job.label = PolicyLabel(policy.name);
       job.key = "position/" + name + "/" + job.label;
@@ -282,6 +299,18 @@ void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
         job.key = "track/" + name + "/" + positioner + "/run" + std::to_string(run);
         job.label = positioner;
         job.params = TrackParams(spec, s, positioner, run);
+        add(std::move(job));
+      }
+    }
+    for (const CampaignPolicy& policy : spec.policies) {
+      if (!policy.tracked)
+        continue;
+      for (const std::uint64_t run : spec.rng_runs) {
+        Job job;
+        job.label = PolicyLabel(policy.name);
+        job.key = "track/" + name + "/" + job.label + "/run" + std::to_string(run);
+        job.params = TrackParams(spec, s, "rl", run);
+        job.params.policy_sha256 = policy.bundle.sha256;
         add(std::move(job));
       }
     }
