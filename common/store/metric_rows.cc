@@ -94,13 +94,7 @@ void InsertEvalMetrics(Database& db, const EvalRowKey& key, const EvalResult& ev
   }
 }
 
-// The rows of campaign ?1 of a view `v`, scenarios in campaign order (their first job), not by
-// name; then positioner and run. The first jobs are found once, in a join: a subquery in the
-// ORDER BY ran once per row, over the campaign's jobs (minutes at 10k jobs).
-const std::string kOfCampaignInOrder =
-    " v JOIN (SELECT scenario AS order_scenario, MIN(seq) AS order_seq FROM jobs "
-    "WHERE campaign_id = ?1 GROUP BY scenario) o ON o.order_scenario = v.scenario "
-    "WHERE v.campaign_id = ?1 ORDER BY o.order_seq, positioner, rng_run";
+const std::string kOfCampaignInOrder = OfCampaignInOrder();
 
 std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_id) {
   Statement select = db.Prepare("SELECT job_id, scenario, positioner, rng_run, x, y, z" +
@@ -143,6 +137,14 @@ std::vector<UavMetricRow> ReadUavMetricRows(Database& db, const std::string& cam
     out.push_back(std::move(m));
   }
   return out;
+}
+
+// The first jobs are found once, in a join: a subquery in the ORDER BY ran once per row, over
+// the campaign's jobs (minutes at 10k jobs).
+std::string OfCampaignInOrder() {
+  return " v JOIN (SELECT scenario AS order_scenario, MIN(seq) AS order_seq FROM jobs "
+         "WHERE campaign_id = ?1 GROUP BY scenario) o ON o.order_scenario = v.scenario "
+         "WHERE v.campaign_id = ?1 ORDER BY o.order_seq, positioner, rng_run";
 }
 
 }  // namespace rlpos

@@ -36,6 +36,11 @@ struct EvalRowKey {
   std::int64_t rng_run = 0;
 };
 
+// " v JOIN ... ORDER BY ...": the rows of campaign ?1 of a view named `v` (with campaign_id,
+// scenario, positioner and rng_run), scenarios in campaign order (their first job), not by name;
+// then positioner and run.
+std::string OfCampaignInOrder();
+
 // Inserts the run's row into metrics and one row per UAV into uav_metrics.
 void InsertEvalMetrics(Database& db, const EvalRowKey& key, const EvalResult& eval);
 

@@ -84,10 +84,7 @@ std::vector<TrackRunRow> ReadTrackRunRows(Database& db, const std::string& campa
   Statement select = db.Prepare(
       "SELECT job_id, scenario, positioner, rng_run, fidelity, duration_s, decision_interval_s, "
       "intervals, scored_intervals" +
-      MetricColumns() +
-      " FROM v_track_runs v JOIN (SELECT scenario AS order_scenario, MIN(seq) AS order_seq FROM "
-      "jobs WHERE campaign_id = ?1 GROUP BY scenario) o ON o.order_scenario = v.scenario WHERE "
-      "v.campaign_id = ?1 ORDER BY o.order_seq, positioner, rng_run");
+      MetricColumns() + " FROM v_track_runs" + OfCampaignInOrder());
   select.Bind(campaign_id);
   std::vector<TrackRunRow> out;
   while (select.Step()) {
