@@ -11,6 +11,7 @@
 #include "coordinator/reporting/report_markdown.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/scenario_maps.h"
+#include "coordinator/reporting/track_summary.h"
 #include "coordinator/reporting/uav_summary.h"
 
 namespace rlpos {
@@ -46,6 +47,7 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
   const std::vector<MetricRow> rows = store.Metrics(campaign_id);
   const std::vector<PositionerSummary> summary = SummarizeRuns(rows);
   const std::vector<UavSummary> uavs = SummarizeUavs(store.UavMetrics(campaign_id));
+  const std::vector<TrackSummary> tracks = SummarizeTracks(store.TrackRuns(campaign_id));
   const std::vector<CurvePoint> throughput = ThroughputCcdf(rows);
   const std::vector<CurvePoint> delay = DelayCdf(rows);
   const std::vector<OptimalityRow> optimality = store.Optimality(campaign_id);
@@ -62,8 +64,10 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
   write("summary.csv", FormatSummaryCsv(summary));
   if (!uavs.empty())
     write("uav_summary.csv", FormatUavSummaryCsv(uavs));
-  std::string markdown =
-      FormatReportMarkdown(progress, summary, uavs) + FormatOptimalitySection(optimality);
+  if (!tracks.empty())
+    write("track_summary.csv", FormatTrackSummaryCsv(tracks));
+  std::string markdown = FormatReportMarkdown(progress, summary, uavs) +
+                         FormatOptimalitySection(optimality) + FormatTrackSummaryMarkdown(tracks);
   const auto builds = store.CampaignBuilds(campaign_id);
   if (builds.size() > 1) {
     std::string list;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "common/campaign/campaign_spec.h"
@@ -58,17 +59,36 @@ std::size_t MetricIndex(const char* key) {
   return kTrackMetrics.size();
 }
 
+std::vector<TableColumn> TableColumns() {
+  std::vector<TableColumn> columns{{"scenario", true}, {"positioner", true}, {"runs", false}};
+  for (const Shown& shown : kShown)
+    columns.push_back({shown.title, false});
+  return columns;
+}
+
+std::vector<std::vector<std::string>> TableRows(const std::vector<TrackSummary>& summary) {
+  std::vector<std::vector<std::string>> rows;
+  for (const TrackSummary& s : summary) {
+    std::vector<std::string> row{s.scenario, s.positioner, std::to_string(s.runs)};
+    for (const Shown& shown : kShown)
+      row.push_back(TableNumber(s.means.at(MetricIndex(shown.key)), shown.decimals));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 }  // namespace
 
 std::vector<TrackSummary> SummarizeTracks(const std::vector<TrackRunRow>& rows) {
   std::vector<std::string> scenarios;
-  using Key = std::pair<std::size_t, std::size_t>;  // scenario order, positioner rank
+  // Scenario order, positioner rank (named policies after the rest), label.
+  using Key = std::tuple<std::size_t, std::size_t, std::string>;
   std::map<Key, std::vector<const TrackRunRow*>> groups;
   for (const TrackRunRow& r : rows) {
     auto found = std::find(scenarios.begin(), scenarios.end(), r.scenario);
     if (found == scenarios.end())
       found = scenarios.insert(scenarios.end(), r.scenario);
-    groups[{static_cast<std::size_t>(found - scenarios.begin()), PositionerRank(r.label)}]
+    groups[{static_cast<std::size_t>(found - scenarios.begin()), PositionerRank(r.label), r.label}]
         .push_back(&r);
   }
   std::vector<TrackSummary> out;
@@ -78,17 +98,18 @@ std::vector<TrackSummary> SummarizeTracks(const std::vector<TrackRunRow>& rows) 
 }
 
 std::string FormatTrackSummaryText(const std::vector<TrackSummary>& summary) {
-  std::vector<TableColumn> columns{{"scenario", true}, {"positioner", true}, {"runs", false}};
-  for (const Shown& shown : kShown)
-    columns.push_back({shown.title, false});
-  std::vector<std::vector<std::string>> rows;
-  for (const TrackSummary& s : summary) {
-    std::vector<std::string> row{s.scenario, s.positioner, std::to_string(s.runs)};
-    for (const Shown& shown : kShown)
-      row.push_back(TableNumber(s.means.at(MetricIndex(shown.key)), shown.decimals));
-    rows.push_back(std::move(row));
-  }
-  return FormatTextTable(columns, rows);
+  return FormatTextTable(TableColumns(), TableRows(summary));
+}
+
+std::string FormatTrackSummaryMarkdown(const std::vector<TrackSummary>& summary) {
+  if (summary.empty())
+    return "";
+  return "\n## Track runs\n\n" + FormatMarkdownTable(TableColumns(), TableRows(summary)) +
+         "\nRuns in which the UEs walk and the UAVs follow: per scenario and positioner, each "
+         "metric's mean over the RngRuns of each run's mean over its scored intervals (P5: the "
+         "5th percentile of the intervals, the run's worst moments). File: `track_summary.csv` "
+         "(every metric, unrounded); per run the view `v_track_runs`, per interval "
+         "`v_track_intervals`.\n";
 }
 
 const std::vector<std::string>& TrackSummaryCsvColumns() {

@@ -27,6 +27,8 @@ std::vector<TrackSummary> SummarizeTracks(const std::vector<TrackRunRow>& rows);
 // A rounded table ("-" for absent); CSV (header TrackSummaryCsvColumns(): scenario, positioner,
 // fidelity, runs and each metric's key, unrounded, empty for absent); JSON (null for absent).
 std::string FormatTrackSummaryText(const std::vector<TrackSummary>& summary);
+// The report's section ("" without track runs): a heading, the table and what it says.
+std::string FormatTrackSummaryMarkdown(const std::vector<TrackSummary>& summary);
 std::string FormatTrackSummaryCsv(const std::vector<TrackSummary>& summary);
 const std::vector<std::string>& TrackSummaryCsvColumns();
 nlohmann::json TrackSummaryToJson(const std::vector<TrackSummary>& summary);

@@ -3,7 +3,7 @@
 # walk. A worker killed (SIGKILL) in the middle of a track run: the job runs again and the
 # campaign completes. The same campaign run again into another store, without the result cache,
 # gives the same series, interval by interval, the retried run's included. `results --track`
-# has one row per positioner, averaged over the RngRuns.
+# and the report have one row per positioner, averaged over the RngRuns.
 source "$(dirname "$0")/lib.sh" "$1" "$2"
 SIM=$BIN/rlpos-sim
 DB=$WORK/rlpos.db
@@ -68,4 +68,9 @@ print(round([r for r in json.load(open(sys.argv[1])) if r['positioner'] == 'orac
             ['mean_reward'], 9))
 " "$WORK/results.json")" "$(sql "$DB" "SELECT ROUND(AVG(mean_reward), 9) FROM track_runs
   WHERE label = 'oracle-track'")"
+# The report lists them: a CSV row per positioner and a section in summary.md.
+"$CAMPAIGN" report "$ID" --db "$DB" --out "$WORK/report" >/dev/null || fail "report"
+expect_eq "report: track_summary.csv rows" "$(tail -n +2 "$WORK/report/track_summary.csv" | cut -d, -f2 | tr '\n' ' ')" \
+  "centroid oracle-track "
+grep -q "^## Track runs" "$WORK/report/summary.md" || fail "summary.md has no track section"
 echo "ok: track runs at packet level in a campaign, a killed one retried, the same series twice"
