@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
-# Track runs in a campaign, at packet level: a "track" section on a generated campus whose UEs
-# walk. A worker killed (SIGKILL) in the middle of a track run: the job runs again and the
+# Track runs in a campaign, at packet level: a "track" section on a generated campus whose four
+# UEs walk. A worker killed (SIGKILL) in the middle of a track run: the job runs again and the
 # campaign completes. The same campaign run again into another store, without the result cache,
 # gives the same series, interval by interval, the retried run's included. `results --track`
 # and the report have one row per positioner, averaged over the RngRuns.
 source "$(dirname "$0")/lib.sh" "$1" "$2"
 SIM=$BIN/rlpos-sim
 DB=$WORK/rlpos.db
-"$SIM" generate --seed 4 --style campus --mobility random_waypoint --out "$WORK/walk.json" \
+"$SIM" generate --seed 4 --style campus --ues 4 --mobility random_waypoint --out "$WORK/walk.json" \
   || fail "generate"
 cat >"$WORK/track.json" <<'JSON'
 {
