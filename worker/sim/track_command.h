@@ -2,7 +2,8 @@
 // rlpos-sim track --scenario S --positioner P [--policy DIR] --duration T --RngRun N
 // [--fidelity analytic|packet] [--json] [--set PATH=VALUE]...: one run in which the UEs walk their
 // trajectories and the UAVs follow the positioner within their speed limits (worker/track),
-// scored every decision interval by the analytic model or by ns-3's packets. rl flies a policy for any scenario
+// scored every decision interval by the analytic model or by ns-3's packets. rl flies a policy for
+// any scenario
 // (--policy) online. Prints the run's means; --json adds the per-interval series.
 #include <CLI/CLI.hpp>
 #include <string>

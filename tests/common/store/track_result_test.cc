@@ -83,24 +83,30 @@ TEST(TrackResult, WhatDoesNotAddUpOrFitIsRefused) {
             "result \"scored_intervals\" is not the number of scored intervals in the series");
   EXPECT_EQ(ErrorOf([](json& r) { r["series"][2]["time"] = 2.0; }),
             "result \"series/2/time\" does not come after the interval before");
-  EXPECT_EQ(ErrorOf([](json& r) { r["series"][1]["positions"].push_back({1, 2, 3}); }),
+  EXPECT_EQ(ErrorOf([](json& r) {
+              r["series"][1]["positions"].push_back({1, 2, 3});
+            }),
             "result \"series/1/positions\" has another number of UAVs");
-  EXPECT_EQ(ErrorOf([](json& r) { r["series"][0]["n_los"] = 5; }).rfind(
-                "result \"series/0/n_los\" is not a number in", 0),
+  EXPECT_EQ(ErrorOf([](json& r) {
+              r["series"][0]["n_los"] = 5;
+            }).rfind("result \"series/0/n_los\" is not a number in", 0),
             0u);
-  EXPECT_EQ(ErrorOf([](json& r) { r["los_share"] = 1.5; }).rfind(
-                "result \"los_share\" is not a number in", 0),
+  EXPECT_EQ(ErrorOf([](json& r) {
+              r["los_share"] = 1.5;
+            }).rfind("result \"los_share\" is not a number in", 0),
             0u);
-  EXPECT_EQ(ErrorOf([](json& r) { r["mean_reward"] = nullptr; }).rfind(
-                "result \"mean_reward\" is not a number in", 0),
+  EXPECT_EQ(ErrorOf([](json& r) {
+              r["mean_reward"] = nullptr;
+            }).rfind("result \"mean_reward\" is not a number in", 0),
             0u);
   EXPECT_EQ(ErrorOf([](json& r) { r.erase("handovers"); }), "result has no \"handovers\"");
   EXPECT_EQ(ErrorOf([](json& r) { r["positioner"] = "teleport"; }),
             "result \"positioner\" is not a known name");
   EXPECT_EQ(ErrorOf([](json& r) { r["intervals"] = 4; }),
             "result \"series\" does not list the run's 4 intervals");
-  EXPECT_EQ(ErrorOf([](json& r) { r["intervals"] = 601; }).rfind(
-                "result \"intervals\" is not an integer in 1..600", 0),
+  EXPECT_EQ(ErrorOf([](json& r) {
+              r["intervals"] = 601;
+            }).rfind("result \"intervals\" is not an integer in 1..600", 0),
             0u);
   EXPECT_EQ(ErrorOf([](json& r) { r["series"][0]["positions"][0][1] = "x"; }),
             "result \"series/0/positions\" holds a coordinate that is not a finite number");
