@@ -6,6 +6,7 @@
 
 #include "common/campaign/campaign_spec.h"
 #include "common/scenario/names.h"
+#include "common/scenario/number_text.h"
 #include "common/stats/descriptive.h"
 
 namespace rlpos {
@@ -36,7 +37,7 @@ double Number(const json& object, const std::string& key, const std::string& whe
   if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < low ||
       v.get<double>() > high) {
     Bad(JoinKey(where, key),
-        "is not a number in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+        "is not a number in [" + FormatNumber(low) + ", " + FormatNumber(high) + "]");
   }
   return v.get<double>();
 }
