@@ -7,10 +7,6 @@
 namespace rlpos {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// JSON has no NaN: an undefined metric (no packet) is written as null.
-nlohmann::json Number(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
-}
 
 nlohmann::json UavToJson(const UavMetrics& u) {
   const Vec3& p = u.uav.position;
@@ -20,7 +16,7 @@ nlohmann::json UavToJson(const UavMetrics& u) {
     if (metric.uav_count) {
       out[metric.uav_key] = u.*metric.uav_count;
     } else if (metric.uav_real) {
-      out[metric.uav_key] = Number(u.*metric.uav_real);
+      out[metric.uav_key] = MetricJson(u.*metric.uav_real);
     }
   }
   return out;
@@ -171,14 +167,14 @@ nlohmann::json ToJson(const RunMetrics& m) {
   for (const auto& u : m.ues) {
     ues.push_back({{"name", u.name},
                    {"los", u.los},
-                   {"snr_db", Number(u.snr_db)},
+                   {"snr_db", MetricJson(u.snr_db)},
                    {"demand_mbps", u.demand_mbps},
                    {"required_mcs", u.demand.required_mcs},
-                   {"min_snr_db", Number(u.demand.min_snr_db)},
+                   {"min_snr_db", MetricJson(u.demand.min_snr_db)},
                    {"demand_met", u.demand.met},
-                   {"throughput_mbps", Number(u.throughput_mbps)},
-                   {"mean_delay_ms", Number(u.mean_delay_ms)},
-                   {"loss_ratio", Number(u.loss_ratio)},
+                   {"throughput_mbps", MetricJson(u.throughput_mbps)},
+                   {"mean_delay_ms", MetricJson(u.mean_delay_ms)},
+                   {"loss_ratio", MetricJson(u.loss_ratio)},
                    {"sent", u.sent},
                    {"received", u.received}});
   }
@@ -188,7 +184,7 @@ nlohmann::json ToJson(const RunMetrics& m) {
                         {"ues", ues}};
   for (const auto& metric : kEvalMetrics) {
     out[metric.key] =
-        metric.IsCount() ? nlohmann::json(m.*metric.run_count) : Number(m.*metric.run_real);
+        metric.IsCount() ? nlohmann::json(m.*metric.run_count) : MetricJson(m.*metric.run_real);
   }
   if (m.uavs.size() > 1) {
     nlohmann::json uavs = nlohmann::json::array();
@@ -199,6 +195,10 @@ nlohmann::json ToJson(const RunMetrics& m) {
       out["ues"][i]["uav"] = m.uavs.at(static_cast<std::size_t>(m.ues[i].uav)).uav.name;
   }
   return out;
+}
+
+nlohmann::json MetricJson(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
 }
 
 }  // namespace rlpos

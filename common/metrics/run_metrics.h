@@ -105,4 +105,7 @@ RunMetrics Summarize(const Vec3& position, MeasurementWindow window, std::uint64
 
 nlohmann::json ToJson(const RunMetrics& metrics);
 
+// A metric's value in JSON, which has no NaN: an undefined one (no packet) is null.
+nlohmann::json MetricJson(double x);
+
 }  // namespace rlpos

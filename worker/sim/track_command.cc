@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/config/config_error.h"
+#include "common/metrics/run_metrics.h"
 #include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/placement_json.h"
@@ -29,11 +30,6 @@ class DecidingTrackPositioner : public TrackPositioner {
  private:
   TrackDecision decide_;
 };
-
-// NaN (no packet received) is null in JSON.
-nlohmann::json JsonNumber(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
 
 std::size_t ScoredIntervals(const TrackResult& r) {
   std::size_t n = 0;
@@ -64,7 +60,7 @@ nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackR
                                {"demands_met", i.demands_met},
                                {"positions", PlacementJson(i.positions)}};
     if (t.fidelity == "packet")
-      interval["mean_delay_ms"] = JsonNumber(i.mean_delay_ms);
+      interval["mean_delay_ms"] = MetricJson(i.mean_delay_ms);
     if (s.uavs.size() > 1)
       interval["serving_uav"] = i.serving;
     series.push_back(interval);
@@ -81,7 +77,7 @@ nlohmann::json ResultJson(const Scenario& s, const TrackCommand& t, const TrackR
                         {"uavs", uavs},
                         {"series", series}};
   for (const TrackMetricDef& m : kTrackMetrics)
-    out[m.key] = JsonNumber(r.metrics.*(m.field));
+    out[m.key] = MetricJson(r.metrics.*(m.field));
   if (t.fidelity == "packet")
     out["warmup"] = s.simulation.warmup;
   if (!t.policy.empty())

@@ -5,7 +5,6 @@
 #include <memory>
 
 #include "common/config/config_error.h"
-#include "common/mobility/ue_trajectories.h"
 #include "common/scenario/number_text.h"
 #include "common/stats/descriptive.h"
 #include "worker/gym/reward.h"
@@ -102,10 +101,11 @@ TrackResult RunTrack(const Scenario& scenario, TrackPositioner& positioner, doub
   const auto reward = MakeReward(s.env.reward);
   const std::size_t k = s.uavs.size();
 
-  // The t = 0 decision comes first: a packet-level network is built with the UAVs there.
+  // The t = 0 decision comes first: a packet-level network is built with the UAVs there. Every
+  // trajectory starts at its UE's position.
   std::vector<Vec3> ues_at_start;
-  for (const UeTrajectory& trajectory : UeTrajectories(s))
-    ues_at_start.push_back(trajectory.PositionAt(0.0));
+  for (const UeSpec& ue : s.ues)
+    ues_at_start.push_back(ue.position);
   Placement now = positioner.Decide(ues_at_start, s.InitialPlacement());
   const std::unique_ptr<TrackScoring> scoring =
       packet ? MakePacketScoring(s, now) : MakeAnalyticScoring(s);
