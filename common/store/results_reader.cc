@@ -113,6 +113,11 @@ std::vector<TrackRunRow> ResultsReader::TrackRuns(const std::string& campaign_id
   return ReadTrackRunRows(*db_, campaign_id);
 }
 
+std::vector<TrackIntervalRecord> ResultsReader::TrackIntervals(const std::string& campaign_id,
+                                                               TrackRunsRead which) {
+  return ReadTrackIntervalRows(*db_, campaign_id, which);
+}
+
 std::vector<OptimalityRow> ResultsReader::Optimality(const std::string& campaign_id) {
   return ReadOptimalityRows(*db_, campaign_id);
 }

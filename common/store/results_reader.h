@@ -36,6 +36,9 @@ class ResultsReader {
   std::vector<UavMetricRow> UavMetrics(const std::string& campaign_id);
   // One row per succeeded track job, by scenario (campaign order), positioner, rng_run.
   std::vector<TrackRunRow> TrackRuns(const std::string& campaign_id);
+  // Their intervals (track_rows.h): every run's, or each scenario and positioner's first run's.
+  std::vector<TrackIntervalRecord> TrackIntervals(const std::string& campaign_id,
+                                                  TrackRunsRead which);
   // rl's reward against the oracle's, per scenario, algorithm and train seed (optimality_rows.h).
   std::vector<OptimalityRow> Optimality(const std::string& campaign_id);
 

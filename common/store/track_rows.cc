@@ -108,4 +108,44 @@ std::vector<TrackRunRow> ReadTrackRunRows(Database& db, const std::string& campa
   return out;
 }
 
+std::vector<TrackIntervalRecord> ReadTrackIntervalRows(Database& db, const std::string& campaign_id,
+                                                       TrackRunsRead which) {
+  const std::string first_run_only =
+      which == TrackRunsRead::kFirstRunOnly
+          ? " AND v.rng_run = (SELECT MIN(f.rng_run) FROM track_runs f WHERE f.campaign_id = ?1 "
+            "AND f.scenario = v.scenario AND f.label = v.positioner)"
+          : "";
+  // OfCampaignInOrder's filter, narrowed to the first run when asked, then by interval.
+  std::string order = OfCampaignInOrder();
+  const std::string where = "WHERE v.campaign_id = ?1";
+  order.insert(order.find(where) + where.size(), first_run_only);
+  Statement select = db.Prepare(
+      "SELECT scenario, positioner, rng_run, interval, time_s, scored, reward, throughput_mbps, "
+      "delay_ms, los_share, demands_met_share, positions_json FROM v_track_intervals" +
+      order + ", interval");
+  select.Bind(campaign_id);
+  std::vector<TrackIntervalRecord> out;
+  while (select.Step()) {
+    TrackIntervalRecord record;
+    record.scenario = select.Text(0);
+    record.label = select.Text(1);
+    record.rng_run = select.Int(2);
+    record.interval = static_cast<int>(select.Int(3));
+    TrackIntervalRow& row = record.row;
+    row.time_s = select.Double(4);
+    row.scored = select.Int(5) != 0;
+    row.reward = select.Double(6);
+    row.throughput_mbps = select.Double(7);
+    row.delay_ms = select.OptionalDouble(8);
+    row.los_share = select.Double(9);
+    row.demands_met_share = select.Double(10);
+    // Written by InsertTrackRun from a checked result: [[x, y, z], ...].
+    for (const auto& p : nlohmann::json::parse(select.Text(11)))
+      row.positions.push_back(
+          {p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>()});
+    out.push_back(std::move(record));
+  }
+  return out;
+}
+
 }  // namespace rlpos

@@ -24,10 +24,26 @@ struct TrackRunRow {
   TrackMetrics metrics;
 };
 
+// One interval of a succeeded track job (view v_track_intervals).
+struct TrackIntervalRecord {
+  std::string scenario, label;  // label: the positioner
+  std::int64_t rng_run = 0;
+  int interval = 0;  // its index in the run
+  TrackIntervalRow row;
+};
+
 // Inserts the run's row and its intervals' (the key's label is the positioner).
 void InsertTrackRun(Database& db, const EvalRowKey& key, const TrackRunResult& run);
 
 // One row per succeeded track job, by scenario (campaign order), positioner, rng_run.
 std::vector<TrackRunRow> ReadTrackRunRows(Database& db, const std::string& campaign_id);
+
+// Which runs' intervals to read: all of them (the report's time series), or only the lowest
+// RngRun of each scenario and positioner (the one run the page's map plays).
+enum class TrackRunsRead { kAll, kFirstRunOnly };
+
+// Their intervals, by scenario (campaign order), positioner, rng_run, then interval.
+std::vector<TrackIntervalRecord> ReadTrackIntervalRows(Database& db, const std::string& campaign_id,
+                                                       TrackRunsRead which);
 
 }  // namespace rlpos

@@ -9,6 +9,7 @@
 #include "common/metrics/track_metrics.h"
 #include "common/store/schema.h"
 #include "common/store/sqlite_db.h"
+#include "common/store/store_error.h"
 #include "tests/support/temp_dir.h"
 
 namespace rlpos {
