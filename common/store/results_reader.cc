@@ -118,6 +118,10 @@ std::vector<TrackIntervalRecord> ResultsReader::TrackIntervals(const std::string
   return ReadTrackIntervalRows(*db_, campaign_id, which);
 }
 
+std::vector<TrackSeriesRow> ResultsReader::TrackSeries(const std::string& campaign_id) {
+  return ReadTrackSeriesRows(*db_, campaign_id);
+}
+
 std::vector<OptimalityRow> ResultsReader::Optimality(const std::string& campaign_id) {
   return ReadOptimalityRows(*db_, campaign_id);
 }

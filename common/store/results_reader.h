@@ -39,6 +39,8 @@ class ResultsReader {
   // Their intervals (track_rows.h): every run's, or each scenario and positioner's first run's.
   std::vector<TrackIntervalRecord> TrackIntervals(const std::string& campaign_id,
                                                   TrackRunsRead which);
+  // Each interval averaged over the runs of its scenario and positioner (track_rows.h).
+  std::vector<TrackSeriesRow> TrackSeries(const std::string& campaign_id);
   // rl's reward against the oracle's, per scenario, algorithm and train seed (optimality_rows.h).
   std::vector<OptimalityRow> Optimality(const std::string& campaign_id);
 

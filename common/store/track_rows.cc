@@ -148,4 +148,35 @@ std::vector<TrackIntervalRecord> ReadTrackIntervalRows(Database& db, const std::
   return out;
 }
 
+std::vector<TrackSeriesRow> ReadTrackSeriesRows(Database& db, const std::string& campaign_id) {
+  // OfCampaignInOrder orders by rng_run last, which a grouped query no longer has.
+  std::string order = OfCampaignInOrder();
+  order.replace(order.find(", rng_run"), std::string(", rng_run").size(), ", interval");
+  const std::string group = " ORDER BY";
+  order.insert(order.find(group), " GROUP BY v.scenario, v.positioner, v.interval");
+  Statement select = db.Prepare(
+      "SELECT v.scenario, v.positioner, v.interval, COUNT(*), AVG(v.time_s), MIN(v.scored), "
+      "AVG(v.reward), AVG(v.throughput_mbps), AVG(v.delay_ms), AVG(v.los_share), "
+      "AVG(v.demands_met_share) FROM v_track_intervals" +
+      order);
+  select.Bind(campaign_id);
+  std::vector<TrackSeriesRow> out;
+  while (select.Step()) {
+    TrackSeriesRow row;
+    row.scenario = select.Text(0);
+    row.label = select.Text(1);
+    row.interval = static_cast<int>(select.Int(2));
+    row.runs = static_cast<int>(select.Int(3));
+    row.time_s = select.Double(4);
+    row.scored = select.Int(5) != 0;
+    row.reward = select.Double(6);
+    row.throughput_mbps = select.Double(7);
+    row.delay_ms = select.OptionalDouble(8);
+    row.los_share = select.Double(9);
+    row.demands_met_share = select.Double(10);
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
 }  // namespace rlpos

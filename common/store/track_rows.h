@@ -3,6 +3,7 @@
 // v_track_intervals): one row per succeeded track job, its metrics by the columns of
 // kTrackMetrics (metrics/track_metrics.h), and one row per interval.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,5 +46,24 @@ enum class TrackRunsRead { kAll, kFirstRunOnly };
 // Their intervals, by scenario (campaign order), positioner, rng_run, then interval.
 std::vector<TrackIntervalRecord> ReadTrackIntervalRows(Database& db, const std::string& campaign_id,
                                                        TrackRunsRead which);
+
+// One interval of a scenario and positioner, averaged over its runs: the report's time series.
+// Each value is the mean over the runs that have the interval (delay: those with a delay).
+struct TrackSeriesRow {
+  std::string scenario, label;
+  int interval = 0;
+  int runs = 0;
+  double time_s = 0.0;  // the interval's end (the same in every run of a scenario)
+  bool scored = true;   // in every run
+  double reward = 0.0;
+  double throughput_mbps = 0.0;
+  std::optional<double> delay_ms;
+  double los_share = 0.0;
+  double demands_met_share = 0.0;
+};
+
+// Averaged by SQLite, so that a campaign of many runs is never held in memory: by scenario
+// (campaign order), positioner, interval.
+std::vector<TrackSeriesRow> ReadTrackSeriesRows(Database& db, const std::string& campaign_id);
 
 }  // namespace rlpos

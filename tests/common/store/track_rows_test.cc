@@ -35,7 +35,7 @@ TrackRunResult TwoIntervals(std::uint64_t rng_run, double x) {
   for (int i = 0; i < 2; ++i) {
     TrackIntervalRow row;
     row.time_s = i + 1.0;
-    row.reward = 0.5 + 0.1 * i;
+    row.reward = 0.5 + 0.1 * i + 0.01 * static_cast<double>(rng_run);
     row.throughput_mbps = 10.0 * (i + 1);
     row.delay_ms = i == 0 ? std::nullopt : std::optional<double>(3.5);
     row.los_share = 0.75;
@@ -46,14 +46,12 @@ TrackRunResult TwoIntervals(std::uint64_t rng_run, double x) {
   return run;
 }
 
-TEST(TrackIntervals, ReadInCampaignOrderWithTheirPositionsAndTheFirstRunAlone) {
-  testing::TempDir dir;
-  Database db(dir.File("store.db"), false, 1000);
+// Scenario "z" comes first in the campaign, "a" second; "z" has runs 3 and 2.
+void AddThreeRuns(Database& db) {
   MigrateSchema(db);
   db.Exec(
       "INSERT INTO campaigns (id, name, spec_json, created_at, state, max_attempts, "
       "job_timeout_s) VALUES ('c0ffee', 'walk', '{}', 1000, 'active', 2, 300)");
-  // Scenario "z" comes first in the campaign, "a" second; "z" has runs 3 and 2.
   const std::vector<std::tuple<std::string, std::string, std::int64_t, double>> runs{
       {"j1", "z", 3, 100.0}, {"j2", "z", 2, 200.0}, {"j3", "a", 1, 300.0}};
   int seq = 0;
@@ -62,6 +60,12 @@ TEST(TrackIntervals, ReadInCampaignOrderWithTheirPositionsAndTheFirstRunAlone) {
     InsertTrackRun(db, {job, "c0ffee", scenario, "oracle-track", rng_run},
                    TwoIntervals(static_cast<std::uint64_t>(rng_run), x));
   }
+}
+
+TEST(TrackIntervals, ReadInCampaignOrderWithTheirPositionsAndTheFirstRunAlone) {
+  testing::TempDir dir;
+  Database db(dir.File("store.db"), false, 1000);
+  AddThreeRuns(db);
 
   const auto all = ReadTrackIntervalRows(db, "c0ffee", TrackRunsRead::kAll);
   ASSERT_EQ(all.size(), 6u);
@@ -72,7 +76,7 @@ TEST(TrackIntervals, ReadInCampaignOrderWithTheirPositionsAndTheFirstRunAlone) {
   const TrackIntervalRecord& second = all[1];
   EXPECT_EQ(second.label, "oracle-track");
   EXPECT_DOUBLE_EQ(second.row.time_s, 2.0);
-  EXPECT_DOUBLE_EQ(second.row.reward, 0.6);
+  EXPECT_DOUBLE_EQ(second.row.reward, 0.62);
   EXPECT_DOUBLE_EQ(second.row.throughput_mbps, 20.0);
   EXPECT_EQ(second.row.delay_ms, std::optional<double>(3.5));
   EXPECT_FALSE(all[0].row.delay_ms.has_value()) << "a null delay stays absent";
@@ -86,6 +90,28 @@ TEST(TrackIntervals, ReadInCampaignOrderWithTheirPositionsAndTheFirstRunAlone) {
   for (const auto& r : first)
     order.push_back(r.scenario + std::to_string(r.rng_run) + "/" + std::to_string(r.interval));
   EXPECT_EQ(order, (std::vector<std::string>{"z2/0", "z2/1", "a1/0", "a1/1"}));
+}
+
+TEST(TrackIntervals, EachIntervalAveragedOverTheRunsOfItsScenarioAndPositioner) {
+  testing::TempDir dir;
+  Database db(dir.File("store.db"), false, 1000);
+  AddThreeRuns(db);
+  const auto series = ReadTrackSeriesRows(db, "c0ffee");
+  std::vector<std::string> order;
+  for (const auto& r : series)
+    order.push_back(r.scenario + "/" + std::to_string(r.interval) + "x" + std::to_string(r.runs));
+  EXPECT_EQ(order, (std::vector<std::string>{"z/0x2", "z/1x2", "a/0x1", "a/1x1"}));
+  ASSERT_EQ(series.size(), 4u);
+  EXPECT_EQ(series[0].label, "oracle-track");
+  EXPECT_DOUBLE_EQ(series[0].time_s, 1.0);
+  EXPECT_NEAR(series[0].reward, 0.525, 1e-12) << "runs 2 and 3";
+  EXPECT_NEAR(series[3].reward, 0.61, 1e-12) << "run 1 alone";
+  EXPECT_DOUBLE_EQ(series[1].throughput_mbps, 20.0);
+  EXPECT_FALSE(series[0].delay_ms.has_value());
+  EXPECT_EQ(series[1].delay_ms, std::optional<double>(3.5));
+  EXPECT_TRUE(series[1].scored);
+  EXPECT_DOUBLE_EQ(series[1].los_share, 0.75);
+  EXPECT_DOUBLE_EQ(series[1].demands_met_share, 0.5);
 }
 
 }  // namespace
