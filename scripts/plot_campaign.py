@@ -9,7 +9,14 @@ throughput_ccdf_<scenario>.png and delay_cdf_<scenario>.png. With --learning-cur
 draws learning_curve_<scenario>.png: reward and loss per training episode, one line per train
 job. With --optimality-cdf (optimality_cdf.csv: algorithm, uavs, ratio, p) it draws
 optimality_cdf.png: the CDF of each placement's reward over the oracle's, one step curve per
-algorithm (named policy, positioner) and number of UAVs.
+algorithm (named policy, positioner) and number of UAVs. With --track-distributions
+(track_distributions.csv: scenario, positioner, metric, p_is, x, p) it draws
+track_distributions_<scenario>.png: per track positioner, the distribution over the RngRuns of
+each run's time means (reward, throughput, delay, outage share), one panel per metric. With
+--track-series (track_series.csv: scenario, positioner, interval, time_s, runs, scored, reward,
+throughput_mbps, delay_ms, los_share, demands_met_share) it draws track_series_<scenario>.png:
+each interval's metrics averaged over the runs, one line per positioner, the unscored warm-up
+shaded.
 
 Prints "wrote <path>" for every file written. Exit status: 0 done, 1 error, 2 bad arguments,
 3 matplotlib is not available (the caller may try another interpreter).
@@ -65,6 +72,104 @@ def read_optimality(path):
             xs.append(float(row["ratio"]))
             ps.append(float(row["p"]))
     return curves
+
+
+# The track metrics the figures show, in panel order: CSV key, axis label.
+TRACK_DISTRIBUTIONS = [
+    ("mean_reward", "Time-mean reward"),
+    ("mean_throughput_mbps", "Time-mean aggregate throughput (Mbit/s)"),
+    ("mean_delay_ms", "Time-mean delay (ms)"),
+    ("outage_share", "Outage share (UE-intervals)"),
+]
+TRACK_SERIES = [
+    ("reward", "Reward"),
+    ("throughput_mbps", "Aggregate throughput (Mbit/s)"),
+    ("los_share", "Share of UEs in LoS"),
+    ("demands_met_share", "Share of UEs whose demand is met"),
+]
+
+
+def read_track_distributions(path):
+    """{scenario: {metric: (above, {positioner: ([x], [p])})}}, in the order of the file."""
+    curves = {}
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            metrics = curves.setdefault(row["scenario"], {})
+            above, by_positioner = metrics.setdefault(row["metric"], (row["p_is"] == "above", {}))
+            xs, ps = by_positioner.setdefault(row["positioner"], ([], []))
+            xs.append(float(row["x"]))
+            ps.append(float(row["p"]))
+    return curves
+
+
+def read_track_series(path):
+    """{scenario: {positioner: [row dict with floats]}}, intervals in order."""
+    series = {}
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            point = {"time_s": float(row["time_s"]), "scored": row["scored"] == "1"}
+            for key, _ in TRACK_SERIES:
+                point[key] = float(row[key])
+            series.setdefault(row["scenario"], {}).setdefault(row["positioner"], []).append(point)
+    return series
+
+
+def legend_under_title(figure, panel, title):
+    """One legend for every panel, between the title and the panels, where it hides no line."""
+    handles, labels = panel.get_legend_handles_labels()
+    figure.suptitle(title)
+    figure.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, 0.955),
+                  ncol=min(len(labels), 5), fontsize="small", frameon=False)
+    rows = (len(labels) + 4) // 5
+    figure.tight_layout(rect=(0, 0, 1, 0.93 - 0.035 * (rows - 1)))
+
+
+def plot_track_distributions(plt, metrics, title, path):
+    """One panel per track metric: a step curve per positioner over its RngRuns."""
+    from matplotlib.ticker import MaxNLocator
+
+    shown = [(key, label) for key, label in TRACK_DISTRIBUTIONS if key in metrics]
+    columns = 2 if len(shown) > 1 else 1
+    rows = (len(shown) + columns - 1) // columns
+    figure, axes = plt.subplots(rows, columns, figsize=(6.4 * columns / 1.4, 3.4 * rows),
+                                squeeze=False)
+    for panel, (key, label) in zip(axes.flat, shown):
+        above, by_positioner = metrics[key]
+        for positioner, (xs, ps) in by_positioner.items():
+            panel.plot([xs[0]] + xs, [1.0 if above else 0.0] + ps, drawstyle="steps-post",
+                       label=positioner)
+        panel.set_xlabel(label)
+        panel.xaxis.set_major_locator(MaxNLocator(6))
+        panel.set_ylabel("P(X > x)" if above else "P(X \u2264 x)")
+        panel.set_ylim(-0.02, 1.02)
+        panel.grid(True, alpha=0.3)
+    for panel in list(axes.flat)[len(shown):]:
+        panel.set_visible(False)
+    legend_under_title(figure, axes.flat[0], title)
+    save_atomically(figure, path)
+    plt.close(figure)
+    print(f"wrote {path}", flush=True)
+
+
+def plot_track_series(plt, by_positioner, title, path):
+    """One panel per interval metric against time; the warm-up (unscored) shaded."""
+    figure, axes = plt.subplots(2, 2, figsize=(9.6, 6.4), sharex=True)
+    for panel, (key, label) in zip(axes.flat, TRACK_SERIES):
+        for positioner, points in by_positioner.items():
+            panel.plot([p["time_s"] for p in points], [p[key] for p in points],
+                       linewidth=1.2, label=positioner)
+        unscored = [p["time_s"] for points in by_positioner.values() for p in points
+                    if not p["scored"]]
+        if unscored:
+            panel.axvspan(0.0, max(unscored), color="grey", alpha=0.15, linewidth=0)
+        panel.set_ylabel(label)
+        panel.grid(True, alpha=0.3)
+    for panel in axes[1]:
+        panel.set_xlabel("Time (s), at the end of each decision interval")
+    legend_under_title(figure, axes[0][0], title)
+    save_atomically(figure, path)
+    plt.close(figure)
+    print(f"wrote {path}", flush=True)
 
 
 def plot_optimality(plt, curves, title, path):
@@ -157,6 +262,8 @@ def main():
     parser.add_argument("--title", default="", help="figure title prefix (campaign name)")
     parser.add_argument("--learning-curves", help="learning_curves.csv (optional)")
     parser.add_argument("--optimality-cdf", help="optimality_cdf.csv (optional)")
+    parser.add_argument("--track-distributions", help="track_distributions.csv (optional)")
+    parser.add_argument("--track-series", help="track_series.csv (optional)")
     args = parser.parse_args()
 
     try:
@@ -193,6 +300,18 @@ def main():
         if curves:
             plot_optimality(plt, curves, f"{prefix}optimality: each placement against the oracle",
                             os.path.join(args.out_dir, "optimality_cdf.png"))
+    if args.track_distributions:
+        used = set()
+        for scenario, metrics in read_track_distributions(args.track_distributions).items():
+            plot_track_distributions(
+                plt, metrics, f"{prefix}scenario {scenario}: track runs over their RngRuns",
+                os.path.join(args.out_dir, f"track_distributions_{file_stem(scenario, used)}.png"))
+    if args.track_series:
+        used = set()
+        for scenario, series in read_track_series(args.track_series).items():
+            plot_track_series(
+                plt, series, f"{prefix}scenario {scenario}: track runs over time (mean of RngRuns)",
+                os.path.join(args.out_dir, f"track_series_{file_stem(scenario, used)}.png"))
     return 0
 
 

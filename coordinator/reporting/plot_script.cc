@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "coordinator/reporting/subprocess.h"
 
@@ -46,9 +47,15 @@ PlotOutcome DrawPlots(const PlotRequest& request) {
       argv.push_back("--learning-curves");
       argv.push_back(request.learning_csv);
     }
-    if (!request.optimality_csv.empty()) {
-      argv.push_back("--optimality-cdf");
-      argv.push_back(request.optimality_csv);
+    const std::pair<const char*, const std::string*> optional_csvs[] = {
+        {"--optimality-cdf", &request.optimality_csv},
+        {"--track-distributions", &request.track_distributions_csv},
+        {"--track-series", &request.track_series_csv}};
+    for (const auto& [flag, csv] : optional_csvs) {
+      if (!csv->empty()) {
+        argv.push_back(flag);
+        argv.push_back(*csv);
+      }
     }
     const ProcessResult run = RunProcess(argv);
     std::istringstream lines(run.output);

@@ -8,14 +8,16 @@
 namespace rlpos {
 
 struct PlotRequest {
-  std::string script;          // plot_campaign.py
-  std::string python;          // interpreter; empty: "python3", then /usr/bin/python3
-  std::string throughput_csv;  // FormatThroughputCcdfCsv output
-  std::string delay_csv;       // FormatDelayCdfCsv output
-  std::string learning_csv;    // FormatLearningCurvesCsv output; empty: none
-  std::string optimality_csv;  // FormatOptimalityCdfCsv output; empty: none
-  std::string out_dir;         // where the PNGs go
-  std::string title;           // e.g. the campaign name
+  std::string script;                   // plot_campaign.py
+  std::string python;                   // interpreter; empty: "python3", then /usr/bin/python3
+  std::string throughput_csv;           // FormatThroughputCcdfCsv output
+  std::string delay_csv;                // FormatDelayCdfCsv output
+  std::string learning_csv;             // FormatLearningCurvesCsv output; empty: none
+  std::string optimality_csv;           // FormatOptimalityCdfCsv output; empty: none
+  std::string track_distributions_csv;  // FormatTrackDistributionsCsv output; empty: none
+  std::string track_series_csv;         // FormatTrackSeriesCsv output; empty: none
+  std::string out_dir;                  // where the PNGs go
+  std::string title;                    // e.g. the campaign name
 };
 
 struct PlotOutcome {

@@ -11,6 +11,7 @@
 #include "coordinator/reporting/report_markdown.h"
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/scenario_maps.h"
+#include "coordinator/reporting/track_curves.h"
 #include "coordinator/reporting/track_summary.h"
 #include "coordinator/reporting/uav_summary.h"
 
@@ -47,7 +48,8 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
   const std::vector<MetricRow> rows = store.Metrics(campaign_id);
   const std::vector<PositionerSummary> summary = SummarizeRuns(rows);
   const std::vector<UavSummary> uavs = SummarizeUavs(store.UavMetrics(campaign_id));
-  const std::vector<TrackSummary> tracks = SummarizeTracks(store.TrackRuns(campaign_id));
+  const std::vector<TrackRunRow> track_runs = store.TrackRuns(campaign_id);
+  const std::vector<TrackSummary> tracks = SummarizeTracks(track_runs);
   const std::vector<CurvePoint> throughput = ThroughputCcdf(rows);
   const std::vector<CurvePoint> delay = DelayCdf(rows);
   const std::vector<OptimalityRow> optimality = store.Optimality(campaign_id);
@@ -94,11 +96,20 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
     optimality_csv = write("optimality_cdf.csv", FormatOptimalityCdfCsv(optimality));
   }
 
-  if (options.plot_script.empty() || (throughput.empty() && delay.empty() && learning.empty()))
+  std::string track_distributions_csv, track_series_csv;
+  if (!tracks.empty()) {
+    track_distributions_csv = write("track_distributions.csv",
+                                    FormatTrackDistributionsCsv(TrackDistributions(track_runs)));
+    track_series_csv = write(
+        "track_series.csv", FormatTrackSeriesCsv(OrderTrackSeries(store.TrackSeries(campaign_id))));
+  }
+
+  if (options.plot_script.empty() ||
+      (throughput.empty() && delay.empty() && learning.empty() && tracks.empty()))
     return result;
-  const PlotOutcome plots =
-      DrawPlots({options.plot_script, options.python, throughput_csv, delay_csv, learning_csv,
-                 optimality_csv, out_dir, progress.name});
+  const PlotOutcome plots = DrawPlots(
+      {options.plot_script, options.python, throughput_csv, delay_csv, learning_csv, optimality_csv,
+       track_distributions_csv, track_series_csv, out_dir, progress.name});
   result.files.insert(result.files.end(), plots.files.begin(), plots.files.end());
   result.warnings.insert(result.warnings.end(), plots.warnings.begin(), plots.warnings.end());
   return result;

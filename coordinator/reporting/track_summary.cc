@@ -3,22 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <tuple>
 #include <utility>
 
-#include "common/campaign/campaign_spec.h"
 #include "common/stats/descriptive.h"
 #include "coordinator/reporting/csv_cells.h"
 #include "coordinator/reporting/text_table.h"
+#include "coordinator/reporting/track_groups.h"
 
 namespace rlpos {
 namespace {
-
-std::size_t PositionerRank(const std::string& positioner) {
-  const auto& names = TrackPositionerNames();
-  return static_cast<std::size_t>(std::find(names.begin(), names.end(), positioner) -
-                                  names.begin());
-}
 
 TrackSummary Summarize(const std::vector<const TrackRunRow*>& runs) {
   TrackSummary s;
@@ -80,17 +73,10 @@ std::vector<std::vector<std::string>> TableRows(const std::vector<TrackSummary>&
 }  // namespace
 
 std::vector<TrackSummary> SummarizeTracks(const std::vector<TrackRunRow>& rows) {
-  std::vector<std::string> scenarios;
-  // Scenario order, positioner rank (named policies after the rest), label.
-  using Key = std::tuple<std::size_t, std::size_t, std::string>;
-  std::map<Key, std::vector<const TrackRunRow*>> groups;
-  for (const TrackRunRow& r : rows) {
-    auto found = std::find(scenarios.begin(), scenarios.end(), r.scenario);
-    if (found == scenarios.end())
-      found = scenarios.insert(scenarios.end(), r.scenario);
-    groups[{static_cast<std::size_t>(found - scenarios.begin()), PositionerRank(r.label), r.label}]
-        .push_back(&r);
-  }
+  TrackGroupOrder order;
+  std::map<TrackGroupKey, std::vector<const TrackRunRow*>> groups;
+  for (const TrackRunRow& r : rows)
+    groups[order.KeyOf(r.scenario, r.label)].push_back(&r);
   std::vector<TrackSummary> out;
   for (const auto& group : groups)
     out.push_back(Summarize(group.second));
@@ -107,9 +93,12 @@ std::string FormatTrackSummaryMarkdown(const std::vector<TrackSummary>& summary)
   return "\n## Track runs\n\n" + FormatMarkdownTable(TableColumns(), TableRows(summary)) +
          "\nRuns in which the UEs walk and the UAVs follow: per scenario and positioner, each "
          "metric's mean over the RngRuns of each run's mean over its scored intervals (P5: the "
-         "5th percentile of the intervals, the run's worst moments). File: `track_summary.csv` "
-         "(every metric, unrounded); per run the view `v_track_runs`, per interval "
-         "`v_track_intervals`.\n";
+         "5th percentile of the intervals, the run's worst moments). Files: `track_summary.csv` "
+         "(every metric, unrounded); `track_distributions.csv` and "
+         "`track_distributions_<scenario>.png` (over the RngRuns, the CDF of each run's time-mean "
+         "reward, delay and outage share, the CCDF of its throughput); `track_series.csv` and "
+         "`track_series_<scenario>.png` (each interval averaged over the RngRuns, the warm-up "
+         "shaded); per run the view `v_track_runs`, per interval `v_track_intervals`.\n";
 }
 
 const std::vector<std::string>& TrackSummaryCsvColumns() {

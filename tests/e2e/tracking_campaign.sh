@@ -73,4 +73,22 @@ print(round([r for r in json.load(open(sys.argv[1])) if r['positioner'] == 'orac
 expect_eq "report: track_summary.csv rows" "$(tail -n +2 "$WORK/report/track_summary.csv" | cut -d, -f2 | tr '\n' ' ')" \
   "centroid oracle-track "
 grep -q "^## Track runs" "$WORK/report/summary.md" || fail "summary.md has no track section"
+# Its time series: each interval of each positioner averaged over the two runs, as SQLite has it.
+expect_eq "report: track_series.csv against the store" "$(python3 -c "
+import csv, sqlite3, sys
+rows = [(r['positioner'], int(r['interval']), int(r['runs']), float(r['reward']))
+        for r in csv.DictReader(open(sys.argv[1]))]
+stored = sqlite3.connect(sys.argv[2]).execute(
+    'SELECT positioner, interval, COUNT(*), AVG(reward) FROM v_track_intervals '
+    'GROUP BY positioner, interval ORDER BY positioner, interval').fetchall()
+same = len(rows) == len(stored) and all(
+    a[:3] == b[:3] and abs(a[3] - b[3]) <= 1e-9 for a, b in zip(rows, stored))
+print(len(rows), 'rows,', 'as stored' if same else 'not as stored')
+" "$WORK/report/track_series.csv" "$DB")" "12 rows, as stored"
+# Its figures, where matplotlib is.
+if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  for figure in track_distributions track_series; do
+    [ "$(ls "$WORK/report/${figure}_"*.png 2>/dev/null | wc -l)" = 1 ] || fail "no ${figure} PNG"
+  done
+fi
 echo "ok: track runs at packet level in a campaign, a killed one retried, the same series twice"
