@@ -5,6 +5,7 @@
 #include "common/config/config_error.h"
 #include "common/scenario/scenario_parser.h"
 #include "coordinator/reporting/run_groups.h"
+#include "coordinator/web/track_frames.h"
 
 namespace rlpos::web {
 namespace {
@@ -85,6 +86,8 @@ std::optional<json> ScenarioMapsJson(ResultsReader& store, const std::string& ca
   if (!part)
     return std::nullopt;
   auto placements = PlacementsByScenario(store.UavMetrics(campaign_id));
+  const auto intervals = store.TrackIntervals(campaign_id, TrackRunsRead::kFirstRunOnly);
+  const auto tracks = TracksByScenario(intervals, store.TrackRuns(campaign_id));
   json scenarios = json::array();
   for (const auto& entry : part->value("scenarios", json::array())) {
     const std::string file = entry.value("file", "");
@@ -93,8 +96,12 @@ std::optional<json> ScenarioMapsJson(ResultsReader& store, const std::string& ca
       ApplyOverrides(document, entry.value("set", std::vector<std::string>{}));
       json map = GeometryJson(ParseScenario(document));
       map["file"] = file;
-      const auto it = placements.find(map["name"].get<std::string>());
+      const std::string name = map["name"];
+      const auto it = placements.find(name);
       map["placements"] = it == placements.end() ? json::array() : it->second;
+      const auto track = tracks.find(name);
+      if (track != tracks.end())
+        map["tracks"] = TrackFramesJson(document, track->second);
       scenarios.push_back(std::move(map));
     } catch (const ConfigError& e) {
       scenarios.push_back({{"file", file}, {"error", e.describe()}});

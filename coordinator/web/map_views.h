@@ -1,7 +1,8 @@
 #pragma once
 // What the page draws a scenario map from (JSON): each scenario of the campaign as its spec
 // holds it (venue, zones, buildings, UEs, UAVs' initial positions), and where each positioner
-// put the UAVs in its first succeeded eval run.
+// put the UAVs in its first succeeded eval run; with track runs, the frames of each track
+// positioner's first run (track_frames.h).
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -10,8 +11,9 @@
 namespace rlpos::web {
 
 // {"scenarios": [{"name", "file", "venue", "buildings", "ues", "uavs", "placements":
-// [{"positioner", "rng_run", "uavs": [{"name", "x", "y", "z"}]}]}]}. A scenario whose document no
-// longer parses gets {"file", "error"} instead. nullopt for an unknown campaign.
+// [{"positioner", "rng_run", "uavs": [{"name", "x", "y", "z"}]}], "tracks"}]}, "tracks" only for a
+// scenario with a succeeded track run (TrackFramesJson). A scenario whose document no longer
+// parses gets {"file", "error"} instead. nullopt for an unknown campaign.
 std::optional<nlohmann::json> ScenarioMapsJson(ResultsReader& store,
                                                const std::string& campaign_id);
 
