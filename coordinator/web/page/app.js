@@ -423,9 +423,11 @@ function scenarioMap(s) {
     rect.addEventListener('mouseleave', hideTooltip);
     root.append(rect, svg('text', { class: 'building-label', x: X((b.xmin + b.xmax) / 2), y: Y((b.ymin + b.ymax) / 2) + 4, 'text-anchor': 'middle' }, `${b.name || ''} ${fmt(b.height, 0)} m`));
   }
+  // With track runs the UEs walk: their spec positions are where they start, drawn faint.
+  const walking = !!(s.tracks && s.tracks.runs.length);
   for (const u of s.ues) {
-    const dot = svg('circle', { class: 'ue', cx: X(u.x), cy: Y(u.y), r: 4, fill: '#0f172a' });
-    dot.addEventListener('mousemove', e => showTooltip(e, [{ text: u.name || 'UE', bold: true }, { text: `(${fmt(u.x, 1)}, ${fmt(u.y, 1)}, ${fmt(u.z, 1)}) m` }, { text: `demand ${fmt(u.demand_mbps)} Mbit/s` }]));
+    const dot = svg('circle', { class: walking ? 'ue ue-start' : 'ue', cx: X(u.x), cy: Y(u.y), r: walking ? 3 : 4, fill: walking ? '#94a3b8' : '#0f172a' });
+    dot.addEventListener('mousemove', e => showTooltip(e, [{ text: (u.name || 'UE') + (walking ? ' at t = 0' : ''), bold: true }, { text: `(${fmt(u.x, 1)}, ${fmt(u.y, 1)}, ${fmt(u.z, 1)}) m` }, { text: `demand ${fmt(u.demand_mbps)} Mbit/s` }]));
     dot.addEventListener('mouseleave', hideTooltip);
     root.append(dot);
   }
@@ -441,8 +443,92 @@ function scenarioMap(s) {
     }
     root.append(g);
   }
-  root.append(legend(s.placements.map(p => p.positioner), W - legendW + 8, M));
-  return root;
+  const names = s.placements.map(p => p.positioner);
+  const player = walking ? trackPlayer(s, root, X, Y) : null;
+  if (player) for (const p of s.tracks.positioners) if (!names.includes(p.positioner)) names.push(p.positioner);
+  root.append(legend(names, W - legendW + 8, M));
+  return player ? [root, player] : [root];
+}
+
+// --- A track run played on a map: a slider over its interval ends and play/pause; the frame
+// shows the UEs where they walk then and each positioner's UAV(s) then, with the path flown so far.
+// Per scenario, the run and frame shown outlive a redraw (every finished job redraws the maps).
+const trackViews = new Map();
+
+function seconds(t) { return String(+t.toFixed(2)); }
+
+function trackPlayer(s, root, X, Y) {
+  const tracks = s.tracks;
+  let state = trackViews.get(s.name);
+  if (!state || !tracks.runs.some(r => r.rng_run === state.run)) state = { run: tracks.runs[0].rng_run, index: 0, playing: false };
+  trackViews.set(s.name, state);
+  const frame = svg('g', { class: 'track-frame' });
+  root.append(frame);
+  const slider = el('input', { type: 'range', class: 'track-slider', min: 0, step: 1, 'data-scenario': s.name, 'aria-label': 'time' });
+  const label = el('span', { class: 'track-time mono' });
+  const play = el('button', { class: 'track-play', type: 'button' }, 'play');
+  const runOf = () => tracks.runs.find(r => r.rng_run === state.run);
+  const note = el('span', { class: 'hint' });
+
+  function draw() {
+    const run = runOf(), i = Math.min(state.index, run.times.length - 1);
+    slider.max = run.times.length - 1;
+    slider.value = i;
+    label.textContent = `t = ${seconds(run.times[i])} s`;
+    const players = tracks.positioners.filter(p => p.rng_run === run.rng_run);
+    note.textContent = `RngRun ${run.rng_run}: ${players.map(p => p.positioner).join(', ')}`;
+    frame.replaceChildren();
+    run.ues[i].forEach(([x, y], k) => {
+      const dot = svg('circle', { class: 'ue track-ue', cx: X(x), cy: Y(y), r: 4, fill: '#0f172a' });
+      dot.addEventListener('mousemove', e => showTooltip(e, [{ text: `${(s.ues[k] || {}).name || 'UE'} at t = ${seconds(run.times[i])} s`, bold: true }, { text: `(${fmt(x, 1)}, ${fmt(y, 1)}) m` }]));
+      dot.addEventListener('mouseleave', hideTooltip);
+      frame.append(dot);
+    });
+    for (const p of players) {
+      const g = svg('g', { class: 'track-uavs', 'data-positioner': p.positioner });
+      if (hidden.has(p.positioner)) g.setAttribute('visibility', 'hidden');
+      const color = colorOf(p.positioner);
+      p.uavs[i].forEach(([x, y, z], u) => {
+        const flown = p.uavs.slice(0, i + 1).map(f => `${X(f[u][0])},${Y(f[u][1])}`).join(' ');
+        g.append(svg('polyline', { class: 'track-path', points: flown, stroke: color }));
+        const cx = X(x), cy = Y(y);
+        const marker = svg('path', { class: 'track-uav', d: `M${cx},${cy - 7}L${cx + 7},${cy}L${cx},${cy + 7}L${cx - 7},${cy}Z`, fill: color, stroke: '#fff', 'stroke-width': 1.5 });
+        marker.addEventListener('mousemove', e => showTooltip(e, [{ text: `${p.positioner}: ${(s.uavs[u] || {}).name || 'UAV'} at t = ${seconds(run.times[i])} s (run ${run.rng_run})`, bold: true, color }, { text: `(${fmt(x, 1)}, ${fmt(y, 1)}, ${fmt(z, 1)}) m` }]));
+        marker.addEventListener('mouseleave', hideTooltip);
+        g.append(marker);
+      });
+      frame.append(g);
+    }
+  }
+
+  let timer = null;
+  function halt() { clearInterval(timer); timer = null; play.textContent = 'play'; }
+  function start() {
+    const frames = runOf().times.length;
+    if (state.index >= frames - 1) state.index = 0;
+    state.playing = true;
+    play.textContent = 'pause';
+    // A whole run in about 20 s, whatever its number of intervals.
+    timer = setInterval(() => {
+      if (!root.isConnected) { halt(); return; }  // redrawn: the new map plays on
+      state.index += 1;
+      draw();
+      if (state.index >= frames - 1) { state.playing = false; halt(); }
+    }, Math.min(500, Math.max(40, 20000 / frames)));
+  }
+  play.addEventListener('click', () => { if (timer) { state.playing = false; halt(); } else start(); });
+  slider.addEventListener('input', () => { state.index = Number(slider.value); draw(); });
+  const controls = el('div', { class: 'track-controls', 'data-scenario': s.name }, play, slider, label);
+  if (tracks.runs.length > 1) {
+    const select = el('select', { class: 'track-run' }, ...tracks.runs.map(r => el('option', { value: r.rng_run }, `RngRun ${r.rng_run}`)));
+    select.value = state.run;
+    select.addEventListener('change', () => { state.run = Number(select.value); state.index = 0; draw(); });
+    controls.append(select);
+  }
+  controls.append(note);
+  draw();
+  if (state.playing) start();
+  return controls;
 }
 
 function renderMaps(data) {
@@ -450,7 +536,7 @@ function renderMaps(data) {
   box.replaceChildren();
   for (const s of data.scenarios || []) {
     if (s.error) { box.append(el('p', { class: 'warn' }, `${s.file}: ${s.error}`)); continue; }
-    box.append(el('div', { class: 'plot-card' }, el('h3', {}, `${s.name} (${s.venue.width} x ${s.venue.depth} m, ${s.ues.length} UEs, ${s.buildings.length} buildings)`), scenarioMap(s)));
+    box.append(el('div', { class: 'plot-card' }, el('h3', {}, `${s.name} (${s.venue.width} x ${s.venue.depth} m, ${s.ues.length} UEs, ${s.buildings.length} buildings)`), ...scenarioMap(s)));
   }
 }
 
