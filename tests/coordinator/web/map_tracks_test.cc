@@ -20,14 +20,17 @@ namespace {
 using nlohmann::json;
 using rlpos::testing::SourcePath;
 
-constexpr double kDuration = 10.0, kInterval = 2.0;
+// Longer than the street's simulation.duration (10 s) and env.episode_duration (set to 4 s): the
+// UEs walk on only when the trajectories are drawn for the run's duration, as the track job does.
+constexpr double kDuration = 16.0, kInterval = 2.0;
+constexpr int kFrames = 8;
+const std::vector<std::string> kSet{"env.decision_interval=2", "env.episode_duration=4"};
 
 // The street of campaigns/mobility.json (ten pedestrians, gauss_markov), RngRuns 3 and 4.
 json WalkCampaign() {
   return {{"name", "walk-map"},
           {"scenarios",
-           {{{"file", SourcePath("campaigns/scenarios/mobility-street.json")},
-             {"set", {"env.decision_interval=2"}}}}},
+           {{{"file", SourcePath("campaigns/scenarios/mobility-street.json")}, {"set", kSet}}}},
           {"rng_runs", {3, 4}},
           {"positioners", json::array()},
           {"track", {{"positioners", {"oracle-track", "centroid"}}, {"duration", kDuration}}}};
@@ -49,14 +52,14 @@ TrackRunResult StoredRun(const std::string& positioner, std::uint64_t rng_run, d
   run.run = rng_run;
   run.duration_s = kDuration;
   run.decision_interval_s = kInterval;
-  for (int i = 0; i < 5; ++i) {
+  for (int i = 0; i < kFrames; ++i) {
     TrackIntervalRow row;
     row.time_s = kInterval * (i + 1);
     row.reward = 0.5;
     row.positions = {StoredUav(base, i)};
     run.intervals.push_back(row);
   }
-  run.scored_intervals = 5;
+  run.scored_intervals = kFrames;
   return run;
 }
 
@@ -64,7 +67,9 @@ TrackRunResult StoredRun(const std::string& positioner, std::uint64_t rng_run, d
 std::vector<UeTrajectory> Walks(std::int64_t run) {
   std::ifstream in(SourcePath("campaigns/scenarios/mobility-street.json"));
   json document = json::parse(in);
-  ApplyOverrides(document, {"env.decision_interval=2", "simulation.run=" + std::to_string(run)});
+  std::vector<std::string> set = kSet;
+  set.push_back("simulation.run=" + std::to_string(run));
+  ApplyOverrides(document, set);
   Scenario s = ParseScenario(document);
   s.simulation.duration = kDuration;
   return UeTrajectories(s);
@@ -117,8 +122,8 @@ TEST_F(MapTracksTest, FramesOfEachPositionersFirstRunWithItsUavsAndTheWalkingUes
   EXPECT_EQ(oracle["rng_run"], 3);
   for (const auto& [p, base] : {std::pair<const json*, double>{&centroid, 80.0}, {&oracle, 20.0}}) {
     const json& frames = (*p)["uavs"];
-    ASSERT_EQ(frames.size(), 5u);
-    for (int i = 0; i < 5; ++i) {
+    ASSERT_EQ(frames.size(), static_cast<std::size_t>(kFrames));
+    for (int i = 0; i < kFrames; ++i) {
       const Vec3 stored = StoredUav(base, i);
       ASSERT_EQ(frames[i].size(), 1u);  // one UAV
       EXPECT_DOUBLE_EQ(frames[i][0][0].get<double>(), stored.x);
@@ -128,17 +133,17 @@ TEST_F(MapTracksTest, FramesOfEachPositionersFirstRunWithItsUavsAndTheWalkingUes
   }
 
   ASSERT_EQ(tracks["runs"].size(), 2u);
-  bool moved = false, runs_differ = false;
+  bool moved = false, moved_late = false, runs_differ = false;
   for (std::size_t r = 0; r < 2; ++r) {
     const json& run = tracks["runs"][r];
     const std::int64_t rng_run = 3 + static_cast<std::int64_t>(r);  // by RngRun
     EXPECT_EQ(run["rng_run"], rng_run);
     EXPECT_EQ(run["duration"], kDuration);
-    EXPECT_EQ(run["times"], json({2.0, 4.0, 6.0, 8.0, 10.0}));
+    EXPECT_EQ(run["times"], json({2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 14.0, 16.0}));
     const auto walks = Walks(rng_run);
     const auto other = Walks(7 - rng_run);
-    ASSERT_EQ(run["ues"].size(), 5u);
-    for (std::size_t i = 0; i < 5; ++i) {
+    ASSERT_EQ(run["ues"].size(), static_cast<std::size_t>(kFrames));
+    for (std::size_t i = 0; i < kFrames; ++i) {
       const double t = kInterval * static_cast<double>(i + 1);
       const json& frame = run["ues"][i];
       ASSERT_EQ(frame.size(), walks.size());
@@ -147,11 +152,13 @@ TEST_F(MapTracksTest, FramesOfEachPositionersFirstRunWithItsUavsAndTheWalkingUes
         EXPECT_NEAR(frame[u][0].get<double>(), at.x, 0.05 + 1e-9) << "UE " << u << " at " << t;
         EXPECT_NEAR(frame[u][1].get<double>(), at.y, 0.05 + 1e-9) << "UE " << u << " at " << t;
         moved = moved || Apart(at, walks[u].PositionAt(0.0)) > 1.0;
+        moved_late = moved_late || Apart(at, walks[u].PositionAt(10.0)) > 1.0;
         runs_differ = runs_differ || Apart(at, other[u].PositionAt(t)) > 1.0;
       }
     }
   }
   EXPECT_TRUE(moved) << "the street's UEs walk";
+  EXPECT_TRUE(moved_late) << "and walk on past the scenario's own duration";
   EXPECT_TRUE(runs_differ) << "each RngRun walks its own way";
 }
 
