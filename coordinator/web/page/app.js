@@ -503,18 +503,18 @@ function trackPlayer(s, root, X, Y) {
 
   let timer = null;
   function halt() { clearInterval(timer); timer = null; play.textContent = 'play'; }
+  const last = () => runOf().times.length - 1;
   function start() {
-    const frames = runOf().times.length;
-    if (state.index >= frames - 1) state.index = 0;
+    if (state.index >= last()) state.index = 0;
     state.playing = true;
     play.textContent = 'pause';
     // A whole run in about 20 s, whatever its number of intervals.
     timer = setInterval(() => {
       if (!root.isConnected) { halt(); return; }  // redrawn: the new map plays on
-      state.index += 1;
+      state.index = Math.min(state.index + 1, last());
       draw();
-      if (state.index >= frames - 1) { state.playing = false; halt(); }
-    }, Math.min(500, Math.max(40, 20000 / frames)));
+      if (state.index >= last()) { state.playing = false; halt(); }
+    }, Math.min(500, Math.max(40, 20000 / (last() + 1))));
   }
   play.addEventListener('click', () => { if (timer) { state.playing = false; halt(); } else start(); });
   slider.addEventListener('input', () => { state.index = Number(slider.value); draw(); });
@@ -590,6 +590,7 @@ function route() {
   view.id = match ? match[1] : null;
   view.plottedDone = -1;
   hidden.clear();
+  trackViews.clear();
   document.getElementById('list-view').hidden = !!view.id;
   document.getElementById('campaign-view').hidden = !view.id;
   refresh();
