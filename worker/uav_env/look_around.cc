@@ -81,6 +81,15 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
   const auto n = static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells);
   std::vector<double> values(2 * n, 0.0);
   Placement probe = placement;
+  // The other UAVs stay where they are: their links are worked out once for the whole map.
+  std::vector<std::vector<UeLink>> others(placement.size());
+  std::vector<const std::vector<UeLink>*> links(placement.size());
+  for (std::size_t u = 0; u < placement.size(); ++u) {
+    if (u != active) {
+      others[u] = model.LinksAt(u, placement[u]);
+      links[u] = &others[u];
+    }
+  }
   double best_of_map = -1.0;
   best_point_ = placement[active];
   for (int row = 0; row < cells; ++row) {
@@ -90,11 +99,16 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
       const double cx = zone.xmin + (col + 0.5) * (zone.xmax - zone.xmin) / cells;
       const double x = NearestOnLattice(cx, origin.x, step, zone.xmin, zone.xmax);
       double best = -1.0, best_z = 0.0;
-      for (double z : levels) {
+      for (std::size_t level = 0; level < levels.size(); ++level) {
+        const double z = levels[level];
         probe[active] = {x, y, z};
         if (BuildingContaining(scenario_, probe[active]) >= 0)
           continue;
-        const double r = reward_of(model.Evaluate(probe));
+        const std::size_t point =
+            static_cast<std::size_t>(row * cells + col) * levels.size() + level;
+        links[active] = &MapLinks(active, point, probe[active], model);
+        // The same numbers as model.Evaluate(probe), which would work out every link again.
+        const double r = reward_of(model.Score(probe, links));
         if (r > best) {
           best = r;
           best_z = z;
@@ -118,6 +132,26 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
   coverage_active_ = active;
   coverage_values_ = values;
   out = std::move(values);
+}
+
+const std::vector<UeLink>& LookAround::MapLinks(std::size_t active, std::size_t point,
+                                                const Vec3& position, AnalyticEvaluator& model) {
+  if (scenario_.uavs.size() == 1) {
+    scratch_links_ = model.LinksAt(active, position);
+    return scratch_links_;
+  }
+  const std::vector<Vec3>& ues = model.UePositions();
+  if (map_links_.empty() ||
+      !std::equal(ues.begin(), ues.end(), map_links_ues_.begin(), map_links_ues_.end(), Same)) {
+    map_links_.assign(scenario_.uavs.size(), {});
+    map_links_ues_ = ues;
+  }
+  std::vector<std::vector<UeLink>>& of_uav = map_links_[active];
+  if (of_uav.size() <= point)
+    of_uav.resize(point + 1);
+  if (of_uav[point].empty())
+    of_uav[point] = model.LinksAt(active, position);
+  return of_uav[point];
 }
 
 void LookAround::AddPointer(const Vec3& from, std::vector<double>& out) const {

@@ -2,17 +2,18 @@
 // The model's look around for the "coverage" and "lookahead" observations
 // (worker/gym/general_observation.h): what the analytic model says of positions the UAV whose
 // turn it is could take, the other UAVs where they are. The coverage map is worked out once per
-// placement of the other UAVs (with one UAV, once per env) and reused.
+// placement of the other UAVs (with one UAV, once per env) and reused. With several UAVs, each
+// map after another UAV moved re-scores the same points: their links to the UEs are kept (while
+// the UEs stand still), and only the association and the airtime are worked out again.
 #include <cstddef>
 #include <functional>
 #include <vector>
 
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
+#include "worker/uav_env/analytic_evaluator.h"
 
 namespace rlpos {
-
-class AnalyticEvaluator;
 
 class LookAround {
  public:
@@ -29,6 +30,10 @@ class LookAround {
  private:
   void Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
                 const RewardOf& reward_of, std::vector<double>& out);
+  // The UEs' links from map point `point` (its cell and altitude) of UAV `active`'s map, at
+  // `position`: kept with several UAVs, worked out each time with one (whose map is made once).
+  const std::vector<UeLink>& MapLinks(std::size_t active, std::size_t point, const Vec3& position,
+                                      AnalyticEvaluator& model);
   // The offset from `from` to the map's best cell's column at its best altitude.
   void AddPointer(const Vec3& from, std::vector<double>& out) const;
 
@@ -42,6 +47,12 @@ class LookAround {
   std::size_t coverage_active_ = 0;
   std::vector<double> coverage_values_;
   Vec3 best_point_;  // the map's best: its column at its best altitude
+  // Per UAV, per map point (cell x altitudes + altitude): the UEs' links, empty until asked;
+  // and where the UEs were when they were worked out. At most coverage_map² x altitudes x UEs
+  // links per UAV (about 40 bytes each).
+  std::vector<std::vector<std::vector<UeLink>>> map_links_;
+  std::vector<Vec3> map_links_ues_;
+  std::vector<UeLink> scratch_links_;
 };
 
 }  // namespace rlpos

@@ -1,6 +1,8 @@
 // The model's look around ("coverage" and "lookahead" observations): the values are the analytic
 // model's rewards where they say, the map is no better than the oracle's grid, and the map of one
 // UAV is worked out once.
+#include "worker/uav_env/look_around.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -121,6 +123,40 @@ TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
         << "UAV " << u;
   }
   EXPECT_NE(views[0], views[1]);
+}
+
+// With several UAVs the map's links are kept from one map to the next: after the other UAV moved,
+// and after the UEs walked, the map is bit for bit the one a fresh look around works out.
+TEST(LookAround, KeptLinksGiveTheMapOfAFreshLookAroundAfterOthersMoveAndUesWalk) {
+  Scenario s = GeneratedUrban(2);
+  s.env.fidelity = "analytic";
+  s.env.observations = {"coverage"};
+  s.env.coverage_map = 4;
+  const auto reward = MakeReward(s.env.reward);
+  const auto reward_of = [&](const StepInfo& i) {
+    return (*reward)(RewardInputOf(s, i.n_los, i.throughput_mbps, i.demands_met));
+  };
+  AnalyticEvaluator model(s);
+  LookAround kept(s);
+  Placement placement = s.InitialPlacement();
+  const auto map_of = [&](LookAround& look) {
+    StepInfo info;
+    look.Fill(placement, 0, 0.0, model, reward_of, info);
+    return info.coverage;
+  };
+  const std::vector<double> first = map_of(kept);
+  placement[1].x += s.env.step;  // the other UAV moves: UAV 0's map is worked out again
+  LookAround fresh(s);
+  const std::vector<double> after_move = map_of(kept);
+  EXPECT_EQ(after_move, map_of(fresh));
+  EXPECT_NE(after_move, first) << "the other UAV's move changes nothing: a weak test";
+  std::vector<Vec3> walked = model.UePositions();
+  for (Vec3& ue : walked)
+    ue.x = s.venue.width - ue.x;  // mirrored: the UEs stand elsewhere
+  model.SetUePositions(walked);
+  placement[1].x -= s.env.step;
+  LookAround fresh_again(s);
+  EXPECT_EQ(map_of(kept), map_of(fresh_again)) << "links of UEs that have since walked";
 }
 
 // At packet level the look around is the analytic model's too: the same values as at analytic
