@@ -33,10 +33,7 @@ double TrackMetrics::*FieldOf(const std::string& key) {
 }  // namespace
 
 std::vector<TrackCurvePoint> TrackDistributions(const std::vector<TrackRunRow>& rows) {
-  TrackGroupOrder order;
-  std::map<TrackGroupKey, std::vector<const TrackRunRow*>> groups;
-  for (const TrackRunRow& r : rows)
-    groups[order.KeyOf(r.scenario, r.label)].push_back(&r);
+  const auto groups = GroupTrackRuns(rows);
   std::vector<TrackCurvePoint> out;
   for (const auto& [key, runs] : groups) {
     for (const DistributionOf& d : kDistributions) {

@@ -16,4 +16,13 @@ TrackGroupKey TrackGroupOrder::KeyOf(const std::string& scenario, const std::str
   return {static_cast<std::size_t>(found - scenarios_.begin()), rank, label};
 }
 
+std::map<TrackGroupKey, std::vector<const TrackRunRow*>> GroupTrackRuns(
+    const std::vector<TrackRunRow>& rows) {
+  TrackGroupOrder order;
+  std::map<TrackGroupKey, std::vector<const TrackRunRow*>> groups;
+  for (const TrackRunRow& r : rows)
+    groups[order.KeyOf(r.scenario, r.label)].push_back(&r);
+  return groups;
+}
+
 }  // namespace rlpos

@@ -3,9 +3,12 @@
 // campaign's), then held positioners before tracking ones (TrackPositionerNames()), named
 // policies after the rest, by label. The summary, the curves and the time series share it.
 #include <cstddef>
+#include <map>
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "common/store/track_rows.h"
 
 namespace rlpos {
 
@@ -19,5 +22,9 @@ class TrackGroupOrder {
  private:
   std::vector<std::string> scenarios_;
 };
+
+// The runs of each scenario and positioner, in that order.
+std::map<TrackGroupKey, std::vector<const TrackRunRow*>> GroupTrackRuns(
+    const std::vector<TrackRunRow>& rows);
 
 }  // namespace rlpos

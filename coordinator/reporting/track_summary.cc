@@ -73,10 +73,7 @@ std::vector<std::vector<std::string>> TableRows(const std::vector<TrackSummary>&
 }  // namespace
 
 std::vector<TrackSummary> SummarizeTracks(const std::vector<TrackRunRow>& rows) {
-  TrackGroupOrder order;
-  std::map<TrackGroupKey, std::vector<const TrackRunRow*>> groups;
-  for (const TrackRunRow& r : rows)
-    groups[order.KeyOf(r.scenario, r.label)].push_back(&r);
+  const auto groups = GroupTrackRuns(rows);
   std::vector<TrackSummary> out;
   for (const auto& group : groups)
     out.push_back(Summarize(group.second));
