@@ -203,9 +203,18 @@ struct EnvSpec {
 // the keys every algorithm shares (agent_hyperparameters.h) are the base, as their keys sit in
 // "agent" itself. DQN's keys sit in "agent" too (DQN came first), but in C++ they are
 // agent.dqn: a PPO or SAC that named DQN's gamma or replay would not compile.
+// agent.ue_encoder's bounds: a few small layers, applied to each UE slot.
+constexpr int kMaxUeEncoderLayers = 4;
+constexpr int kMaxUeEncoderWidth = 512;
+
 struct AgentSpec : AgentCommonSpec {
   std::string algorithm = "dqn";  // dqn | ppo | sac (sac needs env.action_space "continuous")
   std::vector<int> hidden = {32, 32};
+  // PPO only, with "ues" in env.observations: the widths of a network shared by the UE slots
+  // (ReLU after each), whose mean over the present slots stands in for the slots in the input of
+  // the hidden layers, so the policy takes the UEs as a set. Empty: none, the slots go in as they
+  // are.
+  std::vector<int> ue_encoder;
   DqnSpec dqn;
   PpoSpec ppo;
   SacSpec sac;

@@ -1,5 +1,7 @@
 #include "common/scenario/scenario_parser.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -366,6 +368,24 @@ std::vector<int> ReadHidden(const json& h, const std::string& path) {
   return hidden;
 }
 
+std::vector<int> ReadUeEncoder(const json& e, const std::string& path) {
+  if (!e.is_array())
+    throw ConfigError(path, "expected [units, ...] (or [] for none)");
+  if (e.size() > static_cast<std::size_t>(kMaxUeEncoderLayers)) {
+    throw ConfigError(
+        path, std::to_string(e.size()) + " layers; at most " + std::to_string(kMaxUeEncoderLayers));
+  }
+  std::vector<int> widths;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const std::string at = JoinPath(path, i);
+    const double units = CheckedNumber(e[i], at, Between(1, kMaxUeEncoderWidth));
+    if (units != std::floor(units))
+      throw ConfigError(at, "expected an integer");
+    widths.push_back(static_cast<int>(units));
+  }
+  return widths;
+}
+
 AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   ObjectReader r(v, "/agent");
   AgentSpec a;
@@ -373,6 +393,8 @@ AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   static_cast<AgentCommonSpec&>(a) = AgentCommonDefaults(a.algorithm, uavs);
   if (const json* h = r.Child("hidden"))
     a.hidden = ReadHidden(*h, r.PathOf("hidden"));
+  if (const json* e = r.Child("ue_encoder"))
+    a.ue_encoder = ReadUeEncoder(*e, r.PathOf("ue_encoder"));
   ReadHyperparameters(r, DqnHyperparameters(), a.dqn);
   ReadHyperparameters(r, AgentCommonHyperparameters(), static_cast<AgentCommonSpec&>(a));
   if (const json* p = r.Child("ppo"))
@@ -389,12 +411,27 @@ AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   return a;
 }
 
+// The UE encoder reads the "ues" slots, and only PPO's networks have one.
+void CheckUeEncoder(const Scenario& s) {
+  if (s.agent.ue_encoder.empty())
+    return;
+  if (s.agent.algorithm != "ppo") {
+    throw ConfigError("/agent/ue_encoder",
+                      "only ppo has a UE encoder, not " + s.agent.algorithm + "; remove it");
+  }
+  const auto& fields = s.env.observations;
+  if (std::find(fields.begin(), fields.end(), "ues") == fields.end())
+    throw ConfigError("/agent/ue_encoder", "needs \"ues\" in env.observations");
+}
+
 json AgentJson(const AgentSpec& a) {
   json agent = {{"algorithm", a.algorithm}, {"hidden", a.hidden}};
   WriteHyperparameters(a.dqn, DqnHyperparameters(), agent);
   WriteHyperparameters<AgentCommonSpec>(a, AgentCommonHyperparameters(), agent);
   WriteHyperparameters(a.ppo, PpoHyperparameters(), agent["ppo"]);
   WriteHyperparameters(a.sac, SacHyperparameters(), agent["sac"]);
+  if (!a.ue_encoder.empty())  // absent when off: documents stay as they were before it
+    agent["ue_encoder"] = a.ue_encoder;
   return agent;
 }
 
@@ -568,6 +605,7 @@ Scenario ParseScenario(const json& document) {
                                               (continuous_agent ? "continuous" : "discrete") +
                                               "\", not \"" + s.env.action_space + "\"");
   }
+  CheckUeEncoder(s);
   CheckScenarioGeometry(s);
   return s;
 }

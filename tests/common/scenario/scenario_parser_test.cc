@@ -76,6 +76,21 @@ TEST(ScenarioParser, AlgorithmOverridesSelectTheAgentAndItsActionSpace) {
   EXPECT_EQ(ParseScenario(back).env.action_space, "discrete");
 }
 
+// agent.ue_encoder: read, written back, and absent from a document that does not set it (whose
+// bytes, and so the ids of its jobs and checkpoints, stay as they were).
+TEST(ScenarioParser, TheUeEncoderIsWrittenOnlyWhereSet) {
+  json doc = ShippedScenarioDocument("b");
+  EXPECT_FALSE(ToJson(ParseScenario(doc))["agent"].contains("ue_encoder"));
+  ApplyOverrides(doc, {"agent.algorithm=ppo", "env.observations=[\"zone\", \"ues\"]",
+                       "agent.ue_encoder=[32, 16]"});
+  const Scenario s = ParseScenario(doc);
+  EXPECT_EQ(s.agent.ue_encoder, (std::vector<int>{32, 16}));
+  EXPECT_EQ(ToJson(s)["agent"]["ue_encoder"], json({32, 16}));
+  EXPECT_EQ(ParseScenario(ToJson(s)).agent.ue_encoder, s.agent.ue_encoder);
+  ApplyOverrides(doc, {"agent.ue_encoder=[]"});
+  EXPECT_TRUE(ParseScenario(doc).agent.ue_encoder.empty());
+}
+
 TEST(ScenarioParser, TrainingDefaultsFollowTheAlgorithmAndTheUavCount) {
   const auto agent_of = [](const std::string& file, const std::string& algorithm,
                            std::vector<std::string> overrides) {
@@ -278,7 +293,31 @@ INSTANTIATE_TEST_SUITE_P(
         BadOverride{"SacNegativeAlpha",
                     {"agent.algorithm=sac", "env.action_space=continuous", "agent.sac.alpha=-1"},
                     "/agent/sac/alpha: must not be negative, got -1"},
-        BadOverride{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"}),
+        BadOverride{"SacZeroBatch", {"agent.sac.batch_size=0"}, "/agent/sac/batch_size: must be"},
+        BadOverride{"UeEncoderNotAList",
+                    {"agent.algorithm=ppo", "env.observations=[\"ues\"]", "agent.ue_encoder=16"},
+                    "/agent/ue_encoder: expected [units, ...] (or [] for none)"},
+        BadOverride{
+            "UeEncoderZeroWidth",
+            {"agent.algorithm=ppo", "env.observations=[\"ues\"]", "agent.ue_encoder=[16, 0]"},
+            "/agent/ue_encoder/1: must be >= 1"},
+        BadOverride{"UeEncoderTooWide",
+                    {"agent.algorithm=ppo", "env.observations=[\"ues\"]", "agent.ue_encoder=[513]"},
+                    "/agent/ue_encoder/0: must be <= 512"},
+        BadOverride{
+            "UeEncoderFractionalWidth",
+            {"agent.algorithm=ppo", "env.observations=[\"ues\"]", "agent.ue_encoder=[16.5]"},
+            "/agent/ue_encoder/0: expected an integer"},
+        BadOverride{"UeEncoderTooDeep",
+                    {"agent.algorithm=ppo", "env.observations=[\"ues\"]",
+                     "agent.ue_encoder=[8, 8, 8, 8, 8]"},
+                    "/agent/ue_encoder: 5 layers; at most 4"},
+        BadOverride{"UeEncoderNotPpo",
+                    {"env.observations=[\"ues\"]", "agent.ue_encoder=[16]"},
+                    "/agent/ue_encoder: only ppo has a UE encoder, not dqn; remove it"},
+        BadOverride{"UeEncoderWithoutUes",
+                    {"agent.algorithm=ppo", "agent.ue_encoder=[16]"},
+                    "/agent/ue_encoder: needs \"ues\" in env.observations"}),
     [](const ::testing::TestParamInfo<BadOverride>& param) { return param.param.name; });
 
 }  // namespace
