@@ -2,6 +2,7 @@
 // The environment interface the agents see (Gymnasium semantics): reset(seed) -> observation;
 // step(action) -> observation, reward, terminated, truncated, info.
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -72,6 +73,8 @@ class Env {
   virtual const StepInfo& LastInfo() const = 0;
   // The actions allowed in the current state; empty (the default) allows all.
   virtual ActionMask ValidActions() const { return {}; }
+  // Where the observation holds one slot per UE (a set a network may take as one), if it does.
+  virtual std::optional<SlotBlock> UeSlots() const { return std::nullopt; }
 
   // Several agents that act at once (several UAVs: every UAV moves in each step, as in
   // PettingZoo's ParallelEnv). An env of one agent has none of these.

@@ -104,37 +104,56 @@ BoxSpace DisplacementBounds(const Scenario& s) {
   return {{-d, -d, -d}, {d, d, d}};
 }
 
-BoxSpace ObservationBounds(const Scenario& s) {
-  BoxSpace box;
+namespace {
+
+// Appends the bounds of one field of env.observations to `box`.
+void AddFieldBounds(const Scenario& s, const std::string& field, BoxSpace& box) {
   const double n = static_cast<double>(s.ues.size());
   auto per_uav = [&](double Box::*lo, double Box::*hi) {
     for (const auto& uav : s.uavs)
       box.low.push_back(uav.zone.*lo), box.high.push_back(uav.zone.*hi);
   };
+  if (field == "x")
+    per_uav(&Box::xmin, &Box::xmax);
+  else if (field == "y")
+    per_uav(&Box::ymin, &Box::ymax);
+  else if (field == "z")
+    per_uav(&Box::zmin, &Box::zmax);
+  else if (field == "n_los" || field == "demands_met")
+    box.low.push_back(0), box.high.push_back(n);
+  else if (field == "throughput")
+    box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
+  else if (field == "snr") {
+    for (std::size_t i = 0; i < s.ues.size(); ++i)
+      box.low.push_back(kObservedSnrLowDb), box.high.push_back(kObservedSnrHighDb);
+  } else
+    AddGeneralBounds(s, field, box);
+}
+
+}  // namespace
+
+BoxSpace ObservationBounds(const Scenario& s) {
+  BoxSpace box;
   bool plain = false;  // a field of the scenario's own (not a general one): the one-hot follows
   for (const auto& field : s.env.observations) {
     plain = plain || !IsGeneralObservation(field);
-    if (field == "x")
-      per_uav(&Box::xmin, &Box::xmax);
-    else if (field == "y")
-      per_uav(&Box::ymin, &Box::ymax);
-    else if (field == "z")
-      per_uav(&Box::zmin, &Box::zmax);
-    else if (field == "n_los" || field == "demands_met")
-      box.low.push_back(0), box.high.push_back(n);
-    else if (field == "throughput")
-      box.low.push_back(0), box.high.push_back(s.TotalDemandMbps());
-    else if (field == "snr") {
-      for (std::size_t i = 0; i < s.ues.size(); ++i)
-        box.low.push_back(kObservedSnrLowDb), box.high.push_back(kObservedSnrHighDb);
-    } else
-      AddGeneralBounds(s, field, box);
+    AddFieldBounds(s, field, box);
   }
   if (s.uavs.size() > 1 && plain) {
     for (std::size_t u = 0; u < s.uavs.size(); ++u)
       box.low.push_back(0), box.high.push_back(1);
   }
   return box;
+}
+
+std::optional<SlotBlock> UeSlotBlock(const Scenario& s) {
+  BoxSpace before;  // the fields ahead of "ues" (the one-hot, if any, comes after them all)
+  for (const auto& field : s.env.observations) {
+    if (field == "ues")
+      return SlotBlock{static_cast<int>(before.Dim()), s.env.observed_ues, kUeSlotWidth};
+    AddFieldBounds(s, field, before);
+  }
+  return std::nullopt;
 }
 
 // Called at every step: each field is compared until its branch is found, once.

@@ -1,6 +1,7 @@
 #pragma once
 // The UAVs' discrete moves and the observation vector, from the scenario's env section.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,8 @@ constexpr double kObservedSnrHighDb = 60.0;
 // (a shared policy moves them in turn), unless every field is one of the general ones, which
 // already see the world from that UAV.
 BoxSpace ObservationBounds(const Scenario& scenario);
+// Where the "ues" field's slots lie in that layout; nothing without the field.
+std::optional<SlotBlock> UeSlotBlock(const Scenario& scenario);
 std::vector<double> MakeObservation(const Scenario& scenario, const StepInfo& info);
 
 }  // namespace rlpos

@@ -18,6 +18,15 @@ inline bool Allowed(const ActionMask& mask, int action) {
   return mask.empty() || mask[static_cast<std::size_t>(action)] != 0;
 }
 
+// Where like slots lie in an observation vector (the UE slots of "ues"): `count` slots of `width`
+// values from index `offset`. A slot holds something when its first value is > 0 (1 raw and 1
+// normalised; an empty slot has 0 raw, -1 normalised).
+struct SlotBlock {
+  int offset = 0;
+  int count = 0;
+  int width = 0;
+};
+
 struct BoxSpace {
   std::vector<double> low;
   std::vector<double> high;

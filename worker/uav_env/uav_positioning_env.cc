@@ -52,6 +52,10 @@ BoxSpace UavPositioningEnv::ObservationSpace() const {
   return ObservationBounds(scenario_);
 }
 
+std::optional<SlotBlock> UavPositioningEnv::UeSlots() const {
+  return UeSlotBlock(scenario_);
+}
+
 ActionMask UavPositioningEnv::ValidActionsOf(std::size_t uav) const {
   if (!scenario_.env.action_mask || Continuous())
     return {};

@@ -33,6 +33,7 @@ class UavPositioningEnv : public Env {
   DiscreteSpace ActionSpace() const override;
   BoxSpace ContinuousActionSpace() const override;
   BoxSpace ObservationSpace() const override;
+  std::optional<SlotBlock> UeSlots() const override;
   std::vector<double> Reset(std::uint64_t seed) override;
   // options.random_start: every UAV starts at RandomStart(scenario, seed) (exploring starts).
   std::vector<double> Reset(std::uint64_t seed, const ResetOptions& options) override;

@@ -75,6 +75,28 @@ TEST(GeneralObservation, NearestUesFirstThenEmptySlots) {
   }
 }
 
+// Where a network that takes the UEs as a set (agent.ue_encoder) finds their slots: after the
+// fields before "ues", whatever they are; the turn's one-hot comes after every field.
+TEST(GeneralObservation, TheUeSlotsAreFoundAfterTheFieldsBeforeThem) {
+  json document = Document("urban3.json");  // three UAVs, 20 UEs
+  document["env"]["observations"] = {"x", "snr", "zone", "ues", "heights"};
+  document["env"]["observed_ues"] = 5;
+  const Scenario s = ParseScenario(document);
+  const std::optional<SlotBlock> slots = UeSlotBlock(s);
+  ASSERT_TRUE(slots);
+  EXPECT_EQ(slots->offset, 3 + 20 + 3);
+  EXPECT_EQ(slots->count, 5);
+  EXPECT_EQ(slots->width, kUeSlotWidth);
+  // Each slot's first value is its presence: 1 up to the UE count (B has 4), then 0.
+  const Scenario b = General(Document("b.json"), 6);
+  const std::vector<double> obs = MakeObservation(b, InfoOfB(b, {40, 50, 30}, {1, 1, 1, 1}));
+  const std::optional<SlotBlock> b_slots = UeSlotBlock(b);
+  ASSERT_TRUE(b_slots);
+  for (int k = 0; k < b_slots->count; ++k)
+    EXPECT_EQ(obs[static_cast<std::size_t>(b_slots->offset + k * b_slots->width)], k < 4 ? 1 : 0);
+  EXPECT_FALSE(UeSlotBlock(ParseScenario(Document("b.json"))));
+}
+
 TEST(GeneralObservation, MoreUesThanSlotsShowsTheNearest) {
   const Scenario s = General(Document("b.json"), 2);
   const std::vector<double> obs = MakeObservation(s, InfoOfB(s, {80, 30, 30}, {1, 1, 1, 1}));
