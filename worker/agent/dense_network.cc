@@ -14,7 +14,8 @@
 
 namespace rlpos {
 
-DenseNetwork::DenseNetwork(std::vector<int> sizes) : sizes_(std::move(sizes)) {
+DenseNetwork::DenseNetwork(std::vector<int> sizes, bool relu_output)
+    : sizes_(std::move(sizes)), relu_output_(relu_output) {
   if (sizes_.size() < 2 || std::any_of(sizes_.begin(), sizes_.end(), [](int s) { return s <= 0; }))
     throw std::invalid_argument("DenseNetwork: at least an input and an output width, all > 0");
   std::size_t offset = 0;
@@ -57,21 +58,28 @@ RLPOS_WIDE_LOOPS void DenseNetwork::Forward(const float* x, int rows, float* out
         for (int o = 0; o < width; ++o)
           y[o] += xi * wi[o];
       }
-      if (!last) {
+      if (!last || relu_output_) {
         for (int o = 0; o < width; ++o)
           y[o] = y[o] > 0.0f ? y[o] : 0.0f;
       }
     }
   }
+  if (relu_output_)
+    outputs_.assign(out,
+                    out + static_cast<std::size_t>(rows) * static_cast<std::size_t>(OutputSize()));
 }
 
-RLPOS_WIDE_LOOPS void DenseNetwork::Backward(const float* d_out) {
+RLPOS_WIDE_LOOPS void DenseNetwork::Backward(const float* d_out, float* d_input) {
   if (rows_ <= 0)
     throw std::logic_error("DenseNetwork::Backward before Forward");
   const int rows = rows_;
   std::fill(gradients_.begin(), gradients_.end(), 0.0f);
   delta_.assign(d_out,
                 d_out + static_cast<std::size_t>(rows) * static_cast<std::size_t>(OutputSize()));
+  if (relu_output_) {  // through the output's ReLU: 0 where it clipped
+    for (std::size_t i = 0; i < delta_.size(); ++i)
+      delta_[i] = outputs_[i] > 0.0f ? delta_[i] : 0.0f;
+  }
   for (int l = LayerCount() - 1; l >= 0; --l) {
     const int in = LayerInputs(l);
     const int width = LayerOutputs(l);
@@ -92,9 +100,10 @@ RLPOS_WIDE_LOOPS void DenseNetwork::Backward(const float* d_out) {
           dwi[o] += xi * d[o];
       }
     }
-    if (l == 0)
+    if (l == 0 && !d_input)
       break;  // the input's gradient is not wanted
-    // d loss / d (layer l's input), through the ReLU that made it: 0 where it was clipped.
+    // d loss / d (layer l's input), through the ReLU that made it: 0 where it was clipped
+    // (the network's own input went through none).
     // Row by row, summed over the outputs in order (each sum as a dot product would add them),
     // but a whole input row at a time from the transposed weights, so that it vectorises.
     const float* w = parameters_.data() + WeightOffset(l);
@@ -114,8 +123,14 @@ RLPOS_WIDE_LOOPS void DenseNetwork::Backward(const float* d_out) {
         for (int i = 0; i < in; ++i)
           below[i] += wo[i] * d_o;
       }
+      if (l == 0)
+        continue;
       for (int i = 0; i < in; ++i)
         below[i] = xr[i] > 0.0f ? below[i] : 0.0f;
+    }
+    if (l == 0) {
+      std::copy(delta_below_.begin(), delta_below_.end(), d_input);
+      break;
     }
     delta_.swap(delta_below_);
   }

@@ -1,6 +1,7 @@
 #pragma once
 // A small multilayer perceptron in plain float arithmetic: in -> hidden... (ReLU after each) ->
-// out, the shape MakeMlp gives, with its forward pass and the gradient of its parameters.
+// out, the shape MakeMlp gives (optionally with a ReLU on the output too), with its forward pass
+// and the gradient of its parameters (and of its input, for a network in front of it).
 //
 // Why not libtorch: PPO's networks are 32-64 units wide and learn from minibatches of 64 rows.
 // At that size a libtorch update is dispatch, not arithmetic (about 1.4 ms of op overhead for
@@ -15,8 +16,9 @@ namespace rlpos {
 class DenseNetwork {
  public:
   // sizes: the input width, the hidden widths, the output width (at least two entries, all > 0).
-  // Parameters start at 0: load them (CopyInto, from a torch network) before use.
-  explicit DenseNetwork(std::vector<int> sizes);
+  // relu_output: a ReLU after the last layer as well (a layer whose output feeds another network).
+  // Parameters start at 0: load them (CopyParameters, from a torch network) before use.
+  explicit DenseNetwork(std::vector<int> sizes, bool relu_output = false);
 
   int InputSize() const { return sizes_.front(); }
   int OutputSize() const { return sizes_.back(); }
@@ -38,13 +40,16 @@ class DenseNetwork {
   // for Backward.
   void Forward(const float* x, int rows, float* out);
   // d_out[rows][OutputSize()]: d loss / d output for the rows of the last Forward. Sets
-  // Gradients() to d loss / d parameters (same layout as Parameters()).
-  void Backward(const float* d_out);
+  // Gradients() to d loss / d parameters (same layout as Parameters()), and, given d_input
+  // [rows][InputSize()], d loss / d input there. The parameters' gradients are the same bits
+  // with or without d_input.
+  void Backward(const float* d_out, float* d_input = nullptr);
   std::vector<float>& Gradients() { return gradients_; }
   const std::vector<float>& Gradients() const { return gradients_; }
 
  private:
   std::vector<int> sizes_;
+  bool relu_output_;
   std::vector<std::size_t> weight_offset_;
   std::vector<std::size_t> bias_offset_;
   std::vector<float> parameters_;
@@ -52,6 +57,7 @@ class DenseNetwork {
   // inputs_[l]: layer l's input for the rows of the last Forward (inputs_[0] is x; after that
   // the previous layer's output after its ReLU).
   std::vector<std::vector<float>> inputs_;
+  std::vector<float> outputs_;  // the last Forward's output, kept with relu_output only
   std::vector<float> delta_;
   std::vector<float> delta_below_;
   std::vector<float> weights_by_output_;  // a layer's weights [out][in], for Backward
