@@ -21,7 +21,7 @@ std::unique_ptr<Agent> MakeAgent(const AgentSpec& spec, const Env& env,
   if (discrete == 0)
     throw std::invalid_argument(spec.algorithm + " needs a discrete action space");
   if (spec.algorithm == "ppo")
-    return std::make_unique<PpoAgent>(spec, observations, discrete, training_steps);
+    return std::make_unique<PpoAgent>(spec, observations, discrete, training_steps, env.UeSlots());
   if (spec.algorithm == "dqn")
     return std::make_unique<DqnAgent>(spec, observations, discrete);
   throw std::invalid_argument("unknown algorithm " + spec.algorithm);

@@ -9,10 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "worker/agent/dense_network.h"
 #include "worker/agent/flat_adam.h"
 #include "worker/agent/libtorch.h"
-#include "worker/agent/mlp.h"
+#include "worker/agent/ppo_network.h"
 #include "worker/agent/ppo_objective.h"
 #include "worker/agent/running_moments.h"
 #include "worker/agent/state_stream.h"
@@ -31,12 +30,11 @@ struct PpoAgent::Impl {
   PpoSpec ppo;
   int observation_dim;
   int action_count;
-  // libtorch initialises, saves and loads the networks; DenseNetwork computes with them
-  // (dense_network.h says why). torch's copies are brought up to date before a save.
-  torch::nn::Sequential actor{nullptr};
-  torch::nn::Sequential critic{nullptr};
-  DenseNetwork actor_net;
-  DenseNetwork critic_net;
+  std::optional<SlotBlock> ue_slots;  // where the UE slots lie, for agent.ue_encoder
+  // libtorch initialises, saves and loads the networks; plain float computes with them
+  // (dense_network.h says why): ppo_network.h.
+  PpoNetwork actor_net;
+  PpoNetwork critic_net;
   FlatAdam actor_adam;
   FlatAdam critic_adam;
   std::mt19937_64 rng;
@@ -57,31 +55,29 @@ struct PpoAgent::Impl {
   std::int64_t planned_updates = 0;  // rollouts in the training; 0: no annealing
   std::int64_t done_updates = 0;     // rollouts learned from so far
 
-  static std::vector<int> Widths(int in, const std::vector<int>& hidden, int out) {
-    std::vector<int> widths{in};
-    widths.insert(widths.end(), hidden.begin(), hidden.end());
-    widths.push_back(out);
-    return widths;
+  // The actor, drawn first from torch's generator seeded with the agent's seed (the critic
+  // draws next): libtorch's weight initialisation, as before.
+  static PpoNetwork SeededActor(const AgentSpec& s, int obs_dim, int actions,
+                                const std::optional<SlotBlock>& ue_slots) {
+    torch::manual_seed(s.seed);
+    return PpoNetwork(obs_dim, s.hidden, actions, s.ue_encoder, ue_slots);
   }
 
-  Impl(const AgentSpec& s, int obs_dim, int actions, std::int64_t training_steps)
+  Impl(const AgentSpec& s, int obs_dim, int actions, std::int64_t training_steps,
+       const std::optional<SlotBlock>& ue_slots)
       : spec(s),
         ppo(s.ppo),
         observation_dim(obs_dim),
         action_count(actions),
-        actor_net(Widths(obs_dim, s.hidden, actions)),
-        critic_net(Widths(obs_dim, s.hidden, 1)),
+        ue_slots(ue_slots),
+        actor_net(SeededActor(s, obs_dim, actions, ue_slots)),
+        critic_net(obs_dim, s.hidden, 1, s.ue_encoder, ue_slots),
         actor_adam(actor_net.Parameters().size(), s.ppo.learning_rate, 1e-5),
         critic_adam(critic_net.Parameters().size(), s.ppo.learning_rate, 1e-5),
         rng(s.seed),
         rollout_size(std::int64_t{s.ppo.rollout_steps} * s.ppo.num_envs) {
     if (ppo.anneal_learning_rate && training_steps > 0)
       planned_updates = std::max<std::int64_t>(1, training_steps / rollout_size);
-    torch::manual_seed(s.seed);  // weight initialisation: libtorch's, as before
-    actor = MakeMlp(s.hidden, obs_dim, actions);
-    critic = MakeMlp(s.hidden, obs_dim, 1);
-    CopyParameters(actor, actor_net);
-    CopyParameters(critic, critic_net);
   }
 
   // rows x observation_dim, row-major, of the rollout's observations (or next observations).
@@ -205,7 +201,7 @@ struct PpoAgent::Impl {
   // torch::nn::utils::clip_grad_norm_ does over their parameters.
   void ClipGradients() {
     double squares = 0.0;
-    for (const DenseNetwork* net : {&actor_net, &critic_net}) {
+    for (PpoNetwork* net : {&actor_net, &critic_net}) {
       for (float g : net->Gradients())
         squares += static_cast<double>(g) * g;
     }
@@ -213,7 +209,7 @@ struct PpoAgent::Impl {
     if (coefficient >= 1.0)
       return;
     const auto scale = static_cast<float>(coefficient);
-    for (DenseNetwork* net : {&actor_net, &critic_net}) {
+    for (PpoNetwork* net : {&actor_net, &critic_net}) {
       for (float& g : net->Gradients())
         g *= scale;
     }
@@ -304,10 +300,10 @@ struct PpoAgent::Impl {
 };
 
 PpoAgent::PpoAgent(const AgentSpec& spec, int observation_dim, int action_count,
-                   std::int64_t training_steps) {
+                   std::int64_t training_steps, const std::optional<SlotBlock>& ue_slots) {
   if (observation_dim <= 0 || action_count <= 0)
     throw std::invalid_argument("PPO needs a non-empty observation and action space");
-  impl_ = std::make_unique<Impl>(spec, observation_dim, action_count, training_steps);
+  impl_ = std::make_unique<Impl>(spec, observation_dim, action_count, training_steps, ue_slots);
 }
 
 PpoAgent::~PpoAgent() = default;
@@ -419,26 +415,30 @@ void PpoAgent::RestoreKeptPolicy() {
 
 void PpoAgent::Save(const std::string& directory) const {
   std::filesystem::create_directories(directory);
-  CopyParameters(impl_->actor_net, impl_->actor);
-  CopyParameters(impl_->critic_net, impl_->critic);
-  torch::save(impl_->actor, directory + "/policy.pt");
-  torch::save(impl_->critic, directory + "/value.pt");
+  impl_->actor_net.Save(directory + "/policy.pt");
+  impl_->critic_net.Save(directory + "/value.pt");
 }
 
 void PpoAgent::Load(const std::string& directory) {
-  LoadNetwork(directory + "/policy.pt", impl_->actor, impl_->spec.hidden, impl_->observation_dim,
-              impl_->action_count);
-  CopyParameters(impl_->actor, impl_->actor_net);
+  impl_->actor_net.Load(directory + "/policy.pt");
   // Acting needs only the actor: a policy exported from a campaign's artifacts has no value.pt.
   const std::string value = directory + "/value.pt";
-  if (std::filesystem::exists(value)) {
-    LoadNetwork(value, impl_->critic, impl_->spec.hidden, impl_->observation_dim, 1);
-    CopyParameters(impl_->critic, impl_->critic_net);
-  }
+  if (std::filesystem::exists(value))
+    impl_->critic_net.Load(value);
 }
 
 namespace {
 constexpr char kStateMagic[] = "rlpos-ppo-state-1";
+// An agent with agent.ue_encoder: the UE encoder's widths and slots follow the spaces.
+constexpr char kSetStateMagic[] = "rlpos-ppo-ueset-1";
+static_assert(sizeof kStateMagic == sizeof kSetStateMagic);
+
+std::vector<std::int32_t> SlotsOf(const std::optional<SlotBlock>& slots) {
+  if (!slots)
+    return {};
+  return {slots->offset, slots->count, slots->width};
+}
+
 }  // namespace
 
 bool PpoAgent::AtRolloutStart() const {
@@ -451,9 +451,15 @@ void PpoAgent::SaveTrainingState(const std::string& file) const {
     throw std::logic_error("PPO's training state is saved between rollouts only");
   const Impl& m = *impl_;
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(kStateMagic, sizeof kStateMagic);
+  const bool sets = !m.spec.ue_encoder.empty();
+  out.write(sets ? kSetStateMagic : kStateMagic, sizeof kStateMagic);
   state::Write<std::int32_t>(out, m.observation_dim);
   state::Write<std::int32_t>(out, m.action_count);
+  if (sets) {
+    state::WriteVector(
+        out, std::vector<std::int32_t>(m.spec.ue_encoder.begin(), m.spec.ue_encoder.end()));
+    state::WriteVector(out, SlotsOf(m.ue_slots));
+  }
   state::WriteVector(out, m.actor_net.Parameters());
   state::WriteVector(out, m.critic_net.Parameters());
   m.actor_adam.SaveState(out);
@@ -479,11 +485,28 @@ void PpoAgent::LoadTrainingState(const std::string& file) {
   try {
     char magic[sizeof kStateMagic] = {};
     in.read(magic, sizeof magic);
-    if (!in || std::memcmp(magic, kStateMagic, sizeof magic) != 0)
+    const bool sets = !m.spec.ue_encoder.empty();
+    const char* other = sets ? kStateMagic : kSetStateMagic;
+    if (in && std::memcmp(magic, other, sizeof magic) == 0) {
+      throw std::runtime_error(sets ? "the state of an agent without agent.ue_encoder"
+                                    : "the state of an agent with agent.ue_encoder");
+    }
+    if (!in || std::memcmp(magic, sets ? kSetStateMagic : kStateMagic, sizeof magic) != 0)
       throw std::runtime_error("not a PPO training state of this version");
     if (state::Read<std::int32_t>(in) != m.observation_dim ||
         state::Read<std::int32_t>(in) != m.action_count)
       throw std::runtime_error("the state of an agent with other spaces");
+    if (sets) {
+      const std::vector<std::int32_t> widths(m.spec.ue_encoder.begin(), m.spec.ue_encoder.end());
+      const std::vector<std::int32_t> slots = SlotsOf(m.ue_slots);
+      std::vector<std::int32_t> saved;
+      state::ReadVector(in, saved, widths.size(), "agent.ue_encoder");
+      if (saved != widths)
+        throw std::runtime_error("the state of an agent with another agent.ue_encoder");
+      state::ReadVector(in, saved, slots.size(), "UE slots");
+      if (saved != slots)
+        throw std::runtime_error("the state of an agent with other UE slots");
+    }
     state::ReadVector(in, m.actor_net.Parameters(), m.actor_net.Parameters().size(), "actor");
     state::ReadVector(in, m.critic_net.Parameters(), m.critic_net.Parameters().size(), "critic");
     m.actor_adam.LoadState(in);

@@ -8,18 +8,22 @@
 // Observe) or from several at once (ActBatch, ObserveBatch: one forward pass for them all).
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "common/scenario/scenario.h"
 #include "worker/agent/agent.h"
+#include "worker/gym/spaces.h"
 
 namespace rlpos {
 
 class PpoAgent : public Agent {
  public:
   // training_steps: the transitions it will learn from, over which agent.ppo.anneal_learning_rate
-  // lowers the rate to 0 (0: unknown, the rate stays).
+  // lowers the rate to 0 (0: unknown, the rate stays). ue_slots: where the observation's UE
+  // slots lie (Env::UeSlots), which spec.ue_encoder needs (std::invalid_argument without).
   PpoAgent(const AgentSpec& spec, int observation_dim, int action_count,
-           std::int64_t training_steps = 0);
+           std::int64_t training_steps = 0,
+           const std::optional<SlotBlock>& ue_slots = std::nullopt);
   ~PpoAgent() override;
   std::string Algorithm() const override;
   // explore: a sample of the policy; otherwise its most probable allowed action.

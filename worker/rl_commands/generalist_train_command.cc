@@ -215,7 +215,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
   try {
     UavPositioningEnv example(settings);
     PpoAgent agent(settings.agent, static_cast<int>(example.ObservationSpace().Dim()),
-                   example.ActionSpace().n, t.steps);
+                   example.ActionSpace().n, t.steps, example.UeSlots());
     GeneralistOptions g;
     g.steps = t.steps;
     g.validation_scenarios = t.validation_scenarios;
