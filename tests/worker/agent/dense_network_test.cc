@@ -74,6 +74,39 @@ TEST(DenseNetwork, GradientsAreAutogradsWithinRounding) {
   EXPECT_GT(nonzero, static_cast<int>(got.size()) / 2);
 }
 
+// What a network in front of this one needs: the input's gradient (negative inputs included,
+// which no ReLU made), and a ReLU on the output on request; the parameters' gradients unchanged.
+TEST(DenseNetwork, GivesTheInputsGradientAndAnOutputReluOnRequest) {
+  torch::manual_seed(7);
+  Pair pair;
+  torch::nn::Sequential relu_net = MakeMlp(kHidden, kIn, kOut);
+  relu_net->push_back(torch::nn::ReLU());
+  CopyParameters(pair.torch_net, relu_net);
+  DenseNetwork dense({kIn, 16, 12, kOut}, true);
+  CopyParameters(relu_net, dense);
+  const torch::Tensor x = pair.x.clone().requires_grad_(true);
+  const torch::Tensor weights = torch::randn({9, kOut});
+  (relu_net->forward(x) * weights).sum().backward();
+
+  std::vector<float> out(9 * kOut);
+  dense.Forward(FloatsOf(x).data(), 9, out.data());
+  const std::vector<float> expected_out = FloatsOf(relu_net->forward(x));
+  for (std::size_t i = 0; i < out.size(); ++i)
+    EXPECT_NEAR(out[i], expected_out[i], 1e-5f) << "output " << i;
+  std::vector<float> d_input(9 * kIn);
+  dense.Backward(FloatsOf(weights).data(), d_input.data());
+  const std::vector<float> expected = FloatsOf(x.grad());
+  int negative_inputs = 0;
+  for (std::size_t i = 0; i < d_input.size(); ++i) {
+    EXPECT_NEAR(d_input[i], expected[i], 1e-4f) << "input " << i;
+    negative_inputs += FloatsOf(x)[i] < 0.0f && expected[i] != 0.0f;
+  }
+  EXPECT_GT(negative_inputs, 0);
+  const std::vector<float> with_input = dense.Gradients();
+  dense.Backward(FloatsOf(weights).data());
+  EXPECT_EQ(dense.Gradients(), with_input);
+}
+
 TEST(DenseNetwork, CopiesToTorchAndBackLoseNothing) {
   torch::manual_seed(5);
   Pair pair;
