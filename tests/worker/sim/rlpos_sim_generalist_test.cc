@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -115,6 +116,36 @@ TEST_F(Generalist, APlacementOutsideWhatItWasTrainedForIsRefused) {
   // Its env settings travel with it: a scenario may restate them, not change them.
   ExpectOneLineRefusal(Position(kScenarioB, " --set env.step=10"), Policy(), "/env/step");
   EXPECT_EQ(Position(kScenarioB, " --set env.step=5").exit_code, 0);
+}
+
+// agent.ue_encoder (the UEs as a set): the folder's scenario.json records it, so `position`
+// builds that network; a folder whose scenario.json lost it is refused in one line naming the file.
+TEST_F(Generalist, WithTheUeEncoderItPlacesWithTheNetworkItTrained) {
+  const fs::path sets = dir_ / "sets";
+  const auto r =
+      RunCommand(Sim("train" + kTiny + " --set agent.ue_encoder=[8] --out " + sets.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto scenario = nlohmann::json::parse(std::ifstream(sets / "scenario.json"));
+  EXPECT_EQ(scenario["agent"]["ue_encoder"], nlohmann::json({8}));
+  const auto place = [&](const fs::path& policy) {
+    return RunCommand(Sim("position --positioner rl --json --scenario " + kScenarioB +
+                          " --policy " + policy.string()));
+  };
+  const auto placed = place(sets);
+  ASSERT_EQ(placed.exit_code, 0) << placed.err;
+  EXPECT_GE(nlohmann::json::parse(placed.out)["reward"].get<double>(), 0.0);
+
+  const fs::path stripped = dir_ / "sets-stripped";
+  fs::copy(sets, stripped, fs::copy_options::recursive);
+  auto without = scenario;
+  without["agent"].erase("ue_encoder");
+  std::ofstream(stripped / "scenario.json") << without.dump(2);
+  const auto refused = place(stripped);
+  EXPECT_EQ(refused.exit_code, 1) << refused.err;
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_NE(refused.err.find((stripped / "policy.pt").string() + ": "), std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("agent.ue_encoder"), std::string::npos) << refused.err;
 }
 
 // The UEs walk and the policy flies online: asked again every decision interval (the run's own),
