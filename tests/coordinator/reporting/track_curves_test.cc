@@ -19,8 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TrackRunRow RunOf(const std::string& scenario, const std::string& label, double reward,
-                double mbps, double delay) {
+TrackRunRow RunOf(const std::string& scenario, const std::string& label, double reward, double mbps,
+                  double delay) {
   TrackRunRow r;
   r.scenario = scenario;
   r.label = label;
@@ -98,10 +98,10 @@ TEST(TrackCurves, SeriesInTheSummarysOrderEachPositionersIntervalsInTurn) {
   std::vector<std::string> order;
   for (const TrackSeriesRow& r : rows)
     order.push_back(r.scenario + "/" + r.label + "/" + std::to_string(r.interval));
-  EXPECT_EQ(order, (std::vector<std::string>{"street/oracle/0", "street/oracle/1",
-                                             "street/oracle-track/0", "street/oracle-track/1",
-                                             "street/rl+generalist/0", "street/zeta/0",
-                                             "festival/centroid/0"}));
+  EXPECT_EQ(order,
+            (std::vector<std::string>{"street/oracle/0", "street/oracle/1", "street/oracle-track/0",
+                                      "street/oracle-track/1", "street/rl+generalist/0",
+                                      "street/zeta/0", "festival/centroid/0"}));
   const std::string csv = FormatTrackSeriesCsv(rows);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "scenario,positioner,interval,time_s,runs,scored,reward,throughput_mbps,delay_ms,"
