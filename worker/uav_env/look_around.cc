@@ -90,6 +90,8 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
       links[u] = &others[u];
     }
   }
+  if (placement.size() > 1)
+    ForgetLinksIfUesMoved(model);  // once per map, not once per point
   double best_of_map = -1.0;
   best_point_ = placement[active];
   for (int row = 0; row < cells; ++row) {
@@ -134,17 +136,20 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
   out = std::move(values);
 }
 
-const std::vector<UeLink>& LookAround::MapLinks(std::size_t active, std::size_t point,
-                                                const Vec3& position, AnalyticEvaluator& model) {
-  if (scenario_.uavs.size() == 1) {
-    scratch_links_ = model.LinksAt(active, position);
-    return scratch_links_;
-  }
+void LookAround::ForgetLinksIfUesMoved(const AnalyticEvaluator& model) {
   const std::vector<Vec3>& ues = model.UePositions();
   if (map_links_.empty() ||
       !std::equal(ues.begin(), ues.end(), map_links_ues_.begin(), map_links_ues_.end(), Same)) {
     map_links_.assign(scenario_.uavs.size(), {});
     map_links_ues_ = ues;
+  }
+}
+
+const std::vector<UeLink>& LookAround::MapLinks(std::size_t active, std::size_t point,
+                                                const Vec3& position, AnalyticEvaluator& model) {
+  if (scenario_.uavs.size() == 1) {
+    scratch_links_ = model.LinksAt(active, position);
+    return scratch_links_;
   }
   std::vector<std::vector<UeLink>>& of_uav = map_links_[active];
   if (of_uav.size() <= point)

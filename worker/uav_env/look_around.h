@@ -30,6 +30,8 @@ class LookAround {
  private:
   void Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
                 const RewardOf& reward_of, std::vector<double>& out);
+  // Drops the kept links when the model's UEs are no longer where they were worked out for.
+  void ForgetLinksIfUesMoved(const AnalyticEvaluator& model);
   // The UEs' links from map point `point` (its cell and altitude) of UAV `active`'s map, at
   // `position`: kept with several UAVs, worked out each time with one (whose map is made once).
   const std::vector<UeLink>& MapLinks(std::size_t active, std::size_t point, const Vec3& position,
