@@ -45,6 +45,14 @@ struct MultiStepResult {
 };
 
 // Gymnasium's reset(options=...): what an env may do differently in one episode.
+// Where an episode stands, when everything still to come follows from it: `key` holds it as bits
+// (two moments of equal keys give the same observations, masks, rewards and infos under the
+// same actions), and the episode ends by its time limit only, after `steps_left` more steps.
+struct DeterminingState {
+  std::vector<std::uint64_t> key;
+  int steps_left = 0;
+};
+
 struct ResetOptions {
   // Start from a state drawn from the seed instead of the usual initial state (exploring
   // starts, for training). An env whose initial state is random already ignores it.
@@ -75,6 +83,9 @@ class Env {
   virtual ActionMask ValidActions() const { return {}; }
   // Where the observation holds one slot per UE (a set a network may take as one), if it does.
   virtual std::optional<SlotBlock> UeSlots() const { return std::nullopt; }
+  // The state the rest of the episode follows from, if the env can tell (empty, the default,
+  // when what is to come also depends on what it cannot expose, such as a simulator's queues).
+  virtual std::optional<DeterminingState> Determining() const { return std::nullopt; }
 
   // Several agents that act at once (several UAVs: every UAV moves in each step, as in
   // PettingZoo's ParallelEnv). An env of one agent has none of these.

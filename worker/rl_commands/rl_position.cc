@@ -1,5 +1,6 @@
 #include "common/config/config_error.h"
 #include "common/scenario/scenario_contradiction.h"
+#include "worker/agent/greedy_flight.h"
 #include "worker/agent/make_agent.h"
 #include "worker/agent/torch_threads.h"
 #include "worker/agent/trainer.h"
@@ -67,8 +68,7 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
     UavPositioningEnv env(GeneralTarget(folder, options));
     const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
     agent->Load(policy);
-    return RunEpisode(env, *agent, folder.eval_run, false, nullptr,
-                      GreedyEpisodeOptions(folder.trained.agent))
+    return FlyGreedy(env, *agent, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent))
         .final_info.positions;
   }
   RefuseContradiction(folder, options);
@@ -79,8 +79,7 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
     return TorchScriptPlacement(folder, env);
   const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
   agent->Load(policy);
-  return RunEpisode(env, *agent, folder.eval_run, false, nullptr,
-                    GreedyEpisodeOptions(folder.trained.agent))
+  return FlyGreedy(env, *agent, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent))
       .final_info.positions;
 }
 
@@ -112,7 +111,7 @@ TrackDecision PolicyTrack(const CommonOptions& options, const std::string& polic
     for (std::size_t u = 0; u < uavs_now.size() && u < now.uavs.size(); ++u)
       now.uavs[u].initial = uavs_now[u];
     UavPositioningEnv env(now);
-    return RunEpisode(env, *agent, run, false, nullptr, greedy).final_info.positions;
+    return FlyGreedy(env, *agent, run, greedy).final_info.positions;
   };
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "common/scenario/number_text.h"
@@ -54,6 +55,26 @@ BoxSpace UavPositioningEnv::ObservationSpace() const {
 
 std::optional<SlotBlock> UavPositioningEnv::UeSlots() const {
   return UeSlotBlock(scenario_);
+}
+
+std::optional<DeterminingState> UavPositioningEnv::Determining() const {
+  // At analytic fidelity a step is a pure function of the placement (the UEs stand where the
+  // scenario puts them) and the next turn of where the turns stand; nothing terminates early.
+  if (!analytic_ || placement_.empty())
+    return std::nullopt;
+  DeterminingState state;
+  state.key.reserve(3 * placement_.size() + 1);
+  for (const Vec3& at : placement_) {
+    for (const double v : {at.x, at.y, at.z}) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &v, sizeof bits);
+      state.key.push_back(bits);
+    }
+  }
+  const int round = scenario_.env.turn_steps * static_cast<int>(placement_.size());
+  state.key.push_back(static_cast<std::uint64_t>(steps_ % round));
+  state.steps_left = steps_per_episode_ - steps_;
+  return state;
 }
 
 ActionMask UavPositioningEnv::ValidActionsOf(std::size_t uav) const {

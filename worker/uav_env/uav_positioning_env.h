@@ -34,6 +34,9 @@ class UavPositioningEnv : public Env {
   BoxSpace ContinuousActionSpace() const override;
   BoxSpace ObservationSpace() const override;
   std::optional<SlotBlock> UeSlots() const override;
+  // At analytic fidelity with the UEs standing still: the UAVs' positions and where the turns
+  // stand. At packet level none (the network's queues and clocks carry over).
+  std::optional<DeterminingState> Determining() const override;
   std::vector<double> Reset(std::uint64_t seed) override;
   // options.random_start: every UAV starts at RandomStart(scenario, seed) (exploring starts).
   std::vector<double> Reset(std::uint64_t seed, const ResetOptions& options) override;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "worker/agent/greedy_flight.h"
 #include "worker/agent/trainer.h"
 #include "worker/positioners/positioners.h"
 #include "worker/uav_env/uav_positioning_env.h"
@@ -151,8 +152,7 @@ std::vector<ValidationScore> ScoreGreedy(const std::vector<ValidationScenario>& 
   std::vector<ValidationScore> scores;
   for (const ValidationScenario& v : scenarios) {
     UavPositioningEnv env(v.drawn.scenario);
-    const EpisodeRecord r =
-        RunEpisode(env, agent, kValidationRun, false, nullptr, GreedyEpisodeOptions(spec));
+    const GreedyFlight r = FlyGreedy(env, agent, kValidationRun, GreedyEpisodeOptions(spec));
     const double ratio = v.oracle_reward > 0 ? r.final_reward / v.oracle_reward : 1.0;
     scores.push_back({v.drawn.origin, r.final_reward, v.oracle_reward, ratio, r.final_info.n_los,
                       v.drawn.scenario.ues.size()});

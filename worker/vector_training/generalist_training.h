@@ -93,7 +93,8 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
 // `threads` threads (0: the cores).
 std::vector<ValidationScenario> ValidationSet(const ScenarioDraw& draw, int count,
                                               std::size_t threads = 0);
-// The agent's greedy flight in each: from the baseline, over the env's whole episode.
+// The agent's greedy flight in each: from the baseline, to the end of the env's episode
+// (FlyGreedy: its cycle read off once the flight repeats a state).
 std::vector<ValidationScore> ScoreGreedy(const std::vector<ValidationScenario>& scenarios,
                                          Agent& agent, const AgentSpec& spec);
 

@@ -8,10 +8,20 @@
 #include <fstream>
 #include <iterator>
 
+#include "worker/agent/greedy_flight.h"
+#include "worker/agent/trainer.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos {
 namespace {
+
+// A placement's coordinates, UAV by UAV, to compare bit for bit.
+std::vector<double> Coordinates(const Placement& placement) {
+  std::vector<double> xyz;
+  for (const Vec3& at : placement)
+    xyz.insert(xyz.end(), {at.x, at.y, at.z});
+  return xyz;
+}
 
 namespace fs = std::filesystem;
 
@@ -93,6 +103,42 @@ TEST(GeneralistTraining, TheSameSeedGivesTheSamePolicyOnAnyThreadCount) {
   EXPECT_EQ(one.result.kept_at_steps, two.result.kept_at_steps);
   // A longer budget trains on: another policy.
   EXPECT_NE(TrainTiny(1, 280).policy, one.policy);
+}
+
+// A greedy flight in the analytic env, read off its cycle (placements, what the UEs get, the
+// reward) ends bit for bit where the whole flight ends: with one UAV and with three in turns.
+TEST(GreedyFlightInTheEnv, EndsWhereTheWholeFlightEndsWithOneUavAndWithThree) {
+  for (const int uavs : {1, 3}) {
+    Scenario settings = Settings();
+    settings.env.episode_duration = 30;  // 300 steps
+    if (uavs > 1)
+      settings.env.observations.push_back("others");
+    const ScenarioDraw draw(
+        {{GeneratorStyle::kUrban, GeneratorStyle::kSuburb}, {uavs, uavs}, CountRange{4, 6}},
+        settings, 7);
+    int shortened = 0;
+    for (int i = 0; i < 4; ++i) {
+      const Scenario s = draw.Validation(static_cast<std::uint64_t>(i)).scenario;
+      const std::string where = std::to_string(uavs) + " UAV(s), validation " + std::to_string(i);
+      UavPositioningEnv env(s);
+      PpoAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()),
+                     env.ActionSpace().n);  // untrained: its seeded first weights
+      const EpisodeOptions greedy = GreedyEpisodeOptions(s.agent);
+      const EpisodeRecord whole = RunEpisode(env, agent, 1, false, nullptr, greedy);
+      const GreedyFlight flight = FlyGreedy(env, agent, 1, greedy);
+      ASSERT_EQ(whole.steps, 300) << where;
+      EXPECT_EQ(flight.steps, whole.steps) << where;
+      EXPECT_EQ(Coordinates(flight.final_info.positions), Coordinates(whole.final_info.positions))
+          << where;
+      EXPECT_EQ(flight.final_info.active_uav, whole.final_info.active_uav) << where;
+      EXPECT_EQ(flight.final_info.serving, whole.final_info.serving) << where;
+      EXPECT_EQ(flight.final_info.snr_db, whole.final_info.snr_db) << where;
+      EXPECT_EQ(flight.final_info.throughput_mbps, whole.final_info.throughput_mbps) << where;
+      EXPECT_EQ(flight.final_reward, whole.final_reward) << where;
+      shortened += flight.steps_flown < flight.steps ? 1 : 0;
+    }
+    EXPECT_GT(shortened, 0) << uavs << " UAV(s)";
+  }
 }
 
 TEST(GeneralistTraining, RefusesAnEmptyBudget) {

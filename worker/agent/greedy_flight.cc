@@ -1,0 +1,63 @@
+#include "worker/agent/greedy_flight.h"
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+namespace rlpos {
+namespace {
+
+struct Moment {
+  StepInfo info;
+  double reward = 0.0;
+};
+
+GreedyFlight WholeEpisode(Env& env, Agent& agent, std::uint64_t seed,
+                          const EpisodeOptions& options) {
+  const EpisodeRecord record = RunEpisode(env, agent, seed, false, nullptr, options);
+  return {record.final_info, record.final_reward, record.steps, record.steps};
+}
+
+}  // namespace
+
+GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const EpisodeOptions& options) {
+  if (options.joint && env.AgentCount() > 1)
+    return WholeEpisode(env, agent, seed, options);
+  const BoxSpace space = env.ObservationSpace();
+  const BoxSpace box = env.ContinuousActionSpace();
+  std::vector<float> obs = space.Normalise(env.Reset(seed, options.reset));
+  std::optional<DeterminingState> state = env.Determining();
+  if (!state)
+    return WholeEpisode(env, agent, seed, options);
+  int steps = state->steps_left;
+  if (options.max_steps > 0)
+    steps = std::min(steps, options.max_steps);
+  // Each state met, with the step after which it stood; moments[t] is step t + 1's outcome.
+  std::map<std::vector<std::uint64_t>, int> met;
+  std::vector<Moment> moments;
+  met.emplace(std::move(state->key), 0);
+  for (int t = 1;; ++t) {
+    StepResult step;
+    if (agent.Continuous())
+      step = env.StepContinuous(ScaleToBox(agent.ActContinuous(obs, false), box));
+    else
+      step = env.Step(agent.Act(obs, env.ValidActions(), false));
+    if (t >= steps || step.terminated || step.truncated)
+      return {step.info, step.reward, t, t};
+    moments.push_back({std::move(step.info), step.reward});
+    state = env.Determining();
+    const auto [seen, first] = met.emplace(std::move(state->key), t);
+    if (!first) {
+      // The states after step s = seen->second repeat with period t - s: the last step's is
+      // the one (steps - s) mod period steps after s.
+      const int s = seen->second;
+      const int period = t - s;
+      const int last = s + (steps - s) % period;
+      const Moment& end = moments[static_cast<std::size_t>((last == s ? s + period : last) - 1)];
+      return {end.info, end.reward, steps, t};
+    }
+    obs = space.Normalise(step.observation);
+  }
+}
+
+}  // namespace rlpos
