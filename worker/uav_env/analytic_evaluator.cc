@@ -73,6 +73,7 @@ void AnalyticEvaluator::SetUePositions(const std::vector<Vec3>& positions) {
     throw std::logic_error("moving the UEs of an evaluator whose memo is shared");
   channel_->SetUePositions(positions);
   own_memo_->Clear();
+  channel_shares_.Clear();  // its keys will not recur
 }
 
 const std::vector<Vec3>& AnalyticEvaluator::UePositions() const {
@@ -155,9 +156,8 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
     }
     if (members.empty())
       continue;
-    const AirtimeEstimate estimate =
-        EstimateAirtimeThroughput(domain, scenario_.traffic.packet_size, capture);
-    info.throughput_mbps += estimate.aggregate_mbps;
+    info.throughput_mbps +=
+        channel_shares_.Aggregate(domain, scenario_.traffic.packet_size, capture);
   }
   return info;
 }

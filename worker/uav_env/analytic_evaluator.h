@@ -11,6 +11,7 @@
 #include "common/phy/mcs_table.h"
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
+#include "worker/uav_env/channel_share_memo.h"
 #include "worker/uav_env/placement_memo.h"
 #include "worker/uav_env/shared_placement_memo.h"
 
@@ -58,6 +59,7 @@ class AnalyticEvaluator {
   std::unique_ptr<AnalyticChannel> channel_;
   std::unique_ptr<PlacementMemo> own_memo_;           // no shared memo given
   std::shared_ptr<SharedPlacementMemo> shared_memo_;  // or this one
+  ChannelShareMemo channel_shares_;                   // several UAVs: each channel's share
 };
 
 // The env's reward (the scenario's env.reward) at `placement` by the analytic model: what the

@@ -1,0 +1,37 @@
+#pragma once
+// The airtime model's aggregate throughput of one channel's UEs, remembered by its exact inputs.
+// With several UAVs, each on a channel of its own, a search that moves one UAV (a coverage map's
+// columns, coordinate descent's candidates) changes one channel's share at a time: the other
+// channels' UEs and links recur, and their shares are looked up instead of solved again (the
+// capture fixed point is most of a multi-UAV map's time). Keys are compared bit for bit, so a
+// lookup gives the bits of a solve. For one evaluator: its packet size and capture cost are
+// fixed, so they are not part of the key.
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "common/phy/airtime_model.h"
+
+namespace rlpos {
+
+class ChannelShareMemo {
+ public:
+  // Entries kept before the memo starts again empty (keys of a few UEs are a few hundred bytes).
+  static constexpr std::size_t kMaxEntries = 4096;
+
+  // EstimateAirtimeThroughput(domain, packet_size, capture).aggregate_mbps.
+  double Aggregate(const std::vector<AirtimeLink>& domain, int packet_size,
+                   const CaptureCost& capture);
+  void Clear() { shares_.clear(); }
+  std::size_t Size() const { return shares_.size(); }
+
+ private:
+  struct KeyHash {
+    std::size_t operator()(const std::vector<std::uint64_t>& key) const;
+  };
+  std::unordered_map<std::vector<std::uint64_t>, double, KeyHash> shares_;
+  std::vector<std::uint64_t> key_;  // reused between lookups
+};
+
+}  // namespace rlpos
