@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace rlpos {
@@ -46,6 +48,9 @@ GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const Episode
       return {step.info, step.reward, t, t};
     moments.push_back({std::move(step.info), step.reward});
     state = env.Determining();
+    if (!state)  // Env's contract: told after a Reset, told after each step of that episode
+      throw std::logic_error("the env told its state after the reset but not after step " +
+                             std::to_string(t));
     const auto [seen, first] = met.emplace(std::move(state->key), t);
     if (!first) {
       // The states after step s = seen->second repeat with period t - s: the last step's is

@@ -85,6 +85,7 @@ class Env {
   virtual std::optional<SlotBlock> UeSlots() const { return std::nullopt; }
   // The state the rest of the episode follows from, if the env can tell (empty, the default,
   // when what is to come also depends on what it cannot expose, such as a simulator's queues).
+  // An env that tells it after a Reset tells it after every step of that episode.
   virtual std::optional<DeterminingState> Determining() const { return std::nullopt; }
 
   // Several agents that act at once (several UAVs: every UAV moves in each step, as in
