@@ -44,7 +44,6 @@ struct MultiStepResult {
   StepInfo info;
 };
 
-// Gymnasium's reset(options=...): what an env may do differently in one episode.
 // Where an episode stands, when everything still to come follows from it: `key` holds it as bits
 // (two moments of equal keys give the same observations, masks, rewards and infos under the
 // same actions), and the episode ends by its time limit only, after `steps_left` more steps.
@@ -53,6 +52,7 @@ struct DeterminingState {
   int steps_left = 0;
 };
 
+// Gymnasium's reset(options=...): what an env may do differently in one episode.
 struct ResetOptions {
   // Start from a state drawn from the seed instead of the usual initial state (exploring
   // starts, for training). An env whose initial state is random already ignores it.

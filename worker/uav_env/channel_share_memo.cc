@@ -38,10 +38,16 @@ double ChannelShareMemo::Aggregate(const std::vector<AirtimeLink>& domain, int p
   if (found != shares_.end())
     return found->second;
   const double aggregate = EstimateAirtimeThroughput(domain, packet_size, capture).aggregate_mbps;
-  if (shares_.size() >= kMaxEntries)
-    shares_.clear();
+  if (key_words_ + key_.size() > kMaxKeyWords)
+    Clear();
   shares_.emplace(key_, aggregate);
+  key_words_ += key_.size();
   return aggregate;
+}
+
+void ChannelShareMemo::Clear() {
+  shares_.clear();
+  key_words_ = 0;
 }
 
 }  // namespace rlpos

@@ -17,20 +17,23 @@ namespace rlpos {
 
 class ChannelShareMemo {
  public:
-  // Entries kept before the memo starts again empty (keys of a few UEs are a few hundred bytes).
-  static constexpr std::size_t kMaxEntries = 4096;
+  // Key words (8 bytes each, 4 per UE) kept before the memo starts again empty: 512 KiB of keys,
+  // about 1,600 channels of ten UEs, so that a batch of hundreds of envs stays small.
+  static constexpr std::size_t kMaxKeyWords = 64 * 1024;
 
   // EstimateAirtimeThroughput(domain, packet_size, capture).aggregate_mbps.
   double Aggregate(const std::vector<AirtimeLink>& domain, int packet_size,
                    const CaptureCost& capture);
-  void Clear() { shares_.clear(); }
+  void Clear();
   std::size_t Size() const { return shares_.size(); }
+  std::size_t KeyWords() const { return key_words_; }
 
  private:
   struct KeyHash {
     std::size_t operator()(const std::vector<std::uint64_t>& key) const;
   };
   std::unordered_map<std::vector<std::uint64_t>, double, KeyHash> shares_;
+  std::size_t key_words_ = 0;       // in the keys of shares_
   std::vector<std::uint64_t> key_;  // reused between lookups
 };
 

@@ -53,15 +53,19 @@ TEST(ChannelShareMemo, GivesTheBitsOfASolveAndSolvesARecurringChannelOnce) {
   EXPECT_EQ(memo.Size(), domains.size() + 1);
 }
 
-TEST(ChannelShareMemo, StartsAgainEmptyWhenFull) {
+TEST(ChannelShareMemo, StartsAgainEmptyWhenItsKeysFillTheirBudget) {
   ChannelShareMemo memo;
   const CaptureCost capture = Capture();
-  for (std::size_t i = 0; i <= ChannelShareMemo::kMaxEntries; ++i) {
-    const std::vector<AirtimeLink> one{{1.0 + static_cast<double>(i), 29.25, 1.0, 20.0}};
-    memo.Aggregate(one, 1464, capture);
-    ASSERT_LE(memo.Size(), ChannelShareMemo::kMaxEntries);
+  // Channels of ten UEs: 40 key words each.
+  const std::size_t fit = ChannelShareMemo::kMaxKeyWords / 40;
+  for (std::size_t i = 0; i <= fit; ++i) {
+    std::vector<AirtimeLink> ten(10, {20.0, 29.25, 1.0, 20.0});
+    ten[0].demand_mbps = 1.0 + static_cast<double>(i);
+    memo.Aggregate(ten, 1464, capture);
+    ASSERT_LE(memo.KeyWords(), ChannelShareMemo::kMaxKeyWords);
+    ASSERT_EQ(memo.KeyWords(), 40 * memo.Size());
   }
-  EXPECT_EQ(memo.Size(), 1u);
+  EXPECT_EQ(memo.Size(), 1u);  // the last one, after the memo started again
 }
 
 // One UAV of campus2 (two UAVs on channels of their own) swept over a grid while the other
