@@ -1,27 +1,13 @@
 #include "worker/uav_env/channel_share_memo.h"
 
-#include <cstring>
+#include "worker/uav_env/bit_keys.h"
 
 namespace rlpos {
-namespace {
-
-std::uint64_t LinkWord(double v) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &v, sizeof bits);
-  return bits;
-}
-
-}  // namespace
 
 std::size_t ChannelShareMemo::KeyHash::operator()(const std::vector<std::uint64_t>& key) const {
-  std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a over the words, then a final mix
-  for (const std::uint64_t word : key) {
-    h ^= word;
-    h *= 0x100000001b3ull;
-  }
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdull;
-  h ^= h >> 33;
+  std::uint64_t h = 0;
+  for (const std::uint64_t word : key)
+    h = MixBits(h ^ word);
   return static_cast<std::size_t>(h);
 }
 
@@ -29,10 +15,10 @@ double ChannelShareMemo::Aggregate(const std::vector<AirtimeLink>& domain, int p
                                    const CaptureCost& capture) {
   key_.clear();
   for (const AirtimeLink& link : domain) {
-    key_.push_back(LinkWord(link.demand_mbps));
-    key_.push_back(LinkWord(link.phy_rate_mbps));
-    key_.push_back(LinkWord(link.mpdu_success));
-    key_.push_back(LinkWord(link.snr_db));
+    key_.push_back(DoubleBits(link.demand_mbps));
+    key_.push_back(DoubleBits(link.phy_rate_mbps));
+    key_.push_back(DoubleBits(link.mpdu_success));
+    key_.push_back(DoubleBits(link.snr_db));
   }
   const auto found = shares_.find(key_);
   if (found != shares_.end())

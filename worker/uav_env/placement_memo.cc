@@ -1,36 +1,18 @@
 #include "worker/uav_env/placement_memo.h"
 
 #include <algorithm>
-#include <cstring>
 #include <new>
 
+#include "worker/uav_env/bit_keys.h"
+
 namespace rlpos {
-namespace {
-
-std::uint64_t Bits(double v) {
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
-
-// splitmix64's finaliser: lattice coordinates differ in their high bits only, so every bit of
-// the key has to reach the low bits that pick the slot.
-std::uint64_t Mix(std::uint64_t z) {
-  z ^= z >> 30;
-  z *= 0xbf58476d1ce4e5b9ULL;
-  z ^= z >> 27;
-  z *= 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-}  // namespace
 
 std::uint64_t PlacementHash(const Placement& placement) {
   std::uint64_t h = 0;
   for (const Vec3& p : placement) {
-    h = Mix(h ^ Bits(p.x));
-    h = Mix(h ^ Bits(p.y));
-    h = Mix(h ^ Bits(p.z));
+    h = MixBits(h ^ DoubleBits(p.x));
+    h = MixBits(h ^ DoubleBits(p.y));
+    h = MixBits(h ^ DoubleBits(p.z));
   }
   return h;
 }
@@ -56,8 +38,9 @@ bool PlacementMemo::Matches(const double* slot, const Placement& placement) cons
   for (std::size_t u = 0; u < n_uavs_; ++u) {
     const Vec3& p = placement[u];
     // Bit for bit: 0.0 and -0.0 are two keys.
-    if (Bits(slot[3 * u]) != Bits(p.x) || Bits(slot[3 * u + 1]) != Bits(p.y) ||
-        Bits(slot[3 * u + 2]) != Bits(p.z)) {
+    if (DoubleBits(slot[3 * u]) != DoubleBits(p.x) ||
+        DoubleBits(slot[3 * u + 1]) != DoubleBits(p.y) ||
+        DoubleBits(slot[3 * u + 2]) != DoubleBits(p.z)) {
       return false;
     }
   }

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 #include "common/scenario/number_text.h"
 #include "worker/environment/uav_network.h"
 #include "worker/gym/moves.h"
 #include "worker/uav_env/analytic_evaluator.h"
+#include "worker/uav_env/bit_keys.h"
 #include "worker/uav_env/look_around.h"
 
 namespace rlpos {
@@ -64,13 +64,8 @@ std::optional<DeterminingState> UavPositioningEnv::Determining() const {
     return std::nullopt;
   DeterminingState state;
   state.key.reserve(3 * placement_.size() + 1);
-  for (const Vec3& at : placement_) {
-    for (const double v : {at.x, at.y, at.z}) {
-      std::uint64_t bits = 0;
-      std::memcpy(&bits, &v, sizeof bits);
-      state.key.push_back(bits);
-    }
-  }
+  for (const Vec3& at : placement_)
+    state.key.insert(state.key.end(), {DoubleBits(at.x), DoubleBits(at.y), DoubleBits(at.z)});
   const int round = scenario_.env.turn_steps * static_cast<int>(placement_.size());
   state.key.push_back(static_cast<std::uint64_t>(steps_ % round));
   state.steps_left = steps_per_episode_ - steps_;
