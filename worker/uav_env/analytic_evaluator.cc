@@ -30,6 +30,8 @@ AnalyticEvaluator::AnalyticEvaluator(const Scenario& scenario,
            scenario.wifi.spatial_streams},
       channel_(std::make_unique<AnalyticChannel>(scenario)),
       shared_memo_(std::move(shared_memo)) {
+  capture_.contention.probability = kCaptureProbability;
+  capture_.follow_up_rate_mbps = McsDataRateMbps(phy_, 0);
   if (!shared_memo_)
     own_memo_ = std::make_unique<PlacementMemo>(scenario.uavs.size(), scenario.ues.size());
 }
@@ -125,16 +127,11 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
     info.los.push_back(link.los ? 1 : 0);
     info.snr_db.push_back(link.snr_db);
     info.demands_met += link.demand_met ? 1 : 0;
-    airtime[i] = {scenario_.ues[i].demand_mbps, link.phy_rate_mbps, link.mpdu_success, link.snr_db};
+    airtime[i] = AirtimeOf(i, link);
   }
-  const WifiSpec& w = scenario_.wifi;
-  const PhyProfile phy{w.standard, w.width_mhz, w.guard_interval_ns, w.spatial_streams};
-  CaptureCost capture;
-  capture.contention.probability = kCaptureProbability;
-  capture.follow_up_rate_mbps = McsDataRateMbps(phy, 0);
   if (n_uavs == 1) {
     const AirtimeEstimate estimate =
-        EstimateAirtimeThroughput(airtime, scenario_.traffic.packet_size, capture);
+        EstimateAirtimeThroughput(airtime, scenario_.traffic.packet_size, capture_);
     info.throughput_mbps = estimate.aggregate_mbps;
     return info;
   }
@@ -146,20 +143,28 @@ StepInfo AnalyticEvaluator::Score(const Placement& placement,
     if (std::find(done.begin(), done.end(), channel) != done.end())
       continue;
     done.push_back(channel);
-    std::vector<std::size_t> members;
     std::vector<AirtimeLink> domain;
     for (std::size_t i = 0; i < n_ues; ++i) {
-      if (channels[static_cast<std::size_t>(info.serving[i])] == channel) {
-        members.push_back(i);
+      if (channels[static_cast<std::size_t>(info.serving[i])] == channel)
         domain.push_back(airtime[i]);
-      }
     }
-    if (members.empty())
+    if (domain.empty())
       continue;
-    info.throughput_mbps +=
-        channel_shares_.Aggregate(domain, scenario_.traffic.packet_size, capture);
+    info.throughput_mbps += ChannelThroughput(domain);
   }
   return info;
+}
+
+AirtimeLink AnalyticEvaluator::AirtimeOf(std::size_t ue, const UeLink& link) const {
+  return {scenario_.ues[ue].demand_mbps, link.phy_rate_mbps, link.mpdu_success, link.snr_db};
+}
+
+double AnalyticEvaluator::ChannelThroughput(const std::vector<AirtimeLink>& domain) {
+  return channel_shares_.Aggregate(domain, scenario_.traffic.packet_size, capture_);
+}
+
+const std::vector<int>& AnalyticEvaluator::UavChannels() const {
+  return channel_->UavChannels();
 }
 
 double AnalyticReward(const Scenario& scenario, const Placement& placement) {

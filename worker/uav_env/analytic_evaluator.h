@@ -8,6 +8,7 @@
 // and each may be used by one thread at a time.
 #include <memory>
 
+#include "common/phy/airtime_model.h"
 #include "common/phy/mcs_table.h"
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
@@ -52,10 +53,18 @@ class AnalyticEvaluator {
   // The state at `placement` from links already known: `links[u]` = LinksAt(u, placement[u]).
   // What a search that moves one UAV at a time evaluates without recomputing the others.
   StepInfo Score(const Placement& placement, const std::vector<const std::vector<UeLink>*>& links);
+  // Score's parts, for those that score many placements in one go (one_uav_moves.h):
+  // UE `ue`'s entry in the airtime model when `link` serves it;
+  AirtimeLink AirtimeOf(std::size_t ue, const UeLink& link) const;
+  // the airtime model's aggregate throughput of one channel's UEs (remembered by their inputs).
+  double ChannelThroughput(const std::vector<AirtimeLink>& domain);
+  const std::vector<int>& UavChannels() const;
+  const Scenario& GetScenario() const { return scenario_; }
 
  private:
   Scenario scenario_;
   PhyProfile phy_;  // the scenario's Wi-Fi, as the MCS table reads it
+  CaptureCost capture_;
   std::unique_ptr<AnalyticChannel> channel_;
   std::unique_ptr<PlacementMemo> own_memo_;           // no shared memo given
   std::shared_ptr<SharedPlacementMemo> shared_memo_;  // or this one

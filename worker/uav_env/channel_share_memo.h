@@ -17,9 +17,12 @@ namespace rlpos {
 
 class ChannelShareMemo {
  public:
-  // Key words (8 bytes each, 4 per UE) kept before the memo starts again empty: 512 KiB of keys,
-  // about 1,600 channels of ten UEs, so that a batch of hundreds of envs stays small.
-  static constexpr std::size_t kMaxKeyWords = 64 * 1024;
+  // Key words (8 bytes each, 4 per UE) kept before the memo starts again empty: 2 MiB of keys,
+  // about 6,500 channels of ten UEs. A flight of six UAVs makes six coverage maps a round, each
+  // with one new channel state per point at most (one_uav_moves.h): 2 MiB holds two rounds and
+  // more (a quarter of it made such flights a third slower). Full, it costs a process about
+  // 2.5 MB more than a quarter did: 160 MB for a batch of 64 multi-UAV envs.
+  static constexpr std::size_t kMaxKeyWords = 256 * 1024;
 
   // EstimateAirtimeThroughput(domain, packet_size, capture).aggregate_mbps.
   double Aggregate(const std::vector<AirtimeLink>& domain, int packet_size,

@@ -7,6 +7,7 @@
 #include "worker/gym/general_observation.h"
 #include "worker/gym/moves.h"
 #include "worker/uav_env/analytic_evaluator.h"
+#include "worker/uav_env/one_uav_moves.h"
 
 namespace rlpos {
 namespace {
@@ -92,6 +93,7 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
   }
   if (placement.size() > 1)
     ForgetLinksIfUesMoved(model);  // once per map, not once per point
+  OneUavMoves moves(model, placement, active, links);
   double best_of_map = -1.0;
   best_point_ = placement[active];
   for (int row = 0; row < cells; ++row) {
@@ -108,9 +110,9 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
           continue;
         const std::size_t point =
             static_cast<std::size_t>(row * cells + col) * levels.size() + level;
-        links[active] = &MapLinks(active, point, probe[active], model);
         // The same numbers as model.Evaluate(probe), which would work out every link again.
-        const double r = reward_of(model.Score(probe, links));
+        moves.ScoreInto(probe[active], MapLinks(active, point, probe[active], model), point_info_);
+        const double r = reward_of(point_info_);
         if (r > best) {
           best = r;
           best_z = z;

@@ -55,6 +55,7 @@ class LookAround {
   std::vector<std::vector<std::vector<UeLink>>> map_links_;
   std::vector<Vec3> map_links_ues_;
   std::vector<UeLink> scratch_links_;
+  StepInfo point_info_;  // a map point's state, its vectors reused
 };
 
 }  // namespace rlpos

@@ -1,0 +1,146 @@
+#include "worker/uav_env/one_uav_moves.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rlpos {
+namespace {
+
+bool AnyNan(const std::vector<UeLink>& links) {
+  return std::any_of(links.begin(), links.end(),
+                     [](const UeLink& link) { return std::isnan(link.snr_db); });
+}
+
+// Score itself, for what the shortcut does not cover.
+void ScoreWhole(AnalyticEvaluator& model, const Placement& placement, std::size_t active,
+                const std::vector<UeLink>& active_links,
+                std::vector<const std::vector<UeLink>*>& links, StepInfo& info) {
+  links[active] = &active_links;
+  info = model.Score(placement, links);
+}
+
+}  // namespace
+
+OneUavMoves::OneUavMoves(AnalyticEvaluator& model, const Placement& placement, std::size_t active,
+                         const std::vector<const std::vector<UeLink>*>& links)
+    : model_(model), placement_(placement), active_(active), links_(links) {
+  const Scenario& scenario = model.GetScenario();
+  const std::size_t n_uavs = placement.size();
+  generic_ = n_uavs == 1;
+  for (std::size_t u = 0; u < n_uavs && !generic_; ++u)
+    generic_ = u != active && AnyNan(*links[u]);
+  if (generic_)
+    return;
+  // AssociateUes picks the lowest index of the best SNR: the best of the others is fixed here.
+  others_serving_.assign(scenario.ues.size(), 0);
+  for (std::size_t i = 0; i < scenario.ues.size(); ++i) {
+    if (!scenario.ues[i].uav.empty()) {
+      others_serving_[i] = scenario.UavIndex(scenario.ues[i].uav);
+      continue;
+    }
+    int best = -1;
+    for (std::size_t u = 0; u < n_uavs; ++u) {
+      if (u != active &&
+          (best < 0 || (*links[u])[i].snr_db > (*links[static_cast<std::size_t>(best)])[i].snr_db))
+        best = static_cast<int>(u);
+    }
+    others_serving_[i] = best;
+  }
+  for (const int channel : model.UavChannels()) {
+    if (std::find(channel_order_.begin(), channel_order_.end(), channel) == channel_order_.end())
+      channel_order_.push_back(channel);
+  }
+  kept_shares_.assign(channel_order_.size(), Share{});
+  loses_ue_.assign(channel_order_.size(), 0);
+}
+
+const std::vector<UeLink>& OneUavMoves::LinksOf(int uav,
+                                                const std::vector<UeLink>& active_links) const {
+  return static_cast<std::size_t>(uav) == active_ ? active_links
+                                                  : *links_[static_cast<std::size_t>(uav)];
+}
+
+void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& active_links,
+                            StepInfo& info) {
+  placement_[active_] = position;
+  if (generic_)
+    return ScoreWhole(model_, placement_, active_, active_links, links_, info);
+  const Scenario& scenario = model_.GetScenario();
+  const std::vector<int>& channels = model_.UavChannels();
+  const auto channel_index = [this, &channels](int uav) {
+    const int channel = channels[static_cast<std::size_t>(uav)];
+    return static_cast<std::size_t>(
+        std::find(channel_order_.begin(), channel_order_.end(), channel) - channel_order_.begin());
+  };
+  const int active = static_cast<int>(active_);
+  const std::size_t n_ues = scenario.ues.size();
+  info.positions = placement_;
+  info.serving.resize(n_ues);
+  info.active_uav = 0;
+  info.n_los = 0;
+  info.los.clear();
+  info.throughput_mbps = 0.0;
+  info.demands_met = 0;
+  info.snr_db.clear();
+  info.coverage.clear();
+  info.lookahead.clear();
+  std::fill(loses_ue_.begin(), loses_ue_.end(), 0);
+  for (std::size_t i = 0; i < n_ues; ++i) {
+    const int other = others_serving_[i];
+    int serving = other;
+    if (scenario.ues[i].uav.empty()) {
+      const double mine = active_links[i].snr_db;
+      if (std::isnan(mine))  // the best of the others no longer decides alone
+        return ScoreWhole(model_, placement_, active_, active_links, links_, info);
+      const double theirs = (*links_[static_cast<std::size_t>(other)])[i].snr_db;
+      if (mine > theirs || (mine == theirs && active < other))
+        serving = active;
+    }
+    if (serving == active && other != active)
+      loses_ue_[channel_index(other)] = 1;
+    info.serving[i] = serving;
+    const UeLink& link = LinksOf(serving, active_links)[i];
+    info.n_los += link.los ? 1 : 0;
+    info.los.push_back(link.los ? 1 : 0);
+    info.snr_db.push_back(link.snr_db);
+    info.demands_met += link.demand_met ? 1 : 0;
+  }
+  // Score's sum, channel by channel in the same order.
+  const int active_channel = channels[active_];
+  for (std::size_t k = 0; k < channel_order_.size(); ++k) {
+    const int channel = channel_order_[k];
+    if (channel != active_channel && !loses_ue_[k]) {
+      info.throughput_mbps += ChannelShare(channel, info.serving, active_links);
+      continue;
+    }
+    domain_.clear();
+    for (std::size_t i = 0; i < n_ues; ++i) {
+      const int serving = info.serving[i];
+      if (channels[static_cast<std::size_t>(serving)] == channel)
+        domain_.push_back(model_.AirtimeOf(i, LinksOf(serving, active_links)[i]));
+    }
+    if (!domain_.empty())
+      info.throughput_mbps += model_.ChannelThroughput(domain_);
+  }
+}
+
+double OneUavMoves::ChannelShare(int channel, const std::vector<int>& serving,
+                                 const std::vector<UeLink>& active_links) {
+  const std::size_t k = static_cast<std::size_t>(
+      std::find(channel_order_.begin(), channel_order_.end(), channel) - channel_order_.begin());
+  Share& share = kept_shares_[k];
+  if (share.known)
+    return share.mbps;
+  // Its UEs are those it has without the moving UAV, with the same links.
+  const std::vector<int>& channels = model_.UavChannels();
+  domain_.clear();
+  for (std::size_t i = 0; i < serving.size(); ++i) {
+    if (channels[static_cast<std::size_t>(serving[i])] == channel)
+      domain_.push_back(model_.AirtimeOf(i, LinksOf(serving[i], active_links)[i]));
+  }
+  // No UEs: Score adds nothing, and x + 0.0 is x.
+  share = {true, domain_.empty() ? 0.0 : model_.ChannelThroughput(domain_)};
+  return share.mbps;
+}
+
+}  // namespace rlpos

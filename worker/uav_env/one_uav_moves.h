@@ -1,0 +1,47 @@
+#pragma once
+// AnalyticEvaluator::Score of many placements that differ in one UAV's position only (a coverage
+// map's points, with several UAVs), the same numbers for less work: what the other UAVs give is
+// worked out once. Each UE's best other UAV is fixed, so a point only decides whether the moving
+// UAV takes it; and a channel none of whose UEs it takes keeps the share it has without it.
+#include <cstddef>
+#include <vector>
+
+#include "common/phy/airtime_model.h"
+#include "worker/gym/env.h"
+#include "worker/uav_env/analytic_evaluator.h"
+
+namespace rlpos {
+
+class OneUavMoves {
+ public:
+  // `links[u]` = model.LinksAt(u, placement[u]) for every u but `active` (whose entry is
+  // ignored); they and `model` must outlive this.
+  OneUavMoves(AnalyticEvaluator& model, const Placement& placement, std::size_t active,
+              const std::vector<const std::vector<UeLink>*>& links);
+  // Into `info` (every field Score sets, its vectors reused): model.Score of the placement with
+  // UAV `active` at `position`, its links `active_links` (model.LinksAt(active, position)).
+  void ScoreInto(const Vec3& position, const std::vector<UeLink>& active_links, StepInfo& info);
+
+ private:
+  // One channel's share while the moving UAV takes none of its UEs, worked out when first asked.
+  struct Share {
+    bool known = false;
+    double mbps = 0.0;
+  };
+  double ChannelShare(int channel, const std::vector<int>& serving,
+                      const std::vector<UeLink>& active_links);
+  const std::vector<UeLink>& LinksOf(int uav, const std::vector<UeLink>& active_links) const;
+
+  AnalyticEvaluator& model_;
+  Placement placement_;
+  std::size_t active_;
+  std::vector<const std::vector<UeLink>*> links_;
+  bool generic_ = false;             // one UAV, or an SNR that is not a number: Score itself
+  std::vector<int> others_serving_;  // per UE: its UAV were `active` not there
+  std::vector<int> channel_order_;   // the channels in the order Score sums their shares
+  std::vector<Share> kept_shares_;   // per entry of channel_order_
+  std::vector<char> loses_ue_;       // per entry of channel_order_, for the current point
+  std::vector<AirtimeLink> domain_;  // scratch
+};
+
+}  // namespace rlpos
