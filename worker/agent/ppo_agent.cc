@@ -11,19 +11,13 @@
 
 #include "worker/agent/flat_adam.h"
 #include "worker/agent/libtorch.h"
+#include "worker/agent/ppo_actor_head.h"
 #include "worker/agent/ppo_network.h"
 #include "worker/agent/ppo_objective.h"
 #include "worker/agent/running_moments.h"
 #include "worker/agent/state_stream.h"
 
 namespace rlpos {
-namespace {
-
-// The logit of the actions a mask forbids: their probability is 0, and unlike -inf it keeps
-// 0 * log(0) in the entropy finite.
-constexpr float kForbidden = -1e9f;
-
-}  // namespace
 
 struct PpoAgent::Impl {
   AgentSpec spec;
@@ -91,21 +85,14 @@ struct PpoAgent::Impl {
     return rows;
   }
 
-  // The actor's logits for `rows` observations, with kForbidden where a row's mask forbids the
+  // The actor's logits for `rows` observations, with kForbiddenLogit where a row's mask forbids the
   // action (a mask that allows nothing counts as no mask, as MaskPenalty).
   void Logits(const float* observations, int rows, const ActionMask* const* row_masks,
               std::vector<float>& logits) {
     logits.resize(static_cast<std::size_t>(rows) * static_cast<std::size_t>(action_count));
     actor_net.Forward(observations, rows, logits.data());
-    for (int r = 0; r < rows; ++r) {
-      const ActionMask& mask = *row_masks[r];
-      if (std::none_of(mask.begin(), mask.end(), [](std::uint8_t a) { return a != 0; }))
-        continue;
-      for (int a = 0; a < action_count; ++a) {
-        if (!Allowed(mask, a))
-          logits[static_cast<std::size_t>(r * action_count + a)] += kForbidden;
-      }
-    }
+    for (int r = 0; r < rows; ++r)
+      MaskLogits(*row_masks[r], action_count, logits.data() + r * action_count);
   }
 
   // The critic's value of each of `rows` observations.
@@ -167,7 +154,9 @@ struct PpoAgent::Impl {
     if (!mask.empty() && std::none_of(mask.begin(), mask.end(), [](std::uint8_t a) { return a; }))
       throw std::invalid_argument("the action mask allows no action");
     int action = -1;
-    if (explore) {
+    if (!explore) {
+      action = MostProbableAllowed(p, mask, action_count);
+    } else {
       const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
       double cumulative = 0.0;
       for (int a = 0; a < action_count; ++a) {
@@ -177,11 +166,6 @@ struct PpoAgent::Impl {
         cumulative += p[a];
         if (u < cumulative)
           break;
-      }
-    } else {
-      for (int a = 0; a < action_count; ++a) {
-        if (Allowed(mask, a) && (action < 0 || p[a] > p[action]))
-          action = a;
       }
     }
     pending_masks.push_back(mask);

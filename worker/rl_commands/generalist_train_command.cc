@@ -22,7 +22,7 @@
 #include "worker/environment/scenario_loading.h"
 #include "worker/gym/general_observation.h"
 #include "worker/rl_commands/generalist_checkpoint.h"
-#include "worker/rl_commands/policy_folder.h"
+#include "worker/policy_folder/policy_folder.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_training/generalist_training.h"
 

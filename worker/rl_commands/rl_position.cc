@@ -5,7 +5,8 @@
 #include "worker/agent/torch_threads.h"
 #include "worker/agent/trainer.h"
 #include "worker/environment/scenario_loading.h"
-#include "worker/rl_commands/policy_folder.h"
+#include "worker/policy_folder/general_placement.h"
+#include "worker/policy_folder/policy_folder.h"
 #include "worker/rl_commands/rl_commands.h"
 #include "worker/rl_commands/torchscript_placement.h"
 #include "worker/sim_api/rl_plugin_api.h"
@@ -26,44 +27,14 @@ void RefuseContradiction(const PolicyFolder& folder, const CommonOptions& option
   }
 }
 
-// A general policy flies in the caller's scenario with its own env and agent settings: the
-// caller may restate them, not change them (env.fidelity aside: it flies at its own). A run in
-// which the UEs move (track) may set its own env.decision_interval: how often it asks the policy;
-// each flight stays the policy's own episode (its interval sets the episode's steps).
-Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options,
-                       bool run_decides_interval = false) {
-  Scenario target = LoadScenarioFor(options, {});
-  const int uavs = static_cast<int>(target.uavs.size());
-  if (uavs < folder.scope.min_uavs || uavs > folder.scope.max_uavs) {
-    const std::string trained =
-        folder.scope.min_uavs == folder.scope.max_uavs
-            ? std::to_string(folder.scope.min_uavs)
-            : std::to_string(folder.scope.min_uavs) + "-" + std::to_string(folder.scope.max_uavs);
-    throw ConfigError("--policy", folder.dir + " was trained for " + trained + " UAV(s); " +
-                                      options.scenario_file + " has " + std::to_string(uavs));
-  }
-  const double run_interval = target.env.decision_interval;
-  target.env = folder.trained.env;
-  target.agent = folder.trained.agent;
-  Scenario checked = target;
-  if (run_decides_interval)
-    checked.env.decision_interval = run_interval;
-  const auto contradiction =
-      FirstContradiction(checked, ScenarioDocument(options.scenario_file, options.overrides));
-  if (contradiction) {
-    throw ConfigError("--policy", folder.dir + " (a policy for any scenario) does not fit " +
-                                      options.scenario_file + ": " + contradiction->path + ": " +
-                                      contradiction->problem);
-  }
-  return target;
-}
-
 }  // namespace
 
 Placement PolicyPlacement(const CommonOptions& options, const std::string& policy) {
   if (policy.empty())
     throw ConfigError("--policy", "is required for the rl positioner");
   const PolicyFolder folder = ReadPolicyFolder(policy);
+  if (FliesWithoutLibtorch(folder))
+    return GeneralPlacement(folder, options);
   if (folder.scope.general && !folder.torchscript) {
     UavPositioningEnv env(GeneralTarget(folder, options));
     const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);

@@ -2,7 +2,7 @@
 // The rl positioner's answer from a TorchScript policy folder: its model flown greedily from the
 // baseline, in the env of the folder's scenario.json, on the manifest's eval_run.
 #include "common/scenario/scenario.h"
-#include "worker/rl_commands/policy_folder.h"
+#include "worker/policy_folder/policy_folder.h"
 #include "worker/uav_env/uav_positioning_env.h"
 
 namespace rlpos::sim {

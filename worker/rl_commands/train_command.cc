@@ -12,7 +12,7 @@
 #include "worker/agent/ppo_agent.h"
 #include "worker/agent/trainer.h"
 #include "worker/rl_commands/generalist_train_command.h"
-#include "worker/rl_commands/policy_folder.h"
+#include "worker/policy_folder/policy_folder.h"
 #include "worker/rl_commands/rl_commands.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_training/ppo_batched_training.h"

@@ -1,4 +1,5 @@
-// rlpos-sim's side of the RL module: finds it next to the binary (../lib) and forwards to it.
+// rlpos-sim's side of the RL module: finds it next to the binary (../lib) and forwards to it;
+// a general PPO policy's placement needs no module (worker/policy_folder/general_placement.h).
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -6,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "worker/policy_folder/general_placement.h"
+#include "worker/policy_folder/policy_folder.h"
 #include "worker/sim/portable_kernels.h"
 #include "worker/sim_api/rl_plugin_api.h"
 
@@ -45,6 +48,13 @@ int RunTrain(const CommonOptions& options, const TrainOptions& train) {
 }
 
 Placement RlPlacement(const CommonOptions& options, const std::string& policy) {
+  // A policy for any scenario of ours flies without the module: libtorch's load is most of a
+  // placement's time.
+  if (!policy.empty()) {
+    const PolicyFolder folder = ReadPolicyFolder(policy);
+    if (FliesWithoutLibtorch(folder))
+      return GeneralPlacement(folder, options);
+  }
   return Load().policy_placement(options, policy);
 }
 

@@ -1,4 +1,4 @@
-#include "worker/rl_commands/torchscript_manifest.h"
+#include "worker/policy_folder/torchscript_manifest.h"
 
 #include <algorithm>
 #include <array>

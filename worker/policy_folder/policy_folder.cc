@@ -1,4 +1,4 @@
-#include "worker/rl_commands/policy_folder.h"
+#include "worker/policy_folder/policy_folder.h"
 
 #include <filesystem>
 

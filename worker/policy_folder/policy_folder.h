@@ -13,7 +13,7 @@
 
 #include "common/scenario/scenario.h"
 #include "common/wire/general_policy.h"
-#include "worker/rl_commands/torchscript_manifest.h"
+#include "worker/policy_folder/torchscript_manifest.h"
 
 namespace rlpos::sim {
 

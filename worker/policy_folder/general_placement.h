@@ -1,0 +1,31 @@
+#pragma once
+// A policy for any scenario placed in the caller's scenario: the scenario it flies in (the
+// caller's venue with the policy's own env and agent settings), and for ours, PPO's, the greedy
+// flight itself, without libtorch (ppo_greedy_policy.h): what rlpos-sim and its RL module both
+// place such a policy with.
+#include <string>
+
+#include "common/scenario/scenario.h"
+#include "worker/policy_folder/policy_folder.h"
+#include "worker/sim_api/sim_options.h"
+
+namespace rlpos::sim {
+
+// The caller's scenario with the policy's env and agent settings: the caller may restate them,
+// not change them (env.fidelity aside: it flies at its own). A run in which the UEs move (track)
+// may set its own env.decision_interval (run_decides_interval): how often it asks the policy;
+// each flight stays the policy's own episode. A UAV count outside the policy's scope or a
+// contradiction: ConfigError on --policy.
+Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options,
+                       bool run_decides_interval = false);
+
+// Whether GeneralPlacement flies `folder`: a general policy of ours (PPO's, as every one that
+// rlpos-sim train --generated or --scenarios makes).
+bool FliesWithoutLibtorch(const PolicyFolder& folder);
+
+// The greedy flight from the baseline of the policy in folder.dir, in GeneralTarget's scenario:
+// its final placement. std::invalid_argument unless FliesWithoutLibtorch(folder); a policy.pt
+// that is missing, damaged or of another shape: std::runtime_error naming it.
+Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options);
+
+}  // namespace rlpos::sim
