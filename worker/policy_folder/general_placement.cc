@@ -44,15 +44,49 @@ bool FliesWithoutLibtorch(const PolicyFolder& folder) {
   return folder.scope.general && !folder.torchscript && folder.trained.agent.algorithm == "ppo";
 }
 
-Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options) {
+namespace {
+
+std::shared_ptr<PpoGreedyPolicy> LoadedPolicy(const PolicyFolder& folder, const Env& env) {
   if (!FliesWithoutLibtorch(folder))
     throw std::invalid_argument(folder.dir + " is not a general PPO policy");
+  auto policy = std::make_shared<PpoGreedyPolicy>(folder.trained.agent,
+                                                  static_cast<int>(env.ObservationSpace().Dim()),
+                                                  env.ActionSpace().n, env.UeSlots());
+  policy->Load(folder.dir);
+  return policy;
+}
+
+}  // namespace
+
+Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options) {
   UavPositioningEnv env(GeneralTarget(folder, options));
-  PpoGreedyPolicy policy(folder.trained.agent, static_cast<int>(env.ObservationSpace().Dim()),
-                         env.ActionSpace().n, env.UeSlots());
-  policy.Load(folder.dir);
-  return FlyGreedy(env, policy, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent))
+  const std::shared_ptr<PpoGreedyPolicy> policy = LoadedPolicy(folder, env);
+  return FlyGreedy(env, *policy, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent))
       .final_info.positions;
+}
+
+TrackDecision TrackWith(const Scenario& target, std::shared_ptr<Agent> agent, std::uint64_t run) {
+  const EpisodeOptions greedy = GreedyEpisodeOptions(target.agent);
+  return [target, agent, run, greedy](const std::vector<Vec3>& ue_positions,
+                                      const Placement& uavs_now) {
+    // The scenario of this moment: its UEs standing where they are, its UAVs starting where
+    // they are (the first decision: the baseline, as `position` flies it).
+    Scenario now = target;
+    for (std::size_t i = 0; i < ue_positions.size() && i < now.ues.size(); ++i) {
+      now.ues[i].position = ue_positions[i];
+      now.ues[i].mobility = MobilitySpec{};
+    }
+    for (std::size_t u = 0; u < uavs_now.size() && u < now.uavs.size(); ++u)
+      now.uavs[u].initial = uavs_now[u];
+    UavPositioningEnv env(now);
+    return FlyGreedy(env, *agent, run, greedy).final_info.positions;
+  };
+}
+
+TrackDecision GeneralTrack(const PolicyFolder& folder, const CommonOptions& options) {
+  const Scenario target = GeneralTarget(folder, options, true);
+  UavPositioningEnv first(target);
+  return TrackWith(target, LoadedPolicy(folder, first), folder.eval_run);
 }
 
 }  // namespace rlpos::sim

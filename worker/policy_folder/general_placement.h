@@ -3,10 +3,13 @@
 // caller's venue with the policy's own env and agent settings), and for ours, PPO's, the greedy
 // flight itself, without libtorch (ppo_greedy_policy.h): what rlpos-sim and its RL module both
 // place such a policy with.
+#include <memory>
 #include <string>
 
 #include "common/scenario/scenario.h"
+#include "worker/agent/agent.h"
 #include "worker/policy_folder/policy_folder.h"
+#include "worker/sim_api/rl_plugin_api.h"
 #include "worker/sim_api/sim_options.h"
 
 namespace rlpos::sim {
@@ -27,5 +30,13 @@ bool FliesWithoutLibtorch(const PolicyFolder& folder);
 // its final placement. std::invalid_argument unless FliesWithoutLibtorch(folder); a policy.pt
 // that is missing, damaged or of another shape: std::runtime_error naming it.
 Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options);
+
+// A run whose UEs move (rlpos-sim track) asks `agent` (a general policy, loaded) at each
+// decision: a greedy flight of the policy's episode in `target` (GeneralTarget's, with
+// run_decides_interval) as it is at that moment, from where the UAVs are, with RngRun `run`.
+TrackDecision TrackWith(const Scenario& target, std::shared_ptr<Agent> agent, std::uint64_t run);
+
+// TrackWith with the policy in folder.dir flown without libtorch; the errors of GeneralPlacement.
+TrackDecision GeneralTrack(const PolicyFolder& folder, const CommonOptions& options);
 
 }  // namespace rlpos::sim

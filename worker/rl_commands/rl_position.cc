@@ -64,26 +64,13 @@ TrackDecision PolicyTrack(const CommonOptions& options, const std::string& polic
                           " is not a policy for any scenario: as the UEs move, the "
                           "scenario changes; train one with rlpos-sim train --generated");
   }
+  if (FliesWithoutLibtorch(folder))
+    return GeneralTrack(folder, options);
   const Scenario target = GeneralTarget(folder, options, true);
   UavPositioningEnv first(target);
   std::shared_ptr<Agent> agent = MakeAgent(target.agent, first);
   agent->Load(policy);
-  const std::uint64_t run = folder.eval_run;
-  const EpisodeOptions greedy = GreedyEpisodeOptions(target.agent);
-  return [target, agent, run, greedy](const std::vector<Vec3>& ue_positions,
-                                      const Placement& uavs_now) {
-    // The scenario of this moment: its UEs standing where they are, its UAVs starting where
-    // they are (the first decision: the baseline, as `position` flies it).
-    Scenario now = target;
-    for (std::size_t i = 0; i < ue_positions.size() && i < now.ues.size(); ++i) {
-      now.ues[i].position = ue_positions[i];
-      now.ues[i].mobility = MobilitySpec{};
-    }
-    for (std::size_t u = 0; u < uavs_now.size() && u < now.uavs.size(); ++u)
-      now.uavs[u].initial = uavs_now[u];
-    UavPositioningEnv env(now);
-    return FlyGreedy(env, *agent, run, greedy).final_info.positions;
-  };
+  return TrackWith(target, agent, folder.eval_run);
 }
 
 }  // namespace rlpos::sim

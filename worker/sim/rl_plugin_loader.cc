@@ -59,6 +59,11 @@ Placement RlPlacement(const CommonOptions& options, const std::string& policy) {
 }
 
 TrackDecision RlTrackDecision(const CommonOptions& options, const std::string& policy) {
+  if (!policy.empty()) {
+    const PolicyFolder folder = ReadPolicyFolder(policy);
+    if (FliesWithoutLibtorch(folder))
+      return GeneralTrack(folder, options);
+  }
   return Load().policy_track(options, policy);
 }
 
