@@ -185,6 +185,9 @@ struct EnvSpec {
   int observed_ues = 16;  // UE slots of the "ues" observation, nearest first
   int height_map = 9;     // cells per side of the "heights" observation (odd), env.step each
   int coverage_map = 8;   // cells per side of the "coverage" observation, over the UAV's zone
+  // Moves (x and y) around the map's best cell the "coverage" pointer also searches, at every
+  // altitude: it points at the best column found (0: the best cell's own column).
+  int coverage_refine = 0;
   double decision_interval = 0.1;   // s between actions
   double episode_duration = 100.0;  // s per episode
   // Moves into a wall of the zone or a building are masked out (not only clamped): otherwise

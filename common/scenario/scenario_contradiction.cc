@@ -48,6 +48,7 @@ json Comparable(const Scenario& s) {
   d["env"]["observed_ues"] = s.env.observed_ues;
   d["env"]["height_map"] = s.env.height_map;
   d["env"]["coverage_map"] = s.env.coverage_map;
+  d["env"]["coverage_refine"] = s.env.coverage_refine;
   return d;
 }
 

@@ -326,6 +326,7 @@ EnvSpec ReadEnv(const json& v) {
   if (e.height_map % 2 == 0)
     throw ConfigError(r.PathOf("height_map"), "must be odd (the UAV is over the middle cell)");
   e.coverage_map = static_cast<int>(r.Integer("coverage_map", e.coverage_map, 1, 16));
+  e.coverage_refine = static_cast<int>(r.Integer("coverage_refine", e.coverage_refine, 0, 8));
   e.decision_interval = r.Number("decision_interval", e.decision_interval, Positive());
   e.episode_duration = r.Number("episode_duration", e.episode_duration, Positive());
   e.action_mask = r.Bool("action_mask", e.action_mask);
@@ -752,6 +753,8 @@ json ToJson(const Scenario& s) {
     document["env"]["height_map"] = s.env.height_map;
   if (general || s.env.coverage_map != defaults.coverage_map)
     document["env"]["coverage_map"] = s.env.coverage_map;
+  if (s.env.coverage_refine != defaults.coverage_refine)  // absent before it existed
+    document["env"]["coverage_refine"] = s.env.coverage_refine;
   if (s.uavs_listed) {
     document["uavs"] = uavs;
   } else {

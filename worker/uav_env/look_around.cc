@@ -132,10 +132,42 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
       }
     }
   }
+  if (scenario_.env.coverage_refine > 0)
+    RefinePointer(levels, best_of_map, moves, active, model, reward_of);
   coverage_for_ = placement;
   coverage_active_ = active;
   coverage_values_ = values;
   out = std::move(values);
+}
+
+void LookAround::RefinePointer(const std::vector<double>& levels, double best_of_map,
+                               OneUavMoves& moves, std::size_t active, AnalyticEvaluator& model,
+                               const RewardOf& reward_of) {
+  const Box& zone = scenario_.uavs[active].zone;
+  const double step = scenario_.env.step;
+  const int radius = scenario_.env.coverage_refine;
+  const Vec3 centre = best_point_;
+  double best = best_of_map;  // the cell's own column keeps the pointer on a tie
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const double x = centre.x + dx * step;
+      const double y = centre.y + dy * step;
+      if (x < zone.xmin || x > zone.xmax || y < zone.ymin || y > zone.ymax)
+        continue;
+      for (const double z : levels) {
+        const Vec3 point{x, y, z};
+        if (BuildingContaining(scenario_, point) >= 0)
+          continue;
+        scratch_links_ = model.LinksAt(active, point);
+        moves.ScoreInto(point, scratch_links_, point_info_);
+        const double r = reward_of(point_info_);
+        if (r > best) {
+          best = r;
+          best_point_ = point;
+        }
+      }
+    }
+  }
 }
 
 void LookAround::ForgetLinksIfUesMoved(const AnalyticEvaluator& model) {

@@ -12,6 +12,7 @@
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
 #include "worker/uav_env/analytic_evaluator.h"
+#include "worker/uav_env/one_uav_moves.h"
 
 namespace rlpos {
 
@@ -26,10 +27,17 @@ class LookAround {
   // `placement`, whose reward is `here`.
   void Fill(const Placement& placement, std::size_t active, double here, AnalyticEvaluator& model,
             const RewardOf& reward_of, StepInfo& info);
+  // Where the last coverage map's pointer leads: the best cell's column at its best altitude,
+  // or what env.coverage_refine found around it.
+  const Vec3& PointerTarget() const { return best_point_; }
 
  private:
   void Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
                 const RewardOf& reward_of, std::vector<double>& out);
+  // env.coverage_refine: moves best_point_ to the best column within that many moves of it (x
+  // and y, every lattice altitude) if one beats the map's best, `best_of_map`.
+  void RefinePointer(const std::vector<double>& levels, double best_of_map, OneUavMoves& moves,
+                     std::size_t active, AnalyticEvaluator& model, const RewardOf& reward_of);
   // Drops the kept links when the model's UEs are no longer where they were worked out for.
   void ForgetLinksIfUesMoved(const AnalyticEvaluator& model);
   // The UEs' links from map point `point` (its cell and altitude) of UAV `active`'s map, at

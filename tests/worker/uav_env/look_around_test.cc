@@ -125,6 +125,69 @@ TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
   EXPECT_NE(views[0], views[1]);
 }
 
+// env.coverage_refine: the pointer leads to the best column within that many moves (x and y) of
+// the map's best cell's column, at every altitude, or stays on the cell's when none beats it.
+TEST(LookAround, TheRefinedPointerLeadsToTheBestColumnAroundTheMapsBest) {
+  int moved = 0;
+  for (const int uavs : {1, 2}) {
+    for (std::uint64_t seed = 70; seed < 80; ++seed) {
+      GeneratorOptions options;
+      options.seed = seed;
+      options.style = GeneratorStyle::kUrban;
+      options.uavs = uavs;
+      Scenario s = Observing(GenerateScenario(options).scenario, {"coverage"});
+      s.env.step = 10;
+      s.env.coverage_map = 4;
+      const auto reward = MakeReward(s.env.reward);
+      const auto reward_of = [&](const StepInfo& i) {
+        return (*reward)(RewardInputOf(s, i.n_los, i.throughput_mbps, i.demands_met));
+      };
+      const auto target = [&](int refine) {
+        Scenario r = s;
+        r.env.coverage_refine = refine;
+        AnalyticEvaluator model(r);
+        LookAround look(r);
+        StepInfo info;
+        Placement there = r.InitialPlacement();
+        look.Fill(there, 0, 0.0, model, reward_of, info);
+        there[0] = look.PointerTarget();
+        return there;
+      };
+      const Placement cell = target(0);
+      const Placement refined = target(2);
+      const std::string where = std::to_string(uavs) + " UAV(s), seed " + std::to_string(seed);
+      // Brute force over the window: every lattice altitude of each column within two moves.
+      double best = AnalyticReward(s, cell);
+      Placement want = cell;
+      const Box& zone = s.uavs[0].zone;
+      for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
+          for (double z = s.uavs[0].initial.z -
+                          s.env.step * std::floor((s.uavs[0].initial.z - zone.zmin) / s.env.step);
+               z <= zone.zmax; z += s.env.step) {
+            Placement p = cell;
+            p[0] = {cell[0].x + dx * s.env.step, cell[0].y + dy * s.env.step, z};
+            if (p[0].x < zone.xmin || p[0].x > zone.xmax || p[0].y < zone.ymin ||
+                p[0].y > zone.ymax || BuildingContaining(s, p[0]) >= 0)
+              continue;
+            const double r = AnalyticReward(s, p);
+            if (r > best) {
+              best = r;
+              want = p;
+            }
+          }
+        }
+      }
+      EXPECT_NEAR(AnalyticReward(s, refined), best, 1e-12) << where;
+      EXPECT_NEAR(refined[0].x, want[0].x, 1e-9) << where;
+      EXPECT_NEAR(refined[0].y, want[0].y, 1e-9) << where;
+      EXPECT_NEAR(refined[0].z, want[0].z, 1e-9) << where;
+      moved += refined[0].x != cell[0].x || refined[0].y != cell[0].y ? 1 : 0;
+    }
+  }
+  EXPECT_GT(moved, 0) << "no refinement ever left the cell's column: a weak test";
+}
+
 // With several UAVs the map's links are kept from one map to the next: after the other UAV moved,
 // and after the UEs walked, the map is bit for bit the one a fresh look around works out.
 TEST(LookAround, KeptLinksGiveTheMapOfAFreshLookAroundAfterOthersMoveAndUesWalk) {
