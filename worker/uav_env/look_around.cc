@@ -111,7 +111,9 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
         const std::size_t point =
             static_cast<std::size_t>(row * cells + col) * levels.size() + level;
         // The same numbers as model.Evaluate(probe), which would work out every link again.
-        moves.ScoreInto(probe[active], MapLinks(active, point, probe[active], model), point_info_);
+        const std::vector<UeLink>& links_here = MapLinks(active, point, probe[active], model);
+        moves.ScoreInto(probe[active], links_here, point_info_,
+                        placement.size() > 1 ? &map_shares_[active][point] : nullptr);
         const double r = reward_of(point_info_);
         if (r > best) {
           best = r;
@@ -175,6 +177,7 @@ void LookAround::ForgetLinksIfUesMoved(const AnalyticEvaluator& model) {
   if (map_links_.empty() ||
       !std::equal(ues.begin(), ues.end(), map_links_ues_.begin(), map_links_ues_.end(), Same)) {
     map_links_.assign(scenario_.uavs.size(), {});
+    map_shares_.assign(scenario_.uavs.size(), {});
     map_links_ues_ = ues;
   }
 }
@@ -186,8 +189,10 @@ const std::vector<UeLink>& LookAround::MapLinks(std::size_t active, std::size_t 
     return scratch_links_;
   }
   std::vector<std::vector<UeLink>>& of_uav = map_links_[active];
-  if (of_uav.size() <= point)
+  if (of_uav.size() <= point) {
     of_uav.resize(point + 1);
+    map_shares_[active].resize(point + 1);
+  }
   if (of_uav[point].empty())
     of_uav[point] = model.LinksAt(active, position);
   return of_uav[point];

@@ -62,6 +62,9 @@ class LookAround {
   // links per UAV (about 40 bytes each).
   std::vector<std::vector<std::vector<UeLink>>> map_links_;
   std::vector<Vec3> map_links_ues_;
+  // Per UAV, per map point: its remembered channel shares (one_uav_moves.h), kept and dropped
+  // with its links.
+  std::vector<std::vector<PointShares>> map_shares_;
   std::vector<UeLink> scratch_links_;
   StepInfo point_info_;  // a map point's state, its vectors reused
 };

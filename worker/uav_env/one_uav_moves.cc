@@ -50,6 +50,8 @@ OneUavMoves::OneUavMoves(AnalyticEvaluator& model, const Placement& placement, s
     if (std::find(channel_order_.begin(), channel_order_.end(), channel) == channel_order_.end())
       channel_order_.push_back(channel);
   }
+  const std::vector<int>& channels = model.UavChannels();
+  channel_of_its_own_ = std::count(channels.begin(), channels.end(), channels[active]) == 1;
   kept_shares_.assign(channel_order_.size(), Share{});
   loses_ue_.assign(channel_order_.size(), 0);
 }
@@ -61,7 +63,7 @@ const std::vector<UeLink>& OneUavMoves::LinksOf(int uav,
 }
 
 void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& active_links,
-                            StepInfo& info) {
+                            StepInfo& info, PointShares* remembered) {
   placement_[active_] = position;
   if (generic_)
     return ScoreWhole(model_, placement_, active_, active_links, links_, info);
@@ -85,6 +87,11 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
   info.coverage.clear();
   info.lookahead.clear();
   std::fill(loses_ue_.begin(), loses_ue_.end(), 0);
+  // The UEs the moving UAV serves, as bits: with its channel its own and its links fixed, they
+  // alone make its channel's share.
+  if (!channel_of_its_own_ || n_ues > 64)
+    remembered = nullptr;
+  std::uint64_t taken = 0;
   for (std::size_t i = 0; i < n_ues; ++i) {
     const int other = others_serving_[i];
     int serving = other;
@@ -99,6 +106,8 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
     if (serving == active && other != active)
       loses_ue_[channel_index(other)] = 1;
     info.serving[i] = serving;
+    if (serving == active)
+      taken |= std::uint64_t{1} << i;
     const UeLink& link = LinksOf(serving, active_links)[i];
     info.n_los += link.los ? 1 : 0;
     info.los.push_back(link.los ? 1 : 0);
@@ -113,6 +122,11 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
       info.throughput_mbps += ChannelShare(channel, info.serving, active_links);
       continue;
     }
+    if (channel == active_channel && remembered) {
+      if (taken != 0)
+        info.throughput_mbps += RememberedShare(taken, info.serving, active_links, *remembered);
+      continue;
+    }
     domain_.clear();
     for (std::size_t i = 0; i < n_ues; ++i) {
       const int serving = info.serving[i];
@@ -122,6 +136,28 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
     if (!domain_.empty())
       info.throughput_mbps += model_.ChannelThroughput(domain_);
   }
+}
+
+double OneUavMoves::RememberedShare(std::uint64_t taken, const std::vector<int>& serving,
+                                    const std::vector<UeLink>& active_links,
+                                    PointShares& remembered) {
+  for (const auto& [set, mbps] : remembered.by_taken) {
+    if (set == taken)
+      return mbps;
+  }
+  domain_.clear();
+  for (std::size_t i = 0; i < serving.size(); ++i) {
+    if (static_cast<std::size_t>(serving[i]) == active_)
+      domain_.push_back(model_.AirtimeOf(i, active_links[i]));
+  }
+  const double mbps = model_.ChannelThroughput(domain_);
+  if (remembered.by_taken.size() < PointShares::kMaxSets) {
+    remembered.by_taken.emplace_back(taken, mbps);
+  } else {
+    remembered.by_taken[remembered.next] = {taken, mbps};
+    remembered.next = (remembered.next + 1) % PointShares::kMaxSets;
+  }
+  return mbps;
 }
 
 double OneUavMoves::ChannelShare(int channel, const std::vector<int>& serving,

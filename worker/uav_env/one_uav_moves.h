@@ -4,6 +4,8 @@
 // worked out once. Each UE's best other UAV is fixed, so a point only decides whether the moving
 // UAV takes it; and a channel none of whose UEs it takes keeps the share it has without it.
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "common/phy/airtime_model.h"
@@ -11,6 +13,16 @@
 #include "worker/uav_env/analytic_evaluator.h"
 
 namespace rlpos {
+
+// What one point of a coverage map remembers from map to map while its links stay the same (the
+// UEs standing still): the share of the moving UAV's channel for each set of UEs it took there.
+// Looked up by the set's bits instead of by every link's (ChannelShareMemo): most of a map's
+// lookups with several UAVs.
+struct PointShares {
+  static constexpr std::size_t kMaxSets = 8;  // then the oldest is replaced
+  std::vector<std::pair<std::uint64_t, double>> by_taken;
+  std::size_t next = 0;
+};
 
 class OneUavMoves {
  public:
@@ -20,7 +32,9 @@ class OneUavMoves {
               const std::vector<const std::vector<UeLink>*>& links);
   // Into `info` (every field Score sets, its vectors reused): model.Score of the placement with
   // UAV `active` at `position`, its links `active_links` (model.LinksAt(active, position)).
-  void ScoreInto(const Vec3& position, const std::vector<UeLink>& active_links, StepInfo& info);
+  // `remembered`: what this position remembers, for the same active_links every time.
+  void ScoreInto(const Vec3& position, const std::vector<UeLink>& active_links, StepInfo& info,
+                 PointShares* remembered = nullptr);
 
  private:
   // One channel's share while the moving UAV takes none of its UEs, worked out when first asked.
@@ -30,6 +44,9 @@ class OneUavMoves {
   };
   double ChannelShare(int channel, const std::vector<int>& serving,
                       const std::vector<UeLink>& active_links);
+  // The moving UAV's channel's share with the UEs of `taken`: from `remembered`, or worked out.
+  double RememberedShare(std::uint64_t taken, const std::vector<int>& serving,
+                         const std::vector<UeLink>& active_links, PointShares& remembered);
   const std::vector<UeLink>& LinksOf(int uav, const std::vector<UeLink>& active_links) const;
 
   AnalyticEvaluator& model_;
@@ -41,6 +58,7 @@ class OneUavMoves {
   std::vector<int> channel_order_;   // the channels in the order Score sums their shares
   std::vector<Share> kept_shares_;   // per entry of channel_order_
   std::vector<char> loses_ue_;       // per entry of channel_order_, for the current point
+  bool channel_of_its_own_ = false;  // no other UAV on the moving UAV's channel
   std::vector<AirtimeLink> domain_;  // scratch
 };
 

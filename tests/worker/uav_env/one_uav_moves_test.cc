@@ -1,11 +1,13 @@
 // Scoring placements that move one UAV with the others' part worked out once gives, field by
 // field and bit for bit, what AnalyticEvaluator::Score gives: with UAVs on channels of their own,
-// with two sharing one, with UEs tied to a UAV, and where the moving UAV ties another's SNR.
+// with two sharing one, with UEs tied to a UAV, and where the moving UAV ties another's SNR; with
+// each point's shares remembered (PointShares) and without.
 #include "worker/uav_env/one_uav_moves.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario_generator/scenario_generator.h"
@@ -42,23 +44,16 @@ void ExpectSame(const StepInfo& got, const StepInfo& want, const std::string& wh
 }
 
 // Every UAV in turn moves over a grid of its zone and onto each other UAV (an SNR tie), scored
-// both ways; returns how many points had a UE change UAV (so the sweep exercised association).
+// both ways, the others where they start and then with the next UAV moved to its zone's middle
+// (as a coverage map is made again after another UAV moved, each point keeping what it
+// remembered); returns how many points had a UE change UAV (so the sweep exercised association).
 int SweepEachUav(const Scenario& s) {
   AnalyticEvaluator model(s);
   AnalyticEvaluator fresh(s);  // Score from scratch: no memo of shares shared with `model`
-  const Placement placement = s.InitialPlacement();
+  const Placement start = s.InitialPlacement();
+  const StepInfo at_start = fresh.Evaluate(start);
   int reassigned = 0;
-  for (std::size_t active = 0; active < placement.size(); ++active) {
-    std::vector<std::vector<UeLink>> others(placement.size());
-    std::vector<const std::vector<UeLink>*> links(placement.size(), nullptr);
-    for (std::size_t u = 0; u < placement.size(); ++u) {
-      if (u != active) {
-        others[u] = model.LinksAt(u, placement[u]);
-        links[u] = &others[u];
-      }
-    }
-    OneUavMoves moves(model, placement, active, links);
-    const StepInfo at_start = fresh.Evaluate(placement);
+  for (std::size_t active = 0; active < start.size(); ++active) {
     std::vector<Vec3> points;
     const Box& zone = s.uavs[active].zone;
     for (int i = 0; i <= 6; ++i) {
@@ -68,28 +63,54 @@ int SweepEachUav(const Scenario& s) {
                           zone.zmin + (zone.zmax - zone.zmin) * ((i + j) % 4) / 3.0});
       }
     }
-    for (std::size_t u = 0; u < placement.size(); ++u)
-      points.push_back(placement[u]);
-    StepInfo info;                          // reused, as the coverage map does
-    for (int pass = 0; pass < 2; ++pass) {  // the second from the kept shares
-      for (const Vec3& p : points) {
-        if (BuildingContaining(s, p) >= 0)
-          continue;
-        const std::vector<UeLink> mine = model.LinksAt(active, p);
-        moves.ScoreInto(p, mine, info);
-        Placement probe = placement;
-        probe[active] = p;
-        std::vector<std::vector<UeLink>> all(placement.size());
-        std::vector<const std::vector<UeLink>*> views;
-        for (std::size_t u = 0; u < placement.size(); ++u) {
-          all[u] = fresh.LinksAt(u, probe[u]);
-          views.push_back(&all[u]);
+    for (std::size_t u = 0; u < start.size(); ++u)
+      points.push_back(start[u]);
+    std::vector<Placement> arrangements{start};
+    if (start.size() > 1) {
+      Placement moved = start;
+      const std::size_t next = (active + 1) % start.size();
+      const Box& z = s.uavs[next].zone;
+      moved[next] = {(z.xmin + z.xmax) / 2, (z.ymin + z.ymax) / 2, z.zmax};
+      arrangements.push_back(moved);
+    }
+    // Each point's remembered shares, kept from one arrangement to the next as the coverage map
+    // keeps them (its links do not change).
+    std::vector<PointShares> remembered(points.size());
+    StepInfo info;  // reused, as the coverage map does
+    for (const Placement& placement : arrangements) {
+      std::vector<std::vector<UeLink>> others(placement.size());
+      std::vector<const std::vector<UeLink>*> links(placement.size(), nullptr);
+      for (std::size_t u = 0; u < placement.size(); ++u) {
+        if (u != active) {
+          others[u] = model.LinksAt(u, placement[u]);
+          links[u] = &others[u];
         }
-        const std::string where = "UAV " + std::to_string(active) + " at " + std::to_string(p.x) +
-                                  "," + std::to_string(p.y) + "," + std::to_string(p.z);
-        ExpectSame(info, fresh.Score(probe, views), where);
-        if (info.serving != at_start.serving)
-          ++reassigned;
+      }
+      OneUavMoves moves(model, placement, active, links);
+      // Without remembering, then remembering twice. Each pass takes the other channels from
+      // the kept shares.
+      for (int pass = 0; pass < 3; ++pass) {
+        for (std::size_t k = 0; k < points.size(); ++k) {
+          const Vec3& p = points[k];
+          if (BuildingContaining(s, p) >= 0)
+            continue;
+          const std::vector<UeLink> mine = model.LinksAt(active, p);
+          moves.ScoreInto(p, mine, info, pass == 0 ? nullptr : &remembered[k]);
+          Placement probe = placement;
+          probe[active] = p;
+          std::vector<std::vector<UeLink>> all(placement.size());
+          std::vector<const std::vector<UeLink>*> views;
+          for (std::size_t u = 0; u < placement.size(); ++u) {
+            all[u] = fresh.LinksAt(u, probe[u]);
+            views.push_back(&all[u]);
+          }
+          const std::string where = "pass " + std::to_string(pass) + ", UAV " +
+                                    std::to_string(active) + " at " + std::to_string(p.x) + "," +
+                                    std::to_string(p.y) + "," + std::to_string(p.z);
+          ExpectSame(info, fresh.Score(probe, views), where);
+          if (info.serving != at_start.serving)
+            ++reassigned;
+        }
       }
     }
   }
