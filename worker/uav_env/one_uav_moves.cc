@@ -53,7 +53,8 @@ OneUavMoves::OneUavMoves(AnalyticEvaluator& model, const Placement& placement, s
   const std::vector<int>& channels = model.UavChannels();
   channel_of_its_own_ = std::count(channels.begin(), channels.end(), channels[active]) == 1;
   kept_shares_.assign(channel_order_.size(), Share{});
-  loses_ue_.assign(channel_order_.size(), 0);
+  lost_.assign(channel_order_.size(), 0);
+  shares_after_loss_.assign(channel_order_.size(), {});
 }
 
 const std::vector<UeLink>& OneUavMoves::LinksOf(int uav,
@@ -86,7 +87,7 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
   info.snr_db.clear();
   info.coverage.clear();
   info.lookahead.clear();
-  std::fill(loses_ue_.begin(), loses_ue_.end(), 0);
+  std::fill(lost_.begin(), lost_.end(), 0);
   // The UEs the moving UAV serves, as bits: with its channel its own and its links fixed, they
   // alone make its channel's share.
   if (!channel_of_its_own_ || n_ues > 64)
@@ -104,7 +105,7 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
         serving = active;
     }
     if (serving == active && other != active)
-      loses_ue_[channel_index(other)] = 1;
+      lost_[channel_index(other)] |= n_ues <= 64 ? std::uint64_t{1} << i : 1;
     info.serving[i] = serving;
     if (serving == active)
       taken |= std::uint64_t{1} << i;
@@ -118,8 +119,12 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
   const int active_channel = channels[active_];
   for (std::size_t k = 0; k < channel_order_.size(); ++k) {
     const int channel = channel_order_[k];
-    if (channel != active_channel && !loses_ue_[k]) {
+    if (channel != active_channel && lost_[k] == 0) {
       info.throughput_mbps += ChannelShare(channel, info.serving, active_links);
+      continue;
+    }
+    if (channel != active_channel && n_ues <= 64) {
+      info.throughput_mbps += ShareAfterLoss(k, info.serving, active_links);
       continue;
     }
     if (channel == active_channel && remembered) {
@@ -157,6 +162,27 @@ double OneUavMoves::RememberedShare(std::uint64_t taken, const std::vector<int>&
     remembered.by_taken[remembered.next] = {taken, mbps};
     remembered.next = (remembered.next + 1) % PointShares::kMaxSets;
   }
+  return mbps;
+}
+
+double OneUavMoves::ShareAfterLoss(std::size_t k, const std::vector<int>& serving,
+                                   const std::vector<UeLink>& active_links) {
+  constexpr std::size_t kMaxSets = 256;  // per channel and map
+  std::vector<std::pair<std::uint64_t, double>>& known = shares_after_loss_[k];
+  for (const auto& [set, mbps] : known) {
+    if (set == lost_[k])
+      return mbps;
+  }
+  const std::vector<int>& channels = model_.UavChannels();
+  domain_.clear();
+  for (std::size_t i = 0; i < serving.size(); ++i) {
+    if (channels[static_cast<std::size_t>(serving[i])] == channel_order_[k])
+      domain_.push_back(model_.AirtimeOf(i, LinksOf(serving[i], active_links)[i]));
+  }
+  // No UEs left: Score adds nothing, and x + 0.0 is x.
+  const double mbps = domain_.empty() ? 0.0 : model_.ChannelThroughput(domain_);
+  if (known.size() < kMaxSets)
+    known.emplace_back(lost_[k], mbps);
   return mbps;
 }
 

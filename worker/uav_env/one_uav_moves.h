@@ -44,6 +44,9 @@ class OneUavMoves {
   };
   double ChannelShare(int channel, const std::vector<int>& serving,
                       const std::vector<UeLink>& active_links);
+  // Channel k's share after it lost the UEs of lost_[k]: remembered in this map, or worked out.
+  double ShareAfterLoss(std::size_t k, const std::vector<int>& serving,
+                        const std::vector<UeLink>& active_links);
   // The moving UAV's channel's share with the UEs of `taken`: from `remembered`, or worked out.
   double RememberedShare(std::uint64_t taken, const std::vector<int>& serving,
                          const std::vector<UeLink>& active_links, PointShares& remembered);
@@ -57,7 +60,12 @@ class OneUavMoves {
   std::vector<int> others_serving_;  // per UE: its UAV were `active` not there
   std::vector<int> channel_order_;   // the channels in the order Score sums their shares
   std::vector<Share> kept_shares_;   // per entry of channel_order_
-  std::vector<char> loses_ue_;       // per entry of channel_order_, for the current point
+  // Per entry of channel_order_, for the current point: the UEs the moving UAV takes from it, as
+  // bits (with more than 64 UEs, only whether it takes any).
+  std::vector<std::uint64_t> lost_;
+  // Per entry of channel_order_: its share for each set of UEs taken from it, in this map (the
+  // others' links fixed, so the set alone makes its UEs and links).
+  std::vector<std::vector<std::pair<std::uint64_t, double>>> shares_after_loss_;
   bool channel_of_its_own_ = false;  // no other UAV on the moving UAV's channel
   std::vector<AirtimeLink> domain_;  // scratch
 };
