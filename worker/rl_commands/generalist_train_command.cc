@@ -13,6 +13,7 @@
 
 #include "common/config/config_error.h"
 #include "common/hash/sha256.h"
+#include "common/provenance/provenance.h"
 #include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/scenario_parser.h"
@@ -296,7 +297,9 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
                              {"kept_at_steps", r.kept_at_steps},
                              {"validation_ratio", r.best_validation},
                              {"validation", ValidationJson(r.validation)},
-                             {"train_seconds", seconds}};
+                             {"train_seconds", seconds},
+                             // The commit and the libraries it was trained with.
+                             {"build", DescribeBuild(ThisBuild())}};
     result["training"]["seed"] = settings.agent.seed;
     if (source.draw->Generated()) {
       const std::uint64_t first = source.draw->FirstTrainingSeed();

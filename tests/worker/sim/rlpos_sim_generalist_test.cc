@@ -72,6 +72,10 @@ TEST_F(Generalist, RecordsWhatItTrainedOnAndPlacesUavsInScenariosItNeverSaw) {
       result["training"]["generator_seeds"],
       (nlohmann::json{1000000000ULL + 3 * 100000000ULL, 1000000000ULL + 3 * 100000000ULL + 23}));
   EXPECT_EQ(result["training"]["validation_seeds"], (nlohmann::json{500000000, 500000001}));
+  // The build: "rlpos <git describe>, ns-3 V, libtorch V, Cyclone DDS V".
+  const std::string build = result.value("build", "");
+  EXPECT_EQ(build.rfind("rlpos ", 0), 0u) << build;
+  EXPECT_NE(build.find(", libtorch "), std::string::npos) << build;
   ASSERT_EQ(result["validation"].size(), 2u);
   for (const auto& v : result["validation"]) {
     EXPECT_GT(v["oracle_reward"].get<double>(), 0.0) << v;
