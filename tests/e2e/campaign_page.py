@@ -82,6 +82,20 @@ def check_plots(driver, positioners, scenarios):
         fail(f"optimality CDF: {len(curves)} curves, expected {positioners - 1}")
 
 
+def check_legends_fit(driver):
+    """Every legend entry of every line plot lies inside its plot (none cut at the edge)."""
+    cut = driver.execute_script("""
+        const cut = [];
+        for (const plot of document.querySelectorAll('svg.plot')) {
+          const edge = plot.getBoundingClientRect().right;
+          for (const t of plot.querySelectorAll('g.legend-item text'))
+            if (t.getBoundingClientRect().right > edge + 0.5) cut.push(t.textContent);
+        }
+        return cut;""")
+    if cut:
+        fail(f"legend entries cut at the plot's edge: {cut[:3]}")
+
+
 def check_legend_toggle(driver):
     plot = driver.find_element(By.CSS_SELECTOR, "#distribution-plots svg.plot")
     item = plot.find_element(By.CSS_SELECTOR, "g.legend-item")
@@ -129,6 +143,7 @@ def main():
             if not driver.execute_script("return window.rlposLoadedOnce === true"):
                 fail("the page was reloaded")
             check_plots(driver, args.positioners, args.scenarios)
+            check_legends_fit(driver)
             check_legend_toggle(driver)
             full_page_screenshot(driver, os.path.join(args.out, "campaign_page.png"))
             print(f"page ok: {first}/{total} at first sight, then {total}/{total} without reload; "

@@ -102,7 +102,10 @@ function extent(values) {
 // --- A line plot with axes, legend (click toggles), and a hover read-out.
 // series: [{name, color, x: [], y: [], step: 'ccdf'|'cdf'|null}]
 function linePlot(options) {
-  const W = 560, H = 300, M = { l: 52, r: 130, t: 10, b: 40 };
+  // Room on the right for the longest legend entry (11 px text, about 6.2 px a character):
+  // "rl+generalist-multi, 6 UAVs" would otherwise run off the plot's edge.
+  const longest = Math.max(0, ...options.series.map(s => s.name.length));
+  const W = 560, H = 300, M = { l: 52, r: Math.max(130, 32 + Math.ceil(6.2 * longest)), t: 10, b: 40 };
   const pw = W - M.l - M.r, ph = H - M.t - M.b;
   const root = svg('svg', { class: 'plot', viewBox: `0 0 ${W} ${H}`, 'data-kind': options.kind || '' });
   const all = options.series;
