@@ -22,8 +22,8 @@
 #include "worker/agent/ppo_agent.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/gym/general_observation.h"
-#include "worker/rl_commands/generalist_checkpoint.h"
 #include "worker/policy_folder/policy_folder.h"
+#include "worker/rl_commands/generalist_checkpoint.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_training/generalist_training.h"
 
