@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 
 #include "worker/agent/stored_zip.h"
 
@@ -628,8 +629,9 @@ void CheckByteOrder(const StoredZip& zip) {
 
 }  // namespace
 
-std::vector<SavedTensor> ReadSavedTensors(const std::string& file) {
-  const StoredZip zip(file);
+namespace {
+
+std::vector<SavedTensor> TensorsOf(const StoredZip& zip, const std::string& file) {
   try {
     CheckByteOrder(zip);
     const std::string_view pickle = zip.Read(zip.Folder() + "/data.pkl");
@@ -641,6 +643,16 @@ std::vector<SavedTensor> ReadSavedTensors(const std::string& file) {
   } catch (const BadFile& e) {
     throw std::runtime_error(file + ": " + e.what());
   }
+}
+
+}  // namespace
+
+std::vector<SavedTensor> ReadSavedTensors(const std::string& file) {
+  return TensorsOf(StoredZip(file), file);
+}
+
+std::vector<SavedTensor> ReadSavedTensorsFromBytes(std::string bytes, const std::string& name) {
+  return TensorsOf(StoredZip::FromBytes(std::move(bytes), name), name);
 }
 
 }  // namespace rlpos

@@ -21,5 +21,7 @@ struct SavedTensor {
 // a missing or oversized file, a broken or compressed archive, a failed CRC, an opcode or global
 // outside the allowed few, a tensor of another type, non-contiguous or outside its storage.
 std::vector<SavedTensor> ReadSavedTensors(const std::string& file);
+// The same of a file's bytes already in memory, `name` standing for the file in messages.
+std::vector<SavedTensor> ReadSavedTensorsFromBytes(std::string bytes, const std::string& name);
 
 }  // namespace rlpos

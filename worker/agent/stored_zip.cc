@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 namespace rlpos {
 namespace {
@@ -100,6 +101,20 @@ bool IsPlainName(std::string_view name) {
 
 StoredZip::StoredZip(const std::string& file) : file_(file) {
   ReadWholeFile();
+  CheckDirectory();
+}
+
+StoredZip StoredZip::FromBytes(std::string bytes, const std::string& name) {
+  StoredZip zip;
+  zip.file_ = name;
+  if (bytes.size() > kMaxFileBytes)
+    zip.Fail("larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB");
+  zip.bytes_ = std::move(bytes);
+  zip.CheckDirectory();
+  return zip;
+}
+
+void StoredZip::CheckDirectory() {
   ReadCentralDirectory(FindEndRecord());
   CheckOneFolder();
 }

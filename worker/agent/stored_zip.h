@@ -18,6 +18,9 @@ class StoredZip {
   // a missing, unreadable or oversized file and for anything that is not a plain zip archive whose
   // entries all sit in one top-level folder.
   explicit StoredZip(const std::string& file);
+  // The same checks of an archive already in memory (at most kMaxFileBytes), `name` standing for
+  // the file in messages.
+  static StoredZip FromBytes(std::string bytes, const std::string& name);
 
   const std::string& File() const { return file_; }
   std::uint64_t FileBytes() const { return bytes_.size(); }
@@ -38,6 +41,8 @@ class StoredZip {
     std::uint32_t local_header = 0;  // offset
   };
 
+  StoredZip() = default;
+  void CheckDirectory();
   void ReadWholeFile();
   std::uint64_t FindEndRecord() const;
   void CheckZip64End(std::uint64_t at, std::uint64_t entries, std::uint64_t directory_bytes,
