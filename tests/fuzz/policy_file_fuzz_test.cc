@@ -3,7 +3,9 @@
 // policy.pt. Mutations of a shipped policy.pt, from a fixed seed: each must be refused with a
 // one-line std::runtime_error naming the file, or read into tensors whose floats fit their
 // shapes; anything else (another exception, a crash, an ASan or UBSan report in the
-// RLPOS_SANITIZE build) fails. Fewer inputs than the wire's: each is a 250 KB archive.
+// RLPOS_SANITIZE build) fails. Fewer inputs than the wire's: each is a 250 KB archive. The
+// CRC-32 turns away most edits of data.pkl before it is run; SavedTensorsTest.DamagedPickles*
+// runs the unpickler on damaged pickles with their CRCs made right.
 #include <gtest/gtest.h>
 
 #include <fstream>

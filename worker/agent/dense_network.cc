@@ -30,7 +30,20 @@ DenseNetwork::DenseNetwork(std::vector<int> sizes, bool relu_output)
   inputs_.resize(static_cast<std::size_t>(LayerCount()));
 }
 
-RLPOS_WIDE_LOOPS void DenseNetwork::Forward(const float* x, int rows, float* out) {
+RLPOS_WIDE_LOOPS void DenseNetwork::SetLayer(int layer, const float* weight_out_in,
+                                             const float* bias) {
+  const int in = LayerInputs(layer);
+  const int out = LayerOutputs(layer);
+  for (int i = 0; i < in; ++i) {
+    for (int o = 0; o < out; ++o)
+      parameters_[WeightOffset(layer) + static_cast<std::size_t>(i * out + o)] =
+          weight_out_in[static_cast<std::size_t>(o) * static_cast<std::size_t>(in) +
+                        static_cast<std::size_t>(i)];
+  }
+  std::copy(bias, bias + out, parameters_.begin() + static_cast<long>(BiasOffset(layer)));
+}
+
+void DenseNetwork::Forward(const float* x, int rows, float* out) {
   if (rows <= 0)
     throw std::invalid_argument("DenseNetwork::Forward: no rows");
   rows_ = rows;

@@ -35,6 +35,8 @@ class DenseNetwork {
     return weight_offset_[static_cast<std::size_t>(layer)];
   }
   std::size_t BiasOffset(int layer) const { return bias_offset_[static_cast<std::size_t>(layer)]; }
+  // Sets layer `layer` from torch's Linear layout: weight [out][in] and bias [out], row-major.
+  void SetLayer(int layer, const float* weight_out_in, const float* bias);
 
   // out[rows][OutputSize()] for x[rows][InputSize()], both row-major. Keeps the layers' inputs
   // for Backward.

@@ -50,19 +50,10 @@ std::vector<torch::nn::Linear> LinearLayers(const torch::nn::Sequential& net,
 
 void CopyParameters(const torch::nn::Sequential& from, DenseNetwork& to) {
   const auto layers = LinearLayers(from, to);
-  std::vector<float>& p = to.Parameters();
   for (int l = 0; l < to.LayerCount(); ++l) {
     const torch::Tensor w = layers[static_cast<std::size_t>(l)]->weight.detach().contiguous();
     const torch::Tensor b = layers[static_cast<std::size_t>(l)]->bias.detach().contiguous();
-    const auto wa = w.accessor<float, 2>();
-    const int in = to.LayerInputs(l);
-    const int out = to.LayerOutputs(l);
-    for (int i = 0; i < in; ++i) {
-      for (int o = 0; o < out; ++o)
-        p[to.WeightOffset(l) + static_cast<std::size_t>(i * out + o)] = wa[o][i];
-    }
-    std::copy(b.data_ptr<float>(), b.data_ptr<float>() + out,
-              p.begin() + static_cast<long>(to.BiasOffset(l)));
+    to.SetLayer(l, w.data_ptr<float>(), b.data_ptr<float>());
   }
 }
 

@@ -35,7 +35,8 @@ bool HasUeEncoder(const std::vector<SavedTensor>& tensors) {
                      [](const SavedTensor& t) { return StartsWith(t.name, "phi."); });
 }
 
-// The tensors named PREFIX*, in order, as `net`'s layers: false when they are not its shape.
+// The tensors named PREFIX*, in order, as `net`'s layers: false, `net` untouched, when they are
+// not its shape.
 bool Fill(const std::vector<SavedTensor>& tensors, const std::string& prefix, DenseNetwork& net) {
   std::vector<const SavedTensor*> mine;
   for (const SavedTensor& t : tensors) {
@@ -44,7 +45,6 @@ bool Fill(const std::vector<SavedTensor>& tensors, const std::string& prefix, De
   }
   if (static_cast<int>(mine.size()) != 2 * net.LayerCount())
     return false;
-  std::vector<float>& p = net.Parameters();
   for (int l = 0; l < net.LayerCount(); ++l) {
     const SavedTensor& w = *mine[static_cast<std::size_t>(2 * l)];
     const SavedTensor& b = *mine[static_cast<std::size_t>(2 * l + 1)];
@@ -53,13 +53,10 @@ bool Fill(const std::vector<SavedTensor>& tensors, const std::string& prefix, De
     if (!EndsWith(w.name, ".weight") || !EndsWith(b.name, ".bias") ||
         w.sizes != std::vector<std::int64_t>{out, in} || b.sizes != std::vector<std::int64_t>{out})
       return false;
-    // torch's Linear weight is [out][in]; DenseNetwork keeps it input-major (mlp.cc's copy).
-    for (std::int64_t i = 0; i < in; ++i) {
-      for (std::int64_t o = 0; o < out; ++o)
-        p[net.WeightOffset(l) + static_cast<std::size_t>(i * out + o)] =
-            w.values[static_cast<std::size_t>(o * in + i)];
-    }
-    std::copy(b.values.begin(), b.values.end(), p.begin() + static_cast<long>(net.BiasOffset(l)));
+  }
+  for (int l = 0; l < net.LayerCount(); ++l) {
+    net.SetLayer(l, mine[static_cast<std::size_t>(2 * l)]->values.data(),
+                 mine[static_cast<std::size_t>(2 * l + 1)]->values.data());
   }
   return true;
 }
@@ -73,13 +70,11 @@ void LoadSavedNetwork(const std::string& file, DenseNetwork& net) {
                              ": the policy's network has a UE encoder (agent.ue_encoder), "
                              "the scenario's agent has none");
   }
-  DenseNetwork loaded = net;
-  if (!Fill(tensors, "", loaded)) {
+  if (!Fill(tensors, "", net)) {
     throw std::runtime_error(file +
                              ": the policy's network shape differs from the scenario's "
                              "(observations, actions or agent.hidden changed)");
   }
-  net.Parameters() = loaded.Parameters();
 }
 
 void LoadSavedNetwork(const std::string& file, UeSetNetwork& net) {

@@ -51,6 +51,9 @@ OneUavMoves::OneUavMoves(AnalyticEvaluator& model, const Placement& placement, s
       channel_order_.push_back(channel);
   }
   const std::vector<int>& channels = model.UavChannels();
+  for (const int channel : channels)
+    order_of_uav_.push_back(static_cast<std::size_t>(
+        std::find(channel_order_.begin(), channel_order_.end(), channel) - channel_order_.begin()));
   channel_of_its_own_ = std::count(channels.begin(), channels.end(), channels[active]) == 1;
   kept_shares_.assign(channel_order_.size(), Share{});
   lost_.assign(channel_order_.size(), 0);
@@ -69,12 +72,6 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
   if (generic_)
     return ScoreWhole(model_, placement_, active_, active_links, links_, info);
   const Scenario& scenario = model_.GetScenario();
-  const std::vector<int>& channels = model_.UavChannels();
-  const auto channel_index = [this, &channels](int uav) {
-    const int channel = channels[static_cast<std::size_t>(uav)];
-    return static_cast<std::size_t>(
-        std::find(channel_order_.begin(), channel_order_.end(), channel) - channel_order_.begin());
-  };
   const int active = static_cast<int>(active_);
   const std::size_t n_ues = scenario.ues.size();
   info.positions = placement_;
@@ -105,7 +102,8 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
         serving = active;
     }
     if (serving == active && other != active)
-      lost_[channel_index(other)] |= n_ues <= 64 ? std::uint64_t{1} << i : 1;
+      lost_[order_of_uav_[static_cast<std::size_t>(other)]] |=
+          n_ues <= 64 ? std::uint64_t{1} << i : 1;
     info.serving[i] = serving;
     if (serving == active)
       taken |= std::uint64_t{1} << i;
@@ -115,32 +113,30 @@ void OneUavMoves::ScoreInto(const Vec3& position, const std::vector<UeLink>& act
     info.snr_db.push_back(link.snr_db);
     info.demands_met += link.demand_met ? 1 : 0;
   }
-  // Score's sum, channel by channel in the same order.
-  const int active_channel = channels[active_];
+  // Score's sum, channel by channel in the same order (a channel without UEs adds 0.0, which
+  // leaves the sum's bits as Score's skipping it does: the sum starts at +0.0).
+  const std::size_t active_k = order_of_uav_[active_];
   for (std::size_t k = 0; k < channel_order_.size(); ++k) {
-    const int channel = channel_order_[k];
-    if (channel != active_channel && lost_[k] == 0) {
-      info.throughput_mbps += ChannelShare(channel, info.serving, active_links);
-      continue;
-    }
-    if (channel != active_channel && n_ues <= 64) {
+    if (k != active_k && lost_[k] == 0)
+      info.throughput_mbps += KeptShare(k, info.serving, active_links);
+    else if (k != active_k && n_ues <= 64)
       info.throughput_mbps += ShareAfterLoss(k, info.serving, active_links);
-      continue;
-    }
-    if (channel == active_channel && remembered) {
-      if (taken != 0)
-        info.throughput_mbps += RememberedShare(taken, info.serving, active_links, *remembered);
-      continue;
-    }
-    domain_.clear();
-    for (std::size_t i = 0; i < n_ues; ++i) {
-      const int serving = info.serving[i];
-      if (channels[static_cast<std::size_t>(serving)] == channel)
-        domain_.push_back(model_.AirtimeOf(i, LinksOf(serving, active_links)[i]));
-    }
-    if (!domain_.empty())
-      info.throughput_mbps += model_.ChannelThroughput(domain_);
+    else if (k == active_k && remembered)
+      info.throughput_mbps += RememberedShare(taken, info.serving, active_links, *remembered);
+    else
+      info.throughput_mbps += ShareOf(k, info.serving, active_links);
   }
+}
+
+double OneUavMoves::ShareOf(std::size_t k, const std::vector<int>& serving,
+                            const std::vector<UeLink>& active_links) {
+  domain_.clear();
+  for (std::size_t i = 0; i < serving.size(); ++i) {
+    const auto uav = static_cast<std::size_t>(serving[i]);
+    if (order_of_uav_[uav] == k)
+      domain_.push_back(model_.AirtimeOf(i, LinksOf(serving[i], active_links)[i]));
+  }
+  return domain_.empty() ? 0.0 : model_.ChannelThroughput(domain_);
 }
 
 double OneUavMoves::RememberedShare(std::uint64_t taken, const std::vector<int>& serving,
@@ -150,12 +146,7 @@ double OneUavMoves::RememberedShare(std::uint64_t taken, const std::vector<int>&
     if (set == taken)
       return mbps;
   }
-  domain_.clear();
-  for (std::size_t i = 0; i < serving.size(); ++i) {
-    if (static_cast<std::size_t>(serving[i]) == active_)
-      domain_.push_back(model_.AirtimeOf(i, active_links[i]));
-  }
-  const double mbps = model_.ChannelThroughput(domain_);
+  const double mbps = ShareOf(order_of_uav_[active_], serving, active_links);
   if (remembered.by_taken.size() < PointShares::kMaxSets) {
     remembered.by_taken.emplace_back(taken, mbps);
   } else {
@@ -173,35 +164,18 @@ double OneUavMoves::ShareAfterLoss(std::size_t k, const std::vector<int>& servin
     if (set == lost_[k])
       return mbps;
   }
-  const std::vector<int>& channels = model_.UavChannels();
-  domain_.clear();
-  for (std::size_t i = 0; i < serving.size(); ++i) {
-    if (channels[static_cast<std::size_t>(serving[i])] == channel_order_[k])
-      domain_.push_back(model_.AirtimeOf(i, LinksOf(serving[i], active_links)[i]));
-  }
-  // No UEs left: Score adds nothing, and x + 0.0 is x.
-  const double mbps = domain_.empty() ? 0.0 : model_.ChannelThroughput(domain_);
+  const double mbps = ShareOf(k, serving, active_links);
   if (known.size() < kMaxSets)
     known.emplace_back(lost_[k], mbps);
   return mbps;
 }
 
-double OneUavMoves::ChannelShare(int channel, const std::vector<int>& serving,
-                                 const std::vector<UeLink>& active_links) {
-  const std::size_t k = static_cast<std::size_t>(
-      std::find(channel_order_.begin(), channel_order_.end(), channel) - channel_order_.begin());
-  Share& share = kept_shares_[k];
-  if (share.known)
-    return share.mbps;
+double OneUavMoves::KeptShare(std::size_t k, const std::vector<int>& serving,
+                              const std::vector<UeLink>& active_links) {
   // Its UEs are those it has without the moving UAV, with the same links.
-  const std::vector<int>& channels = model_.UavChannels();
-  domain_.clear();
-  for (std::size_t i = 0; i < serving.size(); ++i) {
-    if (channels[static_cast<std::size_t>(serving[i])] == channel)
-      domain_.push_back(model_.AirtimeOf(i, LinksOf(serving[i], active_links)[i]));
-  }
-  // No UEs: Score adds nothing, and x + 0.0 is x.
-  share = {true, domain_.empty() ? 0.0 : model_.ChannelThroughput(domain_)};
+  Share& share = kept_shares_[k];
+  if (!share.known)
+    share = {true, ShareOf(k, serving, active_links)};
   return share.mbps;
 }
 

@@ -42,12 +42,16 @@ class OneUavMoves {
     bool known = false;
     double mbps = 0.0;
   };
-  double ChannelShare(int channel, const std::vector<int>& serving,
-                      const std::vector<UeLink>& active_links);
+  // Channel k's (of channel_order_) share with the UEs `serving` gives it: 0.0 for none.
+  double ShareOf(std::size_t k, const std::vector<int>& serving,
+                 const std::vector<UeLink>& active_links);
+  double KeptShare(std::size_t k, const std::vector<int>& serving,
+                   const std::vector<UeLink>& active_links);
   // Channel k's share after it lost the UEs of lost_[k]: remembered in this map, or worked out.
   double ShareAfterLoss(std::size_t k, const std::vector<int>& serving,
                         const std::vector<UeLink>& active_links);
-  // The moving UAV's channel's share with the UEs of `taken`: from `remembered`, or worked out.
+  // The moving UAV's channel's share with the UEs of `taken`: from `remembered`, or worked out
+  // (0.0 when it takes none).
   double RememberedShare(std::uint64_t taken, const std::vector<int>& serving,
                          const std::vector<UeLink>& active_links, PointShares& remembered);
   const std::vector<UeLink>& LinksOf(int uav, const std::vector<UeLink>& active_links) const;
@@ -56,10 +60,11 @@ class OneUavMoves {
   Placement placement_;
   std::size_t active_;
   std::vector<const std::vector<UeLink>*> links_;
-  bool generic_ = false;             // one UAV, or an SNR that is not a number: Score itself
-  std::vector<int> others_serving_;  // per UE: its UAV were `active` not there
-  std::vector<int> channel_order_;   // the channels in the order Score sums their shares
-  std::vector<Share> kept_shares_;   // per entry of channel_order_
+  bool generic_ = false;                   // one UAV, or an SNR that is not a number: Score itself
+  std::vector<int> others_serving_;        // per UE: its UAV were `active` not there
+  std::vector<int> channel_order_;         // the channels in the order Score sums their shares
+  std::vector<std::size_t> order_of_uav_;  // per UAV: its channel's entry in channel_order_
+  std::vector<Share> kept_shares_;         // per entry of channel_order_
   // Per entry of channel_order_, for the current point: the UEs the moving UAV takes from it, as
   // bits (with more than 64 UEs, only whether it takes any).
   std::vector<std::uint64_t> lost_;
