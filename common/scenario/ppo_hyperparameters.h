@@ -23,6 +23,7 @@ struct PpoSpec {
   int minibatches = 4;
   bool anneal_learning_rate = true;
   int num_envs = 1;
+  bool centralised_critic = false;
 };
 
 inline void CheckPpoSpec(const PpoSpec& p, const ObjectReader& reader) {
@@ -63,7 +64,14 @@ inline const HyperparameterTable<PpoSpec>& PpoHyperparameters() {
         "num_envs times more transitions each (CleanRL's num_envs). Env i of n flies training "
         "episodes i, i + n, ... in rounds of n. 1: one env, the seed stream of a single env. "
         "Packet fidelity (one network per process): one env collects the num_envs x "
-        "rollout_steps transitions"}},
+        "rollout_steps transitions"},
+       {"centralised_critic", &PpoSpec::centralised_critic, NoRange(),
+        "the critic sees, beside the acting UAV's own observation, the team's state (the shares "
+        "of UEs in LoS and with their demand met, the throughput, and each UAV's share of the "
+        "UEs, in slots of fixed count: the same layout in every scenario), as MAPPO's "
+        "centralised critic does with agent.joint_steps (every UAV acting at once on its own "
+        "observation, one shared policy). The actor still acts on the observation alone, so "
+        "placing needs nothing more; the wider critic is a training matter"}},
       CheckPpoSpec};
   return table;
 }

@@ -47,6 +47,9 @@ class Agent {
     }
     return loss;
   }
+  // Whether each transition must carry the acting agent's team state (Env::TeamStateOf), for a
+  // centralised critic (agent.ppo.centralised_critic).
+  virtual bool NeedsTeamState() const { return false; }
   // DQN's exploration rate; 0 for the algorithms that explore by a stochastic policy.
   virtual double Epsilon() const { return 0.0; }
   // Remembers the networks the policy acts with (those Save writes), in memory, replacing what

@@ -22,9 +22,33 @@ GreedyFlight WholeEpisode(Env& env, Agent& agent, std::uint64_t seed,
 
 }  // namespace
 
+// One greedy step of every agent at once (RunEpisode's joint step).
+StepResult JointStep(Env& env, Agent& agent, const BoxSpace& space, const BoxSpace& box) {
+  std::vector<std::vector<float>> observations;
+  std::vector<ActionMask> masks;
+  for (const std::vector<double>& o : env.AgentObservations())
+    observations.push_back(space.Normalise(o));
+  MultiStepResult joint;
+  if (agent.Continuous()) {
+    std::vector<std::vector<double>> displacements;
+    for (const std::vector<float>& o : observations)
+      displacements.push_back(ScaleToBox(agent.ActContinuous(o, false), box));
+    joint = env.StepAllContinuous(displacements);
+  } else {
+    for (std::size_t a = 0; a < observations.size(); ++a)
+      masks.push_back(env.ValidActionsOf(a));
+    joint = env.StepAll(agent.ActEach(observations, masks, false));
+  }
+  StepResult step;
+  step.reward = joint.reward;
+  step.terminated = joint.terminated;
+  step.truncated = joint.truncated;
+  step.info = std::move(joint.info);
+  return step;
+}
+
 GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const EpisodeOptions& options) {
-  if (options.joint && env.AgentCount() > 1)
-    return WholeEpisode(env, agent, seed, options);
+  const bool joint = options.joint && env.AgentCount() > 1;
   const BoxSpace space = env.ObservationSpace();
   const BoxSpace box = env.ContinuousActionSpace();
   std::vector<float> obs = space.Normalise(env.Reset(seed, options.reset));
@@ -40,7 +64,9 @@ GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const Episode
   met.emplace(std::move(state->key), 0);
   for (int t = 1;; ++t) {
     StepResult step;
-    if (agent.Continuous())
+    if (joint)
+      step = JointStep(env, agent, space, box);
+    else if (agent.Continuous())
       step = env.StepContinuous(ScaleToBox(agent.ActContinuous(obs, false), box));
     else
       step = env.Step(agent.Act(obs, env.ValidActions(), false));
@@ -61,7 +87,8 @@ GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const Episode
       const Moment& end = moments[static_cast<std::size_t>((last == s ? s + period : last) - 1)];
       return {end.info, end.reward, steps, t};
     }
-    obs = space.Normalise(step.observation);
+    if (!joint)  // the agents' observations are read from the env at each joint step
+      obs = space.Normalise(step.observation);
   }
 }
 

@@ -19,7 +19,8 @@ struct GreedyFlight {
 };
 
 // RunEpisode(env, agent, seed, false, nullptr, options)'s final_info and final_reward, bit for
-// bit. Flies the whole episode when the env cannot tell its state or options.joint is set.
+// bit, also with options.joint (every UAV moving at once). Flies the whole episode when the env
+// cannot tell its state.
 GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const EpisodeOptions& options);
 
 }  // namespace rlpos

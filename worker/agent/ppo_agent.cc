@@ -16,6 +16,7 @@
 #include "worker/agent/ppo_objective.h"
 #include "worker/agent/running_moments.h"
 #include "worker/agent/state_stream.h"
+#include "worker/gym/team_state.h"
 
 namespace rlpos {
 
@@ -24,6 +25,9 @@ struct PpoAgent::Impl {
   PpoSpec ppo;
   int observation_dim;
   int action_count;
+  // agent.ppo.centralised_critic: the critic's input is the observation, then the transition's
+  // team state of this many values; 0: the observation alone.
+  int team_state_dim;
   std::optional<SlotBlock> ue_slots;  // where the UE slots lie, for agent.ue_encoder
   // libtorch initialises, saves and loads the networks; plain float computes with them
   // (dense_network.h says why): ppo_network.h.
@@ -63,9 +67,10 @@ struct PpoAgent::Impl {
         ppo(s.ppo),
         observation_dim(obs_dim),
         action_count(actions),
+        team_state_dim(s.ppo.centralised_critic ? kTeamStateWidth : 0),
         ue_slots(ue_slots),
         actor_net(SeededActor(s, obs_dim, actions, ue_slots)),
-        critic_net(obs_dim, s.hidden, 1, s.ue_encoder, ue_slots),
+        critic_net(obs_dim + team_state_dim, s.hidden, 1, s.ue_encoder, ue_slots),
         actor_adam(actor_net.Parameters().size(), s.ppo.learning_rate, 1e-5),
         critic_adam(critic_net.Parameters().size(), s.ppo.learning_rate, 1e-5),
         rng(s.seed),
@@ -95,10 +100,27 @@ struct PpoAgent::Impl {
       MaskLogits(*row_masks[r], action_count, logits.data() + r * action_count);
   }
 
-  // The critic's value of each of `rows` observations.
-  std::vector<float> Values(const std::vector<float>& observations, int rows) {
+  // rows x the critic's input, row-major: each observation (or next observation), then its
+  // team state with a centralised critic. The rollout's observations, when the critic has no
+  // team state.
+  std::vector<float> CriticInputs(bool next) const {
+    if (team_state_dim == 0)
+      return Observations(next);
+    std::vector<float> rows;
+    rows.reserve(rollout.size() * static_cast<std::size_t>(observation_dim + team_state_dim));
+    for (const Transition& t : rollout) {
+      const std::vector<float>& row = next ? t.next_observation : t.observation;
+      const std::vector<float>& team = next ? t.next_team_state : t.team_state;
+      rows.insert(rows.end(), row.begin(), row.begin() + observation_dim);
+      rows.insert(rows.end(), team.begin(), team.end());
+    }
+    return rows;
+  }
+
+  // The critic's value of each of `rows` inputs.
+  std::vector<float> Values(const std::vector<float>& inputs, int rows) {
     std::vector<float> values(static_cast<std::size_t>(rows));
-    critic_net.Forward(observations.data(), rows, values.data());
+    critic_net.Forward(inputs.data(), rows, values.data());
     return values;
   }
 
@@ -174,6 +196,13 @@ struct PpoAgent::Impl {
   }
 
   void Add(Transition transition, std::size_t row, int stream) {
+    const auto team = static_cast<std::size_t>(team_state_dim);
+    if (transition.team_state.size() != team || transition.next_team_state.size() != team) {
+      throw std::invalid_argument(
+          team == 0 ? "PPO: a team state for a critic that sees the observation alone"
+                    : "PPO: a centralised critic needs each transition's team state (" +
+                          std::to_string(team) + " values, and as many after the step)");
+    }
     reward_moments.Add(transition.reward);
     rollout.push_back(std::move(transition));
     masks.push_back(std::move(pending_masks.at(row)));
@@ -204,7 +233,8 @@ struct PpoAgent::Impl {
     AnnealLearningRate();
     ++done_updates;
     const std::vector<float> obs = Observations(false);
-    const auto [advantages, returns] = AdvantagesAndReturns(obs, Observations(true));
+    const std::vector<float> critic_in = CriticInputs(false);
+    const auto [advantages, returns] = AdvantagesAndReturns(critic_in, CriticInputs(true));
     const long n = static_cast<long>(rollout.size());
     std::vector<int> actions(static_cast<std::size_t>(n));
     for (long r = 0; r < n; ++r)
@@ -214,8 +244,11 @@ struct PpoAgent::Impl {
     std::iota(order.begin(), order.end(), 0L);
     const long size = std::max(1L, n / ppo.minibatches);
     const auto dim = static_cast<std::size_t>(observation_dim);
+    const auto critic_dim = dim + static_cast<std::size_t>(team_state_dim);
     // One minibatch's rows, gathered.
     std::vector<float> batch_obs(static_cast<std::size_t>(size) * dim);
+    std::vector<float> batch_critic(team_state_dim > 0 ? static_cast<std::size_t>(size) * critic_dim
+                                                       : 0);
     std::vector<const ActionMask*> batch_masks(static_cast<std::size_t>(size));
     std::vector<int> batch_actions(static_cast<std::size_t>(size));
     std::vector<float> batch_old(static_cast<std::size_t>(size));
@@ -235,6 +268,11 @@ struct PpoAgent::Impl {
           std::copy(obs.begin() + static_cast<long>(i * dim),
                     obs.begin() + static_cast<long>((i + 1) * dim),
                     batch_obs.begin() + static_cast<long>(row * dim));
+          if (team_state_dim > 0) {
+            std::copy(critic_in.begin() + static_cast<long>(i * critic_dim),
+                      critic_in.begin() + static_cast<long>((i + 1) * critic_dim),
+                      batch_critic.begin() + static_cast<long>(row * critic_dim));
+          }
           batch_masks[row] = &masks[i];
           batch_actions[row] = actions[i];
           batch_old[row] = log_probs[i];
@@ -243,7 +281,8 @@ struct PpoAgent::Impl {
         }
         const int rows = static_cast<int>(size);
         Logits(batch_obs.data(), rows, batch_masks.data(), logits);
-        critic_net.Forward(batch_obs.data(), rows, values.data());
+        critic_net.Forward(team_state_dim > 0 ? batch_critic.data() : batch_obs.data(), rows,
+                           values.data());
         const PpoMinibatch minibatch{rows,
                                      action_count,
                                      logits.data(),
@@ -383,6 +422,10 @@ std::optional<double> PpoAgent::ObserveEach(std::vector<Transition> transitions)
   std::vector<int> streams(transitions.size());
   std::iota(streams.begin(), streams.end(), 0);
   return ObserveBatch(std::move(transitions), streams);
+}
+
+bool PpoAgent::NeedsTeamState() const {
+  return impl_->team_state_dim > 0;
 }
 
 void PpoAgent::KeepPolicy() {

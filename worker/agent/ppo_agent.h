@@ -43,6 +43,7 @@ class PpoAgent : public Agent {
   std::vector<int> ActEach(const std::vector<std::vector<float>>& observations,
                            const std::vector<ActionMask>& masks, bool explore) override;
   std::optional<double> ObserveEach(std::vector<Transition> transitions) override;
+  bool NeedsTeamState() const override;
   void KeepPolicy() override;
   void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;

@@ -17,6 +17,10 @@ struct Transition {
   ActionMask next_mask;   // actions allowed after the step (the bootstrap maximises over them)
   std::vector<float> continuous_action;  // continuous agents: the action, in [-1, 1]
   bool episode_end = false;              // terminal or truncated: returns are not carried across it
+  // With a centralised critic (agent.ppo.centralised_critic): the acting agent's team state
+  // (team_state.h) before and after the step. Empty otherwise.
+  std::vector<float> team_state = {};  // initialised: brace-initialised transitions omit both
+  std::vector<float> next_team_state = {};
 };
 
 class ReplayBuffer {

@@ -29,6 +29,11 @@ EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode) {
   return options;
 }
 
+std::vector<float> TeamStateFor(const Env& env, std::size_t agent) {
+  const std::vector<double> state = env.TeamStateOf(agent);
+  return std::vector<float>(state.begin(), state.end());  // its bounds are [0, 1] already
+}
+
 namespace {
 
 std::vector<std::vector<float>> NormaliseEach(const BoxSpace& space,
@@ -45,6 +50,16 @@ std::vector<ActionMask> MasksOf(const Env& env) {
   for (std::size_t a = 0; a < env.AgentCount(); ++a)
     masks.push_back(env.ValidActionsOf(a));
   return masks;
+}
+
+// Every agent's team state, if the agent learns with them; otherwise none.
+std::vector<std::vector<float>> TeamStatesFor(const Env& env, const Agent& agent, bool learn) {
+  std::vector<std::vector<float>> states;
+  if (learn && agent.NeedsTeamState()) {
+    for (std::size_t a = 0; a < env.AgentCount(); ++a)
+      states.push_back(TeamStateFor(env, a));
+  }
+  return states;
 }
 
 // What an episode's steps add up to, the same whether its agents act in turns or at once.
@@ -83,6 +98,7 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
   env.Reset(seed, options.reset);
   std::vector<std::vector<float>> obs = NormaliseEach(space, env.AgentObservations());
   std::vector<ActionMask> masks = MasksOf(env);
+  std::vector<std::vector<float>> teams = TeamStatesFor(env, agent, learn);
   for (;;) {
     std::vector<Transition> transitions(obs.size());
     MultiStepResult step;
@@ -101,6 +117,7 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
     }
     std::vector<std::vector<float>> next = NormaliseEach(space, step.observations);
     std::vector<ActionMask> next_masks = MasksOf(env);
+    std::vector<std::vector<float>> next_teams = TeamStatesFor(env, agent, learn);
     if (options.max_steps > 0 && tally.Steps() + 1 >= options.max_steps)
       step.truncated = true;  // a time limit: the next state still bootstraps
     const int first_action = transitions.front().action;
@@ -114,6 +131,10 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
         t.terminal = step.terminated;
         t.next_mask = next_masks[a];
         t.episode_end = step.terminated || step.truncated;
+        if (!teams.empty()) {
+          t.team_state = std::move(teams[a]);
+          t.next_team_state = next_teams[a];
+        }
       }
       loss = agent.ObserveEach(std::move(transitions));
     }
@@ -129,6 +150,7 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
     }
     obs = std::move(next);
     masks = std::move(next_masks);
+    teams = std::move(next_teams);
     if (step.terminated || step.truncated)
       break;
   }
@@ -146,6 +168,12 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
   std::vector<float> obs = space.Normalise(env.Reset(seed, options.reset));
   ActionMask mask = env.ValidActions();
   const BoxSpace box = env.ContinuousActionSpace();
+  const bool teams = learn && agent.NeedsTeamState();
+  // The team state of the agent the observation is of: the one whose turn it is.
+  const auto team_now = [&env] {
+    return TeamStateFor(env, static_cast<std::size_t>(env.LastInfo().active_uav));
+  };
+  std::vector<float> team = teams ? team_now() : std::vector<float>{};
   for (;;) {
     Transition t;
     StepResult step;
@@ -169,6 +197,11 @@ EpisodeRecord RunEpisode(Env& env, Agent& agent, std::uint64_t seed, bool learn,
       t.terminal = step.terminated;
       t.next_mask = next_mask;
       t.episode_end = step.terminated || step.truncated;
+      if (teams) {
+        t.team_state = std::move(team);
+        t.next_team_state = team_now();
+        team = t.next_team_state;
+      }
       loss = agent.Observe(std::move(t));
     }
     tally.Add(step.reward, loss);

@@ -45,6 +45,9 @@ using StepCallback = std::function<void(int step, int action, const StepResult&)
 // A continuous agent's action (each component in [-1, 1]) mapped onto the env's Box.
 std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& box);
 
+// Agent `agent`'s team state in `env` now (Env::TeamStateOf), as a centralised critic takes it.
+std::vector<float> TeamStateFor(const Env& env, std::size_t agent);
+
 // How one episode differs from the env's own: its reset options, a step limit (0: none) after
 // which it is truncated, and whether the env's agents act at once (Env::StepAll, each from its
 // own observation, agent.joint_steps) rather than in turns.

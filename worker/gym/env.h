@@ -88,6 +88,12 @@ class Env {
   // An env that tells it after a Reset tells it after every step of that episode.
   virtual std::optional<DeterminingState> Determining() const { return std::nullopt; }
 
+  // UAV (agent) `agent`'s team state (team_state.h) after the last Reset or step: what a
+  // centralised critic sees beside its observation. std::logic_error for an env without one.
+  virtual std::vector<double> TeamStateOf(std::size_t /*agent*/) const {
+    throw std::logic_error("this env has no team state for a centralised critic");
+  }
+
   // Several agents that act at once (several UAVs: every UAV moves in each step, as in
   // PettingZoo's ParallelEnv). An env of one agent has none of these.
   virtual std::size_t AgentCount() const { return 1; }

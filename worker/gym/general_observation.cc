@@ -93,12 +93,8 @@ void AddHeights(const Scenario& s, const StepInfo& info, std::vector<double>& ou
 
 void AddOthers(const Scenario& s, const StepInfo& info, std::vector<double>& out) {
   const Vec3& uav = ActivePosition(s, info);
-  std::vector<std::size_t> others;
-  for (std::size_t u : Nearest(info.positions.size(), uav,
-                               [&](std::size_t i) -> const Vec3& { return info.positions[i]; })) {
-    if (static_cast<int>(u) != info.active_uav)
-      others.push_back(u);
-  }
+  const std::vector<std::size_t> others =
+      OtherUavsNearestFirst(info, static_cast<std::size_t>(info.active_uav));
   for (std::size_t k = 0; k < static_cast<std::size_t>(kOtherUavSlots); ++k) {
     if (k >= others.size()) {
       out.insert(out.end(), kOtherUavSlotWidth, 0.0);
@@ -128,6 +124,17 @@ std::size_t CoverageCells(const Scenario& s) {
 }
 
 }  // namespace
+
+std::vector<std::size_t> OtherUavsNearestFirst(const StepInfo& info, std::size_t uav) {
+  const Vec3& from = info.positions.at(uav);
+  std::vector<std::size_t> others;
+  for (std::size_t u : Nearest(info.positions.size(), from,
+                               [&](std::size_t i) -> const Vec3& { return info.positions[i]; })) {
+    if (u != uav)
+      others.push_back(u);
+  }
+  return others;
+}
 
 bool IsGeneralObservation(std::string_view field) {
   return IsOneOf(field, kGeneralObservations);

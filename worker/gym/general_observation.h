@@ -25,8 +25,8 @@
 //               cell's column at its best altitude (dx, dy, dz in moves of env.step, clipped to
 //               +-kPointerStepLimit);
 //   "lookahead" for each of env.actions, the model's reward at the move's destination minus its
-//               reward here, times kLookaheadGain over the reward's bound, clipped to [-1, 1] (0 for a
-//               move that goes nowhere).
+//               reward here, times kLookaheadGain over the reward's bound, clipped to [-1, 1] (0
+//               for a move that goes nowhere).
 // A scenario with more UEs than slots shows the nearest; the slots and the cells hold no
 // scenario's size, so their layout is the same in every scenario of the same env settings.
 #include <cstddef>
@@ -58,6 +58,10 @@ bool IsGeneralObservation(std::string_view field);
 bool IsLookAroundObservation(std::string_view field);
 // The most the scenario's reward can be (the sum of its weights), at least 1e-9.
 double CoverageRewardBound(const Scenario& scenario);
+
+// The UAVs other than `uav`, by horizontal distance from it (ties: lower index): the order of
+// "others".
+std::vector<std::size_t> OtherUavsNearestFirst(const StepInfo& info, std::size_t uav);
 
 // Appends the field's bounds to `box` / its values for the UAV info.active_uav to `out`.
 void AddGeneralBounds(const Scenario& scenario, std::string_view field, BoxSpace& box);

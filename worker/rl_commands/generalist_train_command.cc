@@ -90,9 +90,10 @@ Scenario SettingsScenario(nlohmann::json document, const std::vector<std::string
     throw ConfigError("--fidelity", "training across scenarios runs at analytic fidelity");
   for (const std::string& field : s.env.observations) {
     if (!IsGeneralObservation(field)) {
-      throw ConfigError("--set", "env.observations: \"" + field +
-                                     "\" is one scenario's own; a policy for any scenario "
-                                     "observes zone, ues, heights and others only");
+      throw ConfigError("--set",
+                        "env.observations: \"" + field +
+                            "\" is one scenario's own; a policy for any scenario "
+                            "observes zone, ues, heights, coverage, lookahead and others only");
     }
   }
   return s;

@@ -8,6 +8,7 @@
 #include "common/scenario/number_text.h"
 #include "worker/environment/uav_network.h"
 #include "worker/gym/moves.h"
+#include "worker/gym/team_state.h"
 #include "worker/uav_env/analytic_evaluator.h"
 #include "worker/uav_env/bit_keys.h"
 #include "worker/uav_env/look_around.h"
@@ -263,6 +264,10 @@ std::vector<std::vector<double>> UavPositioningEnv::AgentObservations() const {
     observations.push_back(AgentObservation(scenario_, view, u));
   }
   return observations;
+}
+
+std::vector<double> UavPositioningEnv::TeamStateOf(std::size_t uav) const {
+  return TeamState(scenario_, info_, uav);
 }
 
 }  // namespace rlpos

@@ -65,6 +65,7 @@ class UavPositioningEnv : public Env {
   // Each UAV's observation (AgentObservation) and the global state (MakeState) after the last
   // Reset, Step or StepAll.
   std::vector<std::vector<double>> AgentObservations() const override;
+  std::vector<double> TeamStateOf(std::size_t uav) const override;
   std::vector<double> State() const { return MakeState(scenario_, info_); }
   BoxSpace StateSpace() const { return StateBounds(scenario_); }
 

@@ -37,21 +37,26 @@ std::size_t ThreadsFor(std::size_t asked, std::size_t work) {
   return asked > 0 ? asked : std::max<std::size_t>(1, std::min(cores, work));
 }
 
-// One env of a round: its episode's scenario and where the episode stands.
+// One env of a round: its episode's scenario and where the episode stands. Its agents: the UAV
+// whose turn it is (one row), or with agent.joint_steps every UAV (a row each, moving at once).
 struct Lane {
   std::unique_ptr<UavPositioningEnv> env;
-  std::vector<float> observation;  // normalised
-  ActionMask mask;
-  StepResult last;
-  ActionMask next_mask;  // the mask after the last step
+  bool joint = false;
+  std::vector<std::vector<float>> observations;  // normalised, one per agent
+  std::vector<ActionMask> masks;
+  std::vector<std::vector<float>> team_states;  // with a centralised critic
+  double reward = 0.0;                          // of the last step
+  bool terminated = false;
+  bool truncated = false;
   bool running = false;
   int steps = 0;
 };
 
 class Round {
  public:
-  Round(const ScenarioDraw& draw, const AgentSpec& spec, const BoxSpace& space, ThreadPool& pool)
-      : draw_(draw), spec_(spec), space_(space), pool_(pool) {}
+  Round(const ScenarioDraw& draw, const AgentSpec& spec, const BoxSpace& space, ThreadPool& pool,
+        bool teams)
+      : draw_(draw), spec_(spec), space_(space), pool_(pool), teams_(teams) {}
 
   // Env i flies training episode first + i (its draw and run), for i < lanes.
   void Start(std::int64_t first, std::size_t lanes, std::uint64_t episode_run) {
@@ -62,72 +67,131 @@ class Round {
       lane.env = std::make_unique<UavPositioningEnv>(draw_.Training(episode).scenario);
       if (lane.env->ObservationSpace().Dim() != space_.Dim())
         throw std::logic_error("a drawn scenario's observation differs from the policy's");
+      lane.joint = spec_.joint_steps && lane.env->AgentCount() > 1;
       const EpisodeOptions options = TrainingEpisodeOptions(spec_, static_cast<int>(episode));
-      lane.observation = space_.Normalise(lane.env->Reset(episode_run + episode, options.reset));
-      lane.mask = lane.env->ValidActions();
+      See(lane, lane.env->Reset(episode_run + episode, options.reset));
       lane.running = true;
       lane.steps = 0;
     });
   }
 
-  // Flies every lane to its episode's end; returns the transitions learnt from.
+  // Flies every lane to its episode's end; returns the transitions learnt from (one per agent
+  // and step).
   std::int64_t Fly(PpoAgent& agent, double& final_reward_sum) {
     const int limit = spec_.train_episode_steps;
     std::int64_t transitions_seen = 0;
     std::vector<int> active;
+    std::vector<std::size_t> first_row;  // of each active lane, in the batch
     for (;;) {
       active.clear();
+      first_row.clear();
+      std::size_t rows = 0;
       for (std::size_t i = 0; i < lanes_.size(); ++i) {
-        if (lanes_[i].running)
+        if (lanes_[i].running) {
           active.push_back(static_cast<int>(i));
+          first_row.push_back(rows);
+          rows += lanes_[i].observations.size();
+        }
       }
       if (active.empty())
         return transitions_seen;
-      std::vector<std::vector<float>> batch(active.size());
-      std::vector<ActionMask> masks(active.size());
+      std::vector<std::vector<float>> batch(rows);
+      std::vector<ActionMask> masks(rows);
+      std::vector<std::vector<float>> team_states(rows);
+      std::vector<int> streams(rows);
       for (std::size_t k = 0; k < active.size(); ++k) {
         Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
-        batch[k] = lane.observation;
-        masks[k] = lane.mask;
+        for (std::size_t a = 0; a < lane.observations.size(); ++a) {
+          const std::size_t r = first_row[k] + a;
+          batch[r] = std::move(lane.observations[a]);
+          masks[r] = std::move(lane.masks[a]);
+          if (teams_)
+            team_states[r] = std::move(lane.team_states[a]);
+          // GAE follows each agent's own stream (with turns, the lane's one stream).
+          streams[r] = active[k] * static_cast<int>(kMaxUavs) + static_cast<int>(a);
+        }
       }
       const std::vector<int> actions = agent.ActBatch(batch, masks);
       pool_.ForEach(active.size(), [&](std::size_t k) {
         Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
-        lane.last = lane.env->Step(actions[k]);
-        lane.next_mask = lane.env->ValidActions();  // on the pool too: it probes every move
+        if (lane.joint) {
+          const auto from = actions.begin() + static_cast<long>(first_row[k]);
+          const MultiStepResult r =
+              lane.env->StepAll(std::vector<int>(from, from + lane.env->AgentCount()));
+          lane.reward = r.reward;
+          lane.terminated = r.terminated;
+          lane.truncated = r.truncated;
+          See(lane, {});  // on the pool too: the masks probe every move, the look around evaluates
+        } else {
+          StepResult r = lane.env->Step(actions[first_row[k]]);
+          lane.reward = r.reward;
+          lane.terminated = r.terminated;
+          lane.truncated = r.truncated;
+          See(lane, std::move(r.observation));
+        }
       });
-      std::vector<Transition> transitions(active.size());
+      std::vector<Transition> transitions(rows);
       for (std::size_t k = 0; k < active.size(); ++k) {
         Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
-        const StepResult& r = lane.last;
         ++lane.steps;
-        const bool truncated = r.truncated || (limit > 0 && lane.steps >= limit);
-        Transition& t = transitions[k];
-        t.observation = std::move(batch[k]);
-        t.action = actions[k];
-        t.reward = static_cast<float>(r.reward);
-        t.next_observation = space_.Normalise(r.observation);
-        t.terminal = r.terminated;
-        t.next_mask = std::move(lane.next_mask);
-        t.episode_end = r.terminated || truncated;
-        lane.observation = t.next_observation;
-        lane.mask = t.next_mask;
-        if (t.episode_end) {
+        const bool truncated = lane.truncated || (limit > 0 && lane.steps >= limit);
+        const bool end = lane.terminated || truncated;
+        for (std::size_t a = 0; a < lane.observations.size(); ++a) {
+          const std::size_t r = first_row[k] + a;
+          Transition& t = transitions[r];
+          t.observation = std::move(batch[r]);
+          t.action = actions[r];
+          t.reward = static_cast<float>(lane.reward);
+          t.next_observation = lane.observations[a];
+          t.terminal = lane.terminated;
+          t.next_mask = lane.masks[a];
+          t.episode_end = end;
+          if (teams_) {
+            t.team_state = std::move(team_states[r]);
+            t.next_team_state = lane.team_states[a];
+          }
+        }
+        if (end) {
           lane.running = false;
-          final_reward_sum += r.reward;
+          final_reward_sum += lane.reward;
           lane.env.reset();  // its scenario's memory goes now, not with the next round
         }
       }
       transitions_seen += static_cast<std::int64_t>(transitions.size());
-      agent.ObserveBatch(std::move(transitions), active);
+      agent.ObserveBatch(std::move(transitions), streams);
     }
   }
 
  private:
+  // The lane's agents' observations, masks and team states now; `turn`: the observation of the
+  // UAV whose turn it is, as the env's last Reset or Step gave it (unused with joint steps).
+  void See(Lane& lane, const std::vector<double>& turn) const {
+    const UavPositioningEnv& env = *lane.env;
+    lane.observations.clear();
+    lane.masks.clear();
+    lane.team_states.clear();
+    if (lane.joint) {
+      for (const std::vector<double>& o : env.AgentObservations())
+        lane.observations.push_back(space_.Normalise(o));
+      for (std::size_t a = 0; a < env.AgentCount(); ++a) {
+        lane.masks.push_back(env.ValidActionsOf(a));
+        if (teams_)
+          lane.team_states.push_back(TeamStateFor(env, a));
+      }
+      return;
+    }
+    lane.observations.push_back(space_.Normalise(turn));
+    lane.masks.push_back(env.ValidActions());
+    if (teams_)
+      lane.team_states.push_back(
+          TeamStateFor(env, static_cast<std::size_t>(env.LastInfo().active_uav)));
+  }
+
   const ScenarioDraw& draw_;
   const AgentSpec& spec_;
   const BoxSpace& space_;
   ThreadPool& pool_;
+  bool teams_;
   std::vector<Lane> lanes_;
 };
 
@@ -184,7 +248,7 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
     best = checkpoints.resume->best;
     next_validation = checkpoints.resume->next_validation;
   }
-  Round round(draw, spec, space, pool);
+  Round round(draw, spec, space, pool, agent.NeedsTeamState());
   const auto validate = [&](GeneralistProgress& progress) {
     std::vector<ValidationScore> scores = ScoreGreedy(validation, agent, spec);
     const double mean = MeanRatio(scores);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "worker/gym/team_state.h"
 #include "worker/uav_env/uav_positioning_env.h"
 #include "worker/vector_env/batched_env.h"
 
@@ -61,6 +62,17 @@ class Rows {
   BatchBuffers buffers_;
 };
 
+// Env i's team state now, of the UAV whose turn it is (its observation's), for a centralised
+// critic; empty when the agent needs none.
+std::vector<float> TeamStateNow(const BatchedEnv& envs, std::size_t i, bool needed) {
+  if (!needed)
+    return {};
+  const StepInfo& info = envs.LastInfo(i);
+  const std::vector<double> state =
+      TeamState(envs.ScenarioOf(i), info, static_cast<std::size_t>(info.active_uav));
+  return std::vector<float>(state.begin(), state.end());
+}
+
 // One round: env i flies training episode first + i, for i < records.size(), until each has
 // ended; the others are stepped too (a batched env steps every env) and ignored.
 void FlyRound(BatchedEnv& envs, Rows& rows, PpoAgent& agent, const AgentSpec& spec,
@@ -76,11 +88,14 @@ void FlyRound(BatchedEnv& envs, Rows& rows, PpoAgent& agent, const AgentSpec& sp
     resets[i] = TrainingEpisodeOptions(spec, episode).reset;
   }
   envs.Reset(seeds, resets, rows.Buffers());
+  const bool teams = agent.NeedsTeamState();
   std::vector<std::vector<float>> observations(count);
   std::vector<ActionMask> masks(count);
+  std::vector<std::vector<float>> team_states(count);
   for (std::size_t i = 0; i < count; ++i) {
     observations[i] = rows.Observation(i);
     masks[i] = rows.Mask(i);
+    team_states[i] = TeamStateNow(envs, i, teams);
   }
   std::vector<bool> running(count, true);
   std::vector<int> active;
@@ -124,6 +139,9 @@ void FlyRound(BatchedEnv& envs, Rows& rows, PpoAgent& agent, const AgentSpec& sp
       t.terminal = rows.Terminated(i);
       t.next_mask = next_mask;
       t.episode_end = rows.Terminated(i) || truncated;
+      t.team_state = std::move(team_states[i]);
+      t.next_team_state = TeamStateNow(envs, i, teams);
+      team_states[i] = t.next_team_state;
       record.total_reward += rows.Reward(i);
       record.final_reward = rows.Reward(i);
       ++record.steps;

@@ -8,6 +8,7 @@
 #include "tests/worker/agent/plain_training.h"
 #include "tests/worker/agent/tiny_envs.h"
 #include "worker/agent/trainer.h"
+#include "worker/gym/team_state.h"
 
 namespace rlpos {
 namespace {
@@ -210,6 +211,60 @@ TEST(PpoAgent, ATrainingStateResumesExactlyWhereItWasSaved) {
   EXPECT_THROW(b.LoadTrainingState(file.string()), std::runtime_error);
   std::filesystem::remove(file);
   EXPECT_THROW(b.LoadTrainingState(file.string()), std::runtime_error);
+}
+
+// agent.ppo.centralised_critic: every transition carries the acting agent's team state, which
+// reaches what is learnt (through the critic's advantages); a transition without one, or one for
+// a critic without it, is refused; the training state keeps the wider critic.
+TEST(PpoAgent, ACentralisedCriticLearnsFromEachTransitionsTeamState) {
+  AgentSpec spec = PpoSpecFor(3, 1);
+  spec.ppo.rollout_steps = 16;
+  spec.ppo.centralised_critic = true;
+  // The same observations, actions and rewards; the team states differ by `shift`.
+  const auto train = [&](float shift) {
+    PpoAgent agent(spec, 1, 2);
+    EXPECT_TRUE(agent.NeedsTeamState());
+    for (int i = 1; i <= 16; ++i) {
+      const int a = agent.Act({0.0f}, {}, true);
+      Transition t{{0.0f}, a, static_cast<float>(a), {0.0f}, false, {}, {}, i % 8 == 0};
+      t.team_state.assign(kTeamStateWidth, 0.0f);
+      t.next_team_state.assign(kTeamStateWidth, 0.0f);
+      t.team_state[0] = static_cast<float>(i % 4) / 4.0f + shift;
+      t.next_team_state[0] = static_cast<float>((i + 1) % 4) / 4.0f + shift;
+      agent.Observe(std::move(t));
+    }
+    return agent.Probabilities({0.0f}, {});
+  };
+  EXPECT_EQ(train(0.0f), train(0.0f));
+  EXPECT_NE(train(0.5f), train(0.0f));
+
+  PpoAgent agent(spec, 1, 2);
+  const int a = agent.Act({0.0f}, {}, true);
+  EXPECT_THROW(agent.Observe({{0.0f}, a, 1.0f, {0.0f}, false, {}, {}, false}),
+               std::invalid_argument);
+  AgentSpec own = spec;
+  own.ppo.centralised_critic = false;
+  PpoAgent plain(own, 1, 2);
+  EXPECT_FALSE(plain.NeedsTeamState());
+  Transition with_team{{0.0f}, plain.Act({0.0f}, {}, true), 1.0f, {0.0f}, false, {}, {}, false};
+  with_team.team_state.assign(kTeamStateWidth, 0.0f);
+  with_team.next_team_state.assign(kTeamStateWidth, 0.0f);
+  EXPECT_THROW(plain.Observe(with_team), std::invalid_argument);
+
+  // A saved training state has the wider critic: an agent without it refuses the file.
+  const auto file = std::filesystem::temp_directory_path() / "rlpos-ppo-team-state";
+  PpoAgent fresh(spec, 1, 2);
+  fresh.SaveTrainingState(file.string());
+  PpoAgent again(spec, 1, 2);
+  EXPECT_NO_THROW(again.LoadTrainingState(file.string()));
+  try {
+    PpoAgent(own, 1, 2).LoadTrainingState(file.string());
+    ADD_FAILURE() << "a critic without the team state loaded one with it";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string() + ": critic"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove(file);
 }
 
 }  // namespace

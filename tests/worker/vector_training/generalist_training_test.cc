@@ -3,6 +3,7 @@
 #include "worker/vector_training/generalist_training.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -43,18 +44,33 @@ Scenario Settings() {
   return s;
 }
 
-ScenarioDraw Draw() {
-  return ScenarioDraw({{GeneratorStyle::kUrban, GeneratorStyle::kSuburb}, {1, 1}, CountRange{4, 6}},
-                      Settings(), 5);
+// How the UAVs of a tiny training move and what its critic sees.
+struct Team {
+  int uavs = 1;                     // the draw's UAVs: 1, or 2-uavs
+  bool joint = false;               // agent.joint_steps
+  bool centralised_critic = false;  // agent.ppo.centralised_critic
+};
+
+ScenarioDraw Draw(const Team& team = {}) {
+  Scenario settings = Settings();
+  if (team.uavs > 1)
+    settings.env.observations.push_back("others");
+  settings.agent.joint_steps = team.joint;
+  settings.agent.ppo.centralised_critic = team.centralised_critic;
+  const int low = team.uavs > 1 ? 2 : 1;
+  return ScenarioDraw(
+      {{GeneratorStyle::kUrban, GeneratorStyle::kSuburb}, {low, team.uavs}, CountRange{4, 6}},
+      settings, 5);
 }
 
 struct Trained {
   GeneralistResult result;
   std::string policy;  // policy.pt's bytes
+  std::string value;   // value.pt's
 };
 
-Trained TrainTiny(std::size_t threads, std::int64_t steps = 200) {
-  const ScenarioDraw draw = Draw();
+Trained TrainTiny(std::size_t threads, std::int64_t steps = 200, const Team& team = {}) {
+  const ScenarioDraw draw = Draw(team);
   const Scenario example = draw.Validation(0).scenario;
   UavPositioningEnv env(example);
   PpoAgent agent(example.agent, static_cast<int>(env.ObservationSpace().Dim()), env.ActionSpace().n,
@@ -64,13 +80,18 @@ Trained TrainTiny(std::size_t threads, std::int64_t steps = 200) {
   options.validation_scenarios = 2;
   options.validation_every = 80;
   options.threads = threads;
-  Trained t{TrainGeneralist(draw, agent, example.agent, options, 5000001), ""};
-  const fs::path dir = fs::temp_directory_path() / ("rlpos-generalist-" + std::to_string(threads) +
-                                                    "-" + std::to_string(steps));
+  Trained t{TrainGeneralist(draw, agent, example.agent, options, 5000001), "", ""};
+  const fs::path dir =
+      fs::temp_directory_path() / ("rlpos-generalist-" + std::to_string(::getpid()) + "-" +
+                                   std::to_string(threads) + "-" + std::to_string(steps));
   fs::remove_all(dir);
   agent.Save(dir.string());
-  std::ifstream in(dir / "policy.pt", std::ios::binary);
-  t.policy.assign(std::istreambuf_iterator<char>(in), {});
+  const auto read = [&](const char* name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  t.policy = read("policy.pt");
+  t.value = read("value.pt");
   fs::remove_all(dir);
   return t;
 }
@@ -105,12 +126,41 @@ TEST(GeneralistTraining, TheSameSeedGivesTheSamePolicyOnAnyThreadCount) {
   EXPECT_NE(TrainTiny(1, 280).policy, one.policy);
 }
 
+// Several UAVs moving at once (agent.joint_steps): a row per UAV and step, each its own stream;
+// seeded on any thread count; the centralised critic's team state changes what is learnt.
+TEST(GeneralistTraining, JointStepsWithACentralisedCriticAreSeededAndLearnFromTheTeamState) {
+  const Team mappo{3, true, true};
+  const Trained one = TrainTiny(1, 240, mappo);
+  const Trained two = TrainTiny(2, 240, mappo);
+  EXPECT_EQ(one.policy, two.policy);
+  EXPECT_EQ(one.value, two.value);
+  EXPECT_EQ(one.result.best_validation, two.result.best_validation);
+  // Rounds of 4 episodes of 10 joint steps, each of 2 or 3 rows: at least 80 rows a round, so
+  // fewer episodes than the 24 that 240 steps in turns take.
+  EXPECT_GE(one.result.steps, 240);
+  EXPECT_LT(one.result.episodes, 24);
+  EXPECT_EQ(one.result.episodes % 4, 0);
+  ASSERT_EQ(one.result.validation.size(), 2u);
+  for (const ValidationScore& v : one.result.validation)
+    EXPECT_LE(v.final_reward, v.oracle_reward + 1e-12) << v.origin;
+  // The same training with a critic of the UAV's own observation learns another policy (the
+  // team state reaches the advantages), and the same value network shape only without it.
+  const Trained own = TrainTiny(1, 240, {3, true, false});
+  EXPECT_NE(own.policy, one.policy);
+  EXPECT_NE(own.value.size(), one.value.size());
+  // Turns instead of joint steps: another policy again.
+  EXPECT_NE(TrainTiny(1, 240, {3, false, true}).policy, one.policy);
+}
+
 // A greedy flight in the analytic env, read off its cycle (placements, what the UEs get, the
-// reward) ends bit for bit where the whole flight ends: with one UAV and with three in turns.
+// reward) ends bit for bit where the whole flight ends: with one UAV, with three in turns and
+// with three moving at once.
 TEST(GreedyFlightInTheEnv, EndsWhereTheWholeFlightEndsWithOneUavAndWithThree) {
-  for (const int uavs : {1, 3}) {
+  for (const Team team : {Team{1}, Team{3}, Team{3, true}}) {
+    const int uavs = team.uavs;
     Scenario settings = Settings();
     settings.env.episode_duration = 30;  // 300 steps
+    settings.agent.joint_steps = team.joint;
     if (uavs > 1)
       settings.env.observations.push_back("others");
     const ScenarioDraw draw(
@@ -119,7 +169,8 @@ TEST(GreedyFlightInTheEnv, EndsWhereTheWholeFlightEndsWithOneUavAndWithThree) {
     int shortened = 0;
     for (int i = 0; i < 4; ++i) {
       const Scenario s = draw.Validation(static_cast<std::uint64_t>(i)).scenario;
-      const std::string where = std::to_string(uavs) + " UAV(s), validation " + std::to_string(i);
+      const std::string where = std::to_string(uavs) + " UAV(s)" + (team.joint ? " at once" : "") +
+                                ", validation " + std::to_string(i);
       UavPositioningEnv env(s);
       PpoAgent agent(s.agent, static_cast<int>(env.ObservationSpace().Dim()),
                      env.ActionSpace().n);  // untrained: its seeded first weights
