@@ -122,6 +122,38 @@ TEST_F(Generalist, APlacementOutsideWhatItWasTrainedForIsRefused) {
   EXPECT_EQ(Position(kScenarioB, " --set env.step=5").exit_code, 0);
 }
 
+// Several UAVs as agents: every UAV moves at once on its own observation (agent.joint_steps),
+// with a critic that also sees the team's state (agent.ppo.centralised_critic). The folder
+// records both, its critic is the wider one, and `position` flies the UAVs at once.
+TEST_F(Generalist, SeveralUavsMovingAtOnceWithACentralisedCriticTrainAndPlace) {
+  std::string tiny = kTiny;
+  tiny.replace(tiny.find("--generated urban,open"), 22, "--generated urban,open --uavs 2-3");
+  const auto train = [&](const std::string& name, const std::string& sets) {
+    const fs::path out = dir_ / name;
+    const auto r = RunCommand(Sim("train" + tiny + sets + " --out " + out.string()));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return out;
+  };
+  const fs::path mappo =
+      train("mappo", " --set agent.joint_steps=true --set agent.ppo.centralised_critic=true");
+  const fs::path own = train("joint-own-critic", " --set agent.joint_steps=true");
+  const auto scenario = nlohmann::json::parse(std::ifstream(mappo / "scenario.json"));
+  EXPECT_TRUE(scenario["agent"]["joint_steps"].get<bool>());
+  EXPECT_TRUE(scenario["agent"]["ppo"]["centralised_critic"].get<bool>());
+  // The same actor's shape; a critic with the team state's inputs besides.
+  EXPECT_EQ(Bytes(mappo / "policy.pt").size(), Bytes(own / "policy.pt").size());
+  EXPECT_GT(Bytes(mappo / "value.pt").size(), Bytes(own / "value.pt").size());
+  const std::string three = (dir_ / "open-3uav.json").string();
+  ASSERT_EQ(RunCommand(Sim("generate --seed 95301 --style open --uavs 3 --out " + three)).exit_code,
+            0);
+  const auto placed = RunCommand(
+      Sim("position --positioner rl --json --scenario " + three + " --policy " + mappo.string()));
+  ASSERT_EQ(placed.exit_code, 0) << placed.err;
+  const auto result = nlohmann::json::parse(placed.out);
+  EXPECT_EQ(result["positions"].size(), 3u) << result;
+  EXPECT_GE(result["reward"].get<double>(), 0.0);
+}
+
 // agent.ue_encoder (the UEs as a set): the folder's scenario.json records it, so `position`
 // builds that network; a folder whose scenario.json lost it is refused in one line naming the file.
 TEST_F(Generalist, WithTheUeEncoderItPlacesWithTheNetworkItTrained) {
