@@ -430,7 +430,8 @@ class PyParallelEnv : public HeldEnv {
  private:
   struct Outcome {
     MultiStepResult result;
-    std::vector<ActionMask> masks;  // per UAV, after it
+    std::vector<ActionMask> masks;                 // per UAV, after it
+    std::vector<std::vector<double>> team_states;  // per UAV (team_state.h), after it
   };
 
   // As PyEnv::Run: without the GIL, under the env's lock.
@@ -439,9 +440,11 @@ class PyParallelEnv : public HeldEnv {
     py::gil_scoped_release release;
     std::lock_guard<std::mutex> lock(mutex_);
     try {
-      Outcome o{step(Open()), {}};
-      for (std::size_t u = 0; u < o.result.observations.size(); ++u)
+      Outcome o{step(Open()), {}, {}};
+      for (std::size_t u = 0; u < o.result.observations.size(); ++u) {
         o.masks.push_back(Open().ValidActionsOf(u));
+        o.team_states.push_back(Open().TeamStateOf(u));
+      }
       return o;
     } catch (const std::out_of_range& e) {
       throw py::value_error(e.what());  // an action outside the action space
@@ -468,6 +471,7 @@ class PyParallelEnv : public HeldEnv {
         masks.append(std::vector<int>(mask.begin(), mask.end()));
       d["action_masks"] = masks;
     }
+    d["team_states"] = o.team_states;
     return d;
   }
 

@@ -133,6 +133,16 @@ def test_the_per_agent_views_and_the_state_agree():
     los = state[3 * k:3 * k + 60:3]
     assert set(los) <= {0.0, 1.0} and los.sum() == infos["uav1"]["n_los"] == obs[3 * k]
     assert state[-1] == infos["uav1"]["demands_met"]
+    # Each agent's team state: the team's shares, then its own load first.
+    for agent in env.possible_agents:
+        team = infos[agent]["team_state"]
+        assert team.dtype == np.float32 and team.shape == (22,)
+        assert team[0] == np.float32(infos[agent]["n_los"] / 20)
+        assert team[1] == np.float32(infos[agent]["demands_met"] / 20)
+        assert team[3] == np.float32(3 / 6)
+        assert team[5] == np.float32(infos[agent]["ues_served"] / 20)
+        assert list(team[4:13:3]) == [1.0, 1.0, 1.0] and not team[13:].any()
+    assert sum(infos[a]["team_state"][5] for a in env.possible_agents) == pytest.approx(1.0)
     env.close()
 
 

@@ -203,5 +203,8 @@ class ParallelUavEnv(WrappedEnvProperties, pettingzoo.ParallelEnv if PETTINGZOO 
             }
             if masks is not None:
                 agent_info["action_mask"] = np.asarray(masks[u], np.int8)
+            # What a centralised critic sees beside the agent's observation, the same layout in
+            # every scenario (worker/gym/team_state.h).
+            agent_info["team_state"] = np.asarray(info["team_states"][u], np.float32)
             infos[agent] = agent_info
         return infos
