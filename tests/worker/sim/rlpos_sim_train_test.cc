@@ -155,18 +155,21 @@ TEST_F(TrainCommand, TheProgressLineOfSeveralUavsShowsEachOne) {
 
 // agent.joint_steps: every UAV moves in each step (a trajectory row per UAV and step), in
 // training, in the evaluation and in the replay, which lands where the training's evaluation
-// did. Without it the UAVs take turns: one row per step.
+// did; also with PPO's centralised critic (its wider value.pt loads with the policy). Without it
+// the UAVs take turns: one row per step.
 TEST_F(TrainCommand, JointStepsMoveEveryUavInEachStepAndReplay) {
   const std::string urban3 = kScenarios + "urban3.json";
   for (const bool joint : {true, false}) {
     const std::string sets = " --set agent.joint_steps=" + std::string(joint ? "true" : "false") +
                              " --set agent.train_episodes=30 --set env.episode_duration=2";
     const fs::path out = out_ / (joint ? "joint" : "turns");
-    for (const char* algorithm : {"ppo", "dqn"}) {
+    for (const std::string algorithm : {"ppo", "ppo+critic", "dqn"}) {
+      const bool critic = algorithm == "ppo+critic";
       fs::remove_all(out);
       const auto r =
           RunCommand(Sim("train --scenario " + urban3 + " --fidelity analytic" + " --algorithm " +
-                         algorithm + sets + " --json --out " + out.string()));
+                         (critic ? "ppo --set agent.ppo.centralised_critic=true" : algorithm) +
+                         sets + " --json --out " + out.string()));
       ASSERT_EQ(r.exit_code, 0) << r.err;
       const auto trained = nlohmann::json::parse(r.out)["positions"];
       std::ifstream trajectory(out / "trajectory.csv");
