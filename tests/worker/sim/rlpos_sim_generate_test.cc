@@ -1,6 +1,6 @@
 // rlpos-sim generate as a user runs it: a scenario rlpos-sim validate accepts, the same bytes on
 // stdout, in a file and across processes, one-line errors for bad options and nothing written;
-// and scripts/generate_scenario_set.sh's two sets.
+// and scripts/generate_scenario_set.sh's sets, disjoint.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -142,7 +142,7 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
   const std::string build =
       std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
-  for (const std::string set : {"train", "heldout", "train-many", "heldout-many"}) {
+  for (const std::string set : {"train", "heldout", "train-many", "heldout-many", "fresh"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -159,6 +159,12 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
       EXPECT_EQ(uavs.size(), 4u) << set << ": every style";
       for (const auto& [style, counts] : uavs)
         EXPECT_EQ(counts, (std::set<std::string>{"4", "5", "6"})) << set << ", " << style;
+      continue;
+    }
+    if (set == "fresh") {  // one UAV only, 16 of each style
+      EXPECT_TRUE(more_uavs.empty()) << set;
+      EXPECT_EQ(one_uav, (std::map<std::string, int>{
+                             {"urban", 16}, {"campus", 16}, {"suburb", 16}, {"open", 16}}));
       continue;
     }
     EXPECT_EQ(one_uav.size(), 4u) << set << ": every style with one UAV";
