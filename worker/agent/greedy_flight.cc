@@ -20,8 +20,6 @@ GreedyFlight WholeEpisode(Env& env, Agent& agent, std::uint64_t seed,
   return {record.final_info, record.final_reward, record.steps, record.steps};
 }
 
-}  // namespace
-
 // One greedy step of every agent at once (RunEpisode's joint step).
 StepResult JointStep(Env& env, Agent& agent, const BoxSpace& space, const BoxSpace& box) {
   std::vector<std::vector<float>> observations;
@@ -46,6 +44,8 @@ StepResult JointStep(Env& env, Agent& agent, const BoxSpace& space, const BoxSpa
   step.info = std::move(joint.info);
   return step;
 }
+
+}  // namespace
 
 GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const EpisodeOptions& options) {
   const bool joint = options.joint && env.AgentCount() > 1;
