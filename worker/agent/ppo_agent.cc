@@ -233,7 +233,10 @@ struct PpoAgent::Impl {
     AnnealLearningRate();
     ++done_updates;
     const std::vector<float> obs = Observations(false);
-    const std::vector<float> critic_in = CriticInputs(false);
+    // Without a team state the critic reads the observations themselves: no second copy.
+    const std::vector<float> team_in =
+        team_state_dim > 0 ? CriticInputs(false) : std::vector<float>{};
+    const std::vector<float>& critic_in = team_state_dim > 0 ? team_in : obs;
     const auto [advantages, returns] = AdvantagesAndReturns(critic_in, CriticInputs(true));
     const long n = static_cast<long>(rollout.size());
     std::vector<int> actions(static_cast<std::size_t>(n));
