@@ -143,7 +143,8 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
       std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
   for (const std::string set :
-       {"train", "heldout", "train-many", "heldout-many", "fresh", "fresh-many"}) {
+       {"train", "heldout", "train-many", "heldout-many", "fresh", "fresh-many", "confirm",
+        "confirm-many"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -158,17 +159,18 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
     }
     if (set.size() > 5 && set.substr(set.size() - 5) == "-many") {
       EXPECT_EQ(uavs.size(), 4u) << set << ": every style";
-      const std::set<std::string> want = set == "fresh-many"
+      const std::set<std::string> want = set == "fresh-many" || set == "confirm-many"
                                              ? std::set<std::string>{"2", "3", "4", "5", "6"}
                                              : std::set<std::string>{"4", "5", "6"};
       for (const auto& [style, counts] : uavs)
         EXPECT_EQ(counts, want) << set << ", " << style;
       continue;
     }
-    if (set == "fresh") {  // one UAV only, 16 of each style
+    if (set == "fresh" || set == "confirm") {  // one UAV only, 16 or 32 of each style
+      const int each = set == "fresh" ? 16 : 32;
       EXPECT_TRUE(more_uavs.empty()) << set;
       EXPECT_EQ(one_uav, (std::map<std::string, int>{
-                             {"urban", 16}, {"campus", 16}, {"suburb", 16}, {"open", 16}}));
+                             {"urban", each}, {"campus", each}, {"suburb", each}, {"open", each}}));
       continue;
     }
     EXPECT_EQ(one_uav.size(), 4u) << set << ": every style with one UAV";
