@@ -142,9 +142,8 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
   const std::string build =
       std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
-  for (const std::string set :
-       {"train", "heldout", "train-many", "heldout-many", "fresh", "fresh-many", "confirm",
-        "confirm-many"}) {
+  for (const std::string set : {"train", "heldout", "train-many", "heldout-many", "fresh",
+                                "fresh-many", "confirm", "confirm-many"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
     ASSERT_EQ(r.exit_code, 0) << r.err;
