@@ -315,8 +315,9 @@ EnvSpec ReadEnv(const json& v) {
   e.fidelity = r.String("fidelity", e.fidelity, NameList(kFidelities));
   e.step = r.Number("step", e.step, Positive());
   if (const json* a = r.Child("actions")) {
-    e.actions = ReadStringList(*a, r.PathOf("actions"),
-                               {"up", "down", "forward", "backward", "left", "right", "stay"});
+    e.actions =
+        ReadStringList(*a, r.PathOf("actions"),
+                       {"up", "down", "forward", "backward", "left", "right", "stay", "to_best"});
   }
   if (const json* o = r.Child("observations")) {
     e.observations = ReadStringList(*o, r.PathOf("observations"), NameList(kObservations));
@@ -334,6 +335,12 @@ EnvSpec ReadEnv(const json& v) {
   e.turn_steps = static_cast<int>(r.Integer("turn_steps", e.turn_steps, 1, 1000000));
   if (e.decision_interval > e.episode_duration) {
     throw ConfigError(r.PathOf("decision_interval"), "must not exceed the episode duration");
+  }
+  if (std::find(e.actions.begin(), e.actions.end(), "to_best") != e.actions.end() &&
+      std::find(e.observations.begin(), e.observations.end(), "coverage") == e.observations.end()) {
+    throw ConfigError(r.PathOf("actions"),
+                      "\"to_best\" moves towards the coverage map's best: add \"coverage\" to "
+                      "env.observations");
   }
   if (const json* rw = r.Child("reward")) {
     ObjectReader w(*rw, r.PathOf("reward"));

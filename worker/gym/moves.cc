@@ -32,6 +32,31 @@ Vec3 MoveDisplacement(const Scenario& s, int action) {
   return delta;
 }
 
+int ToBestAction(const Scenario& s) {
+  const auto& actions = s.env.actions;
+  const auto it = std::find(actions.begin(), actions.end(), "to_best");
+  return it == actions.end() ? -1 : static_cast<int>(it - actions.begin());
+}
+
+Vec3 StepTowards(const Scenario& s, std::size_t uav, const Vec3& target, const Placement& from) {
+  const Vec3& at = from.at(uav);
+  const double offset[3] = {target.x - at.x, target.y - at.y, target.z - at.z};
+  int order[3] = {0, 1, 2};
+  std::stable_sort(order, order + 3,
+                   [&offset](int a, int b) { return std::abs(offset[a]) > std::abs(offset[b]); });
+  for (const int axis : order) {
+    if (offset[axis] == 0.0)
+      break;
+    const double length = std::min(s.env.step, std::abs(offset[axis]));
+    Vec3 delta{0, 0, 0};
+    (axis == 0 ? delta.x : axis == 1 ? delta.y : delta.z) = std::copysign(length, offset[axis]);
+    const Vec3 to = DisplacementTarget(s, uav, delta, from);
+    if (to.x != at.x || to.y != at.y || to.z != at.z)
+      return delta;
+  }
+  return {0, 0, 0};
+}
+
 Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
   return ApplyDisplacement(s, uav, MoveDisplacement(s, action), from);
 }

@@ -17,8 +17,18 @@ namespace rlpos {
 // agent never picks a move that leaves it where it is.)
 Placement ApplyMove(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
 // The displacement of move `action` (an index into scenario.env.actions): env.step metres along
-// its axis; "stay" is (0, 0, 0).
+// its axis; "stay" is (0, 0, 0), and so is "to_best", whose displacement depends on the state
+// (StepTowards).
 Vec3 MoveDisplacement(const Scenario& scenario, int action);
+// The index of "to_best" in scenario.env.actions, or -1.
+int ToBestAction(const Scenario& scenario);
+// "to_best": one move of UAV `uav` towards `target` (the coverage map's pointer): along the axis
+// of the largest remaining offset (x, y, z on a tie) by env.step metres, or by the offset if that
+// is less, so that the UAV lands on the target; if that move leaves the UAV where it is (a
+// building, a zone edge, another UAV), the next largest axis's; (0, 0, 0) at the target or when
+// no axis moves it.
+Vec3 StepTowards(const Scenario& scenario, std::size_t uav, const Vec3& target,
+                 const Placement& from);
 // Where UAV `uav` at `at` ends after `displacement` if no other UAV mattered: clamped to its
 // zone, or `at` if that point is inside a building.
 Vec3 TargetAlone(const Scenario& scenario, std::size_t uav, const Vec3& displacement,

@@ -65,6 +65,16 @@ LookAround::LookAround(const Scenario& scenario)
   lookahead_ = std::find(o.begin(), o.end(), "lookahead") != o.end();
   for (std::size_t a = 0; a < scenario.env.actions.size(); ++a)
     moves_.push_back(MoveDisplacement(scenario, static_cast<int>(a)));
+  to_best_ = ToBestAction(scenario);
+  pointer_of_.resize(scenario.uavs.size());
+  pointer_for_.resize(scenario.uavs.size());
+}
+
+const Vec3* LookAround::PointerTargetOf(std::size_t uav, const Placement& placement) const {
+  const Placement& for_placement = pointer_for_.at(uav);
+  const bool current = for_placement.size() == placement.size() &&
+                       std::equal(placement.begin(), placement.end(), for_placement.begin(), Same);
+  return current ? &pointer_of_[uav] : nullptr;
 }
 
 void LookAround::Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
@@ -72,6 +82,8 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
   if (!coverage_values_.empty() && active == coverage_active_ &&
       SameOthers(placement, coverage_for_, active)) {
     out = coverage_values_;
+    pointer_of_[active] = best_point_;
+    pointer_for_[active] = placement;
     return;
   }
   const Box& zone = scenario_.uavs[active].zone;
@@ -136,6 +148,8 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
   }
   if (scenario_.env.coverage_refine > 0)
     RefinePointer(levels, best_of_map, moves, active, model, reward_of);
+  pointer_of_[active] = best_point_;
+  pointer_for_[active] = placement;
   coverage_for_ = placement;
   coverage_active_ = active;
   coverage_values_ = values;
@@ -218,7 +232,10 @@ void LookAround::Fill(const Placement& placement, std::size_t active, double her
     return;
   info.lookahead.assign(moves_.size(), 0.0);
   for (std::size_t a = 0; a < moves_.size(); ++a) {
-    const Placement to = ApplyDisplacement(scenario_, active, moves_[a], placement);
+    const Vec3 move = static_cast<int>(a) == to_best_
+                          ? StepTowards(scenario_, active, pointer_of_[active], placement)
+                          : moves_[a];
+    const Placement to = ApplyDisplacement(scenario_, active, move, placement);
     if (Same(to[active], placement[active]))
       continue;
     info.lookahead[a] =

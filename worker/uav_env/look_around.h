@@ -30,6 +30,9 @@ class LookAround {
   // Where the last coverage map's pointer leads: the best cell's column at its best altitude,
   // or what env.coverage_refine found around it.
   const Vec3& PointerTarget() const { return best_point_; }
+  // Where UAV `uav`'s coverage map points for `placement` (what the "to_best" move flies
+  // towards), or null if its last map was worked out for another placement.
+  const Vec3* PointerTargetOf(std::size_t uav, const Placement& placement) const;
 
  private:
   void Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
@@ -56,7 +59,10 @@ class LookAround {
   Placement coverage_for_;
   std::size_t coverage_active_ = 0;
   std::vector<double> coverage_values_;
-  Vec3 best_point_;  // the map's best: its column at its best altitude
+  Vec3 best_point_;                     // the map's best: its column at its best altitude
+  std::vector<Vec3> pointer_of_;        // per UAV: best_point_ of its last map
+  std::vector<Placement> pointer_for_;  // per UAV: the placement that map was worked out for
+  int to_best_ = -1;                    // the index of "to_best" in env.actions, or -1
   // Per UAV, per map point (cell x altitudes + altitude): the UEs' links, empty until asked;
   // and where the UEs were when they were worked out. At most coverage_map² x altitudes x UEs
   // links per UAV (about 40 bytes each).

@@ -23,6 +23,7 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario,
   if (!Continuous()) {
     for (std::size_t a = 0; a < scenario_.env.actions.size(); ++a)
       move_displacements_.push_back(MoveDisplacement(scenario_, static_cast<int>(a)));
+    to_best_ = ToBestAction(scenario_);
   }
   if (scenario_.env.fidelity == "analytic") {
     analytic_ = std::make_unique<AnalyticEvaluator>(scenario_, std::move(shared_memo));
@@ -38,6 +39,18 @@ void UavPositioningEnv::LookAroundFor(std::size_t uav, StepInfo& info) const {
   const double here = analytic_ ? RewardOf(info) : RewardOf(model.Evaluate(placement_));
   const auto reward_of = [this](const StepInfo& i) { return RewardOf(i); };
   look_around_->Fill(placement_, uav, here, model, reward_of, info);
+}
+
+Vec3 UavPositioningEnv::DisplacementOf(std::size_t uav, int action) const {
+  if (action != to_best_)
+    return move_displacements_[static_cast<std::size_t>(action)];
+  const Vec3* target = look_around_->PointerTargetOf(uav, placement_);
+  if (!target) {  // another UAV's map, not worked out since the last move
+    StepInfo view = info_;
+    LookAroundFor(uav, view);
+    target = look_around_->PointerTargetOf(uav, placement_);
+  }
+  return StepTowards(scenario_, uav, *target, placement_);
 }
 
 UavPositioningEnv::~UavPositioningEnv() = default;
@@ -81,7 +94,8 @@ ActionMask UavPositioningEnv::ValidActionsOf(std::size_t uav) const {
   bool moves = false;
   for (std::size_t a = 0; a < actions.size(); ++a) {
     const Vec3& at = placement_.at(uav);
-    const Vec3 to = DisplacementTarget(scenario_, uav, move_displacements_[a], placement_);
+    const Vec3 to =
+        DisplacementTarget(scenario_, uav, DisplacementOf(uav, static_cast<int>(a)), placement_);
     const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
@@ -151,7 +165,7 @@ StepResult UavPositioningEnv::Step(int action) {
                                                " out of the action space Discrete(" +
                                                std::to_string(ActionSpace().n) + ")");
   }
-  return MoveTo(ApplyDisplacement(scenario_, active_, move_displacements_[action], placement_));
+  return MoveTo(ApplyDisplacement(scenario_, active_, DisplacementOf(active_, action), placement_));
 }
 
 StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
@@ -214,7 +228,7 @@ MultiStepResult UavPositioningEnv::StepAll(const std::vector<int>& actions) {
                               "\") out of the action space Discrete(" +
                               std::to_string(ActionSpace().n) + ")");
     }
-    displacements.push_back(move_displacements_[static_cast<std::size_t>(actions[u])]);
+    displacements.push_back(DisplacementOf(u, actions[u]));
   }
   return MoveAllTo(ApplyJointDisplacement(scenario_, displacements, placement_));
 }

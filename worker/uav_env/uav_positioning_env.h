@@ -95,6 +95,10 @@ class UavPositioningEnv : public Env {
   // Each discrete action's displacement (MoveDisplacement), worked out once: the action mask asks
   // for every action at every step.
   std::vector<Vec3> move_displacements_;
+  int to_best_ = -1;  // the index of "to_best" in env.actions, or -1
+  // Action `action`'s displacement of UAV `uav` now: move_displacements_'s, or for "to_best" a
+  // step towards that UAV's coverage pointer (worked out if its map is not current).
+  Vec3 DisplacementOf(std::size_t uav, int action) const;
   Placement placement_;
   std::size_t active_ = 0;  // the UAV the next action moves
   StepInfo info_;
