@@ -161,5 +161,22 @@ TEST(GeneralObservation, SettingsAreCheckedAndWrittenWhereUsed) {
   EXPECT_EQ(again.env.observations, general.env.observations);
 }
 
+// "to_best" flies towards the coverage map's pointer: without the map it is refused, by name.
+TEST(GeneralObservation, ToBestNeedsTheCoverageMap) {
+  json b = Document("b.json");
+  b["env"]["actions"] = {"up", "down", "stay", "to_best"};
+  try {
+    ParseScenario(b);
+    ADD_FAILURE() << "to_best without coverage was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.path(), "/env/actions");
+    EXPECT_NE(std::string(e.what()).find("coverage"), std::string::npos) << e.what();
+  }
+  b["env"]["observations"] = {"zone", "coverage"};
+  const Scenario s = ParseScenario(b);
+  EXPECT_EQ(s.env.actions.back(), "to_best");
+  EXPECT_EQ(ParseScenario(ToJson(s)).env.actions, s.env.actions);
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -92,6 +92,40 @@ TEST(Moves, NeverIntoABuilding) {
   EXPECT_DOUBLE_EQ(p.z, 25);
 }
 
+// "to_best": one move along the axis of the largest remaining offset, landing on the target,
+// the next axis when that one is blocked, nothing at the target.
+TEST(Moves, ToBestStepsAlongTheLargestOffsetAndAroundABlockedAxis) {
+  const Scenario s = ScenarioB();  // step 5 m; tower [45, 55]^2, 20 m; zone z in [5, 60]
+  const auto towards = [&s](const Vec3& from, const Vec3& target) {
+    return StepTowards(s, 0, target, {from});
+  };
+  const Vec3 p{30, 30, 30};
+  const Vec3 a = towards(p, {42, 27, 30});  // x by 12, y by -3
+  EXPECT_DOUBLE_EQ(a.x, 5);
+  EXPECT_DOUBLE_EQ(a.y, 0);
+  EXPECT_DOUBLE_EQ(a.z, 0);
+  const Vec3 b = towards(p, {32, 27, 30});  // y is the larger: lands on it
+  EXPECT_DOUBLE_EQ(b.x, 0);
+  EXPECT_DOUBLE_EQ(b.y, -3);
+  const Vec3 tie = towards(p, {25, 30, 35});  // x on a tie
+  EXPECT_DOUBLE_EQ(tie.x, -5);
+  EXPECT_DOUBLE_EQ(tie.z, 0);
+  const Vec3 here = towards(p, p);
+  EXPECT_EQ(here.x == 0 && here.y == 0 && here.z == 0, true);
+  // Beside the tower at 15 m: x leads into it, so y it is.
+  const Vec3 c = towards({40, 50, 15}, {60, 52, 15});
+  EXPECT_DOUBLE_EQ(c.x, 0);
+  EXPECT_DOUBLE_EQ(c.y, 2);
+  // At the zone's ceiling a target above cannot be neared: nothing moves.
+  const Vec3 d = towards({30, 30, 60}, {30, 30, 70});
+  EXPECT_EQ(d.x == 0 && d.y == 0 && d.z == 0, true);
+  // A scenario without the move has no index for it.
+  EXPECT_EQ(ToBestAction(s), -1);
+  Scenario with = s;
+  with.env.actions.push_back("to_best");
+  EXPECT_EQ(ToBestAction(with), 7);
+}
+
 TEST(Observations, LayoutAndBounds) {
   Scenario s = ScenarioB();
   s.env.observations = {"x", "y", "z", "n_los", "throughput", "snr"};

@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario_generator/scenario_generator.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/gym/general_observation.h"
 #include "worker/gym/moves.h"
+#include "worker/gym/multi_agent.h"
 #include "worker/gym/reward.h"
 #include "worker/uav_env/analytic_evaluator.h"
 #include "worker/uav_env/uav_positioning_env.h"
@@ -123,6 +125,80 @@ TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
         << "UAV " << u;
   }
   EXPECT_NE(views[0], views[1]);
+}
+
+// "to_best" in env.actions: flown from the baseline it reaches where the pointer leads, the map's
+// best, one move at a time, and is masked off there; its lookahead is the reward change of the
+// move it makes.
+TEST(LookAround, ToBestFliesToTheMapsBestAndItsLookaheadIsThatMovesChange) {
+  Scenario s = Observing(GeneratedUrban(1), {"coverage", "lookahead"});
+  s.env.step = 5;
+  s.env.actions.push_back("to_best");
+  const int to_best = static_cast<int>(s.env.actions.size()) - 1;
+  const double bound = CoverageRewardBound(s);
+  UavPositioningEnv env(s);
+  std::vector<double> o = env.Reset(1);
+  const std::size_t cells = 16, pointer = 2 * cells, look = pointer + 3;
+  const double map_best = *std::max_element(o.begin(), o.begin() + cells) * bound;
+  double reward = AnalyticReward(s, env.LastInfo().positions);
+  int moves = 0;
+  for (; moves < 200; ++moves) {
+    const ActionMask mask = env.ValidActions();
+    ASSERT_FALSE(mask.empty());
+    if (!mask[static_cast<std::size_t>(to_best)])
+      break;
+    const Placement from = env.LastInfo().positions;
+    const StepResult r = env.Step(to_best);
+    const Vec3& a = from[0];
+    const Vec3& b = r.info.positions[0];
+    const int axes = (a.x != b.x) + (a.y != b.y) + (a.z != b.z);
+    EXPECT_EQ(axes, 1) << "move " << moves;
+    EXPECT_LE(std::abs(b.x - a.x) + std::abs(b.y - a.y) + std::abs(b.z - a.z), s.env.step + 1e-9);
+    // The lookahead the move was chosen on (before it) said where it would lead.
+    EXPECT_NEAR(o[look + static_cast<std::size_t>(to_best)],
+                std::clamp(kLookaheadGain * (r.reward - reward) / bound, -1.0, 1.0), 1e-12)
+        << "move " << moves;
+    o = r.observation;
+    reward = r.reward;
+  }
+  EXPECT_GT(moves, 3);
+  EXPECT_LT(moves, 200);
+  EXPECT_EQ(o[pointer], 0.0);
+  EXPECT_EQ(o[pointer + 1], 0.0);
+  EXPECT_EQ(o[pointer + 2], 0.0);
+  EXPECT_NEAR(reward, map_best, 1e-12);
+}
+
+// With several UAVs moving at once each flies towards its own map's best, also when nothing asked
+// for the others' observations since the last move.
+TEST(LookAround, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
+  Scenario s = Observing(GeneratedUrban(2), {"coverage"});
+  s.env.step = 5;
+  s.env.coverage_map = 3;
+  s.env.actions.push_back("to_best");
+  const int to_best = static_cast<int>(s.env.actions.size()) - 1;
+  UavPositioningEnv env(s), told(s);
+  env.Reset(1);
+  told.Reset(1);
+  for (int step = 0; step < 4; ++step) {
+    const auto views = told.AgentObservations();
+    const Placement from = told.LastInfo().positions;
+    std::vector<Vec3> moves;
+    for (std::size_t u = 0; u < 2; ++u) {
+      const Vec3 target{from[u].x + views[u][18] * s.env.step,
+                        from[u].y + views[u][19] * s.env.step,
+                        from[u].z + views[u][20] * s.env.step};
+      moves.push_back(StepTowards(s, u, target, from));
+    }
+    const MultiStepResult r = env.StepAll({to_best, to_best});
+    told.StepAll({to_best, to_best});
+    const Placement expected = ApplyJointDisplacement(s, moves, from);
+    for (std::size_t u = 0; u < 2; ++u) {
+      EXPECT_EQ(r.info.positions[u].x, expected[u].x) << "UAV " << u << " step " << step;
+      EXPECT_EQ(r.info.positions[u].y, expected[u].y) << "UAV " << u << " step " << step;
+      EXPECT_EQ(r.info.positions[u].z, expected[u].z) << "UAV " << u << " step " << step;
+    }
+  }
 }
 
 // env.coverage_refine: the pointer leads to the best column within that many moves (x and y) of
