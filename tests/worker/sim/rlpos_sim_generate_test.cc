@@ -142,7 +142,7 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
   const std::string build =
       std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
-  for (const std::string set : {"train", "heldout", "train-many", "heldout-many", "fresh",
+  for (const std::string set : {"train", "tune", "heldout", "train-many", "heldout-many", "fresh",
                                 "fresh-many", "confirm", "confirm-many"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
@@ -165,7 +165,7 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
         EXPECT_EQ(counts, want) << set << ", " << style;
       continue;
     }
-    if (set == "fresh" || set == "confirm") {  // one UAV only, 16 or 32 of each style
+    if (set == "fresh" || set == "confirm" || set == "tune") {  // one UAV: 16 or 32 per style
       const int each = set == "fresh" ? 16 : 32;
       EXPECT_TRUE(more_uavs.empty()) << set;
       EXPECT_EQ(one_uav, (std::map<std::string, int>{
