@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cstring>
+#include <fstream>
 #include <optional>
 #include <random>
 #include <string>
@@ -312,7 +315,10 @@ TEST_F(SavedTensorsTest, ShippedPoliciesReadAsTorchLoadsThem) {
     const int in = static_cast<int>(saved.front().sizes[1]);
     const int out = static_cast<int>(saved.back().sizes[0]);
     EXPECT_EQ(hidden, (std::vector<int>{128, 128}));
-    EXPECT_EQ(out, 7);
+    std::ifstream settings(std::string(RLPOS_SOURCE_DIR) + "/policies/" + policy +
+                           "/scenario.json");
+    const auto actions = nlohmann::json::parse(settings)["env"]["actions"];
+    EXPECT_EQ(out, static_cast<int>(actions.size()));  // one logit per move
     auto net = MakeMlp(hidden, in, out);
     torch::load(net, file);
     ExpectSameAsParameters(saved, *net);
