@@ -68,6 +68,15 @@ LookAround::LookAround(const Scenario& scenario)
   to_best_ = ToBestAction(scenario);
   pointer_of_.resize(scenario.uavs.size());
   pointer_for_.resize(scenario.uavs.size());
+  if (to_best_ >= 0) {
+    routes_.reserve(scenario.uavs.size());
+    for (std::size_t u = 0; u < scenario.uavs.size(); ++u)
+      routes_.emplace_back(scenario, u);
+  }
+}
+
+Vec3 LookAround::ToBestMove(std::size_t uav, const Placement& placement) {
+  return routes_.at(uav).NextMove(pointer_of_.at(uav), placement);
 }
 
 const Vec3* LookAround::PointerTargetOf(std::size_t uav, const Placement& placement) const {
@@ -232,9 +241,7 @@ void LookAround::Fill(const Placement& placement, std::size_t active, double her
     return;
   info.lookahead.assign(moves_.size(), 0.0);
   for (std::size_t a = 0; a < moves_.size(); ++a) {
-    const Vec3 move = static_cast<int>(a) == to_best_
-                          ? StepTowards(scenario_, active, pointer_of_[active], placement)
-                          : moves_[a];
+    const Vec3 move = static_cast<int>(a) == to_best_ ? ToBestMove(active, placement) : moves_[a];
     const Placement to = ApplyDisplacement(scenario_, active, move, placement);
     if (Same(to[active], placement[active]))
       continue;

@@ -11,6 +11,7 @@
 
 #include "common/scenario/scenario.h"
 #include "worker/gym/env.h"
+#include "worker/gym/lattice_route.h"
 #include "worker/uav_env/analytic_evaluator.h"
 #include "worker/uav_env/one_uav_moves.h"
 
@@ -33,6 +34,9 @@ class LookAround {
   // Where UAV `uav`'s coverage map points for `placement` (what the "to_best" move flies
   // towards), or null if its last map was worked out for another placement.
   const Vec3* PointerTargetOf(std::size_t uav, const Placement& placement) const;
+  // The "to_best" move of UAV `uav` from `placement`: the first move of a shortest way round the
+  // buildings to where its last map points (LatticeRoute). Asks a current PointerTargetOf.
+  Vec3 ToBestMove(std::size_t uav, const Placement& placement);
 
  private:
   void Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
@@ -63,6 +67,7 @@ class LookAround {
   std::vector<Vec3> pointer_of_;        // per UAV: best_point_ of its last map
   std::vector<Placement> pointer_for_;  // per UAV: the placement that map was worked out for
   int to_best_ = -1;                    // the index of "to_best" in env.actions, or -1
+  std::vector<LatticeRoute> routes_;    // per UAV, with "to_best": its way to its pointer
   // Per UAV, per map point (cell x altitudes + altitude): the UEs' links, empty until asked;
   // and where the UEs were when they were worked out. At most coverage_map² x altitudes x UEs
   // links per UAV (about 40 bytes each).

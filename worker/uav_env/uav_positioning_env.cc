@@ -44,13 +44,12 @@ void UavPositioningEnv::LookAroundFor(std::size_t uav, StepInfo& info) const {
 Vec3 UavPositioningEnv::DisplacementOf(std::size_t uav, int action) const {
   if (action != to_best_)
     return move_displacements_[static_cast<std::size_t>(action)];
-  const Vec3* target = look_around_->PointerTargetOf(uav, placement_);
-  if (!target) {  // another UAV's map, not worked out since the last move
+  if (!look_around_->PointerTargetOf(uav, placement_)) {
+    // another UAV's map, not worked out since the last move
     StepInfo view = info_;
     LookAroundFor(uav, view);
-    target = look_around_->PointerTargetOf(uav, placement_);
   }
-  return StepTowards(scenario_, uav, *target, placement_);
+  return look_around_->ToBestMove(uav, placement_);
 }
 
 UavPositioningEnv::~UavPositioningEnv() = default;

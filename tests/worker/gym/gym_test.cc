@@ -3,7 +3,9 @@
 
 #include <cmath>
 
+#include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
+#include "worker/gym/lattice_route.h"
 #include "worker/gym/moves.h"
 #include "worker/gym/reward.h"
 #include "worker/gym/spaces.h"
@@ -124,6 +126,35 @@ TEST(Moves, ToBestStepsAlongTheLargestOffsetAndAroundABlockedAxis) {
   Scenario with = s;
   with.env.actions.push_back("to_best");
   EXPECT_EQ(ToBestAction(with), 7);
+}
+
+// The way round: behind B's tower (x, y in [45, 55], 20 m) the straight move is stuck; the route
+// takes a shortest way round (8 moves: two aside, four across, two back) and lands on the target.
+TEST(LatticeRoute, GoesRoundABuildingTheStraightMoveIsStuckBehind) {
+  const Scenario s = ScenarioB();  // lattice through (50, 50, 25) by 5 m, zone z in [5, 60]
+  const Vec3 start{40, 50, 15}, target{60, 50, 15};
+  const Vec3 straight = StepTowards(s, 0, target, {start});
+  EXPECT_TRUE(straight.x == 0 && straight.y == 0 && straight.z == 0);
+  LatticeRoute route(s, 0);
+  Placement at{start};
+  int moves = 0;
+  for (; moves < 40; ++moves) {
+    const Vec3 move = route.NextMove(target, at);
+    if (move.x == 0 && move.y == 0 && move.z == 0)
+      break;
+    at = ApplyDisplacement(s, 0, move, at);
+    ASSERT_LT(BuildingContaining(s, at[0]), 0) << "move " << moves;
+  }
+  EXPECT_EQ(moves, 8);
+  EXPECT_EQ(at[0].x, target.x);
+  EXPECT_EQ(at[0].y, target.y);
+  EXPECT_EQ(at[0].z, target.z);
+  // Off the lattice, or towards a point inside the tower, it is the straight move.
+  const Vec3 off{42, 50, 30};
+  const Vec3 a = route.NextMove({60, 50, 30}, {off}), b = StepTowards(s, 0, {60, 50, 30}, {off});
+  EXPECT_TRUE(a.x == b.x && a.y == b.y && a.z == b.z);
+  const Vec3 c = route.NextMove({50, 50, 10}, {Vec3{30, 50, 10}});
+  EXPECT_DOUBLE_EQ(c.x, 5);
 }
 
 TEST(Observations, LayoutAndBounds) {

@@ -12,6 +12,7 @@
 #include "common/scenario_generator/scenario_generator.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/gym/general_observation.h"
+#include "worker/gym/lattice_route.h"
 #include "worker/gym/moves.h"
 #include "worker/gym/multi_agent.h"
 #include "worker/gym/reward.h"
@@ -180,6 +181,7 @@ TEST(LookAround, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
   UavPositioningEnv env(s), told(s);
   env.Reset(1);
   told.Reset(1);
+  std::vector<LatticeRoute> routes{{s, 0}, {s, 1}};
   for (int step = 0; step < 4; ++step) {
     const auto views = told.AgentObservations();
     const Placement from = told.LastInfo().positions;
@@ -188,7 +190,7 @@ TEST(LookAround, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
       const Vec3 target{from[u].x + views[u][18] * s.env.step,
                         from[u].y + views[u][19] * s.env.step,
                         from[u].z + views[u][20] * s.env.step};
-      moves.push_back(StepTowards(s, u, target, from));
+      moves.push_back(routes[u].NextMove(target, from));
     }
     const MultiStepResult r = env.StepAll({to_best, to_best});
     told.StepAll({to_best, to_best});
