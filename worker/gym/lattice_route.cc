@@ -11,6 +11,9 @@ namespace rlpos {
 namespace {
 
 constexpr double kOnLattice = 1e-6;  // metres: a point this close to a node is on it
+// A zone with more lattice points than this (a fine env.step over a large zone) keeps the
+// straight move: 5 bytes a point, so at most 10 MB per UAV, and a search of at most that many.
+constexpr long long kMaxNodes = 2'000'000;
 
 // The lowest lattice coordinate through `origin` at or above `low`, and how many fit to `high`.
 void AxisOf(double origin, double step, double low, double high, double& first, long long& n) {
@@ -29,9 +32,18 @@ LatticeRoute::LatticeRoute(const Scenario& scenario, std::size_t uav)
   AxisOf(origin.x, step_, zone.xmin, zone.xmax, first_.x, n_[0]);
   AxisOf(origin.y, step_, zone.ymin, zone.ymax, first_.y, n_[1]);
   AxisOf(origin.z, step_, zone.zmin, zone.zmax, first_.z, n_[2]);
-  free_.assign(static_cast<std::size_t>(n_[0] * n_[1] * n_[2]), 0);
-  for (long long node = 0; node < static_cast<long long>(free_.size()); ++node)
-    free_[static_cast<std::size_t>(node)] = BuildingContaining(scenario, PointOf(node)) < 0;
+}
+
+bool LatticeRoute::Searchable() {
+  const long long nodes = n_[0] * n_[1] * n_[2];
+  if (nodes < 1 || nodes > kMaxNodes)
+    return false;
+  if (free_.empty()) {  // built on the first move asked for, not with every env
+    free_.assign(static_cast<std::size_t>(nodes), 0);
+    for (long long node = 0; node < nodes; ++node)
+      free_[static_cast<std::size_t>(node)] = BuildingContaining(scenario_, PointOf(node)) < 0;
+  }
+  return true;
 }
 
 long long LatticeRoute::NodeOf(const Vec3& p) const {
@@ -83,7 +95,7 @@ void LatticeRoute::DistancesTo(long long node) {
 Vec3 LatticeRoute::NextMove(const Vec3& target, const Placement& from) {
   const Vec3& at = from.at(uav_);
   const long long goal = NodeOf(target), here = NodeOf(at);
-  if (goal < 0 || here < 0)
+  if (goal < 0 || here < 0 || !Searchable())
     return StepTowards(scenario_, uav_, target, from);
   if (goal != target_node_)
     DistancesTo(goal);

@@ -17,13 +17,16 @@ class LatticeRoute {
   // The first move of a shortest path from UAV `uav`'s place in `from` to `target`, among the
   // moves that the other UAVs leave free. Where there is none (`target` or the UAV off the
   // lattice, the target walled in, every move that brings it nearer taken by another UAV), the
-  // straight move of StepTowards. (0, 0, 0) at the target.
+  // straight move of StepTowards, as in a zone of more than 2,000,000 lattice points. (0, 0, 0) at
+  // the target.
   Vec3 NextMove(const Vec3& target, const Placement& from);
 
  private:
   // The node of `p`, or -1 if `p` is not a lattice point of the zone.
   long long NodeOf(const Vec3& p) const;
   Vec3 PointOf(long long node) const;
+  // Whether the zone's lattice is small enough to search; builds free_ the first time.
+  bool Searchable();
   // Breadth-first distances to `node` over the free nodes.
   void DistancesTo(long long node);
 

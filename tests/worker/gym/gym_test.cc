@@ -155,6 +155,13 @@ TEST(LatticeRoute, GoesRoundABuildingTheStraightMoveIsStuckBehind) {
   EXPECT_TRUE(a.x == b.x && a.y == b.y && a.z == b.z);
   const Vec3 c = route.NextMove({50, 50, 10}, {Vec3{30, 50, 10}});
   EXPECT_DOUBLE_EQ(c.x, 5);
+  // A lattice too fine to search (0.25 m over B's zone: 401 x 401 x 221 points) keeps the
+  // straight move, here stuck behind the tower, without building it.
+  Scenario fine = s;
+  fine.env.step = 0.25;
+  LatticeRoute coarse_only(fine, 0);
+  const Vec3 stuck = coarse_only.NextMove(target, {Vec3{44.75, 50, 15}});
+  EXPECT_TRUE(stuck.x == 0 && stuck.y == 0 && stuck.z == 0);
 }
 
 TEST(Observations, LayoutAndBounds) {
