@@ -142,8 +142,9 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
   const std::string build =
       std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
-  for (const std::string set : {"train", "tune", "heldout", "train-many", "heldout-many", "fresh",
-                                "fresh-many", "confirm", "confirm-many", "audit", "audit-many"}) {
+  for (const std::string set :
+       {"train", "tune", "heldout", "train-many", "heldout-many", "fresh", "fresh-many", "confirm",
+        "confirm-many", "audit", "audit-many", "verify", "verify-many"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -158,16 +159,16 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
     }
     if (set.size() > 5 && set.substr(set.size() - 5) == "-many") {
       EXPECT_EQ(uavs.size(), 4u) << set << ": every style";
-      const std::set<std::string> want =
-          set == "fresh-many" || set == "confirm-many" || set == "audit-many"
-              ? std::set<std::string>{"2", "3", "4", "5", "6"}
-              : std::set<std::string>{"4", "5", "6"};
+      const std::set<std::string> want = set == "fresh-many" || set == "confirm-many" ||
+                                                 set == "audit-many" || set == "verify-many"
+                                             ? std::set<std::string>{"2", "3", "4", "5", "6"}
+                                             : std::set<std::string>{"4", "5", "6"};
       for (const auto& [style, counts] : uavs)
         EXPECT_EQ(counts, want) << set << ", " << style;
       continue;
     }
-    if (set == "fresh" || set == "confirm" || set == "tune" ||
-        set == "audit") {  // one UAV: 16 or 32 per style
+    if (set == "fresh" || set == "confirm" || set == "tune" || set == "audit" ||
+        set == "verify") {  // one UAV: 16 or 32 per style
       const int each = set == "fresh" ? 16 : 32;
       EXPECT_TRUE(more_uavs.empty()) << set;
       EXPECT_EQ(one_uav, (std::map<std::string, int>{
