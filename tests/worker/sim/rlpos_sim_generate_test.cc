@@ -159,16 +159,15 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
     }
     if (set.size() > 5 && set.substr(set.size() - 5) == "-many") {
       EXPECT_EQ(uavs.size(), 4u) << set << ": every style";
-      const std::set<std::string> want = set == "fresh-many" || set == "confirm-many" ||
-                                                 set == "audit-many" || set == "verify-many"
-                                             ? std::set<std::string>{"2", "3", "4", "5", "6"}
-                                             : std::set<std::string>{"4", "5", "6"};
+      // train-many and heldout-many add 4-6 UAVs to train and heldout; the others are 2-6.
+      const std::set<std::string> want = set == "train-many" || set == "heldout-many"
+                                             ? std::set<std::string>{"4", "5", "6"}
+                                             : std::set<std::string>{"2", "3", "4", "5", "6"};
       for (const auto& [style, counts] : uavs)
         EXPECT_EQ(counts, want) << set << ", " << style;
       continue;
     }
-    if (set == "fresh" || set == "confirm" || set == "tune" || set == "audit" ||
-        set == "verify") {  // one UAV: 16 or 32 per style
+    if (set != "train" && set != "heldout") {  // one UAV: 16 or 32 per style
       const int each = set == "fresh" ? 16 : 32;
       EXPECT_TRUE(more_uavs.empty()) << set;
       EXPECT_EQ(one_uav, (std::map<std::string, int>{
