@@ -1,29 +1,31 @@
 #!/usr/bin/env bash
-# Writes a named set of generated scenarios: "train" and the larger one-UAV "tune" to tune on,
-# "heldout" to report on, "train-many" and "heldout-many" the same with four to six UAVs, "fresh"
-# (one UAV) and "fresh-many" (two to six), held out from everything else, kept for checking a
-# choice after it is made, "confirm" and "confirm-many", larger, for the next such check once
-# the fresh sets have been looked at, "audit" and "audit-many", the same size, for the check
-# after that, and "verify" and "verify-many", the same size, for the one after audit. Each
-# scenario is written by rlpos-sim generate and checked by rlpos-sim validate; the set appears
-# whole (written beside DIR, then renamed) or not at all.
-#   scripts/generate_scenario_set.sh --out DIR [--build BUILD_DIR] --set train|tune|heldout|
-#     train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|
-#     verify-many
+# Writes a named set of generated scenarios: "train", the larger one-UAV "tune" and "tune-many"
+# (two to six UAVs) to tune on, "heldout" to report on, "train-many" and "heldout-many" the same
+# with four to six UAVs, "fresh" (one UAV) and "fresh-many" (two to six), held out from
+# everything else, kept for checking a choice after it is made, "confirm" and "confirm-many",
+# larger, for the next such check once the fresh sets have been looked at, "audit" and
+# "audit-many", the same size, for the check after that, "verify" and "verify-many" for the one
+# after audit, and "check" and "check-many" for the one after verify. Each scenario is written by
+# rlpos-sim generate and checked by rlpos-sim validate; the set appears whole (written beside
+# DIR, then renamed) or not at all.
+#   scripts/generate_scenario_set.sh --out DIR [--build BUILD_DIR] --set train|tune|tune-many|
+#     heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|
+#     verify|verify-many|check|check-many
 # Seeds are fixed and the sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
 #   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
-#   base: train 10000, tune 20000, verify and verify-many 30000, audit and audit-many 40000,
-#   heldout 90000, fresh and fresh-many 70000, confirm and confirm-many 60000; style: urban 0,
-#   campus 1, suburb 2, open 3.
-# Scenarios per style and UAV count: train and heldout 8, 2, 2 for 1, 2, 3 UAVs (48 each); tune
-# 32 with one UAV (128); train-many and heldout-many 2, 2, 2 for 4, 5, 6 UAVs (24 each); fresh 16
-# with one UAV (64); fresh-many 2 each for 2 to 6 UAVs (40); confirm, audit and verify 32 with one
-# UAV (128); confirm-many, audit-many and verify-many 4 each for 2 to 6 UAVs (80).
+#   base: train 10000, tune and tune-many 20000, verify and verify-many 30000, audit and
+#   audit-many 40000, check and check-many 50000, confirm and confirm-many 60000, fresh and
+#   fresh-many 70000, heldout 90000; style: urban 0, campus 1, suburb 2, open 3.
+# Scenarios per style and UAV count: train and heldout 8, 2, 2 for 1, 2, 3 UAVs (48 each);
+# train-many and heldout-many 2, 2, 2 for 4, 5, 6 UAVs (24 each); fresh 16 with one UAV (64);
+# fresh-many 2 each for 2 to 6 UAVs (40); tune, confirm, audit, verify and check 32 with one UAV
+# (128); tune-many, confirm-many, audit-many, verify-many and check-many 4 each for 2 to 6 UAVs
+# (80).
 # DIR/index.tsv lists file, seed, style, UAVs and UEs.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 set_name="" out="" build="$here/build"
-usage() { echo "usage: $0 --set train|tune|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many --out DIR [--build BUILD_DIR]" >&2; exit 2; }
+usage() { echo "usage: $0 --set train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many --out DIR [--build BUILD_DIR]" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --set) set_name=${2:-}; shift 2 || usage ;;
@@ -36,6 +38,7 @@ done
 case "$set_name" in
   train) base=10000; first_uavs=1; counts=(8 2 2) ;;
   tune) base=20000; first_uavs=1; counts=(32) ;;
+  tune-many) base=20000; first_uavs=2; counts=(4 4 4 4 4) ;;
   heldout) base=90000; first_uavs=1; counts=(8 2 2) ;;
   train-many) base=10000; first_uavs=4; counts=(2 2 2) ;;
   heldout-many) base=90000; first_uavs=4; counts=(2 2 2) ;;
@@ -47,7 +50,9 @@ case "$set_name" in
   audit-many) base=40000; first_uavs=2; counts=(4 4 4 4 4) ;;
   verify) base=30000; first_uavs=1; counts=(32) ;;
   verify-many) base=30000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  *) echo "generate_scenario_set: --set must be train, tune, heldout, train-many, heldout-many, fresh, fresh-many, confirm, confirm-many, audit, audit-many, verify or verify-many" >&2; exit 2 ;;
+  check) base=50000; first_uavs=1; counts=(32) ;;
+  check-many) base=50000; first_uavs=2; counts=(4 4 4 4 4) ;;
+  *) echo "generate_scenario_set: --set must be train, tune, tune-many, heldout, train-many, heldout-many, fresh, fresh-many, confirm, confirm-many, audit, audit-many, verify, verify-many, check or check-many" >&2; exit 2 ;;
 esac
 [ -n "$out" ] || usage
 sim="$build/bin/rlpos-sim"

@@ -143,8 +143,9 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
       std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
   for (const std::string set :
-       {"train", "tune", "heldout", "train-many", "heldout-many", "fresh", "fresh-many", "confirm",
-        "confirm-many", "audit", "audit-many", "verify", "verify-many"}) {
+       {"train", "tune", "tune-many", "heldout", "train-many", "heldout-many", "fresh",
+        "fresh-many", "confirm", "confirm-many", "audit", "audit-many", "verify", "verify-many",
+        "check", "check-many"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
     ASSERT_EQ(r.exit_code, 0) << r.err;
