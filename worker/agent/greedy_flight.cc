@@ -1,7 +1,9 @@
 #include "worker/agent/greedy_flight.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,6 +47,16 @@ StepResult JointStep(Env& env, Agent& agent, const BoxSpace& space, const BoxSpa
   return step;
 }
 
+// One greedy step from `obs` (the first agent's, normalised): its own, or every agent's at once.
+StepResult GreedyStep(Env& env, Agent& agent, bool joint, const BoxSpace& space,
+                      const BoxSpace& box, const std::vector<float>& obs) {
+  if (joint)
+    return JointStep(env, agent, space, box);
+  if (agent.Continuous())
+    return env.StepContinuous(ScaleToBox(agent.ActContinuous(obs, false), box));
+  return env.Step(agent.Act(obs, env.ValidActions(), false));
+}
+
 }  // namespace
 
 GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const EpisodeOptions& options) {
@@ -63,13 +75,7 @@ GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const Episode
   std::vector<Moment> moments;
   met.emplace(std::move(state->key), 0);
   for (int t = 1;; ++t) {
-    StepResult step;
-    if (joint)
-      step = JointStep(env, agent, space, box);
-    else if (agent.Continuous())
-      step = env.StepContinuous(ScaleToBox(agent.ActContinuous(obs, false), box));
-    else
-      step = env.Step(agent.Act(obs, env.ValidActions(), false));
+    StepResult step = GreedyStep(env, agent, joint, space, box, obs);
     if (t >= steps || step.terminated || step.truncated)
       return {step.info, step.reward, t, t};
     moments.push_back({std::move(step.info), step.reward});
@@ -88,6 +94,43 @@ GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const Episode
       return {end.info, end.reward, steps, t};
     }
     if (!joint)  // the agents' observations are read from the env at each joint step
+      obs = space.Normalise(step.observation);
+  }
+}
+
+GreedyFlight FlyGreedyToBest(Env& env, Agent& agent, std::uint64_t seed,
+                             const EpisodeOptions& options, int patience_steps) {
+  const bool joint = options.joint && env.AgentCount() > 1;
+  const BoxSpace space = env.ObservationSpace();
+  const BoxSpace box = env.ContinuousActionSpace();
+  std::vector<float> obs = space.Normalise(env.Reset(seed, options.reset));
+  std::optional<DeterminingState> state = env.Determining();
+  std::set<std::vector<std::uint64_t>> met;
+  if (state)
+    met.insert(std::move(state->key));
+  GreedyFlight best;
+  best.final_reward = -std::numeric_limits<double>::infinity();
+  for (int t = 1;; ++t) {
+    StepResult step = GreedyStep(env, agent, joint, space, box, obs);
+    if (t == 1 || step.reward > best.final_reward) {
+      best.final_reward = step.reward;
+      best.final_info = step.info;
+      best.best_step = t;
+    }
+    best.steps = best.steps_flown = t;
+    const bool patience_out = patience_steps > 0 && t - best.best_step >= patience_steps;
+    const bool limit = options.max_steps > 0 && t >= options.max_steps;
+    if (patience_out || limit || step.terminated || step.truncated)
+      return best;
+    if (state) {
+      state = env.Determining();
+      if (!state)
+        throw std::logic_error("the env told its state after the reset but not after step " +
+                               std::to_string(t));
+      if (!met.insert(std::move(state->key)).second)
+        return best;
+    }
+    if (!joint)
       obs = space.Normalise(step.observation);
   }
 }

@@ -16,11 +16,28 @@ struct GreedyFlight {
   double final_reward = 0;  // the reward of its last step
   int steps = 0;            // the episode's steps
   int steps_flown = 0;      // of which flown: the rest repeat a cycle
+  int best_step = 0;        // FlyGreedyToBest: the step (from 1) that reached final_info
 };
 
 // RunEpisode(env, agent, seed, false, nullptr, options)'s final_info and final_reward, bit for
 // bit, also with options.joint (every UAV moving at once). Flies the whole episode when the env
 // cannot tell its state.
 GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const EpisodeOptions& options);
+
+// The best placement the same greedy flight reaches (where a policy for any scenario places its
+// UAVs): final_info and final_reward are those of the step with the highest reward, the first of
+// equals. A policy that keeps moving once it is near the best (several UAVs, each acting on what
+// the others just did) would otherwise end wherever the episode's last step leaves it, after up
+// to a thousand steps. The flight stops once `patience_steps` steps bring no higher reward (0: no
+// such stop), once it meets a state again (nothing after it is new), or at the episode's end;
+// `steps` and `steps_flown` are the steps flown.
+GreedyFlight FlyGreedyToBest(Env& env, Agent& agent, std::uint64_t seed,
+                             const EpisodeOptions& options, int patience_steps);
+
+// The patience of a policy for any scenario's flight (its placement, each decision of a
+// tracking run, its validation in training), chosen on scripts/generate_scenario_set.sh's
+// tune-many and tune sets (docs/rl.md, The best of the flight): long enough for one UAV's way
+// round a building, in which the reward may not rise.
+constexpr int kGeneralPatienceSteps = 60;
 
 }  // namespace rlpos

@@ -61,7 +61,8 @@ std::shared_ptr<PpoGreedyPolicy> LoadedPolicy(const PolicyFolder& folder, const 
 Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options) {
   UavPositioningEnv env(GeneralTarget(folder, options));
   const std::shared_ptr<PpoGreedyPolicy> policy = LoadedPolicy(folder, env);
-  return FlyGreedy(env, *policy, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent))
+  return FlyGreedyToBest(env, *policy, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent),
+                         kGeneralPatienceSteps)
       .final_info.positions;
 }
 
@@ -79,7 +80,7 @@ TrackDecision TrackWith(const Scenario& target, std::shared_ptr<Agent> agent, st
     for (std::size_t u = 0; u < uavs_now.size() && u < now.uavs.size(); ++u)
       now.uavs[u].initial = uavs_now[u];
     UavPositioningEnv env(now);
-    return FlyGreedy(env, *agent, run, greedy).final_info.positions;
+    return FlyGreedyToBest(env, *agent, run, greedy, kGeneralPatienceSteps).final_info.positions;
   };
 }
 

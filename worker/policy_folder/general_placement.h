@@ -27,13 +27,14 @@ Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options,
 bool FliesWithoutLibtorch(const PolicyFolder& folder);
 
 // The greedy flight from the baseline of the policy in folder.dir, in GeneralTarget's scenario:
-// its final placement. std::invalid_argument unless FliesWithoutLibtorch(folder); a policy.pt
+// the best placement it reaches (FlyGreedyToBest, kGeneralPatienceSteps). std::invalid_argument unless FliesWithoutLibtorch(folder); a policy.pt
 // that is missing, damaged or of another shape: std::runtime_error naming it.
 Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options);
 
 // A run whose UEs move (rlpos-sim track) asks `agent` (a general policy, loaded) at each
 // decision: a greedy flight of the policy's episode in `target` (GeneralTarget's, with
-// run_decides_interval) as it is at that moment, from where the UAVs are, with RngRun `run`.
+// run_decides_interval) as it is at that moment, from where the UAVs are, with RngRun `run`; the
+// best placement it reaches, as GeneralPlacement's.
 TrackDecision TrackWith(const Scenario& target, std::shared_ptr<Agent> agent, std::uint64_t run);
 
 // TrackWith with the policy in folder.dir flown without libtorch; the errors of GeneralPlacement.

@@ -39,7 +39,8 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
     UavPositioningEnv env(GeneralTarget(folder, options));
     const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
     agent->Load(policy);
-    return FlyGreedy(env, *agent, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent))
+    return FlyGreedyToBest(env, *agent, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent),
+                           kGeneralPatienceSteps)
         .final_info.positions;
   }
   RefuseContradiction(folder, options);

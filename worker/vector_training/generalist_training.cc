@@ -216,7 +216,8 @@ std::vector<ValidationScore> ScoreGreedy(const std::vector<ValidationScenario>& 
   std::vector<ValidationScore> scores;
   for (const ValidationScenario& v : scenarios) {
     UavPositioningEnv env(v.drawn.scenario);
-    const GreedyFlight r = FlyGreedy(env, agent, kValidationRun, GreedyEpisodeOptions(spec));
+    const GreedyFlight r = FlyGreedyToBest(env, agent, kValidationRun, GreedyEpisodeOptions(spec),
+                                           kGeneralPatienceSteps);
     const double ratio = v.oracle_reward > 0 ? r.final_reward / v.oracle_reward : 1.0;
     scores.push_back({v.drawn.origin, r.final_reward, v.oracle_reward, ratio, r.final_info.n_los,
                       v.drawn.scenario.ues.size()});

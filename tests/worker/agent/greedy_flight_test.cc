@@ -1,6 +1,7 @@
 // FlyGreedy reads a greedy episode's end off its cycle: the same end as flying it all, for every
 // shape of path (lead-in, period, the episode's length), and the whole flight where the env
-// cannot tell its state.
+// cannot tell its state. FlyGreedyToBest keeps the best step of the same flight and stops when
+// patience, a state met again, a step limit or the episode says so.
 #include "worker/agent/greedy_flight.h"
 
 #include <gtest/gtest.h>
@@ -132,6 +133,60 @@ TEST(GreedyFlight, FliesTheWholeEpisodeWhereTheEnvCannotTellItsState) {
   EXPECT_EQ(flight.steps_flown, 50);
   EXPECT_EQ(env.steps(), 50);
   EXPECT_EQ(flight.final_info.n_los, 2);  // 0 [1 2]...: step 50 is even, in state 2
+}
+
+// 0 -> 5 -> 1 -> 2 -> 3 -> 4 -> 6 -> 7 -> 6 ...: the reward (state / 10) falls after the first
+// step, rises past it only at the sixth, peaks at the seventh, then repeats 6 7.
+const std::vector<int> kDipThenPeak = {5, 2, 3, 4, 6, 1, 7, 6};
+
+GreedyFlight ToBest(int patience, int max_steps = 0, int episode_steps = 100) {
+  JumpEnv env(8, episode_steps, true);
+  TableAgent agent(kDipThenPeak);
+  EpisodeOptions options;
+  options.max_steps = max_steps;
+  const GreedyFlight flight = FlyGreedyToBest(env, agent, 1, options, patience);
+  EXPECT_EQ(env.steps(), flight.steps_flown);
+  return flight;
+}
+
+TEST(GreedyFlightToBest, KeepsTheBestStepNotTheLast) {
+  // No patience: it flies until state 6 comes again (step 8), and keeps step 7's state 7.
+  const GreedyFlight all = ToBest(0);
+  EXPECT_EQ(all.steps_flown, 8);
+  EXPECT_EQ(all.best_step, 7);
+  EXPECT_EQ(all.final_info.n_los, 7);
+  EXPECT_EQ(all.final_info.positions.at(0).x, 7.0);
+  EXPECT_DOUBLE_EQ(all.final_reward, 0.7);
+}
+
+TEST(GreedyFlightToBest, StopsAfterThePatienceWithoutAHigherReward) {
+  // Steps 2-5 fall short of step 1's 0.5: four steps of patience end the flight at step 5.
+  const GreedyFlight four = ToBest(4);
+  EXPECT_EQ(four.steps_flown, 5);
+  EXPECT_EQ(four.best_step, 1);
+  EXPECT_EQ(four.final_info.n_los, 5);
+  // Five are enough to see step 6 rise above it; then the peak, then the state met again.
+  const GreedyFlight five = ToBest(5);
+  EXPECT_EQ(five.steps_flown, 8);
+  EXPECT_EQ(five.final_info.n_los, 7);
+}
+
+TEST(GreedyFlightToBest, KeepsAStepLimitAndTheEpisodesEnd) {
+  EXPECT_EQ(ToBest(0, 3).steps_flown, 3);
+  EXPECT_EQ(ToBest(0, 3).final_info.n_los, 5);
+  EXPECT_EQ(ToBest(0, 0, 6).steps_flown, 6);
+  EXPECT_EQ(ToBest(0, 0, 6).final_info.n_los, 6);
+}
+
+TEST(GreedyFlightToBest, KeepsTheFirstOfEqualRewards) {
+  // The env cannot tell its state, so 0 -> 2 -> 1 -> 2 -> 1 ... flies on: step 3 only equals
+  // step 1's reward, so three steps of patience end it at step 4.
+  JumpEnv env(3, 50, false);
+  TableAgent agent({2, 2, 1});
+  const GreedyFlight flight = FlyGreedyToBest(env, agent, 1, {}, 3);
+  EXPECT_EQ(flight.best_step, 1);
+  EXPECT_EQ(flight.steps_flown, 4);
+  EXPECT_EQ(flight.final_info.n_los, 2);
 }
 
 }  // namespace
