@@ -27,8 +27,9 @@ Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options,
 bool FliesWithoutLibtorch(const PolicyFolder& folder);
 
 // The greedy flight from the baseline of the policy in folder.dir, in GeneralTarget's scenario:
-// the best placement it reaches (FlyGreedyToBest, kGeneralPatienceSteps). std::invalid_argument unless FliesWithoutLibtorch(folder); a policy.pt
-// that is missing, damaged or of another shape: std::runtime_error naming it.
+// the best placement it reaches (FlyGreedyToBest, kGeneralPatienceSteps).
+// std::invalid_argument unless FliesWithoutLibtorch(folder); a policy.pt that is missing, damaged
+// or of another shape: std::runtime_error naming it.
 Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options);
 
 // A run whose UEs move (rlpos-sim track) asks `agent` (a general policy, loaded) at each

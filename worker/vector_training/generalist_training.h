@@ -93,8 +93,8 @@ GeneralistResult TrainGeneralist(const ScenarioDraw& draw, PpoAgent& agent, cons
 // `threads` threads (0: the cores).
 std::vector<ValidationScenario> ValidationSet(const ScenarioDraw& draw, int count,
                                               std::size_t threads = 0);
-// The agent's greedy flight in each: from the baseline, to the end of the env's episode
-// (FlyGreedy: its cycle read off once the flight repeats a state).
+// The agent's greedy flight in each, from the baseline, as a policy for any scenario places its
+// UAVs: its best step (FlyGreedyToBest with kGeneralPatienceSteps).
 std::vector<ValidationScore> ScoreGreedy(const std::vector<ValidationScenario>& scenarios,
                                          Agent& agent, const AgentSpec& spec);
 
