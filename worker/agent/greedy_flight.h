@@ -11,6 +11,7 @@
 
 namespace rlpos {
 
+// FlyGreedy's; FlyGreedyToBest's means its best step where this says the episode's end.
 struct GreedyFlight {
   StepInfo final_info;      // the info at the episode's end, as RunEpisode gives it
   double final_reward = 0;  // the reward of its last step
