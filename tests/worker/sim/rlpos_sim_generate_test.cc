@@ -145,7 +145,7 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
   for (const std::string set :
        {"train", "tune", "tune-many", "heldout", "train-many", "heldout-many", "fresh",
         "fresh-many", "confirm", "confirm-many", "audit", "audit-many", "verify", "verify-many",
-        "check", "check-many"}) {
+        "check", "check-many", "vet", "vet-many"}) {
     const auto r =
         RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
     ASSERT_EQ(r.exit_code, 0) << r.err;
