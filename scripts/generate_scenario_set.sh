@@ -11,6 +11,7 @@
 #   scripts/generate_scenario_set.sh --out DIR [--build BUILD_DIR] --set train|tune|tune-many|
 #     heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|
 #     verify|verify-many|check|check-many|vet|vet-many
+#   scripts/generate_scenario_set.sh --set S --list   # the set's file, seed, style and UAVs only
 # Seeds are fixed and the sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
 #   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
 #   base: train 10000, tune and tune-many 20000, verify and verify-many 30000, audit and
@@ -25,13 +26,14 @@
 # DIR/index.tsv lists file, seed, style, UAVs and UEs.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-set_name="" out="" build="$here/build"
-usage() { echo "usage: $0 --set train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many --out DIR [--build BUILD_DIR]" >&2; exit 2; }
+set_name="" out="" build="$here/build" list=0
+usage() { echo "usage: $0 --set train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --set) set_name=${2:-}; shift 2 || usage ;;
     --out) out=${2:-}; shift 2 || usage ;;
     --build) build=${2:-}; shift 2 || usage ;;
+    --list) list=1; shift ;;
     *) usage ;;
   esac
 done
@@ -57,6 +59,26 @@ case "$set_name" in
   vet-many) base=80000; first_uavs=2; counts=(4 4 4 4 4) ;;
   *) echo "generate_scenario_set: --set must be train, tune, tune-many, heldout, train-many, heldout-many, fresh, fresh-many, confirm, confirm-many, audit, audit-many, verify, verify-many, check, check-many, vet or vet-many" >&2; exit 2 ;;
 esac
+styles=(urban campus suburb open)
+# Each scenario of the set: file, seed, style and UAVs, tab-separated.
+each_scenario() {
+  local k s i uavs seed
+  for ((k = 0; k < ${#counts[@]}; k++)); do
+    uavs=$((first_uavs + k))
+    for s in 0 1 2 3; do
+      for ((i = 0; i < counts[k]; i++)); do
+        seed=$((base + 1000 * uavs + 100 * s + i))
+        printf '%s\t%s\t%s\t%s\n' "${styles[s]}-${uavs}uav-s$seed.json" "$seed" "${styles[s]}" "$uavs"
+      done
+    done
+  done
+}
+if [ "$list" = 1 ]; then
+  [ -z "$out" ] || usage
+  printf 'file\tseed\tstyle\tuavs\n'
+  each_scenario
+  exit 0
+fi
 [ -n "$out" ] || usage
 sim="$build/bin/rlpos-sim"
 [ -x "$sim" ] || { echo "generate_scenario_set: $sim not built (run scripts/bootstrap)" >&2; exit 1; }
@@ -68,22 +90,14 @@ mkdir -p "$(dirname "$out")"
 work=$(mktemp -d "$(dirname "$out")/.$(basename "$out").XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-styles=(urban campus suburb open)
 printf 'file\tseed\tstyle\tuavs\tues\n' > "$work/index.tsv"
-for ((k = 0; k < ${#counts[@]}; k++)); do
-  uavs=$((first_uavs + k))
-  for s in 0 1 2 3; do
-    for ((i = 0; i < counts[k]; i++)); do
-      seed=$((base + 1000 * uavs + 100 * s + i))
-      file="${styles[s]}-${uavs}uav-s$seed.json"
-      "$sim" generate --seed "$seed" --style "${styles[s]}" --uavs "$uavs" --out "$work/$file"
-      "$sim" validate "$work/$file" > /dev/null
-      ues=$(/usr/bin/python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["ues"]))' \
-        "$work/$file")
-      printf '%s\t%s\t%s\t%s\t%s\n' "$file" "$seed" "${styles[s]}" "$uavs" "$ues" >> "$work/index.tsv"
-    done
-  done
-done
+while IFS=$'\t' read -r file seed style uavs; do
+  "$sim" generate --seed "$seed" --style "$style" --uavs "$uavs" --out "$work/$file"
+  "$sim" validate "$work/$file" > /dev/null
+  ues=$(/usr/bin/python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["ues"]))' \
+    "$work/$file")
+  printf '%s\t%s\t%s\t%s\t%s\n' "$file" "$seed" "$style" "$uavs" "$ues" >> "$work/index.tsv"
+done < <(each_scenario)
 rmdir "$out" 2>/dev/null || true
 mv "$work" "$out"
 chmod 755 "$out"

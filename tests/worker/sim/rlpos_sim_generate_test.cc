@@ -119,10 +119,10 @@ TEST(RlposSimGenerate, AnUnwritableOutLeavesNothingBehind) {
   EXPECT_EQ(entries, 2u) << "only taken/ and kept.json";
 }
 
-// index.tsv of a set as rows of its columns (file, seed, style, uavs, ues), header left out.
-std::vector<std::vector<std::string>> IndexRows(const std::string& folder) {
+// Tab-separated text as rows of its cells, its header line left out.
+std::vector<std::vector<std::string>> TsvRows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
-  std::istringstream lines(ReadFile(folder + "/index.tsv"));
+  std::istringstream lines(text);
   std::string line;
   std::getline(lines, line);
   while (std::getline(lines, line)) {
@@ -136,25 +136,26 @@ std::vector<std::vector<std::string>> IndexRows(const std::string& folder) {
   return rows;
 }
 
+std::string SetScript() {
+  return std::string(RLPOS_SOURCE_DIR) + "/scripts/generate_scenario_set.sh";
+}
+
+// Every set's listing (file, seed, style, uavs): its styles and UAV counts, and no seed in two
+// sets. Listed, not generated: the same loop writes them (one set is written below).
 TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
-  TempDir dir;
-  const std::string script = std::string(RLPOS_SOURCE_DIR) + "/scripts/generate_scenario_set.sh";
-  const std::string build =
-      std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
   std::map<std::string, std::set<std::string>> seeds;
   for (const std::string set :
        {"train", "tune", "tune-many", "heldout", "train-many", "heldout-many", "fresh",
         "fresh-many", "confirm", "confirm-many", "audit", "audit-many", "verify", "verify-many",
         "check", "check-many", "vet", "vet-many"}) {
-    const auto r =
-        RunCommand(script + " --set " + set + " --out " + dir.File(set) + " --build " + build);
+    const auto r = RunCommand(SetScript() + " --set " + set + " --list");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::map<std::string, int> one_uav, more_uavs;      // per style
     std::map<std::string, std::set<std::string>> uavs;  // per style: its UAV counts
-    for (const auto& row : IndexRows(dir.File(set))) {
-      ASSERT_EQ(row.size(), 5u);
-      EXPECT_TRUE(std::filesystem::exists(dir.File(set) + "/" + row[0])) << row[0];
-      seeds[set].insert(row[1]);
+    for (const auto& row : TsvRows(r.out)) {
+      ASSERT_EQ(row.size(), 4u) << set;
+      EXPECT_EQ(row[0], row[2] + "-" + row[3] + "uav-s" + row[1] + ".json") << set;
+      EXPECT_TRUE(seeds[set].insert(row[1]).second) << set << ": seed " << row[1] << " twice";
       (row[3] == "1" ? one_uav : more_uavs)[row[2]] += 1;
       uavs[row[2]].insert(row[3]);
     }
@@ -196,11 +197,42 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
       }
     }
   }
-  // A set is never written over another.
-  const auto again =
-      RunCommand(script + " --set train --out " + dir.File("train") + " --build " + build);
-  EXPECT_EQ(again.exit_code, 2);
-  EXPECT_NE(again.err.find("exists and is not an empty folder"), std::string::npos) << again.err;
+}
+
+// A set written: the scenarios of its listing, each generated from its seed and valid, with
+// their UE counts; never written over another.
+TEST(GenerateScenarioSet, WritesTheScenariosItListsAndNeverOverAnother) {
+  TempDir dir;
+  const std::string build =
+      std::filesystem::path(BuiltBinary("rlpos-sim")).parent_path().parent_path();
+  const std::string out = dir.File("train");
+  const auto r = RunCommand(SetScript() + " --set train --out " + out + " --build " + build);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto listed = TsvRows(RunCommand(SetScript() + " --set train --list").out);
+  const auto written = TsvRows(ReadFile(out + "/index.tsv"));
+  ASSERT_EQ(written.size(), listed.size());
+  ASSERT_EQ(written.size(), 48u);
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    ASSERT_EQ(written[i].size(), 5u);
+    EXPECT_EQ(std::vector<std::string>(written[i].begin(), written[i].begin() + 4), listed[i]);
+    const std::string file = out + "/" + written[i][0];
+    const nlohmann::json doc = nlohmann::json::parse(ReadFile(file));
+    EXPECT_EQ(std::to_string(doc["ues"].size()), written[i][4]) << file;
+    // One UAV is written as "uav", several as "uavs".
+    const std::size_t uavs = doc.contains("uavs") ? doc["uavs"].size() : doc.count("uav");
+    EXPECT_EQ(std::to_string(uavs), written[i][3]) << file;
+  }
+  // The first scenario is what rlpos-sim generate makes from its seed.
+  const std::string again = dir.File("again.json");
+  ASSERT_EQ(RunCommand(Sim("generate --seed " + written[0][1] + " --style " + written[0][2] +
+                           " --uavs " + written[0][3] + " --out " + again))
+                .exit_code,
+            0);
+  EXPECT_EQ(ReadFile(again), ReadFile(out + "/" + written[0][0]));
+  const auto over = RunCommand(SetScript() + " --set train --out " + out + " --build " + build);
+  EXPECT_EQ(over.exit_code, 2);
+  EXPECT_NE(over.err.find("exists and is not an empty folder"), std::string::npos) << over.err;
+  EXPECT_EQ(RunCommand(SetScript() + " --set train --list --out " + out).exit_code, 2);
 }
 
 }  // namespace
