@@ -5,13 +5,13 @@ For every scenario of --scenarios (a set from scripts/generate_scenario_set.sh; 
 with that many UAVs, by the set's index.tsv), the policy places the UAVs with
 `rlpos-sim position --positioner rl --policy DIR` (loading the policy and flying it greedy from
 the baseline to the best step of its flight, the whole process timed), and the oracle with
-`rlpos.oracle(packet_candidates=0)` (the best point of the analytic grid search, timed). Both are scored by the analytic model.
-Beside them, the best cell of the coarse map the policy observes ("coverage", its
-env.coverage_map from the policy's scenario.json): what flying straight to the map's best would
-give, so that the policy's own part can be told from the map's. Prints one row per scenario
-(rewards, ratios to the oracle, seconds) and the summary the acceptance of a policy for any
-scenario reads: median and P10 of the ratio, the share of scenarios at or above 0.95, and the
-worst case.
+`rlpos.oracle(packet_candidates=0)` (the best point of the analytic grid search, timed). Both
+are scored by the analytic model. Beside them, the best cell of the coarse map the policy
+observes ("coverage", its env.coverage_map from the policy's scenario.json): what flying straight
+to the map's best would give, so that the policy's own part can be told from the map's. Prints
+one row per scenario (rewards, ratios to the oracle, seconds) and the summary the acceptance of a
+policy for any scenario reads: median and P10 of the ratio, the share of scenarios at or above
+0.95, and the worst case.
 
   scripts/bench_zero_shot.py --policy DIR --scenarios DIR [--uavs 1] [--build DIR] [--jobs 2]
                              [--csv FILE]
