@@ -5,29 +5,29 @@
 # everything else, kept for checking a choice after it is made, "confirm" and "confirm-many",
 # larger, for the next such check once the fresh sets have been looked at, "audit" and
 # "audit-many", the same size, for the check after that, "verify" and "verify-many" for the one
-# after audit, "check" and "check-many" for the one after verify, and "vet" and "vet-many" for
-# the one after check. Each scenario is written by rlpos-sim generate and checked by rlpos-sim
+# after audit, "check" and "check-many" for the one after verify, "vet" and "vet-many" for the
+# one after check, and "trial" and "trial-many" for the one after vet. Each scenario is written by rlpos-sim generate and checked by rlpos-sim
 # validate; the set appears whole (written beside DIR, then renamed) or not at all.
 #   scripts/generate_scenario_set.sh --out DIR [--build BUILD_DIR] --set train|tune|tune-many|
 #     heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|
-#     verify|verify-many|check|check-many|vet|vet-many
+#     verify|verify-many|check|check-many|vet|vet-many|trial|trial-many
 #   scripts/generate_scenario_set.sh --set S --list   # the set's file, seed, style and UAVs only
 # Seeds are fixed and the sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
 #   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
 #   base: train 10000, tune and tune-many 20000, verify and verify-many 30000, audit and
 #   audit-many 40000, check and check-many 50000, confirm and confirm-many 60000, fresh and
-#   fresh-many 70000, vet and vet-many 80000, heldout 90000; style: urban 0, campus 1, suburb 2,
-#   open 3.
+#   fresh-many 70000, vet and vet-many 80000, heldout 90000, trial and trial-many 100000; style:
+#   urban 0, campus 1, suburb 2, open 3.
 # Scenarios per style and UAV count: train and heldout 8, 2, 2 for 1, 2, 3 UAVs (48 each);
 # train-many and heldout-many 2, 2, 2 for 4, 5, 6 UAVs (24 each); fresh 16 with one UAV (64);
-# fresh-many 2 each for 2 to 6 UAVs (40); tune, confirm, audit, verify, check and vet 32 with one
-# UAV (128); tune-many, confirm-many, audit-many, verify-many, check-many and vet-many 4 each for
-# 2 to 6 UAVs (80).
+# fresh-many 2 each for 2 to 6 UAVs (40); tune, confirm, audit, verify, check, vet and trial 32
+# with one UAV (128); tune-many, confirm-many, audit-many, verify-many, check-many, vet-many and
+# trial-many 4 each for 2 to 6 UAVs (80).
 # DIR/index.tsv lists file, seed, style, UAVs and UEs.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 set_name="" out="" build="$here/build" list=0
-usage() { echo "usage: $0 --set train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }
+usage() { echo "usage: $0 --set train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many|trial|trial-many --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --set) set_name=${2:-}; shift 2 || usage ;;
@@ -57,7 +57,9 @@ case "$set_name" in
   check-many) base=50000; first_uavs=2; counts=(4 4 4 4 4) ;;
   vet) base=80000; first_uavs=1; counts=(32) ;;
   vet-many) base=80000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  *) echo "generate_scenario_set: --set must be train, tune, tune-many, heldout, train-many, heldout-many, fresh, fresh-many, confirm, confirm-many, audit, audit-many, verify, verify-many, check, check-many, vet or vet-many" >&2; exit 2 ;;
+  trial) base=100000; first_uavs=1; counts=(32) ;;
+  trial-many) base=100000; first_uavs=2; counts=(4 4 4 4 4) ;;
+  *) echo "generate_scenario_set: --set must be train, tune, tune-many, heldout, train-many, heldout-many, fresh, fresh-many, confirm, confirm-many, audit, audit-many, verify, verify-many, check, check-many, vet, vet-many, trial or trial-many" >&2; exit 2 ;;
 esac
 styles=(urban campus suburb open)
 # Each scenario of the set: file, seed, style and UAVs, tab-separated.
