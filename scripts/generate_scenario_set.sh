@@ -6,8 +6,9 @@
 # larger, for the next such check once the fresh sets have been looked at, "audit" and
 # "audit-many", the same size, for the check after that, "verify" and "verify-many" for the one
 # after audit, "check" and "check-many" for the one after verify, "vet" and "vet-many" for the
-# one after check, and "trial" and "trial-many" for the one after vet. Each scenario is written by rlpos-sim generate and checked by rlpos-sim
-# validate; the set appears whole (written beside DIR, then renamed) or not at all.
+# one after check, and "trial" and "trial-many" for the one after vet. Each scenario is written
+# by rlpos-sim generate and checked by rlpos-sim validate; the set appears whole (written beside
+# DIR, then renamed) or not at all.
 #   scripts/generate_scenario_set.sh --out DIR [--build BUILD_DIR] --set train|tune|tune-many|
 #     heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|
 #     verify|verify-many|check|check-many|vet|vet-many|trial|trial-many
@@ -93,11 +94,12 @@ work=$(mktemp -d "$(dirname "$out")/.$(basename "$out").XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
 printf 'file\tseed\tstyle\tuavs\tues\n' > "$work/index.tsv"
+# The loop reads the listing on stdin: the commands in it read nothing.
 while IFS=$'\t' read -r file seed style uavs; do
-  "$sim" generate --seed "$seed" --style "$style" --uavs "$uavs" --out "$work/$file"
-  "$sim" validate "$work/$file" > /dev/null
+  "$sim" generate --seed "$seed" --style "$style" --uavs "$uavs" --out "$work/$file" < /dev/null
+  "$sim" validate "$work/$file" > /dev/null < /dev/null
   ues=$(/usr/bin/python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["ues"]))' \
-    "$work/$file")
+    "$work/$file" < /dev/null)
   printf '%s\t%s\t%s\t%s\t%s\n' "$file" "$seed" "$style" "$uavs" "$ues" >> "$work/index.tsv"
 done < <(each_scenario)
 rmdir "$out" 2>/dev/null || true
