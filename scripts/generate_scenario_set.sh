@@ -28,7 +28,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 set_name="" out="" build="$here/build" list=0
-usage() { echo "usage: $0 --set train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many|trial|trial-many --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }
+set_names="train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many|trial|trial-many"
+usage() { echo "usage: $0 --set $set_names --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --set) set_name=${2:-}; shift 2 || usage ;;
@@ -60,7 +61,7 @@ case "$set_name" in
   vet-many) base=80000; first_uavs=2; counts=(4 4 4 4 4) ;;
   trial) base=100000; first_uavs=1; counts=(32) ;;
   trial-many) base=100000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  *) echo "generate_scenario_set: --set must be train, tune, tune-many, heldout, train-many, heldout-many, fresh, fresh-many, confirm, confirm-many, audit, audit-many, verify, verify-many, check, check-many, vet, vet-many, trial or trial-many" >&2; exit 2 ;;
+  *) echo "generate_scenario_set: --set must be one of ${set_names//|/, }" >&2; exit 2 ;;
 esac
 styles=(urban campus suburb open)
 # Each scenario of the set: file, seed, style and UAVs, tab-separated.
