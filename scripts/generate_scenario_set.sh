@@ -6,29 +6,31 @@
 # larger, for the next such check once the fresh sets have been looked at, "audit" and
 # "audit-many", the same size, for the check after that, "verify" and "verify-many" for the one
 # after audit, "check" and "check-many" for the one after verify, "vet" and "vet-many" for the
-# one after check, and "trial" and "trial-many" for the one after vet. Each scenario is written
-# by rlpos-sim generate and checked by rlpos-sim validate; the set appears whole (written beside
-# DIR, then renamed) or not at all.
+# one after check, "trial" and "trial-many" for the one after vet, "probe" and "probe-many" for
+# the one after trial, and "gauge" and "gauge-many" for the one after probe. Each scenario is
+# written by rlpos-sim generate and checked by rlpos-sim validate; the set appears whole (written
+# beside DIR, then renamed) or not at all.
 #   scripts/generate_scenario_set.sh --out DIR [--build BUILD_DIR] --set train|tune|tune-many|
 #     heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|
-#     verify|verify-many|check|check-many|vet|vet-many|trial|trial-many
+#     verify|verify-many|check|check-many|vet|vet-many|trial|trial-many|probe|probe-many|
+#     gauge|gauge-many
 #   scripts/generate_scenario_set.sh --set S --list   # the set's file, seed, style and UAVs only
 # Seeds are fixed and the sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
 #   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
 #   base: train 10000, tune and tune-many 20000, verify and verify-many 30000, audit and
 #   audit-many 40000, check and check-many 50000, confirm and confirm-many 60000, fresh and
-#   fresh-many 70000, vet and vet-many 80000, heldout 90000, trial and trial-many 100000; style:
-#   urban 0, campus 1, suburb 2, open 3.
+#   fresh-many 70000, vet and vet-many 80000, heldout 90000, trial and trial-many 100000, probe and
+#   probe-many 110000, gauge and gauge-many 120000; style: urban 0, campus 1, suburb 2, open 3.
 # Scenarios per style and UAV count: train and heldout 8, 2, 2 for 1, 2, 3 UAVs (48 each);
 # train-many and heldout-many 2, 2, 2 for 4, 5, 6 UAVs (24 each); fresh 16 with one UAV (64);
-# fresh-many 2 each for 2 to 6 UAVs (40); tune, confirm, audit, verify, check, vet and trial 32
-# with one UAV (128); tune-many, confirm-many, audit-many, verify-many, check-many, vet-many and
-# trial-many 4 each for 2 to 6 UAVs (80).
+# fresh-many 2 each for 2 to 6 UAVs (40); tune, confirm, audit, verify, check, vet, trial,
+# probe and gauge 32 with one UAV (128); tune-many, confirm-many, audit-many, verify-many,
+# check-many, vet-many, trial-many, probe-many and gauge-many 4 each for 2 to 6 UAVs (80).
 # DIR/index.tsv lists file, seed, style, UAVs and UEs.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 set_name="" out="" build="$here/build" list=0
-set_names="train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many|trial|trial-many"
+set_names="train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many|trial|trial-many|probe|probe-many|gauge|gauge-many"
 usage() { echo "usage: $0 --set $set_names --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -61,6 +63,10 @@ case "$set_name" in
   vet-many) base=80000; first_uavs=2; counts=(4 4 4 4 4) ;;
   trial) base=100000; first_uavs=1; counts=(32) ;;
   trial-many) base=100000; first_uavs=2; counts=(4 4 4 4 4) ;;
+  probe) base=110000; first_uavs=1; counts=(32) ;;
+  probe-many) base=110000; first_uavs=2; counts=(4 4 4 4 4) ;;
+  gauge) base=120000; first_uavs=1; counts=(32) ;;
+  gauge-many) base=120000; first_uavs=2; counts=(4 4 4 4 4) ;;
   *) echo "generate_scenario_set: --set must be one of ${set_names//|/, }" >&2; exit 2 ;;
 esac
 styles=(urban campus suburb open)

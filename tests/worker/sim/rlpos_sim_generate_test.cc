@@ -145,10 +145,10 @@ std::string SetScript() {
 TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
   std::map<std::string, std::set<std::string>> seeds;
   for (const std::string set :
-       {"train",        "tune",       "tune-many",  "heldout",     "train-many",
-        "heldout-many", "fresh",      "fresh-many", "confirm",     "confirm-many",
-        "audit",        "audit-many", "verify",     "verify-many", "check",
-        "check-many",   "vet",        "vet-many",   "trial",       "trial-many"}) {
+       {"train",  "tune",        "tune-many", "heldout",      "train-many", "heldout-many",
+        "fresh",  "fresh-many",  "confirm",   "confirm-many", "audit",      "audit-many",
+        "verify", "verify-many", "check",     "check-many",   "vet",        "vet-many",
+        "trial",  "trial-many",  "probe",     "probe-many",   "gauge",      "gauge-many"}) {
     const auto r = RunCommand(SetScript() + " --set " + set + " --list");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::map<std::string, int> one_uav, more_uavs;      // per style
