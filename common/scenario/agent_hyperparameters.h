@@ -23,6 +23,7 @@ struct AgentCommonSpec {
   bool exploring_starts = true;
   int baseline_start_every = 0;
   bool joint_steps = false;
+  bool improvement_reward = false;
   int eval_episodes = 1;
   int eval_interval = 50;
   int early_stop_checkpoints = 0;
@@ -100,6 +101,15 @@ inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() 
         "rewarded with the team's reward; training, checkpoints, the evaluation and a replay of "
         "the policy fly that way. false: the UAVs take turns, one move each. One UAV: no "
         "difference"},
+       {"improvement_reward", &AgentCommonSpec::improvement_reward, NoRange(),
+        "training across scenarios (train --generated or --scenarios; per-scenario training "
+        "refuses it): each transition is learnt with the reward's rise above the best of its "
+        "episode so far, its start state's included (0 when there is none), instead of the "
+        "reward. An episode's return is then its best reward minus its start's, what a "
+        "placement that keeps the best step of its flight gains, and a dip on the way to a "
+        "better place costs nothing (the improvement reward of learnt local search, Wu et al. "
+        "2021). Pair it with the \"best\" observation, which tells how far below that best "
+        "the state is. Validation and every reported reward are the env's"},
        {"eval_episodes", &AgentCommonSpec::eval_episodes, Integers(1, 1000000),
         "greedy evaluation episodes after training"},
        {"eval_interval", &AgentCommonSpec::eval_interval, Integers(0, 1000000),

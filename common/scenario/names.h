@@ -46,8 +46,8 @@ constexpr std::array<std::string_view, A + B> Concat(const std::array<std::strin
 // fields that mean the same in every scenario (worker/gym/general_observation.h).
 inline constexpr std::array<std::string_view, 7> kScenarioObservations{
     "x", "y", "z", "n_los", "throughput", "demands_met", "snr"};
-inline constexpr std::array<std::string_view, 6> kGeneralObservations{
-    "zone", "ues", "heights", "others", "coverage", "lookahead"};
+inline constexpr std::array<std::string_view, 7> kGeneralObservations{
+    "zone", "ues", "heights", "others", "coverage", "lookahead", "best"};
 
 // What rlpos-sim track takes for --positioner (it refuses rl and offsets, saying why).
 inline constexpr auto kTrackPositioners = Concat(kPositioners, kTrackingPositioners);

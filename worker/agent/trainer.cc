@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 
 namespace rlpos {
 
@@ -265,8 +266,23 @@ void Checkpoints::Evaluate(Env& env, Agent& agent, const AgentSpec& spec, std::u
   }
 }
 
+double LearntReward(const AgentSpec& spec, double reward, double& best) {
+  const double rise = std::max(0.0, reward - best);
+  best = std::max(best, reward);
+  return spec.improvement_reward ? rise : reward;
+}
+
+void CheckPerScenarioTraining(const AgentSpec& spec) {
+  if (spec.improvement_reward) {
+    throw std::invalid_argument(
+        "agent.improvement_reward: learnt only in training across scenarios (rlpos-sim train "
+        "--generated or --scenarios)");
+  }
+}
+
 TrainResult Train(Env& env, Agent& agent, const AgentSpec& spec, std::uint64_t seed,
                   const EpisodeCallback& on_episode, const StepCallback& on_eval_step) {
+  CheckPerScenarioTraining(spec);
   TrainResult result;
   const auto add = [&](EpisodeRecord record) {
     if (on_episode)

@@ -100,6 +100,15 @@ class Checkpoints {
   int stale_ = 0;               // checkpoints in a row that did not beat it
 };
 
+// What a training transition learns from: the env's `reward`, or with agent.improvement_reward
+// its rise above `best`, the episode's best reward so far (from its start state on), which this
+// updates. Summed over an episode, the rises are its best reward minus its start's.
+double LearntReward(const AgentSpec& spec, double reward, double& best);
+
+// Refuses (std::invalid_argument, naming the key) what only training across scenarios learns
+// with: agent.improvement_reward, which measures each step against its episode's start state.
+void CheckPerScenarioTraining(const AgentSpec& spec);
+
 // spec.train_episodes learning episodes (seeds seed, seed+1, ...), then spec.eval_episodes
 // greedy ones. With spec.eval_interval n > 0, a greedy checkpoint episode from the evaluation's
 // seed after every n-th training episode and after the last; the policy of the highest final

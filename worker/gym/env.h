@@ -24,6 +24,9 @@ struct StepInfo {
   // "coverage" (2 x env.coverage_map^2 + 3 values) and "lookahead" (one per move).
   std::vector<double> coverage;
   std::vector<double> lookahead;
+  // The episode's best reward so far (since its reset, this state included) minus the reward
+  // here: 0 at a new best (the "best" observation).
+  double below_best = 0.0;
 };
 
 struct StepResult {

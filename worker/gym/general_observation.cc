@@ -171,6 +171,8 @@ void AddGeneralBounds(const Scenario& s, std::string_view field, BoxSpace& box) 
     Add(box, -kPointerStepLimit, kPointerStepLimit, 3);
   } else if (field == "lookahead") {
     Add(box, -1.0, 1.0, s.env.actions.size());
+  } else if (field == "best") {
+    Add(box, 0.0, 1.0);
   }
 }
 
@@ -192,6 +194,8 @@ void AddGeneralObservation(const Scenario& s, const StepInfo& info, std::string_
     AddComputed(info.coverage, 2 * CoverageCells(s) + 3, "coverage", out);
   } else if (field == "lookahead") {
     AddComputed(info.lookahead, s.env.actions.size(), "lookahead", out);
+  } else if (field == "best") {
+    out.push_back(std::clamp(info.below_best * kLookaheadGain / CoverageRewardBound(s), 0.0, 1.0));
   }
 }
 

@@ -27,6 +27,11 @@
 //   "lookahead" for each of env.actions, the model's reward at the move's destination minus its
 //               reward here, times kLookaheadGain over the reward's bound, clipped to [-1, 1] (0
 //               for a move that goes nowhere).
+// And one of the episode's course, which the env keeps in StepInfo::below_best:
+//   "best"      the episode's best reward so far minus the reward here, times kLookaheadGain
+//               over the reward's bound, clipped to [0, 1]: 0 at the best of the flight, the
+//               step a placement keeps (greedy_flight.h). With agent.improvement_reward it tells
+//               the critic how far the next improvement is.
 // A scenario with more UEs than slots shows the nearest; the slots and the cells hold no
 // scenario's size, so their layout is the same in every scenario of the same env settings.
 #include <cstddef>
@@ -52,7 +57,7 @@ constexpr double kPointerStepLimit = 4.0;
 // ten coming into LoS is 0.8, not 0.08.
 constexpr double kLookaheadGain = 10.0;
 
-// True for "zone", "ues", "heights", "others", "coverage" and "lookahead".
+// True for "zone", "ues", "heights", "others", "coverage", "lookahead" and "best".
 bool IsGeneralObservation(std::string_view field);
 // Whether the field needs the env to evaluate positions other than the UAVs' own.
 bool IsLookAroundObservation(std::string_view field);

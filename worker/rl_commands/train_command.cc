@@ -233,6 +233,10 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   if (t.steps > 0)
     throw ConfigError("--steps", "is for --generated and --scenarios; give --episodes");
   const Scenario s = LoadScenarioFor(options, TrainOverrides(t));
+  if (s.agent.improvement_reward) {
+    throw ConfigError("/agent/improvement_reward",
+                      "is learnt only in training across scenarios (--generated or --scenarios)");
+  }
   const fs::path partial = CreatePartialFolder(t.out);
   try {
     const TrainResult result = TrainAndRecord(s, partial);

@@ -28,6 +28,8 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario,
   if (scenario_.env.fidelity == "analytic") {
     analytic_ = std::make_unique<AnalyticEvaluator>(scenario_, std::move(shared_memo));
   }
+  const auto& fields = scenario_.env.observations;
+  observes_best_ = std::find(fields.begin(), fields.end(), "best") != fields.end();
   look_around_ = LookAround::For(scenario_);
   if (look_around_ && !analytic_)
     look_model_ = std::make_unique<AnalyticEvaluator>(scenario_);
@@ -81,6 +83,8 @@ std::optional<DeterminingState> UavPositioningEnv::Determining() const {
     state.key.insert(state.key.end(), {DoubleBits(at.x), DoubleBits(at.y), DoubleBits(at.z)});
   const int round = scenario_.env.turn_steps * static_cast<int>(placement_.size());
   state.key.push_back(static_cast<std::uint64_t>(steps_ % round));
+  if (observes_best_)  // a placement met again, after a better one, is observed otherwise
+    state.key.push_back(DoubleBits(best_reward_));
   state.steps_left = steps_per_episode_ - steps_;
   return state;
 }
@@ -154,7 +158,14 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed, const ResetOpti
     network_->RunUntil(warmup);
   }
   Observe();
+  KeepBest(true);
   return MakeObservation(scenario_, info_);
+}
+
+void UavPositioningEnv::KeepBest(bool first) {
+  const double here = RewardOf(info_);
+  best_reward_ = first ? here : std::max(best_reward_, here);
+  info_.below_best = best_reward_ - here;
 }
 
 StepResult UavPositioningEnv::Step(int action) {
@@ -197,6 +208,7 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   }
   ++steps_;
   Observe();
+  KeepBest(false);
   StepResult result;
   result.info = info_;
   result.observation = MakeObservation(scenario_, info_);

@@ -77,6 +77,8 @@ class UavPositioningEnv : public Env {
 
  private:
   void Observe();  // info_ = the state at the current position (after the last interval)
+  // best_reward_ and info_.below_best after Observe; `first`: the episode's first state.
+  void KeepBest(bool first);
   StepResult MoveTo(const Placement& placement);          // one decision interval at `placement`
   MultiStepResult MoveAllTo(const Placement& placement);  // the same, seen by every UAV
   void CheckStepAll(std::size_t actions) const;           // one action per UAV, after a Reset
@@ -102,6 +104,8 @@ class UavPositioningEnv : public Env {
   Placement placement_;
   std::size_t active_ = 0;  // the UAV the next action moves
   StepInfo info_;
+  double best_reward_ = 0.0;    // the episode's best reward so far
+  bool observes_best_ = false;  // env.observations has "best": it determines what follows too
   int steps_ = 0;
   int steps_per_episode_ = 0;
   double wall_in_ns3_ = 0.0;

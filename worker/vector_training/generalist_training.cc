@@ -46,6 +46,7 @@ struct Lane {
   std::vector<ActionMask> masks;
   std::vector<std::vector<float>> team_states;  // with a centralised critic
   double reward = 0.0;                          // of the last step
+  double best = 0.0;                            // the episode's best reward so far
   bool terminated = false;
   bool truncated = false;
   bool running = false;
@@ -70,6 +71,7 @@ class Round {
       lane.joint = spec_.joint_steps && lane.env->AgentCount() > 1;
       const EpisodeOptions options = TrainingEpisodeOptions(spec_, static_cast<int>(episode));
       See(lane, lane.env->Reset(episode_run + episode, options.reset));
+      lane.best = lane.env->RewardOf(lane.env->LastInfo());
       lane.running = true;
       lane.steps = 0;
     });
@@ -134,6 +136,7 @@ class Round {
       for (std::size_t k = 0; k < active.size(); ++k) {
         Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
         ++lane.steps;
+        const double learnt = LearntReward(spec_, lane.reward, lane.best);
         const bool truncated = lane.truncated || (limit > 0 && lane.steps >= limit);
         const bool end = lane.terminated || truncated;
         for (std::size_t a = 0; a < lane.observations.size(); ++a) {
@@ -141,7 +144,7 @@ class Round {
           Transition& t = transitions[r];
           t.observation = std::move(batch[r]);
           t.action = actions[r];
-          t.reward = static_cast<float>(lane.reward);
+          t.reward = static_cast<float>(learnt);
           t.next_observation = lane.observations[a];
           t.terminal = lane.terminated;
           t.next_mask = lane.masks[a];

@@ -167,6 +167,7 @@ TrainResult TrainPpoBatched(const Scenario& scenario, PpoAgent& agent, std::uint
                             std::size_t threads, const EpisodeCallback& on_episode,
                             const StepCallback& on_eval_step) {
   const AgentSpec& spec = scenario.agent;
+  CheckPerScenarioTraining(spec);
   if (spec.joint_steps && scenario.uavs.size() > 1) {
     throw std::invalid_argument(
         "agent.joint_steps: several UAVs moving at once train on one env (agent.ppo.num_envs 1) "

@@ -82,6 +82,45 @@ AgentSpec Spec(int train_episodes, int eval_interval) {
   return spec;
 }
 
+// agent.improvement_reward: each step learns its rise above the episode's best so far, so the
+// episode's learnt rewards sum to its best minus its start; without it, the env's reward.
+TEST(LearntReward, TheRisesAboveTheEpisodesBestSumToItsBestMinusItsStart) {
+  AgentSpec spec = Spec(1, 0);
+  const std::vector<double> rewards = {0.4, 0.6, 0.55, 0.7, 0.7, 0.2};
+  const std::vector<double> rises = {0.0, 0.1, 0.0, 0.1, 0.0, 0.0};
+  spec.improvement_reward = true;
+  double best = 0.5;  // the start state's
+  double sum = 0.0;
+  for (std::size_t t = 0; t < rewards.size(); ++t) {
+    const double learnt = LearntReward(spec, rewards[t], best);
+    EXPECT_NEAR(learnt, rises[t], 1e-12) << "step " << t + 1;
+    sum += learnt;
+  }
+  EXPECT_DOUBLE_EQ(best, 0.7);
+  EXPECT_NEAR(sum, 0.7 - 0.5, 1e-12);
+  spec.improvement_reward = false;
+  best = 0.5;
+  for (double r : rewards)
+    EXPECT_EQ(LearntReward(spec, r, best), r);
+  EXPECT_DOUBLE_EQ(best, 0.7);  // kept either way
+}
+
+// Per-scenario training cannot measure a step against its episode's start, so it refuses the
+// key rather than learn something else under its name.
+TEST(Trainer, RefusesTheImprovementRewardPerScenario) {
+  ChainEnv env;
+  ScriptedAgent agent({});
+  AgentSpec spec = Spec(2, 0);
+  spec.improvement_reward = true;
+  try {
+    Train(env, agent, spec, 1);
+    FAIL() << "trained with agent.improvement_reward";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("agent.improvement_reward"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Trainer, WithoutCheckpointsTheLastPolicyAnswers) {
   ChainEnv env;
   ScriptedAgent agent({2});

@@ -266,6 +266,16 @@ TEST_F(TrainCommand, BadInputs) {
             std::string::npos)
       << sac_on_moves.err;
   EXPECT_FALSE(fs::exists(out_));
+  const auto improvement =
+      RunCommand(Sim("train --scenario " + kScenarioB +
+                     " --set agent.improvement_reward=true --out " + out_.string()));
+  EXPECT_EQ(improvement.exit_code, 2);
+  EXPECT_NE(improvement.err.find("/agent/improvement_reward: is learnt only in training across "
+                                 "scenarios"),
+            std::string::npos)
+      << improvement.err;
+  EXPECT_EQ(std::count(improvement.err.begin(), improvement.err.end(), '\n'), 1) << improvement.err;
+  EXPECT_FALSE(fs::exists(out_));
 }
 
 TEST(PositionCommand, BaselineAndCentroid) {

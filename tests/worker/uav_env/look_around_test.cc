@@ -317,5 +317,59 @@ TEST(LookAround, PacketLevelLooksAroundWithTheAnalyticModel) {
   EXPECT_EQ(at_packet, at_analytic);
 }
 
+// "best": the episode's best reward so far above the reward here (0 at a new best), scaled as the
+// lookahead is; observed, it is part of the state: a placement met again after a better one is
+// another moment, which it is not without the field.
+TEST(BestObservation, IsTheEpisodesBestSoFarAboveHereAndPartOfTheState) {
+  Scenario s = Observing(GeneratedUrban(1), {"best"});
+  s.env.step = 5;  // moves that stay inside the zone, so that the one back returns
+  const double bound = CoverageRewardBound(s);
+  // A move from the baseline that gains, and the move back to it (actions come in opposite
+  // pairs; a move clipped by the zone does not come back).
+  const auto at_baseline = [&](const StepInfo& info) {
+    const Vec3& p = info.positions[0];
+    const Vec3& b = s.uavs[0].initial;
+    return p.x == b.x && p.y == b.y && p.z == b.z;
+  };
+  int gain = -1;
+  double start = 0.0, gained = 0.0;
+  for (int a = 0; a < 6 && gain < 0; ++a) {
+    UavPositioningEnv probe(s);
+    probe.Reset(1);
+    start = probe.RewardOf(probe.LastInfo());
+    gained = probe.Step(a).reward;
+    if (gained > start + 1e-9 && at_baseline(probe.Step(a % 2 == 0 ? a + 1 : a - 1).info))
+      gain = a;
+  }
+  ASSERT_GE(gain, 0) << "no move from the baseline gains and comes back";
+  const int back = gain % 2 == 0 ? gain + 1 : gain - 1;
+
+  UavPositioningEnv env(s);
+  const std::vector<double> at_start = env.Reset(1);
+  ASSERT_EQ(at_start.size(), 1u);
+  EXPECT_EQ(at_start[0], 0.0);
+  const std::vector<std::uint64_t> start_key = env.Determining()->key;
+  const StepResult up = env.Step(gain);
+  EXPECT_EQ(up.observation[0], 0.0);  // a new best
+  EXPECT_DOUBLE_EQ(up.info.below_best, 0.0);
+  const StepResult down = env.Step(back);
+  EXPECT_TRUE(at_baseline(down.info));
+  EXPECT_DOUBLE_EQ(down.reward, start);
+  EXPECT_DOUBLE_EQ(down.info.below_best, gained - start);
+  EXPECT_DOUBLE_EQ(down.observation[0], std::min(1.0, kLookaheadGain * (gained - start) / bound));
+  EXPECT_GT(down.observation[0], 0.0);
+  EXPECT_NE(env.Determining()->key, start_key);
+
+  // Without the field the same placement is the same moment again.
+  Scenario without = s;
+  without.env.observations = {"lookahead"};
+  UavPositioningEnv plain(without);
+  plain.Reset(1);
+  const std::vector<std::uint64_t> plain_key = plain.Determining()->key;
+  plain.Step(gain);
+  plain.Step(back);
+  EXPECT_EQ(plain.Determining()->key, plain_key);
+}
+
 }  // namespace
 }  // namespace rlpos

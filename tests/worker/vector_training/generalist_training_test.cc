@@ -49,6 +49,8 @@ struct Team {
   int uavs = 1;                     // the draw's UAVs: 1, or 2-uavs
   bool joint = false;               // agent.joint_steps
   bool centralised_critic = false;  // agent.ppo.centralised_critic
+  bool best = false;                // the "best" observation
+  bool improvement = false;         // agent.improvement_reward
 };
 
 ScenarioDraw Draw(const Team& team = {}) {
@@ -57,6 +59,9 @@ ScenarioDraw Draw(const Team& team = {}) {
     settings.env.observations.push_back("others");
   settings.agent.joint_steps = team.joint;
   settings.agent.ppo.centralised_critic = team.centralised_critic;
+  if (team.best)
+    settings.env.observations.push_back("best");
+  settings.agent.improvement_reward = team.improvement;
   const int low = team.uavs > 1 ? 2 : 1;
   return ScenarioDraw(
       {{GeneratorStyle::kUrban, GeneratorStyle::kSuburb}, {low, team.uavs}, CountRange{4, 6}},
@@ -150,6 +155,23 @@ TEST(GeneralistTraining, JointStepsWithACentralisedCriticAreSeededAndLearnFromTh
   EXPECT_NE(own.value.size(), one.value.size());
   // Turns instead of joint steps: another policy again.
   EXPECT_NE(TrainTiny(1, 240, {3, false, true}).policy, one.policy);
+}
+
+// agent.improvement_reward (with the "best" observation): seeded on any thread count, and what is
+// learnt is not the env's reward (the same observations without it learn another policy).
+TEST(GeneralistTraining, TheImprovementRewardIsSeededAndChangesWhatIsLearnt) {
+  const Team improving{3, false, false, true, true};
+  const Trained one = TrainTiny(1, 240, improving);
+  const Trained two = TrainTiny(2, 240, improving);
+  EXPECT_EQ(one.policy, two.policy);
+  EXPECT_EQ(one.value, two.value);
+  EXPECT_EQ(one.result.best_validation, two.result.best_validation);
+  // The same observations (and network sizes) learning the env's reward: another policy.
+  Team level = improving;
+  level.improvement = false;
+  const Trained plain = TrainTiny(1, 240, level);
+  EXPECT_EQ(plain.policy.size(), one.policy.size());
+  EXPECT_NE(plain.policy, one.policy);
 }
 
 // A greedy flight in the analytic env, read off its cycle (placements, what the UEs get, the
