@@ -22,8 +22,6 @@ overrides do not reach the oracle, so they do not enter the key.
 """
 import argparse
 import concurrent.futures
-import glob
-import hashlib
 import json
 import os
 import subprocess
@@ -33,6 +31,9 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+from oracle_cache import (OracleCacheError, binding_identity, load_cache,  # noqa: E402
+                          oracle_key, save_cache)
 
 
 def seeds_of(text):
@@ -81,65 +82,6 @@ def oracle_reward(sim, scenario, algorithm):
     binding = os.path.join(os.path.dirname(os.path.dirname(sim)), "python")
     return run_json([sys.executable, "-c", ORACLE_PROGRAM, binding, scenario, algorithm,
                      space_of(algorithm)])["reward"]
-
-
-def file_digest(path, digest):
-    with open(path, "rb") as f:
-        for block in iter(lambda: f.read(1 << 20), b""):
-            digest.update(block)
-
-
-def binding_identity(sim):
-    """A digest of the Python binding the oracle runs in and of the rlpos libraries it loads."""
-    binding = glob.glob(os.path.join(os.path.dirname(os.path.dirname(sim)), "python", "rlpos",
-                                     "_rlpos*.so"))
-    if len(binding) != 1:
-        sys.exit("bench_agents: no single Python binding next to %s" % sim)
-    loaded = subprocess.run(["ldd", binding[0]], capture_output=True, text=True, check=True)
-    libraries = sorted({line.split("=>")[1].split("(")[0].strip()
-                        for line in loaded.stdout.splitlines()
-                        if "librlpos" in line and "=>" in line})
-    digest = hashlib.sha256()
-    for path in binding + libraries:
-        file_digest(path, digest)
-    return digest.hexdigest()
-
-
-def oracle_key(scenario, space, identity):
-    digest = hashlib.sha256()
-    file_digest(scenario, digest)
-    return "%s %s %s" % (digest.hexdigest(), space, identity)
-
-
-def load_cache(path):
-    """The cached rewards. Checked before any training: a bad path would otherwise surface only
-    at the first save, after the first oracle's minutes."""
-    if not path:
-        return {}
-    folder = os.path.dirname(os.path.abspath(path))
-    if not os.path.isdir(folder):
-        sys.exit("bench_agents: --oracle-cache %s: folder %s does not exist" % (path, folder))
-    if not os.path.exists(path):
-        return {}
-    try:
-        with open(path) as f:
-            cache = json.load(f)
-    except OSError as e:
-        sys.exit("bench_agents: --oracle-cache %s: %s" % (path, e.strerror))
-    except ValueError as e:
-        sys.exit("bench_agents: --oracle-cache %s: not JSON: %s" % (path, e))
-    if not isinstance(cache, dict) or not all(isinstance(v, (int, float))
-                                              for v in cache.values()):
-        sys.exit("bench_agents: --oracle-cache %s: not an object of rewards" % path)
-    return cache
-
-
-def save_cache(path, cache):
-    """Written whole beside the file, then renamed: never a half-written cache."""
-    partial = path + ".partial"
-    with open(partial, "w") as f:
-        json.dump(cache, f, indent=0, sort_keys=True)
-    os.replace(partial, path)
 
 
 def env_steps(folder):
@@ -229,8 +171,12 @@ def main():
     algorithms = args.algorithms.split(",")
     scenarios = scenario_files(args.scenarios)
     overrides = [a for o in args.set for a in ("--set", o)]
-    cache = load_cache(args.oracle_cache)
-    identity = binding_identity(sim) if args.oracle_cache else ""
+    try:
+        cache = load_cache(args.oracle_cache)
+        identity = binding_identity(os.path.dirname(os.path.dirname(sim))) \
+            if args.oracle_cache else ""
+    except OracleCacheError as e:
+        sys.exit("bench_agents: %s" % e)
 
     rows = []
     print("%-4s %-22s %4s %8s %8s %6s %5s %7s %7s" %
