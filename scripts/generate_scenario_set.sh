@@ -30,7 +30,13 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 set_name="" out="" build="$here/build" list=0
-set_names="train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|verify|verify-many|check|check-many|vet|vet-many|trial|trial-many|probe|probe-many|gauge|gauge-many"
+# The pairs of one shape: NAME, 32 one-UAV scenarios per style, and NAME-many, 4 per style for each
+# of 2 to 6 UAVs, on the pair's seed base (tune's to tune on, the others' to check choices).
+check_pairs=(confirm audit verify check vet trial probe gauge)
+declare -A pair_base=([tune]=20000 [verify]=30000 [audit]=40000 [check]=50000 [confirm]=60000
+  [vet]=80000 [trial]=100000 [probe]=110000 [gauge]=120000)
+set_names="train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many"
+for pair in "${check_pairs[@]}"; do set_names+="|$pair|$pair-many"; done
 usage() { echo "usage: $0 --set $set_names --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -44,30 +50,23 @@ done
 # counts[k]: scenarios per style with first_uavs + k UAVs.
 case "$set_name" in
   train) base=10000; first_uavs=1; counts=(8 2 2) ;;
-  tune) base=20000; first_uavs=1; counts=(32) ;;
-  tune-many) base=20000; first_uavs=2; counts=(4 4 4 4 4) ;;
   heldout) base=90000; first_uavs=1; counts=(8 2 2) ;;
   train-many) base=10000; first_uavs=4; counts=(2 2 2) ;;
   heldout-many) base=90000; first_uavs=4; counts=(2 2 2) ;;
   fresh) base=70000; first_uavs=1; counts=(16) ;;
   fresh-many) base=70000; first_uavs=2; counts=(2 2 2 2 2) ;;
-  confirm) base=60000; first_uavs=1; counts=(32) ;;
-  confirm-many) base=60000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  audit) base=40000; first_uavs=1; counts=(32) ;;
-  audit-many) base=40000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  verify) base=30000; first_uavs=1; counts=(32) ;;
-  verify-many) base=30000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  check) base=50000; first_uavs=1; counts=(32) ;;
-  check-many) base=50000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  vet) base=80000; first_uavs=1; counts=(32) ;;
-  vet-many) base=80000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  trial) base=100000; first_uavs=1; counts=(32) ;;
-  trial-many) base=100000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  probe) base=110000; first_uavs=1; counts=(32) ;;
-  probe-many) base=110000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  gauge) base=120000; first_uavs=1; counts=(32) ;;
-  gauge-many) base=120000; first_uavs=2; counts=(4 4 4 4 4) ;;
-  *) echo "generate_scenario_set: --set must be one of ${set_names//|/, }" >&2; exit 2 ;;
+  *)
+    pair=${set_name%-many}
+    if [ -z "$pair" ] || [ -z "${pair_base[$pair]:-}" ]; then
+      echo "generate_scenario_set: --set must be one of ${set_names//|/, }" >&2
+      exit 2
+    fi
+    base=${pair_base[$pair]}
+    if [ "$pair" = "$set_name" ]; then
+      first_uavs=1; counts=(32)
+    else
+      first_uavs=2; counts=(4 4 4 4 4)
+    fi ;;
 esac
 styles=(urban campus suburb open)
 # Each scenario of the set: file, seed, style and UAVs, tab-separated.

@@ -162,10 +162,11 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed, const ResetOpti
   return MakeObservation(scenario_, info_);
 }
 
-void UavPositioningEnv::KeepBest(bool first) {
+double UavPositioningEnv::KeepBest(bool first) {
   const double here = RewardOf(info_);
   best_reward_ = first ? here : std::max(best_reward_, here);
   info_.below_best = best_reward_ - here;
+  return here;
 }
 
 StepResult UavPositioningEnv::Step(int action) {
@@ -208,11 +209,10 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   }
   ++steps_;
   Observe();
-  KeepBest(false);
   StepResult result;
+  result.reward = KeepBest(false);
   result.info = info_;
   result.observation = MakeObservation(scenario_, info_);
-  result.reward = RewardOf(info_);
   result.truncated = steps_ >= steps_per_episode_;
   return result;
 }

@@ -78,7 +78,8 @@ class UavPositioningEnv : public Env {
  private:
   void Observe();  // info_ = the state at the current position (after the last interval)
   // best_reward_ and info_.below_best after Observe; `first`: the episode's first state.
-  void KeepBest(bool first);
+  // Returns the reward here.
+  double KeepBest(bool first);
   StepResult MoveTo(const Placement& placement);          // one decision interval at `placement`
   MultiStepResult MoveAllTo(const Placement& placement);  // the same, seen by every UAV
   void CheckStepAll(std::size_t actions) const;           // one action per UAV, after a Reset
