@@ -7,34 +7,37 @@
 # "audit-many", the same size, for the check after that, "verify" and "verify-many" for the one
 # after audit, "check" and "check-many" for the one after verify, "vet" and "vet-many" for the
 # one after check, "trial" and "trial-many" for the one after vet, "probe" and "probe-many" for
-# the one after trial, and "gauge" and "gauge-many" for the one after probe. Each scenario is
-# written by rlpos-sim generate and checked by rlpos-sim validate; the set appears whole (written
-# beside DIR, then renamed) or not at all.
+# the one after trial, "gauge" and "gauge-many" for the one after probe, and "assay" and
+# "assay-many" for the one after gauge. Each scenario is written by rlpos-sim generate and
+# checked by rlpos-sim validate; the set appears whole (written beside DIR, then renamed) or not
+# at all.
 #   scripts/generate_scenario_set.sh --out DIR [--build BUILD_DIR] --set train|tune|tune-many|
 #     heldout|train-many|heldout-many|fresh|fresh-many|confirm|confirm-many|audit|audit-many|
 #     verify|verify-many|check|check-many|vet|vet-many|trial|trial-many|probe|probe-many|
-#     gauge|gauge-many
+#     gauge|gauge-many|assay|assay-many
 #   scripts/generate_scenario_set.sh --set S --list   # the set's file, seed, style and UAVs only
 # Seeds are fixed and the sets' ranges are disjoint (docs/scenarios.md, Generated scenarios):
 #   seed = base + 1000 * uavs + 100 * style + i, i = 0, 1, ...
 #   base: train 10000, tune and tune-many 20000, verify and verify-many 30000, audit and
 #   audit-many 40000, check and check-many 50000, confirm and confirm-many 60000, fresh and
 #   fresh-many 70000, vet and vet-many 80000, heldout 90000, trial and trial-many 100000, probe and
-#   probe-many 110000, gauge and gauge-many 120000; style: urban 0, campus 1, suburb 2, open 3.
+#   probe-many 110000, gauge and gauge-many 120000, assay and assay-many 130000; style: urban 0, campus 1, suburb 2, open 3.
 # Scenarios per style and UAV count: train and heldout 8, 2, 2 for 1, 2, 3 UAVs (48 each);
 # train-many and heldout-many 2, 2, 2 for 4, 5, 6 UAVs (24 each); fresh 16 with one UAV (64);
 # fresh-many 2 each for 2 to 6 UAVs (40); tune, confirm, audit, verify, check, vet, trial,
-# probe and gauge 32 with one UAV (128); tune-many, confirm-many, audit-many, verify-many,
-# check-many, vet-many, trial-many, probe-many and gauge-many 4 each for 2 to 6 UAVs (80).
+# probe, gauge and assay 32 with one UAV (128); tune-many, confirm-many, audit-many, verify-many,
+# check-many, vet-many, trial-many, probe-many, gauge-many and assay-many 4 each for 2 to 6 UAVs
+# (80).
 # DIR/index.tsv lists file, seed, style, UAVs and UEs.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 set_name="" out="" build="$here/build" list=0
 # The pairs of one shape: NAME, 32 one-UAV scenarios per style, and NAME-many, 4 per style for each
 # of 2 to 6 UAVs, on the pair's seed base (tune's to tune on, the others' to check choices).
-check_pairs=(confirm audit verify check vet trial probe gauge)
+check_pairs=(confirm audit verify check vet trial probe gauge assay)
 declare -A pair_base=([tune]=20000 [verify]=30000 [audit]=40000 [check]=50000 [confirm]=60000
-  [vet]=80000 [trial]=100000 [probe]=110000 [gauge]=120000)
+  [vet]=80000 [trial]=100000 [probe]=110000 [gauge]=120000
+  [assay]=130000)
 set_names="train|tune|tune-many|heldout|train-many|heldout-many|fresh|fresh-many"
 for pair in "${check_pairs[@]}"; do set_names+="|$pair|$pair-many"; done
 usage() { echo "usage: $0 --set $set_names --out DIR [--build BUILD_DIR] | --list" >&2; exit 2; }

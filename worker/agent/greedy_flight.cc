@@ -135,4 +135,35 @@ GreedyFlight FlyGreedyToBest(Env& env, Agent& agent, std::uint64_t seed,
   }
 }
 
+GreedyFlight FlyGreedyFromStarts(Env& env, Agent& agent, std::uint64_t seed,
+                                 const EpisodeOptions& options, int patience_steps, int flights,
+                                 int step_budget) {
+  if (flights < 1)
+    throw std::invalid_argument("a placement needs at least one flight, not " +
+                                std::to_string(flights));
+  GreedyFlight best = FlyGreedyToBest(env, agent, seed, options, patience_steps);
+  int steps = best.steps;
+  for (int k = 1; k < flights && steps < step_budget; ++k) {
+    EpisodeOptions drawn = options;
+    drawn.reset.random_start = true;
+    const int left = step_budget - steps;
+    drawn.max_steps = options.max_steps > 0 ? std::min(options.max_steps, left) : left;
+    const GreedyFlight flight =
+        FlyGreedyToBest(env, agent, seed + static_cast<std::uint64_t>(k), drawn, patience_steps);
+    steps += flight.steps;
+    if (flight.final_reward > best.final_reward)
+      best = flight;
+  }
+  best.steps = best.steps_flown = steps;
+  return best;
+}
+
+GreedyFlight FlyGeneralPlacement(Env& env, Agent& agent, std::uint64_t seed,
+                                 const EpisodeOptions& options) {
+  if (env.AgentCount() < 2)
+    return FlyGreedyToBest(env, agent, seed, options, kGeneralPatienceSteps);
+  return FlyGreedyFromStarts(env, agent, seed, options, kGeneralPatienceSteps,
+                             kGeneralPlacementFlights, kGeneralPlacementStepBudget);
+}
+
 }  // namespace rlpos

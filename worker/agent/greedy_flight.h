@@ -35,10 +35,35 @@ GreedyFlight FlyGreedy(Env& env, Agent& agent, std::uint64_t seed, const Episode
 GreedyFlight FlyGreedyToBest(Env& env, Agent& agent, std::uint64_t seed,
                              const EpisodeOptions& options, int patience_steps);
 
+// The best of up to `flights` FlyGreedyToBest flights of one greedy policy: the first from the
+// usual start (options.reset), flight k (k = 1, 2, ...) from a start drawn from seed + k
+// (ResetOptions::random_start), flown only while fewer than `step_budget` steps have been flown
+// and cut at the steps left. The cost of a placement is then at most the first flight's or the
+// budget, whichever is more. final_info, final_reward and best_step are the best flight's (the
+// first of equals); steps and steps_flown count every flight's steps. Throws
+// std::invalid_argument for flights < 1.
+GreedyFlight FlyGreedyFromStarts(Env& env, Agent& agent, std::uint64_t seed,
+                                 const EpisodeOptions& options, int patience_steps, int flights,
+                                 int step_budget);
+
 // The patience of a policy for any scenario's flight (its placement, each decision of a
 // tracking run, its validation in training), chosen on scripts/generate_scenario_set.sh's
 // tune-many and tune sets (docs/rl.md, The best of the flight): long enough for one UAV's way
 // round a building, in which the reward may not rise.
 constexpr int kGeneralPatienceSteps = 60;
+
+// The flights of a placement of several UAVs by a policy for any scenario, and the steps they may
+// take together, chosen on tune-many (docs/rl.md, Several flights for several UAVs). One flight
+// from the baseline leaves UAVs that started together moving together, or one stopped before a
+// dip; flights from other starts find what it misses, within a cost of a few hundred steps.
+constexpr int kGeneralPlacementFlights = 8;
+constexpr int kGeneralPlacementStepBudget = 200;
+
+// Where a policy for any scenario places its UAVs (`position`, a campaign's named policy): one
+// UAV at the best step of its flight from the baseline (FlyGreedyToBest); several at the best of
+// FlyGreedyFromStarts' flights, kGeneralPlacementFlights and kGeneralPlacementStepBudget. Both
+// with kGeneralPatienceSteps.
+GreedyFlight FlyGeneralPlacement(Env& env, Agent& agent, std::uint64_t seed,
+                                 const EpisodeOptions& options);
 
 }  // namespace rlpos

@@ -61,8 +61,8 @@ std::shared_ptr<PpoGreedyPolicy> LoadedPolicy(const PolicyFolder& folder, const 
 Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options) {
   UavPositioningEnv env(GeneralTarget(folder, options));
   const std::shared_ptr<PpoGreedyPolicy> policy = LoadedPolicy(folder, env);
-  return FlyGreedyToBest(env, *policy, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent),
-                         kGeneralPatienceSteps)
+  return FlyGeneralPlacement(env, *policy, folder.eval_run,
+                             GreedyEpisodeOptions(folder.trained.agent))
       .final_info.positions;
 }
 

@@ -26,8 +26,9 @@ Scenario GeneralTarget(const PolicyFolder& folder, const CommonOptions& options,
 // rlpos-sim train --generated or --scenarios makes).
 bool FliesWithoutLibtorch(const PolicyFolder& folder);
 
-// The greedy flight from the baseline of the policy in folder.dir, in GeneralTarget's scenario:
-// the best placement it reaches (FlyGreedyToBest, kGeneralPatienceSteps).
+// The greedy flights of the policy in folder.dir in GeneralTarget's scenario: the best placement
+// they reach (FlyGeneralPlacement: one flight from the baseline for one UAV, several from
+// several starts for several UAVs).
 // std::invalid_argument unless FliesWithoutLibtorch(folder); a policy.pt that is missing, damaged
 // or of another shape: std::runtime_error naming it.
 Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& options);
@@ -35,7 +36,8 @@ Placement GeneralPlacement(const PolicyFolder& folder, const CommonOptions& opti
 // A run whose UEs move (rlpos-sim track) asks `agent` (a general policy, loaded) at each
 // decision: a greedy flight of the policy's episode in `target` (GeneralTarget's, with
 // run_decides_interval) as it is at that moment, from where the UAVs are, with RngRun `run`; the
-// best placement it reaches, as GeneralPlacement's.
+// best placement it reaches (FlyGreedyToBest: one flight, so that the UAVs follow their UEs from
+// where they are, even with several).
 TrackDecision TrackWith(const Scenario& target, std::shared_ptr<Agent> agent, std::uint64_t run);
 
 // TrackWith with the policy in folder.dir flown without libtorch; the errors of GeneralPlacement.

@@ -39,8 +39,8 @@ Placement PolicyPlacement(const CommonOptions& options, const std::string& polic
     UavPositioningEnv env(GeneralTarget(folder, options));
     const std::unique_ptr<Agent> agent = MakeAgent(folder.trained.agent, env);
     agent->Load(policy);
-    return FlyGreedyToBest(env, *agent, folder.eval_run, GreedyEpisodeOptions(folder.trained.agent),
-                           kGeneralPatienceSteps)
+    return FlyGeneralPlacement(env, *agent, folder.eval_run,
+                               GreedyEpisodeOptions(folder.trained.agent))
         .final_info.positions;
   }
   RefuseContradiction(folder, options);

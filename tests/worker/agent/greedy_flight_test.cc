@@ -17,8 +17,11 @@ namespace {
 // (state / 10) and the info (position x and n_los). Only the time limit ends an episode.
 class JumpEnv : public Env {
  public:
-  JumpEnv(int states, int episode_steps, bool tells_state)
-      : states_(states), episode_steps_(episode_steps), tells_state_(tells_state) {}
+  JumpEnv(int states, int episode_steps, bool tells_state, std::size_t agents = 1)
+      : states_(states),
+        episode_steps_(episode_steps),
+        tells_state_(tells_state),
+        agents_(agents) {}
   DiscreteSpace ActionSpace() const override { return {states_}; }
   BoxSpace ObservationSpace() const override {
     const double inf = std::numeric_limits<double>::infinity();
@@ -30,9 +33,21 @@ class JumpEnv : public Env {
     Observe();
     return {0.0};
   }
+  // A drawn start: state seed mod states.
+  std::vector<double> Reset(std::uint64_t seed, const ResetOptions& options) override {
+    Reset(seed);
+    if (options.random_start) {
+      state_ = static_cast<int>(seed % static_cast<std::uint64_t>(states_));
+      Observe();
+    }
+    ++resets_;
+    return {static_cast<double>(state_)};
+  }
+  std::size_t AgentCount() const override { return agents_; }
   StepResult Step(int action) override {
     state_ = action;
     ++steps_;
+    ++all_steps_;
     Observe();
     StepResult r;
     r.observation = {static_cast<double>(state_)};
@@ -48,6 +63,8 @@ class JumpEnv : public Env {
     return DeterminingState{{static_cast<std::uint64_t>(state_)}, episode_steps_ - steps_};
   }
   int steps() const { return steps_; }
+  int resets() const { return resets_; }
+  int all_steps() const { return all_steps_; }  // since it was made
 
  private:
   void Observe() {
@@ -57,6 +74,9 @@ class JumpEnv : public Env {
   int states_;
   int episode_steps_;
   bool tells_state_;
+  std::size_t agents_;
+  int resets_ = 0;
+  int all_steps_ = 0;
   int state_ = 0;
   int steps_ = 0;
   StepInfo info_;
@@ -187,6 +207,69 @@ TEST(GreedyFlightToBest, KeepsTheFirstOfEqualRewards) {
   EXPECT_EQ(flight.best_step, 1);
   EXPECT_EQ(flight.steps_flown, 4);
   EXPECT_EQ(flight.final_info.n_los, 2);
+}
+
+// From the baseline (state 0) the flight settles at 1; from the start seed 2 draws (state 2) it
+// settles at 4, from seed 3's (state 3) at 6: two steps, one move and the state met again. From
+// states 4 to 7 it stays, one step.
+const std::vector<int> kStartDecides = {1, 1, 4, 6, 4, 5, 6, 7};
+
+GreedyFlight FromStarts(int flights, int budget) {
+  JumpEnv env(8, 100, true);
+  TableAgent agent(kStartDecides);
+  const GreedyFlight flight = FlyGreedyFromStarts(env, agent, 1, {}, 0, flights, budget);
+  EXPECT_EQ(env.all_steps(), flight.steps_flown);  // every flight's steps
+  return flight;
+}
+
+TEST(GreedyFlightFromStarts, OneFlightIsTheFlightFromTheBaseline) {
+  const GreedyFlight one = FromStarts(1, 1000);
+  EXPECT_EQ(one.steps_flown, 2);
+  EXPECT_EQ(one.final_info.n_los, 1);
+  EXPECT_DOUBLE_EQ(one.final_reward, 0.1);
+}
+
+TEST(GreedyFlightFromStarts, KeepsTheBestFlightOfTheStartsDrawnFromTheSeedsAfterItsOwn) {
+  const GreedyFlight two = FromStarts(2, 1000);
+  EXPECT_EQ(two.final_info.n_los, 4);  // seed 1 + 1
+  EXPECT_EQ(two.steps_flown, 4);
+  const GreedyFlight three = FromStarts(3, 1000);
+  EXPECT_EQ(three.final_info.n_los, 6);  // seed 1 + 2
+  EXPECT_DOUBLE_EQ(three.final_reward, 0.6);
+  EXPECT_EQ(three.best_step, 1);
+  EXPECT_EQ(three.steps_flown, 6);
+  // States 4 and 5 settle where they start: no better than 6, so 6 stays the placement.
+  EXPECT_EQ(FromStarts(5, 1000).final_info.n_los, 6);
+}
+
+TEST(GreedyFlightFromStarts, StartsNoFlightOnceTheBudgetIsSpentAndCutsTheLastAtIt) {
+  // The first flight is flown whatever the budget.
+  EXPECT_EQ(FromStarts(8, 1).steps_flown, 2);
+  EXPECT_EQ(FromStarts(8, 2).final_info.n_los, 1);
+  // Three steps: the second flight is cut after its first, which already reaches 4.
+  const GreedyFlight three = FromStarts(8, 3);
+  EXPECT_EQ(three.steps_flown, 3);
+  EXPECT_EQ(three.final_info.n_los, 4);
+  EXPECT_EQ(FromStarts(8, 5).final_info.n_los, 6);
+  EXPECT_EQ(FromStarts(8, 5).steps_flown, 5);
+}
+
+TEST(GreedyFlightFromStarts, RefusesAPlacementOfNoFlight) {
+  JumpEnv env(8, 100, true);
+  TableAgent agent(kStartDecides);
+  EXPECT_THROW(FlyGreedyFromStarts(env, agent, 1, {}, 0, 0, 1000), std::invalid_argument);
+}
+
+TEST(GeneralPlacementFlight, OneUavFliesOnceFromTheBaselineSeveralFromSeveralStarts) {
+  JumpEnv one(8, 100, true, 1);
+  TableAgent agent(kStartDecides);
+  const GreedyFlight alone = FlyGeneralPlacement(one, agent, 1, {});
+  EXPECT_EQ(one.resets(), 1);
+  EXPECT_EQ(alone.final_info.n_los, 1);
+  JumpEnv two(8, 100, true, 2);
+  const GreedyFlight several = FlyGeneralPlacement(two, agent, 1, {});
+  EXPECT_EQ(two.resets(), kGeneralPlacementFlights);
+  EXPECT_EQ(several.final_info.n_los, 7);  // state 7 is drawn by seed 7 = 1 + 6
 }
 
 }  // namespace

@@ -148,7 +148,8 @@ TEST(GenerateScenarioSet, TheSetsAreDisjointAndCoverTheStyles) {
        {"train",  "tune",        "tune-many", "heldout",      "train-many", "heldout-many",
         "fresh",  "fresh-many",  "confirm",   "confirm-many", "audit",      "audit-many",
         "verify", "verify-many", "check",     "check-many",   "vet",        "vet-many",
-        "trial",  "trial-many",  "probe",     "probe-many",   "gauge",      "gauge-many"}) {
+        "trial",  "trial-many",  "probe",     "probe-many",   "gauge",      "gauge-many",
+        "assay",  "assay-many"}) {
     const auto r = RunCommand(SetScript() + " --set " + set + " --list");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::map<std::string, int> one_uav, more_uavs;      // per style
