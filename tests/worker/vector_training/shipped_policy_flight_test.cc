@@ -101,48 +101,58 @@ void ExpectPlacedAt(const Placement& placed, const GreedyFlight& flight) {
   }
 }
 
+// generalist-multi's placement in a generated scenario, and the env and greedy policy that fly
+// its flights again by hand.
+struct MultiPlacement {
+  MultiPlacement(GeneratorStyle style, int uavs, std::uint64_t seed)
+      : folder(sim::ReadPolicyFolder(std::string(RLPOS_SOURCE_DIR) + "/policies/generalist-multi")),
+        placed(PlaceGenerated(folder, style, uavs, seed)),
+        env(placed.scenario),
+        greedy(placed.scenario.agent, static_cast<int>(env.ObservationSpace().Dim()),
+               env.ActionSpace().n, env.UeSlots()),
+        episode(GreedyEpisodeOptions(placed.scenario.agent)) {
+    greedy.Load(folder.dir);
+  }
+  GreedyFlight FromTheBaseline() {
+    return FlyGreedyToBest(env, greedy, folder.eval_run, episode, kGeneralPatienceSteps);
+  }
+  GreedyFlight PlacementFlights() {
+    return FlyGeneralPlacement(env, greedy, folder.eval_run, episode);
+  }
+
+  sim::PolicyFolder folder;
+  PlacedScenario placed;
+  UavPositioningEnv env;
+  PpoGreedyPolicy greedy;
+  EpisodeOptions episode;
+};
+
 TEST(ShippedPolicyFlight, APlacementIsTheBestStepOfTheFlightNotItsLast) {
   // Six UAVs (verify-many's campus-6uav-s36101): the flight wanders after its best for hundreds
   // of steps before a state repeats, and ends lower.
-  const std::string dir = std::string(RLPOS_SOURCE_DIR) + "/policies/generalist-multi";
-  const sim::PolicyFolder folder = sim::ReadPolicyFolder(dir);
-  const PlacedScenario p = PlaceGenerated(folder, GeneratorStyle::kCampus, 6, 36101);
-  UavPositioningEnv env(p.scenario);
-  const int dim = static_cast<int>(env.ObservationSpace().Dim());
-  PpoGreedyPolicy greedy(p.scenario.agent, dim, env.ActionSpace().n, env.UeSlots());
-  greedy.Load(dir);
-  const EpisodeOptions episode = GreedyEpisodeOptions(p.scenario.agent);
-  const GreedyFlight last = FlyGreedy(env, greedy, folder.eval_run, episode);
-  const GreedyFlight best =
-      FlyGreedyToBest(env, greedy, folder.eval_run, episode, kGeneralPatienceSteps);
+  MultiPlacement m(GeneratorStyle::kCampus, 6, 36101);
+  const GreedyFlight last = FlyGreedy(m.env, m.greedy, m.folder.eval_run, m.episode);
+  const GreedyFlight best = m.FromTheBaseline();
   EXPECT_GT(best.final_reward, last.final_reward);
   EXPECT_LT(best.steps_flown, last.steps_flown);
   // The placement's first flight is that one; it keeps the best of it and of the others.
-  const GreedyFlight placement = FlyGeneralPlacement(env, greedy, folder.eval_run, episode);
+  const GreedyFlight placement = m.PlacementFlights();
   EXPECT_GE(placement.final_reward, best.final_reward);
-  ExpectPlacedAt(p.placed, placement);
+  ExpectPlacedAt(m.placed.placed, placement);
 }
 
 TEST(ShippedPolicyFlight, SeveralUavsArePlacedAtTheBestOfFlightsFromSeveralStarts) {
   // Two UAVs (probe-many's urban-2uav-s112001): from the baseline the policy stops short, with
   // 10 of 14 UEs in LoS; a flight from another start does better.
-  const std::string dir = std::string(RLPOS_SOURCE_DIR) + "/policies/generalist-multi";
-  const sim::PolicyFolder folder = sim::ReadPolicyFolder(dir);
-  const PlacedScenario p = PlaceGenerated(folder, GeneratorStyle::kUrban, 2, 112001);
-  UavPositioningEnv env(p.scenario);
-  const int dim = static_cast<int>(env.ObservationSpace().Dim());
-  PpoGreedyPolicy greedy(p.scenario.agent, dim, env.ActionSpace().n, env.UeSlots());
-  greedy.Load(dir);
-  const EpisodeOptions episode = GreedyEpisodeOptions(p.scenario.agent);
-  const GreedyFlight from_baseline =
-      FlyGreedyToBest(env, greedy, folder.eval_run, episode, kGeneralPatienceSteps);
-  const GreedyFlight placement = FlyGeneralPlacement(env, greedy, folder.eval_run, episode);
+  MultiPlacement m(GeneratorStyle::kUrban, 2, 112001);
+  const GreedyFlight from_baseline = m.FromTheBaseline();
+  const GreedyFlight placement = m.PlacementFlights();
   EXPECT_GT(placement.final_reward, from_baseline.final_reward);
   EXPECT_GT(placement.final_info.n_los, from_baseline.final_info.n_los);
   EXPECT_GT(placement.steps_flown, from_baseline.steps_flown);
   EXPECT_LE(placement.steps_flown,
             std::max(from_baseline.steps_flown, kGeneralPlacementStepBudget));
-  ExpectPlacedAt(p.placed, placement);
+  ExpectPlacedAt(m.placed.placed, placement);
 }
 
 }  // namespace
