@@ -21,7 +21,8 @@
 #   base: train 10000, tune and tune-many 20000, verify and verify-many 30000, audit and
 #   audit-many 40000, check and check-many 50000, confirm and confirm-many 60000, fresh and
 #   fresh-many 70000, vet and vet-many 80000, heldout 90000, trial and trial-many 100000, probe and
-#   probe-many 110000, gauge and gauge-many 120000, assay and assay-many 130000; style: urban 0, campus 1, suburb 2, open 3.
+#   probe-many 110000, gauge and gauge-many 120000, assay and assay-many 130000; style: urban 0,
+#   campus 1, suburb 2, open 3.
 # Scenarios per style and UAV count: train and heldout 8, 2, 2 for 1, 2, 3 UAVs (48 each);
 # train-many and heldout-many 2, 2, 2 for 4, 5, 6 UAVs (24 each); fresh 16 with one UAV (64);
 # fresh-many 2 each for 2 to 6 UAVs (40); tune, confirm, audit, verify, check, vet, trial,
