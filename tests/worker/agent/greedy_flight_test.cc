@@ -1,7 +1,9 @@
 // FlyGreedy reads a greedy episode's end off its cycle: the same end as flying it all, for every
 // shape of path (lead-in, period, the episode's length), and the whole flight where the env
 // cannot tell its state. FlyGreedyToBest keeps the best step of the same flight and stops when
-// patience, a state met again, a step limit or the episode says so.
+// patience, a state met again, a step limit or the episode says so. FlyGreedyFromStarts keeps the
+// best of such flights from seeded starts within a step budget; FlyGeneralPlacement flies one
+// for one UAV and several for several.
 #include "worker/agent/greedy_flight.h"
 
 #include <gtest/gtest.h>
