@@ -133,10 +133,16 @@ ApiResponse ErrorResponse(int status, const std::string& message) {
   return response;
 }
 
+ApiResponse MethodNotAllowed() {
+  ApiResponse response = ErrorResponse(405, "only GET and HEAD are served");
+  response.headers.push_back({"Allow", "GET, HEAD"});  // what a 405 must name (RFC 9110)
+  return response;
+}
+
 ApiResponse Respond(const HttpRequestView& request, const ServeContext& context) {
   try {
     if (request.method != "GET" && request.method != "HEAD")
-      throw ApiError(405, "only GET is served");
+      return MethodNotAllowed();
     RequireAccess(request, context);
     const ApiRequest parsed = ParseApiRequest(request.path, request.query);
     if (parsed.endpoint == Endpoint::kPage)

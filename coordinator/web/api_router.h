@@ -37,4 +37,7 @@ ApiResponse Respond(const HttpRequestView& request, const ServeContext& context)
 // {"error": "<message>"} on one line, with the status.
 ApiResponse ErrorResponse(int status, const std::string& message);
 
+// 405 with its Allow header: the answer to any method but GET and HEAD.
+ApiResponse MethodNotAllowed();
+
 }  // namespace rlpos::web

@@ -9,6 +9,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -50,6 +51,21 @@ bool WaitFor(int fd, short events, Clock::time_point deadline) {
       return false;
     if (ready < 0 && errno != EINTR)
       return false;
+  }
+}
+
+// Reads and drops what the client still sends (a body refused unread, say a 405's), for half a
+// second at most, before the socket is closed: closing with unread bytes resets the connection,
+// which may destroy the answer before the client has read it.
+void DrainBeforeClose(int fd) {
+  const Clock::time_point deadline = After(0.5);
+  char buffer[4096];
+  std::size_t drained = 0;
+  while (drained < (1u << 20) && WaitFor(fd, POLLIN, deadline)) {
+    const ssize_t n = recv(fd, buffer, sizeof buffer, MSG_DONTWAIT);
+    if (n <= 0)
+      return;  // the client's end, or an error
+    drained += static_cast<std::size_t>(n);
   }
 }
 
@@ -135,8 +151,14 @@ class RequestProcessor : public httplib::Server {
  public:
   bool Process(httplib::Stream& stream) {
     bool closed = false;
-    return process_request(stream, true, closed, nullptr);
+    // A Range request is answered whole, with 200 (RFC 9110 lets a server ignore Range): httplib
+    // would send the range of a file under our status 200, and a range past its end on trust.
+    return process_request(stream, true, closed, [](httplib::Request& req) { req.ranges.clear(); });
   }
+  // httplib writes a streamed body (a content provider's: the artifacts) only while its
+  // listening socket is valid, and stops at once when it is not: it never listens here (we
+  // accept the connections ourselves), so it is told of our socket, and of the server's stop.
+  void SetListening(int fd) { svr_sock_ = fd; }
 };
 
 namespace {
@@ -173,13 +195,33 @@ std::string SafeFileName(const std::string& name) {
   return out.empty() ? "artifact" : out;
 }
 
+// A method name as a request line has it ("FOO"), which httplib refuses as malformed when it
+// does not know it.
+bool IsMethodName(const std::string& method) {
+  return !method.empty() && method.size() <= 20 &&
+         std::all_of(method.begin(), method.end(), [](char c) { return c >= 'A' && c <= 'Z'; });
+}
+
+void CopyAnswer(const ApiResponse& answer, httplib::Response& res) {
+  res.status = answer.status;
+  for (const auto& [name, value] : answer.headers)
+    res.set_header(name, value);
+  res.set_content(answer.body, answer.content_type);
+}
+
 void SendFile(const ApiResponse& answer, httplib::Response& res) {
   auto in = std::make_shared<std::ifstream>(answer.file, std::ios::binary);
   in->seekg(0, std::ios::end);
-  const auto size = static_cast<std::size_t>(in->tellg());
+  const std::streamoff end = in->tellg();
+  if (!*in || end < 0) {  // gone since it was resolved
+    CopyAnswer(ErrorResponse(404, "the artifact's file cannot be read"), res);
+    return;
+  }
+  const auto size = static_cast<std::size_t>(end);
   in->seekg(0);
   res.set_header("Content-Disposition",
                  "attachment; filename=\"" + SafeFileName(answer.download_name) + "\"");
+  res.set_header("Accept-Ranges", "none");  // Process answers a range whole
   res.set_content_provider(size, answer.content_type,
                            [in](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
                              char chunk[16384];
@@ -217,20 +259,27 @@ struct HttpServer::Impl {
     view.authorization = req.get_header_value("Authorization");
     view.host = req.get_header_value("Host");
     const ApiResponse answer = Respond(view, context);
+    if (answer.file.empty()) {
+      CopyAnswer(answer, res);
+      return;
+    }
     res.status = answer.status;
     for (const auto& [name, value] : answer.headers)
       res.set_header(name, value);
-    if (!answer.file.empty())
-      SendFile(answer, res);
-    else
-      res.set_content(answer.body, answer.content_type);
+    SendFile(answer, res);
   }
 
   // httplib's own refusals (a malformed request line, an oversize header or body) get the
-  // page's one-line JSON error too.
-  void FillError(httplib::Response& res) {
+  // page's one-line JSON error too. A well-formed request line of a method httplib does not
+  // know ("FOO / HTTP/1.1") is refused as every method but GET and HEAD is: 405.
+  void FillError(const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty())
       return;
+    if (res.status == 400 && !req.version.empty() && IsMethodName(req.method) &&
+        req.method != "GET" && req.method != "HEAD") {
+      CopyAnswer(MethodNotAllowed(), res);
+      return;
+    }
     const ApiResponse answer = ErrorResponse(res.status, ReasonOf(res.status));
     res.set_content(answer.body, answer.content_type);
   }
@@ -239,16 +288,19 @@ struct HttpServer::Impl {
     const auto handler = [this](const httplib::Request& req, httplib::Response& res) {
       Handle(req, res);
     };
-    processor.Get(".*", handler);
-    processor.Post(".*", handler);
-    processor.Put(".*", handler);
-    processor.Patch(".*", handler);
-    processor.Delete(".*", handler);
-    processor.Options(".*", handler);
+    processor.Get(".*", handler);  // and HEAD
+    // Every other method is answered before httplib reads a body: a POST without one would
+    // have it wait for the end of the connection, and answer 400 at the request's deadline.
+    processor.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+      if (req.method == "GET" || req.method == "HEAD")
+        return httplib::Server::HandlerResponse::Unhandled;
+      Handle(req, res);
+      return httplib::Server::HandlerResponse::Handled;
+    });
     processor.set_payload_max_length(limits.max_request_bytes);
     processor.set_default_headers(SafetyHeaders());
     processor.set_error_handler(
-        [this](const httplib::Request&, httplib::Response& res) { FillError(res); });
+        [this](const httplib::Request& req, httplib::Response& res) { FillError(req, res); });
     processor.set_exception_handler(
         [](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
           const ApiResponse answer = ErrorResponse(500, "internal error");
@@ -261,6 +313,7 @@ struct HttpServer::Impl {
     DeadlineStream stream(connection.fd, connection.at, limits);
     processor.Process(stream);
     shutdown(connection.fd, SHUT_WR);
+    DrainBeforeClose(connection.fd);
     close(connection.fd);
     // An answer over a large campaign builds megabytes of JSON in this thread's arena: given
     // back, so that the server idles at a few MiB whatever it served.
@@ -342,6 +395,7 @@ int HttpServer::Bind(const ListenAddress& address) {
     throw std::runtime_error("cannot listen on " + where + ": " + reason);
   }
   impl_->listen_fd = fd;
+  impl_->processor.SetListening(fd);
   std::string ip;
   int port = 0;
   AddressOf(fd, false, ip, port);
@@ -366,6 +420,7 @@ void HttpServer::Run() {
 
 void HttpServer::Stop() {
   impl_->stopping = true;
+  impl_->processor.SetListening(INVALID_SOCKET);  // a download under way ends
   impl_->ready.notify_all();
 }
 

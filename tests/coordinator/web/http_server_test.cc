@@ -11,8 +11,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <thread>
 
+#include "common/store/artifact_files.h"
 #include "tests/coordinator/web/web_fixture.h"
 #include "tests/support/wait_for.h"
 
@@ -127,6 +130,56 @@ TEST_F(HttpServerTest, AnswersThePageAndTheApi) {
   EXPECT_NE(page.find("Content-Security-Policy: default-src 'none'"), std::string::npos);
   EXPECT_NE(page.find("X-Content-Type-Options: nosniff"), std::string::npos);
   ExpectStillAnswering();
+}
+
+// An artifact's bytes arrive whole (httplib streams them from the file, in chunks), and whole
+// too when a range of them is asked for (Range is not served).
+TEST_F(HttpServerTest, AnArtifactIsServedWhole) {
+  Start();
+  const std::string file = (std::filesystem::path(ArtifactsDirOf(db_.file())) / db_.id() /
+                            "train/B/seed1/learning_curve.csv")
+                               .string();
+  std::string bytes;  // larger than httplib's chunk and our 16 KiB reads, binary
+  for (int i = 0; i < 100000; ++i)
+    bytes += static_cast<char>((i * 7919) % 256);
+  std::ofstream(file, std::ios::binary) << bytes;
+  const std::string response = Get("/api/artifacts/1");
+  ASSERT_EQ(ResponseStatus(response), 200) << response.substr(0, 300);
+  EXPECT_NE(response.find("Content-Length: 100000\r\n"), std::string::npos);
+  EXPECT_NE(response.find("Content-Disposition: attachment; filename=\"learning_curve.csv\""),
+            std::string::npos);
+  EXPECT_TRUE(BodyOf(response) == bytes) << BodyOf(response).size() << " bytes of 100000";
+  for (const char* range : {"bytes=70000-70009", "bytes=200000-", "bytes=-10"}) {
+    const std::string whole = Get("/api/artifacts/1", std::string("Range: ") + range + "\r\n");
+    EXPECT_EQ(ResponseStatus(whole), 200) << range << ": " << whole.substr(0, 300);
+    EXPECT_TRUE(BodyOf(whole) == bytes) << range << ": " << BodyOf(whole).size() << " bytes";
+  }
+  ExpectStillAnswering();
+}
+
+// Every method but GET and HEAD gets 405 and the Allow header at once, with a body or without
+// (a body-less POST is not read to the end of the connection), and a method httplib does not
+// know too.
+TEST_F(HttpServerTest, OtherMethodsGet405WithAllow) {
+  Start();
+  const std::string host = "Host: 127.0.0.1\r\n";
+  for (const std::string& request : std::vector<std::string>{
+           "POST /api/campaigns HTTP/1.1\r\n" + host + "\r\n",
+           "POST /api/campaigns HTTP/1.1\r\n" + host + "Content-Length: 3\r\n\r\nabc",
+           "PUT /api/artifacts/1 HTTP/1.1\r\n" + host + "\r\n",
+           "DELETE /api/campaigns/" + db_.id() + " HTTP/1.1\r\n" + host + "\r\n",
+           "OPTIONS / HTTP/1.1\r\n" + host + "\r\n", "PATCH / HTTP/1.1\r\n" + host + "\r\n",
+           "TRACE / HTTP/1.1\r\n" + host + "\r\n", "FOO / HTTP/1.1\r\n" + host + "\r\n"}) {
+    const auto started = std::chrono::steady_clock::now();
+    const std::string response = Exchange(request);
+    EXPECT_EQ(ResponseStatus(response), 405) << request << " -> " << response;
+    EXPECT_NE(response.find("Allow: GET, HEAD\r\n"), std::string::npos) << response;
+    EXPECT_EQ(BodyOf(response), "{\"error\":\"only GET and HEAD are served\"}\n") << response;
+    // Answered at once, not at the request's deadline (1 s here).
+    EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::milliseconds(900))
+        << request;
+  }
+  EXPECT_EQ(ResponseStatus(Exchange("HEAD /api/campaigns HTTP/1.1\r\n" + host + "\r\n")), 200);
 }
 
 TEST_F(HttpServerTest, HostileRequestsGet4xxAndChangeNothing) {
