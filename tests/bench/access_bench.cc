@@ -16,6 +16,7 @@
 
 #include "common/config/config_error.h"
 #include "tests/bench/bench_scenario.h"
+#include "tests/support/program_usage.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/environment/uav_network.h"
 
@@ -51,10 +52,11 @@ void OnPsdu(std::string context, ns3::WifiConstPsduMap psdus, ns3::WifiTxVector 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: rlpos-bench-access SCENARIO.json X,Y,Z [DURATION_S]\n");
-    return 2;
-  }
+  constexpr char kUsage[] = "usage: rlpos-bench-access SCENARIO.json X,Y,Z [DURATION_S]\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc < 3 || argc > 4)
+    return rlpos::testing::UsageError(kUsage);
   rlpos::Vec3 position;
   try {
     position = rlpos::ParsePosition(argv[2], "position");

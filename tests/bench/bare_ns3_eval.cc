@@ -17,6 +17,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/program_usage.h"
 #include "worker/environment/obstacle_aware_propagation_loss_model.h"
 
 using namespace ns3;
@@ -45,10 +46,11 @@ Ptr<Object> Make(const json& spec, double frequency) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 6) {
-    std::cerr << "usage: rlpos-bare-ns3 SCENARIO.json x y z DURATION\n";
-    return 2;
-  }
+  constexpr char kUsage[] = "usage: rlpos-bare-ns3 SCENARIO.json x y z DURATION\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc != 6)
+    return rlpos::testing::UsageError(kUsage);
   // Referencing the model keeps its library linked (and its TypeId registered).
   ObstacleAwarePropagationLossModel::GetTypeId();
   json s;

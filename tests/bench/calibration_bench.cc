@@ -15,6 +15,7 @@
 
 #include "common/scenario/scenario_checks.h"
 #include "tests/bench/bench_scenario.h"
+#include "tests/support/program_usage.h"
 #include "worker/environment/uav_network.h"
 #include "worker/uav_env/analytic_evaluator.h"
 
@@ -123,11 +124,12 @@ void Compare(const rlpos::Scenario& s, const char* label, std::vector<rlpos::Vec
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr,
-                 "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]\n");
-    return 2;
-  }
+  constexpr char kUsage[] =
+      "usage: rlpos-bench-calibration SCENARIO.json [DURATION_S] [--positions]\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc < 2 || argc > 4)
+    return rlpos::testing::UsageError(kUsage);
   const std::optional<rlpos::Scenario> scenario =
       LoadBenchScenario(argv[1], argc > 2 ? argv[2] : "2");
   if (!scenario)

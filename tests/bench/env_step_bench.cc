@@ -1,12 +1,16 @@
 // Steps per second of the env in both fidelities, with the DQN agent acting and learning, and
 // the share of a packet-level step spent outside ns-3 (agent + monitors + env bookkeeping).
 //   rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS]
+#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <string>
 
+#include "common/config/config_error.h"
+#include "tests/support/program_usage.h"
 #include "worker/agent/dqn_agent.h"
 #include "worker/environment/scenario_loading.h"
 #include "worker/uav_env/uav_positioning_env.h"
@@ -68,28 +72,58 @@ double AnalyticEnvAloneStepsPerSecond(rlpos::Scenario s, int steps) {
   return steps / std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A step count argument: a whole number in [1, 10^9].
+bool ParseSteps(const char* text, int& steps) {
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || errno != 0 || value < 1 || value > 1000000000)
+    return false;
+  steps = static_cast<int>(value);
+  return true;
+}
+
+constexpr char kUsage[] =
+    "usage: rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS] [ENV_ALONE_STEPS]\n";
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr,
-                 "usage: rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS] "
-                 "[ENV_ALONE_STEPS]\n");
-    return 2;
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc < 2 || argc > 5)
+    return rlpos::testing::UsageError(kUsage);
+  // The defaults: 2000 analytic steps, 50 packet-level ones, 200000 of the env alone.
+  int steps[3] = {2000, 50, 200000};
+  const char* const names[3] = {"ANALYTIC_STEPS", "PACKET_STEPS", "ENV_ALONE_STEPS"};
+  for (int i = 2; i < argc; ++i) {
+    if (!ParseSteps(argv[i], steps[i - 2])) {
+      std::fprintf(stderr, "error: %s: expected a positive whole number of steps, got \"%s\"\n",
+                   names[i - 2], argv[i]);
+      return 1;
+    }
   }
-  const rlpos::Scenario s = rlpos::LoadScenario(argv[1], {});
-  const int analytic_steps = argc > 2 ? std::stoi(argv[2]) : 2000;
-  const int packet_steps = argc > 3 ? std::stoi(argv[3]) : 50;
-  const int alone_steps = argc > 4 ? std::stoi(argv[4]) : 200000;
-  const double alone = AnalyticEnvAloneStepsPerSecond(s, alone_steps);
-  const Figures analytic = Run(s, "analytic", analytic_steps);
-  const Figures packet = Run(s, "packet", packet_steps);
-  std::printf(
-      "%-8s analytic %9.1f steps/s | packet %7.2f steps/s (%.0f ms simulated each), "
-      "%.2f %% of a packet step outside ns-3 | analytic/packet %.0fx\n",
-      s.name.c_str(), analytic.steps_per_s, packet.steps_per_s, s.env.decision_interval * 1e3,
-      100.0 * packet.outside_ns3_share, analytic.steps_per_s / packet.steps_per_s);
-  std::printf("%-8s analytic env alone (random actions, no agent) %9.0f steps/s\n", s.name.c_str(),
-              alone);
+  rlpos::Scenario s;
+  try {
+    s = rlpos::LoadScenario(argv[1], {});
+  } catch (const rlpos::ConfigError& e) {
+    std::fprintf(stderr, "error: %s: %s\n", argv[1], e.describe().c_str());
+    return 1;
+  }
+  try {
+    const double alone = AnalyticEnvAloneStepsPerSecond(s, steps[2]);
+    const Figures analytic = Run(s, "analytic", steps[0]);
+    const Figures packet = Run(s, "packet", steps[1]);
+    std::printf(
+        "%-8s analytic %9.1f steps/s | packet %7.2f steps/s (%.0f ms simulated each), "
+        "%.2f %% of a packet step outside ns-3 | analytic/packet %.0fx\n",
+        s.name.c_str(), analytic.steps_per_s, packet.steps_per_s, s.env.decision_interval * 1e3,
+        100.0 * packet.outside_ns3_share, analytic.steps_per_s / packet.steps_per_s);
+    std::printf("%-8s analytic env alone (random actions, no agent) %9.0f steps/s\n",
+                s.name.c_str(), alone);
+  } catch (const std::exception& e) {  // e.g. a scenario the analytic fidelity refuses
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
   return 0;
 }

@@ -13,6 +13,7 @@
 #include "common/campaign/expansion.h"
 #include "common/config/config_error.h"
 #include "coordinator/scheduling/coordinator_store.h"
+#include "tests/support/program_usage.h"
 
 namespace rlpos {
 namespace {
@@ -106,10 +107,11 @@ int Fill(const std::string& campaign_file, const std::string& db, std::size_t le
 }  // namespace rlpos
 
 int main(int argc, char** argv) {
-  if (argc != 3 && !(argc == 5 && std::string(argv[3]) == "--leave")) {
-    std::fprintf(stderr, "usage: rlpos-bench-fill-store CAMPAIGN.json DB [--leave N]\n");
-    return 2;
-  }
+  constexpr char kUsage[] = "usage: rlpos-bench-fill-store CAMPAIGN.json DB [--leave N]\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc != 3 && !(argc == 5 && std::string(argv[3]) == "--leave"))
+    return rlpos::testing::UsageError(kUsage);
   try {
     return rlpos::Fill(argv[1], argv[2], argc == 5 ? std::stoul(argv[4]) : 0);
   } catch (const rlpos::ConfigError& e) {

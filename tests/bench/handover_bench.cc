@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tests/bench/bench_scenario.h"
+#include "tests/support/program_usage.h"
 #include "worker/environment/uav_network.h"
 
 namespace {
@@ -39,10 +40,11 @@ double Median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 4) {
-    std::fprintf(stderr, "usage: rlpos-bench-handover SCENARIO.json [DURATION_S] [ROUNDS]\n");
-    return 2;
-  }
+  constexpr char kUsage[] = "usage: rlpos-bench-handover SCENARIO.json [DURATION_S] [ROUNDS]\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc < 2 || argc > 4)
+    return rlpos::testing::UsageError(kUsage);
   const std::optional<rlpos::Scenario> scenario =
       LoadBenchScenario(argv[1], argc > 2 ? argv[2] : nullptr);
   if (!scenario)

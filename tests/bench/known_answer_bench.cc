@@ -9,6 +9,7 @@
 #include <string>
 
 #include "tests/bench/known_answer.h"
+#include "tests/support/program_usage.h"
 
 namespace {
 
@@ -23,10 +24,11 @@ bool ParseSeed(const std::string& text, std::uint64_t& seed) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 3) {
-    std::fprintf(stderr, "usage: rlpos-bench-known-answers dqn|ppo|sac [SEED]\n");
-    return 2;
-  }
+  constexpr char kUsage[] = "usage: rlpos-bench-known-answers dqn|ppo|sac [SEED]\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc < 2 || argc > 3)
+    return rlpos::testing::UsageError(kUsage);
   std::uint64_t seed = 1;
   if (argc == 3 && !ParseSeed(argv[2], seed)) {
     std::fprintf(stderr, "error: SEED: '%s' is not a whole number in [0, 2^53]\n", argv[2]);

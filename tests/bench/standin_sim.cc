@@ -10,11 +10,14 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/support/program_usage.h"
+
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: rlpos-standin-sim position|eval --scenario FILE ...\n");
-    return 2;
-  }
+  constexpr char kUsage[] = "usage: rlpos-standin-sim position|eval --scenario FILE ...\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc < 2)
+    return rlpos::testing::UsageError(kUsage);
   const std::string kind = argv[1];
   std::string scenario_file, position;
   for (int i = 2; i + 1 < argc; ++i) {

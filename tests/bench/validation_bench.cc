@@ -15,6 +15,7 @@
 #include "common/wire/json_text.h"
 #include "common/wire/limits.h"
 #include "idl/dds/message_checks.h"
+#include "tests/support/program_usage.h"
 
 namespace {
 
@@ -38,8 +39,20 @@ double MicrosecondsEach(int n, const std::function<void()>& f) {
 
 int main(int argc, char** argv) {
   using namespace rlpos;
+  constexpr char kUsage[] = "usage: rlpos-bench-validation [SOURCE_DIR] [ITERATIONS]\n";
+  if (testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
+  if (argc > 3)
+    return testing::UsageError(kUsage);
   const std::string src = argc > 1 ? argv[1] : ".";
   const int n = argc > 2 ? std::atoi(argv[2]) : 2000;
+  if (n < 1) {
+    std::fprintf(stderr,
+                 "rlpos-bench-validation: error: ITERATIONS: expected a positive whole "
+                 "number, got \"%s\"\n",
+                 argv[2]);
+    return 2;
+  }
   JobOrder order;
   order.job_id = "0123456789ab/eval/B/rl/run7";
   order.campaign_id = "0123456789ab";

@@ -35,6 +35,7 @@
 
 #include "idl/dds/dds_config.h"
 #include "rlpos_messages.h"
+#include "tests/support/program_usage.h"
 
 namespace {
 
@@ -428,13 +429,13 @@ std::string ReadFile(const char* path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  constexpr char kUsage[] =
+      "usage: rlpos-hostile-peer DOMAIN TAG DB WORKER_ID SCENARIO SECONDS [--write-only]\n";
+  if (rlpos::testing::PrintedHelp(argc, argv, kUsage))
+    return 0;
   const bool write_only = argc == 8 && std::strcmp(argv[7], "--write-only") == 0;
-  if (argc != 7 && !write_only) {
-    std::fprintf(stderr,
-                 "usage: rlpos-hostile-peer DOMAIN TAG DB WORKER_ID SCENARIO SECONDS "
-                 "[--write-only]\n");
-    return 2;
-  }
+  if (argc != 7 && !write_only)
+    return rlpos::testing::UsageError(kUsage);
   Options options;
   options.domain = std::atoi(argv[1]);
   // A tag means loopback; an XML document is the Cyclone configuration itself (another link).

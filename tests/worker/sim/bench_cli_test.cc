@@ -1,5 +1,5 @@
-// The benches' arguments: a bad scenario file, position or duration is a one-line error and a
-// non-zero exit before any simulation runs.
+// The benches' arguments: a bad scenario file, position, duration or step count is a one-line
+// error and a non-zero exit before any simulation runs.
 #include <gtest/gtest.h>
 
 #include "tests/support/command.h"
@@ -18,7 +18,8 @@ void ExpectOneLineError(const std::string& command_line, const std::string& mess
 
 TEST(BenchCli, AccessRejectsBadArguments) {
   const std::string bench = BuiltBinary("rlpos-bench-access");
-  ExpectOneLineError(bench + " /nonexistent.json 1,2,3", "/nonexistent.json: /: cannot open file");
+  ExpectOneLineError(bench + " /nonexistent.json 1,2,3",
+                     "/nonexistent.json: cannot open: No such file or directory");
   ExpectOneLineError(bench + " " + kScenarioA + " 1,2",
                      "position: expected x,y,z in metres, got \"1,2\"");
   ExpectOneLineError(bench + " " + kScenarioA + " 1,2,3 -1",
@@ -27,9 +28,30 @@ TEST(BenchCli, AccessRejectsBadArguments) {
 
 TEST(BenchCli, CalibrationRejectsBadArguments) {
   const std::string bench = BuiltBinary("rlpos-bench-calibration");
-  ExpectOneLineError(bench + " /nonexistent.json", "/nonexistent.json: /: cannot open file");
+  ExpectOneLineError(bench + " /nonexistent.json",
+                     "/nonexistent.json: cannot open: No such file or directory");
   ExpectOneLineError(bench + " " + kScenarioA + " 2s",
                      "duration: 2s is not a positive number of seconds");
+}
+
+// rlpos-bench-env once aborted on --help (it took it for the scenario file): its usage now, and
+// each bad argument a line.
+TEST(BenchCli, EnvAnswersHelpAndRejectsBadArguments) {
+  const std::string bench = BuiltBinary("rlpos-bench-env");
+  const std::string usage =
+      "usage: rlpos-bench-env SCENARIO.json [ANALYTIC_STEPS] [PACKET_STEPS] [ENV_ALONE_STEPS]\n";
+  const CommandResult help = RunCommand(bench + " --help");
+  EXPECT_EQ(help.exit_code, 0) << help.err;
+  EXPECT_EQ(help.out, usage);
+  const CommandResult none = RunCommand(bench);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_EQ(none.err, usage);
+  ExpectOneLineError(bench + " /nonexistent.json",
+                     "/nonexistent.json: cannot open: No such file or directory");
+  ExpectOneLineError(bench + " " + kScenarioA + " 10 0",
+                     "PACKET_STEPS: expected a positive whole number of steps, got \"0\"");
+  ExpectOneLineError(bench + " " + kScenarioA + " 2k",
+                     "ANALYTIC_STEPS: expected a positive whole number of steps, got \"2k\"");
 }
 
 }  // namespace
