@@ -98,7 +98,9 @@ std::vector<std::uint64_t> ReadRngRuns(const json& v, const std::string& path) {
     return runs;
   }
   if (!v.is_array() || v.size() != 2) {
-    throw ConfigError(path, "expected [first, last] or {\"list\": [...]}, got " + TypeName(v));
+    // [1] is a list of one run to some: say what a pair is, and how many there were.
+    const std::string got = v.is_array() ? "an array of " + std::to_string(v.size()) : TypeName(v);
+    throw ConfigError(path, "expected [first, last] (2 numbers) or {\"list\": [...]}, got " + got);
   }
   const std::uint64_t first = ReadUnsigned(v[0], JoinPath(path, 0), UINT64_MAX);
   const std::uint64_t last = ReadUnsigned(v[1], JoinPath(path, 1), UINT64_MAX);

@@ -1,7 +1,10 @@
 #include "common/scenario/scenario_parser.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -470,9 +473,17 @@ json ParseJsonText(const std::string& text) {
 }
 
 json ReadJsonFile(const std::string& file) {
+  std::error_code error;
+  if (std::filesystem::is_directory(file, error))
+    throw ConfigError::AboutFile("is a folder, not a JSON file");
+  errno = 0;
   std::ifstream in(file);
-  if (!in)
-    throw ConfigError("", "cannot open file");
+  if (!in) {
+    // The system's reason (no such file, permission denied), as the user can act on it.
+    const int reason = errno;
+    throw ConfigError::AboutFile(std::string("cannot open: ") +
+                                 (reason != 0 ? std::strerror(reason) : "unreadable"));
+  }
   std::stringstream buffer;
   buffer << in.rdbuf();
   return ParseJsonText(buffer.str());

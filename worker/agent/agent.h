@@ -52,6 +52,10 @@ class Agent {
   virtual bool NeedsTeamState() const { return false; }
   // DQN's exploration rate; 0 for the algorithms that explore by a stochastic policy.
   virtual double Epsilon() const { return 0.0; }
+  // What a training's progress line shows of the agent's own learning, named: DQN's exploration
+  // rate ("epsilon 0.42"), PPO's policy entropy and learning rate, SAC's entropy temperature;
+  // "" when there is nothing to show yet.
+  virtual std::string ProgressText() const { return ""; }
   // Remembers the networks the policy acts with (those Save writes), in memory, replacing what
   // it remembered before; RestoreKeptPolicy acts and saves with them again. For a trainer that
   // keeps the best policy it has scored; learning on after a restore is not what they are for.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -154,6 +155,12 @@ std::optional<double> DqnAgent::Observe(Transition transition) {
 
 std::string DqnAgent::Algorithm() const {
   return "dqn";
+}
+
+std::string DqnAgent::ProgressText() const {
+  char text[32];
+  std::snprintf(text, sizeof text, "epsilon %.2f", Epsilon());
+  return text;
 }
 
 double DqnAgent::Epsilon() const {

@@ -17,6 +17,7 @@ class DqnAgent : public Agent {
   int Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) override;
   std::optional<double> Observe(Transition transition) override;
   double Epsilon() const override;
+  std::string ProgressText() const override;  // "epsilon e"
   std::string Algorithm() const override;
   void KeepPolicy() override;
   void RestoreKeptPolicy() override;

@@ -1,6 +1,7 @@
 #include "worker/agent/ppo_agent.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +53,7 @@ struct PpoAgent::Impl {
   std::int64_t rollout_size;
   std::int64_t planned_updates = 0;  // rollouts in the training; 0: no annealing
   std::int64_t done_updates = 0;     // rollouts learned from so far
+  double last_entropy = 0.0;         // the last update's mean minibatch entropy, for progress lines
 
   // The actor, drawn first from torch's generator seeded with the agent's seed (the critic
   // draws next): libtorch's weight initialisation, as before.
@@ -261,6 +263,7 @@ struct PpoAgent::Impl {
     std::vector<float> values(static_cast<std::size_t>(size));
     const PpoCoefficients coefficients{ppo.clip, ppo.entropy_coefficient, ppo.value_coefficient};
     double loss_sum = 0.0;
+    double entropy_sum = 0.0;
     int updates = 0;
     for (int epoch = 0; epoch < ppo.epochs; ++epoch) {
       std::shuffle(order.begin(), order.end(), rng);
@@ -301,9 +304,11 @@ struct PpoAgent::Impl {
         actor_adam.Step(actor_net.Parameters(), actor_net.Gradients());
         critic_adam.Step(critic_net.Parameters(), critic_net.Gradients());
         loss_sum += objective.loss;
+        entropy_sum += objective.entropy;
         ++updates;
       }
     }
+    last_entropy = entropy_sum / std::max(updates, 1);
     rollout.clear();
     masks.clear();
     log_probs.clear();
@@ -348,6 +353,17 @@ std::vector<float> PpoAgent::Probabilities(const std::vector<float>& observation
 
 double PpoAgent::LearningRate() const {
   return impl_->actor_adam.LearningRate();
+}
+
+std::string PpoAgent::ProgressText() const {
+  char text[80];
+  if (impl_->done_updates == 0) {
+    std::snprintf(text, sizeof text, "learning rate %.3g", LearningRate());
+  } else {
+    std::snprintf(text, sizeof text, "entropy %.3f, learning rate %.3g", impl_->last_entropy,
+                  LearningRate());
+  }
+  return text;
 }
 
 int PpoAgent::Act(const std::vector<float>& observation, const ActionMask& mask, bool explore) {

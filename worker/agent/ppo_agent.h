@@ -44,6 +44,9 @@ class PpoAgent : public Agent {
                            const std::vector<ActionMask>& masks, bool explore) override;
   std::optional<double> ObserveEach(std::vector<Transition> transitions) override;
   bool NeedsTeamState() const override;
+  // "entropy H, learning rate r": the policy's mean entropy over the last update's minibatches
+  // (as each was before its step), and the rate now; the rate alone before the first update.
+  std::string ProgressText() const override;
   void KeepPolicy() override;
   void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;

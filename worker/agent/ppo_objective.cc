@@ -85,6 +85,7 @@ PpoObjective PpoLossAndGradients(const PpoMinibatch& batch, const PpoCoefficient
   }
   out.loss =
       surrogate_sum / rows - c.entropy * entropy_sum / rows + c.value * 0.5 * value_sum / rows;
+  out.entropy = entropy_sum / rows;
   return out;
 }
 

@@ -28,6 +28,7 @@ struct PpoCoefficients {
 
 struct PpoObjective {
   double loss = 0.0;
+  double entropy = 0.0;  // the rows' mean policy entropy: a figure to show (loss holds its term)
   std::vector<float> d_logits;  // [rows][action_count]
   std::vector<float> d_values;  // [rows]
 };

@@ -1,6 +1,7 @@
 #include "worker/agent/sac_agent.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <random>
 #include <stdexcept>
@@ -166,6 +167,12 @@ std::string SacAgent::Algorithm() const {
 
 double SacAgent::Alpha() const {
   return impl_->Alpha();
+}
+
+std::string SacAgent::ProgressText() const {
+  char text[32];
+  std::snprintf(text, sizeof text, "alpha %.4f", Alpha());
+  return text;
 }
 
 int SacAgent::Act(const std::vector<float>&, const ActionMask&, bool) {

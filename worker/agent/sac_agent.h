@@ -21,6 +21,7 @@ class SacAgent : public Agent {
   // tanh of the policy's mean.
   std::vector<float> ActContinuous(const std::vector<float>& observation, bool explore) override;
   std::optional<double> Observe(Transition transition) override;
+  std::string ProgressText() const override;  // "alpha a", the entropy temperature
   void KeepPolicy() override;
   void RestoreKeptPolicy() override;
   void Save(const std::string& directory) const override;

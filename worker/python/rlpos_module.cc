@@ -534,7 +534,8 @@ std::string Evaluate(const std::string& file, const std::vector<std::string>& ov
     Ns3Lease lease("a packet-level evaluation");
     py::gil_scoped_release release;
     metrics = EvaluatePosition(s, placement);
-    metrics.reward = AnalyticReward(s, placement);  // as rlpos-sim eval adds it
+    std::string why;  // as rlpos-sim eval adds it: null where the analytic model refuses s
+    metrics.reward = PacketEvalReward(s, placement, why);
   }
   nlohmann::json out = ToJson(metrics);
   out["scenario"] = s.name;

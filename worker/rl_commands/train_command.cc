@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -109,15 +111,60 @@ std::ofstream OpenLearningCurve(const fs::path& file) {
   return curve;
 }
 
-// The line `status` shows of a running train job, with every UAV's final position.
-void PrintEpisode(const EpisodeRecord& r, int total) {
-  std::fprintf(stderr,
-               "episode %d/%d (%s): %d steps, epsilon %.2f, reward %.1f (mean %.3f), "
-               "final %s in LoS %d\n",
-               r.episode, total, Phase(r), r.steps, r.epsilon, r.total_reward,
-               r.total_reward / std::max(1, r.steps),
-               DescribePlacement(r.final_info.positions).c_str(), r.final_info.n_los);
-}
+// A training's progress on stderr (stdout holds only its result). Every episode's figures are in
+// the learning curve, so a line only for the first training episode, every n-th (about
+// kLines in all), the last and their checkpoints, and for each evaluation episode; and, between
+// them, once kQuietAtMost has passed since the last (slow packet-level episodes still show).
+// The latest line is what `status` shows of a running train job.
+class ProgressLines {
+ public:
+  ProgressLines(const AgentSpec& spec, const Agent& agent)
+      : agent_(agent),
+        train_episodes_(spec.train_episodes),
+        total_(spec.train_episodes + spec.eval_episodes),
+        every_(std::max(1, (spec.train_episodes + kLines - 1) / kLines)) {}
+
+  void operator()(const EpisodeRecord& r) {
+    const bool evaluation = r.evaluation && !r.checkpoint;
+    const bool due =
+        evaluation || r.episode == 1 || r.episode % every_ == 0 || r.episode == train_episodes_;
+    const auto now = Clock::now();
+    if (!due && now - last_ < kQuietAtMost)
+      return;
+    last_ = now;
+    std::string line = "episode " + std::to_string(r.episode) + "/" + std::to_string(total_) +
+                       " (" + Phase(r) + "): " + std::to_string(r.steps) + " steps, reward " +
+                       Number("%.1f", r.total_reward) + " (mean " +
+                       Number("%.3f", r.total_reward / std::max(1, r.steps)) + ")";
+    if (!r.evaluation) {  // what learnt: greedy episodes learn nothing
+      if (r.updates > 0) {
+        line += ", " + std::to_string(r.updates) + (r.updates == 1 ? " update" : " updates") +
+                ", loss " + Number("%.4g", r.mean_loss);
+      }
+      const std::string own = agent_.ProgressText();  // the algorithm's own quantities
+      if (!own.empty())
+        line += ", " + own;
+    }
+    line += ", final " + DescribePlacement(r.final_info.positions) + " in LoS " +
+            std::to_string(r.final_info.n_los);
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  static constexpr int kLines = 20;
+  static constexpr std::chrono::seconds kQuietAtMost{30};
+
+  static std::string Number(const char* format, double x) {
+    char text[48];
+    std::snprintf(text, sizeof text, format, x);
+    return text;
+  }
+
+  const Agent& agent_;
+  int train_episodes_, total_, every_;
+  Clock::time_point last_ = Clock::now();
+};
 
 // The evaluation episodes' steps, one row each: the UAV that moved (its index), its action and
 // where it went. With agent.joint_steps every UAV moves in each step: a row per UAV, its action
@@ -193,10 +240,10 @@ TrainResult TrainAndRecord(const Scenario& s, const fs::path& folder) {
   Agent& agent = *agent_owner;
   std::ofstream curve = OpenLearningCurve(folder / "learning_curve.csv");
   TrajectoryWriter trajectory(folder / "trajectory.csv", s, agent);
-  const int total = s.agent.train_episodes + s.agent.eval_episodes;
+  ProgressLines progress(s.agent, agent);
   const EpisodeCallback on_episode = [&](const EpisodeRecord& r) {
     WriteCurveRow(curve, r);
-    PrintEpisode(r, total);
+    progress(r);
   };
   // PPO's rollouts from agent.ppo.num_envs analytic envs at once; the packet level is one
   // network per process, so it collects from one env.

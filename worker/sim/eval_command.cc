@@ -36,8 +36,13 @@ int RunEval(const CommonOptions& options, const EvalOptions& eval) {
   g_started = std::chrono::steady_clock::now();
   RunMetrics metrics =
       EvaluatePosition(scenario, placement, eval.progress ? ShowProgress : nullptr);
-  // After the packets, not before: the packet-level run is the same as without it.
-  metrics.reward = AnalyticReward(scenario, placement);
+  // After the packets, not before: the packet-level run is the same as without it. Where the
+  // analytic model refuses the scenario's loss model (HybridBuildings reads ns-3's building
+  // list) the reward is null, said in one line: the packet metrics stand.
+  std::string why;
+  metrics.reward = PacketEvalReward(scenario, placement, why);
+  if (!why.empty())
+    Log(LogLevel::kWarning, "reward: null, the analytic model refuses this scenario: " + why);
   if (eval.json) {
     nlohmann::json out = ToJson(metrics);
     out["scenario"] = scenario.name;

@@ -1,10 +1,12 @@
 #include "worker/uav_env/analytic_evaluator.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "common/config/config_error.h"
 #include "common/metrics/run_metrics.h"
 #include "common/phy/airtime_model.h"
 #include "common/phy/mcs_table.h"
@@ -172,6 +174,24 @@ double AnalyticReward(const Scenario& scenario, const Placement& placement) {
   const StepInfo info = analytic.Evaluate(placement);
   return (*MakeReward(scenario.env.reward))(
       RewardInputOf(scenario, info.n_los, info.throughput_mbps, info.demands_met));
+}
+
+double PacketEvalReward(const Scenario& scenario, const Placement& placement, std::string& why) {
+  why.clear();
+  try {
+    return AnalyticReward(scenario, placement);
+  } catch (const ConfigError& e) {
+    // Only AnalyticChannel's refusals can come here: the packet-level run built the same loss
+    // model from the same scenario before.
+    why = e.describe();
+    // Its advice is for a user of the analytic fidelity; an eval is packet level already.
+    const std::string advice = "; use packet fidelity";
+    if (why.size() > advice.size() &&
+        why.compare(why.size() - advice.size(), advice.size(), advice) == 0) {
+      why.resize(why.size() - advice.size());
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 }
 
 }  // namespace rlpos

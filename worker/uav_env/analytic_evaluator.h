@@ -7,6 +7,7 @@
 // channel's airtime (their BSSs contend). Owns all it uses: any number may live in one process,
 // and each may be used by one thread at a time.
 #include <memory>
+#include <string>
 
 #include "common/phy/airtime_model.h"
 #include "common/phy/mcs_table.h"
@@ -74,5 +75,11 @@ class AnalyticEvaluator {
 // The env's reward (the scenario's env.reward) at `placement` by the analytic model: what the
 // agent and the oracle score a placement with. Builds its own evaluator.
 double AnalyticReward(const Scenario& scenario, const Placement& placement);
+
+// What a packet-level eval records as its reward: AnalyticReward, or NaN (null in the eval's
+// JSON) where the analytic model refuses the scenario's loss model (one that reads ns-3's
+// building list, draws random numbers or asks a condition model of its own), which packet level
+// runs: the eval keeps its packet metrics. `why` gets the refusal ("" when scored).
+double PacketEvalReward(const Scenario& scenario, const Placement& placement, std::string& why);
 
 }  // namespace rlpos

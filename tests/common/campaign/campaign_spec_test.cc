@@ -243,7 +243,11 @@ const BadCampaign kBadCampaigns[] = {
      [](json& d) {
        d["rng_runs"] = {1, 2, 3};
      },
-     "/rng_runs: expected [first, last] or {\"list\": [...]}, got an array"},
+     "/rng_runs: expected [first, last] (2 numbers) or {\"list\": [...]}, got an array of 3"},
+    {"RunsOfOne", [](json& d) { d["rng_runs"] = json::array({1}); },
+     "/rng_runs: expected [first, last] (2 numbers) or {\"list\": [...]}, got an array of 1"},
+    {"RunsNotAnArray", [](json& d) { d["rng_runs"] = "1-2"; },
+     "/rng_runs: expected [first, last] (2 numbers) or {\"list\": [...]}, got a string"},
     {"RunFractional",
      [](json& d) {
        d["rng_runs"] = {1, 2.5};

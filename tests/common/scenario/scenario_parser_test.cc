@@ -170,8 +170,21 @@ TEST(ScenarioParser, MalformedJsonNamesLineAndColumn) {
   }
 }
 
-TEST(ScenarioParser, MissingFileIsAConfigError) {
-  EXPECT_THROW(ReadJsonFile("/nonexistent/scenario.json"), ConfigError);
+// An error about the file itself names no JSON path ("/"), but the system's reason: callers
+// prefix the file, "d.json: cannot open: No such file or directory".
+TEST(ScenarioParser, MissingFileIsAConfigErrorWithTheSystemsReason) {
+  try {
+    ReadJsonFile("/nonexistent/scenario.json");
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.describe(), "cannot open: No such file or directory");
+  }
+  try {
+    ReadJsonFile(RLPOS_SOURCE_DIR);
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.describe(), "is a folder, not a JSON file");
+  }
 }
 
 struct BadOverride {

@@ -59,7 +59,8 @@ class RlposCampaignCli : public ::testing::Test {
 };
 
 TEST_F(RlposCampaignCli, MissingCampaignFile) {
-  ExpectOneLineError(Campaign("run nowhere.json"), 2, "nowhere.json: /: cannot open file");
+  ExpectOneLineError(Campaign("run nowhere.json"), 2,
+                     "nowhere.json: cannot open: No such file or directory");
   ExpectNothingWritten();
 }
 

@@ -70,7 +70,7 @@ TEST(RlposSimCli, ValidateCountsTheUesInLoSOfSeveralUavs) {
 
 TEST(RlposSimCli, MissingFile) {
   ExpectOneLineError(RunCommand(Sim("validate /nonexistent.json")), 2,
-                     "/nonexistent.json: /: cannot open file");
+                     "/nonexistent.json: cannot open: No such file or directory");
 }
 
 TEST(RlposSimCli, MalformedJson) {
@@ -203,6 +203,37 @@ TEST(RlposSimCli, AnEvalsRewardIsThePositionersAnalyticReward) {
   const auto run2 = EvalJson("--run 2");
   EXPECT_DOUBLE_EQ(run1.at("reward").get<double>(), expected) << run1;
   EXPECT_DOUBLE_EQ(run2.at("reward").get<double>(), expected) << run2;
+}
+
+// The README's third quick-start command, shorter: ad hoc, RTS/CTS and ns-3's HybridBuildings
+// loss model, which reads ns-3's building list. Packet level runs it; the analytic model, whose
+// reward an eval records, refuses it: the eval succeeds with a null reward and says why, in one
+// line after the packets' figures.
+TEST(RlposSimCli, AnEvalTheAnalyticModelCannotScoreHasANullReward) {
+  const auto r =
+      RunCommand(Sim("eval --scenario " + kScenarioB +
+                     " --position 50,35,10 --set wifi.mode=adhoc --set wifi.rts_cts=true"
+                     " --set 'propagation={\"type\": \"ns3::HybridBuildingsPropagationLossModel\"}'"
+                     " --duration 1.5 --json --no-progress"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto m = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(m.at("reward").is_null()) << m;
+  EXPECT_GT(m.at("aggregate_throughput_mbps").get<double>(), 0.0) << m;
+  EXPECT_EQ(r.err,
+            "[warning] reward: null, the analytic model refuses this scenario: /propagation: "
+            "ns3::HybridBuildingsPropagationLossModel reads ns-3's process-wide building list, "
+            "which the analytic fidelity does not build\n");
+}
+
+// An eval whose settings cannot run fails before it simulates: one line, no progress shown.
+TEST(RlposSimCli, AnEvalOfBadSettingsFailsBeforeSimulating) {
+  ExpectOneLineError(
+      RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,35,10" +
+                     " --set 'propagation={\"type\": \"ns3::NoSuchPropagationLossModel\"}'")),
+      2, "/propagation/type");
+  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB +
+                                    " --position 50,35,10 --set wifi.mode=mesh")),
+                     2, "/wifi/mode");
 }
 
 TEST(RlposSimCli, OracleCandidatesNotRescoredCarryNull) {

@@ -90,7 +90,7 @@ TEST(RlposSimImport, BadInputIsOneLineAndWritesNothing) {
   ExpectRejected(dir, "--from rlpos3 " + dir.File("malformed.json"),
                  dir.File("malformed.json") + ": /: malformed JSON at line 1");
   ExpectRejected(dir, "--from rlpos3 " + dir.File("missing.json"),
-                 dir.File("missing.json") + ": /: cannot open file");
+                 dir.File("missing.json") + ": cannot open: No such file or directory");
   ExpectRejected(dir, "--from rlpos2 " + kFull,
                  "rlpos-sim: error: --from: unknown format \"rlpos2\" (known: rlpos3)");
   ExpectRejected(dir, "--from rlpos3 " + Edited(dir, "del c[\"Gym\"][\"venueSize\"][\"Ymax\"]"),

@@ -103,7 +103,8 @@ TEST_F(RenderCli, SeveralPlacementsAndAFlight) {
 TEST_F(RenderCli, BadInputsAreOneLineErrorsAndLeaveNoFile) {
   const std::string c = kScenarios + "c.json";
   const std::string out = " --out " + dir_.File("m.png");
-  ExpectRefused(dir_.File("none.json") + out, 2, "none.json: /: cannot open file");
+  ExpectRefused(dir_.File("none.json") + out, 2,
+                "none.json: cannot open: No such file or directory");
   ExpectRefused(
       c + " --out " + dir_.File("m.jpg"), 2,
       "--out: \"" + dir_.File("m.jpg") + "\": the map's file name must end in .png or .svg");

@@ -96,7 +96,7 @@ TEST_F(TorchScriptFolder, AScenarioThatContradictsTheFolderIsRefused) {
 TEST_F(TorchScriptFolder, AMissingOrMalformedManifestIsRefused) {
   WriteFolder("prefer_stay");
   fs::remove(dir_ / "policy.json");
-  ExpectOneLineRefusal(Position(), ManifestFile(), "cannot open file");
+  ExpectOneLineRefusal(Position(), ManifestFile(), "cannot open: No such file or directory");
   std::ofstream(dir_ / "policy.json") << "{\"format\": \"torchscript\",";
   ExpectOneLineRefusal(Position(), ManifestFile(), "line 1");
   WriteManifest(nlohmann::json::array());

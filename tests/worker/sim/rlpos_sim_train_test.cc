@@ -131,6 +131,46 @@ TEST_F(TrainCommand, CheckpointsKeepTheBestPolicyWhichIsTheOneSavedAndReplayed) 
   EXPECT_EQ(nlohmann::json::parse(p.out)["position"], result["position"]);
 }
 
+// train's stdout is its result alone; its progress on stderr is a line for the first and every
+// 20th part of the training episodes and for each evaluation (the learning curve has every
+// episode), naming each algorithm's own figures: DQN's epsilon, PPO's entropy and learning
+// rate, SAC's alpha.
+TEST_F(TrainCommand, StdoutIsTheResultAndProgressAFewLinesOfTheAlgorithmsOwnFigures) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> own = {
+      {"dqn", {", epsilon 0."}},
+      {"ppo", {", entropy ", ", learning rate "}},
+      {"sac", {", alpha "}}};
+  for (const auto& [algorithm, figures] : own) {
+    const fs::path out = out_ / algorithm;
+    const auto r =
+        RunCommand(Sim("train --scenario " + kScenarioB +
+                       " --fidelity analytic --seed 1 --episodes 100 --algorithm " + algorithm +
+                       " --set agent.train_episode_steps=10 --set agent.eval_interval=0"
+                       " --out " +
+                       out.string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 2) << r.out;
+    EXPECT_EQ(r.out.rfind("trained B (" + algorithm + ", analytic, seed 1): final position", 0), 0u)
+        << r.out;
+    // Episodes 1, 5, 10, ..., 100 and the evaluation: 22 lines (a few more only if 30 s passed
+    // between two of them).
+    const auto lines = std::count(r.err.begin(), r.err.end(), '\n');
+    EXPECT_GE(lines, 22) << r.err;
+    EXPECT_LE(lines, 25) << r.err;
+    EXPECT_EQ(r.err.rfind("episode 1/101 (train): 10 steps, reward ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("\nepisode 5/101 (train)"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("\nepisode 6/101 (train)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("\nepisode 100/101 (train)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("\nepisode 101/101 (eval): 1000 steps"), std::string::npos) << r.err;
+    for (const std::string& figure : figures)
+      EXPECT_NE(r.err.find(figure), std::string::npos) << algorithm << ": " << figure << "\n"
+                                                       << r.err;
+    if (algorithm != "dqn") {
+      EXPECT_EQ(r.err.find("epsilon"), std::string::npos) << algorithm << ": " << r.err;
+    }
+  }
+}
+
 TEST_F(TrainCommand, TheProgressLineOfSeveralUavsShowsEachOne) {
   const std::string campus2 = std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/campus2.json";
   const auto r = RunCommand(Sim("train --scenario " + campus2 +
@@ -245,7 +285,8 @@ TEST_F(TrainCommand, BadInputs) {
   const auto missing = RunCommand(
       Sim("position --scenario " + kScenarioB + " --positioner rl --policy /nonexistent"));
   EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_NE(missing.err.find("/nonexistent/result.json: cannot open file"), std::string::npos)
+  EXPECT_NE(missing.err.find("/nonexistent/result.json: cannot open: No such file or directory"),
+            std::string::npos)
       << missing.err;
   const auto bad_agent = RunCommand(
       Sim("train --scenario " + kScenarioB + " --set agent.gama=0.5 --out " + out_.string()));
