@@ -7,9 +7,12 @@ algorithm's action space: the move step for dqn and ppo, 1 m for sac's displacem
 one row per run, a summary per algorithm and scenario, and one per algorithm and UAV count
 (median, P10, worst, share at the target). Asserts nothing.
 
-  scripts/bench_agents.py [--build DIR] [--seeds 1-10] [--algorithms dqn,ppo,sac]
-                          [--scenarios a,b,c] [--target 0.95] [--jobs N] [--set PATH=VALUE ...]
-                          [--oracle-cache FILE]
+  build/bin/rlpos-python scripts/bench_agents.py [--build DIR] [--seeds 1-10]
+      [--algorithms dqn,ppo,sac] [--scenarios a,b,c] [--target 0.95] [--jobs N]
+      [--set PATH=VALUE ...] [--oracle-cache FILE]
+
+(rlpos-python: the Python the build's binding is for, which the oracles run on; with --build DIR,
+DIR/bin/rlpos-python.)
 
 --scenarios takes shipped names (a, b, c, campus2, ...), scenario files, or a folder of them
 (a set written by scripts/generate_scenario_set.sh). Scenarios of several UAVs are judged
@@ -32,6 +35,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+from rlpos_python import import_rlpos  # noqa: E402
 from oracle_cache import (OracleCacheError, binding_identity, load_cache,  # noqa: E402
                           oracle_key, save_cache)
 
@@ -177,6 +181,7 @@ def main():
             if args.oracle_cache else ""
     except OracleCacheError as e:
         sys.exit("bench_agents: %s" % e)
+    import_rlpos(args.build)  # the oracles' processes run this interpreter with the build's rlpos
 
     rows = []
     print("%-4s %-22s %4s %8s %8s %6s %5s %7s %7s" %

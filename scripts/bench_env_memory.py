@@ -5,14 +5,16 @@ growth of the process's resident memory per env: after building them, and after 
 (which fills each env's bounded memo of analytic states, worker/uav_env/placement_memo.h).
 Asserts nothing.
 
-  PYTHONPATH=build/python python3 scripts/bench_env_memory.py [--scenario FILE]
+  build/bin/rlpos-python scripts/bench_env_memory.py [--scenario FILE]
       [--envs 200] [--steps 10000]
 """
 import argparse
 import os
 import random
 
-import rlpos
+from rlpos_python import import_rlpos
+
+rlpos = import_rlpos()
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SCENARIO = os.path.join(HERE, "..", "campaigns", "scenarios", "b.json")

@@ -4,7 +4,7 @@ C++ loop (no Python between steps) and from Python (env.step, numpy observations
 alternating, `--rounds` times each; prints steps/s both ways and the overhead of Python, per
 fidelity. Asserts nothing.
 
-  PYTHONPATH=build/python python3 scripts/bench_python_step.py [--scenario FILE]
+  build/bin/rlpos-python scripts/bench_python_step.py [--scenario FILE]
       [--analytic-steps 20000] [--packet-steps 60] [--rounds 3]
 """
 import argparse
@@ -12,7 +12,9 @@ import os
 import statistics
 import time
 
-import rlpos
+from rlpos_python import import_rlpos
+
+rlpos = import_rlpos()
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SCENARIO = os.path.join(HERE, "..", "campaigns", "scenarios", "b.json")

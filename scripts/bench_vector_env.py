@@ -10,7 +10,7 @@ side by side in one run:
     analytic envs with make_vec and stepping each --memory-steps times, divided by their number.
 Each figure is the median of --rounds timings. Asserts nothing.
 
-  PYTHONPATH=build/python python3 scripts/bench_vector_env.py [--scenario FILE ...]
+  build/bin/rlpos-python scripts/bench_vector_env.py [--scenario FILE ...]
       [--steps 20000] [--batched-steps 400000] [--num-envs 1,8,64,256] [--rounds 3]
       [--threads N] [--memory-envs 256] [--memory-steps 2000]
 """
@@ -23,9 +23,11 @@ import sys
 import tempfile
 import time
 
-import numpy as np
+from rlpos_python import import_rlpos
 
-import rlpos
+rlpos = import_rlpos()
+import numpy as np  # noqa: E402 (after the check of the interpreter)
+
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..")

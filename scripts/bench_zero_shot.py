@@ -13,8 +13,10 @@ one row per scenario (rewards, ratios to the oracle, seconds) and the summary th
 policy for any scenario reads: median and P10 of the ratio, the share of scenarios at or above
 0.95, those under 0.8, the worst case and the slowest placement.
 
-  scripts/bench_zero_shot.py --policy DIR --scenarios DIR [--uavs 1] [--build DIR] [--jobs 2]
-                             [--csv FILE] [--oracle-cache FILE]
+  build/bin/rlpos-python scripts/bench_zero_shot.py --policy DIR --scenarios DIR [--uavs 1]
+      [--build DIR] [--jobs 2] [--csv FILE] [--oracle-cache FILE]
+
+(rlpos-python: the Python the build's binding is for; with --build DIR, DIR/bin/rlpos-python.)
 
 --oracle-cache FILE keeps the oracles' rewards between runs (coordinate descent takes seconds to
 minutes per scenario of several UAVs, and comparing policies on one set asks for the same ones),
@@ -34,6 +36,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+from rlpos_python import import_rlpos  # noqa: E402
 from oracle_cache import (OracleCacheError, binding_identity, load_cache,  # noqa: E402
                           oracle_key, save_cache)
 
@@ -110,8 +113,7 @@ def main():
         identity = binding_identity(args.build) if args.oracle_cache else ""
     except OracleCacheError as e:
         fail(str(e))
-    sys.path.insert(0, os.path.join(args.build, "python"))
-    import rlpos  # noqa: E402 (the build's module)
+    rlpos = import_rlpos(args.build)
 
     scenarios = scenarios_of(args.scenarios, args.uavs)
     if not scenarios:

@@ -4,7 +4,7 @@ CleanRL: 10 episodes of 1,000 steps on scenario B, then the greedy flight's fina
 against the oracle's. With --export DIR, the policy is also written as a TorchScript policy
 folder, and rlpos-sim flies it (position --positioner rl --policy DIR) to the same place.
 
-  PYTHONPATH=build/python python3 scripts/examples/ppo_torch.py [--scenario FILE] [--seed N]
+  build/bin/rlpos-python scripts/examples/ppo_torch.py [--scenario FILE] [--seed N]
       [--export DIR]
 """
 import argparse
@@ -13,11 +13,13 @@ import os
 import subprocess
 import time
 
-import numpy as np
-import torch
-from torch import nn
-
-import rlpos
+try:
+    import numpy as np
+    import rlpos
+    import torch
+    from torch import nn
+except ImportError as error:  # a python3 other than the binding's (pyenv, conda) comes first
+    raise SystemExit(f"{error}: run this with build/bin/rlpos-python, the Python rlpos is built for")
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SCENARIO = os.path.join(HERE, "..", "..", "campaigns", "scenarios", "b.json")

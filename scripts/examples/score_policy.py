@@ -3,16 +3,18 @@
 final position with ns-3 (rlpos.evaluate, as rlpos-sim eval) over several RngRuns, beside the
 scenario's baseline position. Replace `policy` with your own.
 
-  PYTHONPATH=build/python python3 scripts/examples/score_policy.py [--scenario FILE]
+  build/bin/rlpos-python scripts/examples/score_policy.py [--scenario FILE]
       [--runs 3] [--duration 5]
 """
 import argparse
 import os
 import statistics
 
-import numpy as np
-
-import rlpos
+try:
+    import numpy as np
+    import rlpos
+except ImportError as error:  # a python3 other than the binding's (pyenv, conda) comes first
+    raise SystemExit(f"{error}: run this with build/bin/rlpos-python, the Python rlpos is built for")
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SCENARIO = os.path.join(HERE, "..", "..", "campaigns", "scenarios", "b.json")
