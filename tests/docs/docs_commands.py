@@ -159,7 +159,7 @@ def free_port():
 def run_server(command, cwd, env):
     """`rlpos-campaign serve`: up, its page answers, then stopped. Returns (rc, output)."""
     port = free_port()
-    command = f'{command} --port {port}'
+    command = f'{command} --listen 127.0.0.1:{port}'
     server = subprocess.Popen(['bash', '-c', f'exec {command}'], cwd=cwd, env=env,
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     deadline = time.monotonic() + SERVE_DEADLINE_S
