@@ -18,4 +18,11 @@ std::string DescribeBuild(const Provenance& p) {
          ", Cyclone DDS " + p.cyclonedds_version;
 }
 
+std::string VersionText(const std::string& program) {
+  const Provenance p = ThisBuild();
+  return program + " " + RLPOS_BUILD_RELEASE + " (commit " + p.rlpos_version +
+         ")\nbuilt with ns-3 " + p.ns3_version + ", libtorch " + p.torch_version +
+         ", Cyclone DDS " + p.cyclonedds_version;
+}
+
 }  // namespace rlpos

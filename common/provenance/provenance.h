@@ -18,4 +18,8 @@ Provenance ThisBuild();
 // "rlpos V, ns-3 V, libtorch V, Cyclone DDS V": one build, for warnings about mixed builds.
 std::string DescribeBuild(const Provenance& p);
 
+// What PROGRAM --version prints: "PROGRAM RELEASE (commit DESCRIBE)" and the versions it was
+// built with on a second line.
+std::string VersionText(const std::string& program);
+
 }  // namespace rlpos

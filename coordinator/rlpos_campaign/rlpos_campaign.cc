@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "common/command_line/parse_error.h"
+#include "common/command_line/version_flag.h"
 #include "common/config/config_error.h"
 #include "common/process/stop_signal.h"
 #include "common/store/store_error.h"
@@ -244,6 +245,7 @@ int main(int argc, char** argv) {
   using namespace rlpos;
   CLI::App app{"rlpos-campaign: run RLpos experiment campaigns and read their results"};
   app.require_subcommand(1);
+  AddVersionFlag(app, "rlpos-campaign");
   CommandLine cli;
   cli.dds.role = DdsRole::kClient;
   AddRunCommand(app, cli);

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "common/command_line/parse_error.h"
+#include "common/command_line/version_flag.h"
 #include "common/logging/log.h"
 #include "idl/dds/dds_cli_options.h"
 #include "idl/dds/participant.h"
@@ -13,6 +14,7 @@ namespace rlpos {
 DaemonCommandLine::DaemonCommandLine(std::string program, const std::string& description,
                                      DdsRole role)
     : program_(std::move(program)), app_(description) {
+  AddVersionFlag(app_, program_);
   dds_.role = role;
 }
 

@@ -75,5 +75,17 @@ TEST(ProgramHelp, EveryProgramAndSubcommandAnswersHelp) {
   std::printf("%zu commands answered --help\n", checked.size());
 }
 
+// The four programs a package installs say their release and commit (docs/installing.md).
+TEST(ProgramVersion, TheFourProgramsPrintTheirReleaseAndCommit) {
+  for (const char* program : {"rlpos-sim", "rlpos-campaign", "rlpos-coordinator", "rlpos-worker"}) {
+    const CommandResult r = RunCommand("timeout 60 " + BuiltBinary(program) + " --version");
+    EXPECT_EQ(r.exit_code, 0) << program << " --version\n" << r.err;
+    const std::string first = r.out.substr(0, r.out.find('\n'));
+    EXPECT_EQ(first.rfind(std::string(program) + " " + RLPOS_RELEASE + " (commit ", 0), 0u)
+        << program << " --version: " << first;
+    EXPECT_NE(r.out.find("ns-3 "), std::string::npos) << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace rlpos::testing
