@@ -12,6 +12,10 @@
 
 namespace rlpos::sim {
 
+// The help of every option that takes a scenario: a path, or a shipped one's name
+// (common/process/shipped_data.h).
+inline constexpr const char* kScenarioHelp = "Scenario JSON, or a shipped scenario's name (b)";
+
 int RunValidate(const CommonOptions& options, bool json);
 int RunEval(const CommonOptions& options, const EvalOptions& eval);
 int RunTrain(const CommonOptions& options, const TrainOptions& train);

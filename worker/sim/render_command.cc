@@ -11,6 +11,7 @@
 #include "worker/map/map_links.h"
 #include "worker/map/map_render.h"
 #include "worker/map/trajectory_csv.h"
+#include "worker/sim/commands.h"
 
 namespace rlpos::sim {
 namespace {
@@ -135,7 +136,7 @@ void AddUePaths(map::MapScene& scene) {
 
 void AddRender(CLI::App& app, RenderCommand& r, CommonOptions& options) {
   r.command = app.add_subcommand("render", "Draw a map of the scenario (PNG or SVG)");
-  r.command->add_option("scenario", options.scenario_file, "Scenario JSON")->required();
+  r.command->add_option("scenario", options.scenario_file, kScenarioHelp)->required();
   auto* position =
       r.command
           ->add_option("--position", r.positions,

@@ -1,5 +1,6 @@
-// rlpos-sim's side of the RL module: finds it next to the binary (../lib) and forwards to it;
-// a general PPO policy's placement needs no module (worker/policy_folder/general_placement.h).
+// rlpos-sim's side of the RL module: finds it beside the binary (../lib/rlpos, in a build as in
+// an install) and forwards to it; a general PPO policy's placement needs no module
+// (worker/policy_folder/general_placement.h).
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -22,7 +23,7 @@ std::string ModulePath() {
     throw std::runtime_error("cannot locate the rlpos-sim binary (/proc/self/exe)");
   std::string dir(exe, static_cast<std::size_t>(n));
   dir = dir.substr(0, dir.rfind('/'));
-  return dir + "/../lib/librlpos_rl_commands.so";
+  return dir + "/../lib/rlpos/librlpos_rl_commands.so";
 }
 
 const RlCommands& Load() {

@@ -22,7 +22,9 @@
 #include <iostream>
 
 #include "common/command_line/parse_error.h"
+#include "common/command_line/version_flag.h"
 #include "common/config/config_error.h"
+#include "common/process/shipped_data.h"
 #include "common/scenario/names.h"
 #include "worker/sim/abort_guard.h"
 #include "worker/sim/commands.h"
@@ -66,7 +68,7 @@ void AddScenarioOverrides(CLI::App* command, CommonOptions& options) {
 
 void AddValidate(CLI::App& app, Invocation& in) {
   in.validate = app.add_subcommand("validate", "Check a scenario and print a summary");
-  in.validate->add_option("file", in.options.scenario_file, "Scenario JSON")->required();
+  in.validate->add_option("file", in.options.scenario_file, kScenarioHelp)->required();
   in.validate->add_flag("--json", in.validate_json, "Print the summary as JSON");
   AddScenarioOverrides(in.validate, in.options);
 }
@@ -74,7 +76,7 @@ void AddValidate(CLI::App& app, Invocation& in) {
 void AddEval(CLI::App& app, Invocation& in) {
   in.eval = app.add_subcommand("eval", "Simulate the UAV fixed at a position; print metrics");
   in.eval_options.progress = isatty(STDERR_FILENO) != 0;
-  in.eval->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
+  in.eval->add_option("--scenario", in.options.scenario_file, kScenarioHelp)->required();
   in.eval
       ->add_option("--position", in.eval_options.positions,
                    "UAV position x,y,z (m); once per UAV, in the scenario's order")
@@ -94,7 +96,7 @@ void AddEval(CLI::App& app, Invocation& in) {
 
 void AddTrain(CLI::App& app, Invocation& in) {
   in.train = app.add_subcommand("train", "Train the agent; write policy, learning curve, result");
-  in.train->add_option("--scenario", in.options.scenario_file, "Scenario JSON");
+  in.train->add_option("--scenario", in.options.scenario_file, kScenarioHelp);
   in.train->add_option("--generated", in.train_options.generated,
                        "Train a policy for any scenario, on a fresh generated scenario per "
                        "episode of these styles (urban,campus,suburb,open) instead of --scenario");
@@ -136,14 +138,15 @@ void AddTrain(CLI::App& app, Invocation& in) {
 
 void AddPosition(CLI::App& app, Invocation& in) {
   in.position = app.add_subcommand("position", "Where a positioner puts the UAV");
-  in.position->add_option("--scenario", in.options.scenario_file, "Scenario JSON")->required();
+  in.position->add_option("--scenario", in.options.scenario_file, kScenarioHelp)->required();
   in.position
       ->add_option("--positioner", in.position_options.positioner,
                    rlpos::Choices(rlpos::kPositioners))
       ->required()
       ->check(CLI::IsMember(rlpos::NameList(rlpos::kPositioners)));
   in.position->add_option("--policy", in.position_options.policy,
-                          "Folder written by train (rl; offsets around the rl position)");
+                          "Folder written by train, or a shipped policy's name (generalist-1uav); "
+                          "rl, and offsets around the rl position");
   in.position->add_option("--from", in.position_options.from, "offsets: around this x,y,z");
   in.position->add_option("--offset", in.position_options.offset,
                           "offsets: position 1-5 (10 m towards +x, -x, +y, -y, +z)");
@@ -151,9 +154,19 @@ void AddPosition(CLI::App& app, Invocation& in) {
   AddScenarioOverrides(in.position, in.options);
 }
 
+// A shipped scenario or policy may be named instead of given as a path (`--scenario b`).
+void ResolveShippedNames(Invocation& in) {
+  using rlpos::ResolveShipped, rlpos::ShippedKind;
+  if (!*in.import.command)  // import reads another tool's file, never a shipped scenario
+    in.options.scenario_file = ResolveShipped(in.options.scenario_file, ShippedKind::kScenario);
+  in.position_options.policy = ResolveShipped(in.position_options.policy, ShippedKind::kPolicy);
+  in.track.policy = ResolveShipped(in.track.policy, ShippedKind::kPolicy);
+}
+
 // Runs the subcommand that was parsed; bad input is one line on stderr and exit code 2.
-int Run(const Invocation& in) {
+int Run(Invocation& in) {
   try {
+    ResolveShippedNames(in);
     if (*in.validate)
       return RunValidate(in.options, in.validate_json);
     if (*in.describe.command)
@@ -188,6 +201,7 @@ int main(int argc, char** argv) {
   rlpos::InstallAbortGuard("rlpos-sim", kExitNs3Abort);
   CLI::App app{"rlpos-sim: train, position and evaluate a UAV in ns-3 scenarios"};
   app.require_subcommand(1);
+  rlpos::AddVersionFlag(app, "rlpos-sim");
   Invocation in;
   AddValidate(app, in);
   AddEval(app, in);

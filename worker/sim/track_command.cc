@@ -13,6 +13,7 @@
 #include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/placement_json.h"
+#include "worker/sim/commands.h"
 #include "worker/track/track_positioner.h"
 #include "worker/track/track_run.h"
 
@@ -116,7 +117,7 @@ void AddTrack(CLI::App& app, TrackCommand& t, CommonOptions& options) {
   t.command = app.add_subcommand(
       "track",
       "Fly a run in which the UEs move: the UAVs follow a positioner at their speed limits");
-  t.command->add_option("--scenario", options.scenario_file, "Scenario JSON")->required();
+  t.command->add_option("--scenario", options.scenario_file, kScenarioHelp)->required();
   t.command
       ->add_option("--positioner", t.positioner,
                    Choices(kTrackPositioners) +
@@ -125,8 +126,9 @@ void AddTrack(CLI::App& app, TrackCommand& t, CommonOptions& options) {
       ->required()
       ->check(CLI::IsMember(NameList(kTrackPositioners)));
   t.command->add_option("--policy", t.policy,
-                        "rl: a policy for any scenario (rlpos-sim train --generated), flown "
-                        "greedy from where the UAVs are at every decision");
+                        "rl: a policy for any scenario (rlpos-sim train --generated, or a shipped "
+                        "one's name: generalist-1uav), flown greedy from where the UAVs are at "
+                        "every decision");
   t.command->add_option("--duration", t.duration, "Seconds of the run")->required();
   t.command->add_option("--RngRun,--run", t.run, "RngRun: the UEs' trajectories (simulation.run)")
       ->required()
