@@ -6,16 +6,16 @@ block (its first ```sh block). Every command runs as written, through bash, in a
 repository root: symlinks to the checkout, `build` to the build folder, and `results/` one folder
 that the README's run empties first and the pages that read results share after it (CTest's
 fixture). Two changes: `/tmp/` is the page's own scratch folder and `HOME` another one, so that a
-run leaves nothing in the checkout and two pages never share a file. A command that takes minutes runs in the
-short form that docs/tests.md's table "The docs' commands" declares (that table is read here: a
-row whose text is no longer in its page fails too).
+run leaves nothing in the checkout and two pages never share a file. A command that takes minutes
+runs in the short form that docs/tests.md's table "The docs' commands" declares (that table is
+read here: a row whose text is no longer in its page fails too).
 
 A command fails the page when it exits non-zero or when its output loses its shape: `--json`
 prints one JSON object, a file it writes with `--out FILE` or `> FILE` is there and not empty, a
 .json of them parses, a .png is a PNG, an .svg an SVG.
 
 Usage: docs_commands.py BUILD_DIR SOURCE_DIR WORK_DIR PAGE    (PAGE: README.md, docs/rl.md, ...)
-       docs_commands.py --list SOURCE_DIR                      (the pages, one per line)
+(tests/docs/CMakeLists.txt registers a test per page that has an opening block.)
 """
 import json
 import os
@@ -23,6 +23,7 @@ import re
 import shlex
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -38,16 +39,6 @@ FENCE = re.compile(r'^```sh\n(.*?)^```', re.M | re.S)
 
 def fail(page, message):
     sys.exit(f'{page}: {message}')
-
-
-def pages(source_dir):
-    """README.md's two blocks, then every docs page with an opening block."""
-    found = ['README.md']
-    docs = os.path.join(source_dir, 'docs')
-    for name in sorted(os.listdir(docs)):
-        if name.endswith('.md') and FENCE.search(open(os.path.join(docs, name)).read()):
-            found.append(f'docs/{name}')
-    return found
 
 
 def blocks_of(source_dir, page):
@@ -150,7 +141,6 @@ def check_shape(command, stdout, cwd):
 
 
 def free_port():
-    import socket
     with socket.socket() as s:
         s.bind(('127.0.0.1', 0))
         return s.getsockname()[1]
@@ -181,9 +171,6 @@ def run_server(command, cwd, env):
 
 
 def main():
-    if len(sys.argv) == 3 and sys.argv[1] == '--list':
-        print('\n'.join(pages(sys.argv[2])))
-        return
     if len(sys.argv) != 5:
         sys.exit(__doc__)
     build_dir, source_dir, work_dir, page = sys.argv[1:]
@@ -220,8 +207,8 @@ def main():
             command = command.replace('/tmp/', scratch + '/tmp/')
             started = time.monotonic()
             if re.search(r'rlpos-campaign serve\b', command):
-                rc, output = run_server(command, root, env)
-                stdout = stderr = output
+                rc, stdout = run_server(command, root, env)
+                stderr = ''
             else:
                 run = subprocess.run(['bash', '-c', 'set -o pipefail; ' + command], cwd=root,
                                      env=env, capture_output=True, text=True,
