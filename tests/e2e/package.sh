@@ -3,7 +3,7 @@
 # `apt-get install` installs it, and from outside any checkout, with no PYTHONPATH and only the
 # system's PATH: every program's --version, `rlpos-sim validate` and `position` (rl, the shipped
 # policy for any scenario) on a shipped scenario, by path and by name, `import rlpos` and
-# `rlpos.make`, and a two-worker mini campaign with the installed programs. Then `apt-get purge`
+# `rlpos.make`, and a two-worker mini campaign with the installed programs. Then `apt-get remove`
 # leaves none of the package's files. Root only (apt); skipped where a package rlpos is already
 # installed (not ours to remove).
 # Usage: package.sh BIN_DIR SOURCE_DIR
@@ -75,12 +75,12 @@ expect_complete "$WORK/user/rlpos.db" 12  # per scenario: 2 position jobs, 4 eva
 ls "$WORK"/user/reports/*/throughput_ccdf_B.png >/dev/null 2>&1 || fail "the report has no plots"
 
 cd "$WORK"
-purge
+DEBIAN_FRONTEND=noninteractive apt-get remove -y -qq rlpos >/dev/null 2>&1 || fail "apt-get remove failed"
 left=$(while read -r path; do
   if [ -f "$path" ] || [ -L "$path" ]; then echo "$path"; fi
 done <"$WORK/files.txt")
-[ -z "$left" ] || fail "left after purge: $(echo "$left" | head -3)"
+[ -z "$left" ] || fail "left after apt-get remove: $(echo "$left" | head -3)"
 for dir in /usr/share/rlpos /usr/lib/rlpos /usr/lib/python3/dist-packages/rlpos; do
-  [ ! -e "$dir" ] || fail "$dir left after purge"
+  [ ! -e "$dir" ] || fail "$dir left after apt-get remove"
 done
-echo "package: $(basename "$deb") installed, used from outside a checkout, and purged clean"
+echo "package: $(basename "$deb") installed, used from outside a checkout, and removed clean"
