@@ -4,8 +4,8 @@
 The blocks run are the README's main command and its quick start, and each docs page's opening
 block (its first ```sh block). Every command runs as written, through bash, in a copy of the
 repository root: symlinks to the checkout, `build` to the build folder, and `results/` one folder
-that the README's run empties first and the pages that read results share after it (CTest's
-fixture). Two changes: `/tmp/` is the page's own scratch folder and `HOME` another one, so that a
+that the README's main command fills (e2e.mini_campaign runs it, as docs/tests.md's table says)
+and the pages that read results share after it (CTest's fixture docs_results). Two changes: `/tmp/` is the page's own scratch folder and `HOME` another one, so that a
 run leaves nothing in the checkout and two pages never share a file. A command that takes minutes
 runs in the short form that docs/tests.md's table "The docs' commands" declares (that table is
 read here: a row whose text is no longer in its page fails too).
@@ -176,10 +176,8 @@ def main():
     build_dir, source_dir, work_dir, page = sys.argv[1:]
     source_dir, work_dir = os.path.abspath(source_dir), os.path.abspath(work_dir)
     forms = short_forms(source_dir)
-    # The README's main command starts the results database the pages after it read.
+    # Filled by the README's main command (e2e.mini_campaign) for the pages that read it.
     results = os.path.join(work_dir, 'results')
-    if page == 'README.md':
-        shutil.rmtree(results, ignore_errors=True)
     os.makedirs(results, exist_ok=True)
     scratch = os.path.join(work_dir, page.replace('/', '_'))
     shutil.rmtree(scratch, ignore_errors=True)

@@ -1,14 +1,29 @@
 #!/usr/bin/env bash
-# The README's main command: campaigns/mini.json on 2 local workers completes, every job
-# succeeds exactly once, the metrics are plausible, and the report is written. Then: the train
-# jobs' artifacts are home and an rl eval re-runs from an exported policy with the same numbers;
-# the same campaign under a new name is served whole from the result cache.
+# The README's main command, read from README.md and run as written from a copy of the repository
+# root: campaigns/mini.json on 2 local workers completes, every job succeeds exactly once, the
+# metrics are plausible, and the report is written. Then: the train jobs' artifacts are home and an
+# rl eval re-runs from an exported policy with the same numbers; the same campaign under a new name
+# is served whole from the result cache (in a copy of the database).
+# Usage: mini_campaign.sh BIN_DIR SOURCE_DIR [RESULTS_DIR]
+# RESULTS_DIR is emptied and becomes the root's results/: the docs' pages that read a results
+# database use this one (tests/docs, the CTest fixture docs_results).
 source "$(dirname "$0")/lib.sh"
-DB=$WORK/rlpos.db
-"$CAMPAIGN" run "$SRC/campaigns/mini.json" --workers 2 --db "$DB" --tag "$TAG" \
-  >"$WORK/out.txt" 2>"$WORK/err.txt" || { cat "$WORK/err.txt" >&2; fail "run exited $?"; }
+RESULTS=${3:-$WORK/results}
+rm -rf "$RESULTS" && mkdir -p "$RESULTS"
+ROOT=$WORK/root
+mkdir "$ROOT"
+for entry in "$SRC"/*; do
+  case ${entry##*/} in build | build-* | results) ;; *) ln -s "$entry" "$ROOT/" ;; esac
+done
+ln -s "$BIN/.." "$ROOT/build"
+ln -s "$RESULTS" "$ROOT/results"
+MAIN=$(sed -n '/^```sh$/,/^```$/s/^scripts\/bootstrap && //p' "$SRC/README.md" | head -n 1)
+[ -n "$MAIN" ] || fail "README.md's first block has no 'scripts/bootstrap && COMMAND'"
+(cd "$ROOT" && bash -c "$MAIN") >"$WORK/out.txt" 2>"$WORK/err.txt" \
+  || { cat "$WORK/err.txt" >&2; fail "the README's main command exited non-zero: $MAIN"; }
 ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
 [ -n "$ID" ] || fail "run printed no campaign id"
+DB=$RESULTS/rlpos.db
 
 expect_complete "$DB" 44
 # Provenance on every result: the host, this build, and the sha256 of the scenario it ran.
@@ -36,7 +51,7 @@ expect_eq "metrics of the fixed positions" "$(sql "$DB" "SELECT scenario, positi
   WHERE positioner IN ('baseline', 'centroid', 'oracle') ORDER BY 1, 2, 3" | tr '|' ' ')" \
   "$(cat "$SRC/tests/e2e/golden/mini_fixed_positions.txt")"
 
-REPORT=$WORK/reports/$ID
+REPORT=$RESULTS/reports/$ID
 # A map per scenario (B, C), each with the rl flight of its train job.
 for f in summary.csv summary.md throughput_ccdf.csv delay_cdf.csv learning_curves.csv map_1.png \
   map_2.png; do
@@ -68,7 +83,7 @@ expect_eq "results csv rows" "$("$CAMPAIGN" results "$ID" --db "$DB" --format cs
 # Artifacts: each train job's five files, beside the database, matching their sha256.
 expect_eq "artifacts" "$(sql "$DB" "SELECT COUNT(*) FROM artifacts a JOIN jobs j ON j.id = a.job_id
   WHERE j.kind = 'train'")" 10
-ARTIFACTS=$WORK/rlpos.artifacts
+ARTIFACTS=$RESULTS/rlpos.artifacts
 while IFS='|' read -r path sha; do
   [ "$(sha256sum "$ARTIFACTS/$path" | cut -d' ' -f1)" = "$sha" ] || fail "artifact $path: sha256"
 done < <(sql "$DB" "SELECT path, sha256 FROM artifacts")
@@ -96,6 +111,10 @@ folder = os.path.dirname(os.path.abspath(sys.argv[1]))
 campaign["scenarios"] = [os.path.join(folder, s) for s in campaign["scenarios"]]
 json.dump(campaign, open(sys.argv[2], "w"))
 PY
+# In a copy: the pages that read results/ see the README's campaign alone.
+sqlite3 "$DB" ".backup '$WORK/again.db'"
+cp -r "$RESULTS/rlpos.artifacts" "$WORK/again.artifacts"
+DB=$WORK/again.db
 START=$SECONDS
 "$CAMPAIGN" run "$WORK/again.json" --workers 2 --db "$DB" --tag "$TAG" --no-progress \
   >"$WORK/again.txt" 2>"$WORK/again.err" || { cat "$WORK/again.err" >&2; fail "re-run exited $?"; }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Track runs in a campaign, at packet level: a "track" section on a generated campus whose four
-# UEs walk. A worker killed (SIGKILL) in the middle of a track run: the job runs again and the
+# UEs walk, the shipped policy for any scenario among its positioners (as campaigns/mobility.json). A worker killed (SIGKILL) in the middle of a track run: the job runs again and the
 # campaign completes. The same campaign run again into another store, without the result cache,
 # gives the same series, interval by interval, the retried run's included. `results --track`
 # and the report have one row per positioner, averaged over the RngRuns.
@@ -9,19 +9,22 @@ SIM=$BIN/rlpos-sim
 DB=$WORK/rlpos.db
 "$SIM" generate --seed 4 --style campus --ues 4 --mobility random_waypoint --out "$WORK/walk.json" \
   || fail "generate"
-cat >"$WORK/track.json" <<'JSON'
+cat >"$WORK/track.json" <<JSON
 {
   "name": "track-e2e",
-  "scenarios": [{"file": "walk.json", "set": ["env.step=10", "env.decision_interval=0.5"]}],
+  "scenarios": [{"file": "walk.json", "set": ["env.decision_interval=0.5"]}],
   "rng_runs": [1, 2],
   "positioners": [],
-  "track": {"positioners": ["centroid", "oracle-track"], "duration": 3, "fidelity": "packet"},
+  "track": {"positioners": ["centroid", "oracle-track",
+                          {"rl": {"policy": "$SRC/policies/generalist-1uav", "name": "generalist"}}],
+            "duration": 3, "fidelity": "packet"},
   "retries": 2,
   "job_timeout_s": 300
 }
 JSON
 start_run "$WORK/track.json"
 running_on_w0() {
+  kill -0 "$RUN" 2>/dev/null || fail "the run exited before a track job ran: $(cat "$WORK/err.txt")"
   [ -f "$DB" ] && [ "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE state = 'running'
     AND kind = 'track' AND worker_id = '$TAG-w0'" 2>/dev/null)" = 1 ]
 }
@@ -33,11 +36,11 @@ wait_until 60 sim_running || fail "the track run never started on w0"
 pkill -KILL -f -- "rlpos-worker --id $TAG-w0 " || fail "could not kill worker w0"
 wait "$RUN" || { cat "$WORK/err.txt" >&2; fail "run exited non-zero"; }
 
-expect_complete "$DB" 4
+expect_complete "$DB" 6
 expect_eq "attempt of the killed job" "$(sql "$DB" "SELECT attempt FROM jobs WHERE id = '$JOB'")" 2
 expect_eq "track runs, intervals" "$(sql "$DB" "SELECT COUNT(*), SUM(intervals) FROM track_runs")" \
-  "4|24"
-expect_eq "intervals stored" "$(sql "$DB" "SELECT COUNT(*) FROM track_intervals")" 24
+  "6|36"
+expect_eq "intervals stored" "$(sql "$DB" "SELECT COUNT(*) FROM track_intervals")" 36
 # The warm-up (1 s) leaves 4 of the 6 half-second intervals scored.
 expect_eq "scored intervals per run" "$(sql "$DB" \
   "SELECT DISTINCT scored_intervals FROM track_runs")" 4
@@ -60,7 +63,7 @@ expect_eq "results --track rows" "$(python3 -c "
 import json, sys
 rows = json.load(open(sys.argv[1]))
 print([(r['positioner'], r['runs'], r['fidelity']) for r in rows])
-" "$WORK/results.json")" "[('centroid', 2, 'packet'), ('oracle-track', 2, 'packet')]"
+" "$WORK/results.json")" "[('centroid', 2, 'packet'), ('oracle-track', 2, 'packet'), ('rl+generalist', 2, 'packet')]"
 # The mean over the RngRuns is the runs' own, as stored.
 expect_eq "oracle-track's mean reward" "$(python3 -c "
 import json, sys
@@ -71,7 +74,7 @@ print(round([r for r in json.load(open(sys.argv[1])) if r['positioner'] == 'orac
 # The report lists them: a CSV row per positioner and a section in summary.md.
 "$CAMPAIGN" report "$ID" --db "$DB" --out "$WORK/report" >/dev/null || fail "report"
 expect_eq "report: track_summary.csv rows" "$(tail -n +2 "$WORK/report/track_summary.csv" | cut -d, -f2 | tr '\n' ' ')" \
-  "centroid oracle-track "
+  "centroid oracle-track rl+generalist "
 grep -q "^## Track runs" "$WORK/report/summary.md" || fail "summary.md has no track section"
 # Its time series: each interval of each positioner averaged over the two runs, as SQLite has it.
 expect_eq "report: track_series.csv against the store" "$(python3 -c "
@@ -84,7 +87,7 @@ stored = sqlite3.connect(sys.argv[2]).execute(
 same = len(rows) == len(stored) and all(
     a[:3] == b[:3] and abs(a[3] - b[3]) <= 1e-9 for a, b in zip(rows, stored))
 print(len(rows), 'rows,', 'as stored' if same else 'not as stored')
-" "$WORK/report/track_series.csv" "$DB")" "12 rows, as stored"
+" "$WORK/report/track_series.csv" "$DB")" "18 rows, as stored"
 # Its figures, where matplotlib is.
 if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
   for figure in track_distributions track_series; do

@@ -29,7 +29,7 @@ count=0
 for scenario in "$src"/campaigns/scenarios/*.json; do
   positions=$("$src/scripts/lib/baseline_flags" "$bin/rlpos-sim" "$scenario")
   # shellcheck disable=SC2086 # one word per flag and position
-  same eval --scenario "$scenario" $positions --duration 2 --RngRun 1 --json
+  same eval --scenario "$scenario" $positions --duration 1.5 --RngRun 1 --json
   count=$((count + 1))
 done
 [ "$count" -ge 8 ] || fail "only $count shipped scenarios found"
