@@ -157,4 +157,23 @@ void ObjectReader::Finish() const {
   }
 }
 
+std::vector<std::string> ReadStringList(const nlohmann::json& v, const std::string& path,
+                                        const std::vector<std::string>& allowed) {
+  if (!v.is_array() || v.empty())
+    throw ConfigError(path, "expected a non-empty array of strings");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    // Reuse the enum check of ObjectReader through a one-key object.
+    const nlohmann::json wrapper = {
+        {"value", v[i]}};  // outlives the reader, which keeps a reference
+    ObjectReader item(wrapper, path);
+    try {
+      out.push_back(item.String("value", "", allowed));
+    } catch (const ConfigError& e) {
+      throw ConfigError(JoinPath(path, i), e.problem());
+    }
+  }
+  return out;
+}
+
 }  // namespace rlpos

@@ -57,6 +57,9 @@ class ObjectReader {
 
 // Value checks shared by the readers (also used for array elements).
 double CheckedNumber(const nlohmann::json& v, const std::string& path, NumberRange range);
+// A non-empty array of strings, each one of `allowed` (empty: any).
+std::vector<std::string> ReadStringList(const nlohmann::json& v, const std::string& path,
+                                        const std::vector<std::string>& allowed);
 std::string TypeName(const nlohmann::json& v);
 
 }  // namespace rlpos

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "common/config/config_error.h"
-#include "common/scenario/hyperparameter.h"
+#include "common/config/setting.h"
 
 namespace rlpos {
 
@@ -65,8 +65,8 @@ inline void CheckAgentCommonSpec(const AgentCommonSpec& a, const ObjectReader& r
                       "needs checkpoints: set agent.eval_interval > 0");
 }
 
-inline const HyperparameterTable<AgentCommonSpec>& AgentCommonHyperparameters() {
-  static const HyperparameterTable<AgentCommonSpec> table{
+inline const SettingsTable<AgentCommonSpec>& AgentCommonHyperparameters() {
+  static const SettingsTable<AgentCommonSpec> table{
       "agent",
       "/agent",
       "Every algorithm's: training length, checkpoints, seed. Where the default differs by "

@@ -5,7 +5,7 @@
 // (1, kept throughout there); the others differ from it or are not in it, as each entry says.
 #include <cstdint>
 
-#include "common/scenario/hyperparameter.h"
+#include "common/config/setting.h"
 
 namespace rlpos {
 
@@ -22,8 +22,8 @@ struct DqnSpec {
   bool double_dqn = true;
 };
 
-inline const HyperparameterTable<DqnSpec>& DqnHyperparameters() {
-  static const HyperparameterTable<DqnSpec> table{
+inline const SettingsTable<DqnSpec>& DqnHyperparameters() {
+  static const SettingsTable<DqnSpec> table{
       "dqn",
       "/agent",
       "DQN, the paper's agent and the default. From the paper's Table II: replay_capacity, "

@@ -6,7 +6,7 @@
 // (docs/rl.md, "PPO and SAC"). PPO's training budget is agent.train_episodes's, whose default
 // per algorithm is in agent_hyperparameters.h.
 #include "common/config/config_error.h"
-#include "common/scenario/hyperparameter.h"
+#include "common/config/setting.h"
 
 namespace rlpos {
 
@@ -31,8 +31,8 @@ inline void CheckPpoSpec(const PpoSpec& p, const ObjectReader& reader) {
     throw ConfigError(reader.PathOf("minibatches"), "must not exceed rollout_steps");
 }
 
-inline const HyperparameterTable<PpoSpec>& PpoHyperparameters() {
-  static const HyperparameterTable<PpoSpec> table{
+inline const SettingsTable<PpoSpec>& PpoHyperparameters() {
+  static const SettingsTable<PpoSpec> table{
       "ppo",
       "/agent/ppo",
       "PPO on the discrete moves; CleanRL's ppo.py values where they differ.",

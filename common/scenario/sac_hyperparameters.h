@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "common/scenario/hyperparameter.h"
+#include "common/config/setting.h"
 
 namespace rlpos {
 
@@ -23,8 +23,8 @@ struct SacSpec {
   std::optional<double> alpha;
 };
 
-inline const HyperparameterTable<SacSpec>& SacHyperparameters() {
-  static const HyperparameterTable<SacSpec> table{
+inline const SettingsTable<SacSpec>& SacHyperparameters() {
+  static const SettingsTable<SacSpec> table{
       "sac",
       "/agent/sac",
       "SAC on the continuous displacements (env.action_space \"continuous\"); CleanRL's "

@@ -2,26 +2,6 @@
 
 namespace rlpos {
 
-const std::vector<std::string>& MobilityModelNames() {
-  // In the order of MobilityModel.
-  static const std::vector<std::string> names{"static", "random_walk", "random_waypoint",
-                                              "gauss_markov", "crowd"};
-  return names;
-}
-
-std::string MobilityModelName(MobilityModel model) {
-  return MobilityModelNames()[static_cast<std::size_t>(model)];
-}
-
-std::optional<MobilityModel> ParseMobilityModel(const std::string& name) {
-  const auto& names = MobilityModelNames();
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (names[i] == name)
-      return static_cast<MobilityModel>(i);
-  }
-  return std::nullopt;
-}
-
 double Scenario::TotalDemandMbps() const {
   double total = 0.0;
   for (const auto& ue : ues)

@@ -1,42 +1,34 @@
 #pragma once
-// Every algorithm's declared hyperparameters as text: the docs table that
-// `rlpos-sim describe hyperparameters` prints and docs/hyperparameters.md holds.
+// Every section's declared settings as text: the docs tables that `rlpos-sim describe settings`
+// and `describe hyperparameters` print, and docs/hyperparameters.md and the settings tables of
+// docs/scenarios.md and docs/rl.md hold.
 #include <string>
 #include <vector>
 
-#include "common/config/object_reader.h"
+#include "common/config/setting_rows.h"
 
 namespace rlpos {
 
-// One row of a docs table: everything as text.
-struct HyperparameterRow {
-  std::string key;            // dotted, as --set takes it: "agent.ppo.clip"
-  std::string type;           // real | integer | boolean | real or null
-  std::string default_value;  // as JSON; in the shared section, the first algorithm's it covers
-  // The docs' default cell: default_value, or where the algorithms the section covers have
-  // different defaults, each one's: "dqn 1000, ppo 4000, sac 2500".
-  std::string default_text;
-  std::string range;  // "(0, 1]", "[1, 1000]", ">= 0"; empty for booleans
-  std::string doc;
-  NumberRange bounds;  // the range as declared, for tests that probe it
-};
+// The scenario's sections (venue, building, ue, uav, each mobility model's, wifi, traffic,
+// simulation, env, env.reward), then the agent's (AllHyperparameterSections).
+std::vector<SettingsSection> AllSettingsSections();
 
-struct HyperparameterSection {
-  std::string section;  // "agent" (every algorithm's) or the algorithm
-  std::string path;     // its JSON object: "/agent", "/agent/ppo", ...
-  std::string summary;
-  std::vector<HyperparameterRow> rows;
-};
+// The section named `section` ("wifi", "env.reward", "ppo", ...); throws std::invalid_argument
+// naming the known ones when there is none.
+SettingsSection SettingsSectionNamed(const std::string& section);
 
-// The shared section ("agent", with every algorithm's defaults) first, then each algorithm's in
-// AllAlgorithms() order.
-std::vector<HyperparameterSection> AllHyperparameterSections();
+// The shared hyperparameters ("agent", with every algorithm's defaults) first, then each
+// algorithm's own in AllAlgorithms() order.
+std::vector<SettingsSection> AllHyperparameterSections();
 
 // The sections that apply to `algorithm`: the shared one with that algorithm's defaults, and its
 // own. Empty: all of them.
-std::vector<HyperparameterSection> HyperparameterSectionsFor(const std::string& algorithm);
+std::vector<SettingsSection> HyperparameterSectionsFor(const std::string& algorithm);
 
-// A markdown page: one heading, summary and table per section.
-std::string HyperparametersMarkdown(const std::vector<HyperparameterSection>& sections);
+// The named default sets (default_sets.h) as a Markdown table: name, when it applies, settings.
+std::string DefaultSetsMarkdown();
+
+// docs/hyperparameters.md: a title, then each section's heading, summary and table.
+std::string HyperparametersMarkdown(const std::vector<SettingsSection>& sections);
 
 }  // namespace rlpos

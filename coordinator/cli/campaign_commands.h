@@ -26,7 +26,6 @@ struct RunOptions {
   std::string db = "results/rlpos.db";
   std::string report_dir;  // default results/reports/<campaign id>
   bool progress = true;    // redraw a progress bar (a TTY) or print a line now and then
-  int domain = -1;         // -1: derived from the tag
   std::string tag;         // DDS discovery tag; default: random (rlpos-run-<pid>-<hex>)
   bool dry_run = false;    // print the campaign id and its jobs by scenario and kind; run nothing
   std::string log_dir;     // default results/logs/<tag>

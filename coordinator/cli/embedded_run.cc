@@ -185,12 +185,11 @@ struct RunSite {
   fs::path log_dir;
 };
 
-// The private loopback domain of the run: the tag's, unless one is given.
-DdsOptions LoopbackDds(const RunOptions& options, const std::string& tag) {
+// The private loopback domain of the run: the tag's.
+DdsOptions LoopbackDds(const std::string& tag) {
   DdsOptions dds;
   dds.loopback_tag = tag;
-  dds.domain = options.domain >= 0 ? options.domain
-                                   : 1 + static_cast<int>(std::hash<std::string>{}(tag) % 200);
+  dds.domain = 1 + static_cast<int>(std::hash<std::string>{}(tag) % 200);
   CheckDdsOptions(dds);
   return dds;
 }
@@ -215,7 +214,7 @@ RunSite PrepareSite(const RunOptions& options) {
   ::unsetenv("RLPOS_SECURITY");
   ::unsetenv("RLPOS_IDENTITY");
   site.tag = options.tag.empty() ? NewTag() : options.tag;
-  site.dds = LoopbackDds(options, site.tag);
+  site.dds = LoopbackDds(site.tag);
   site.db_dir = fs::absolute(options.db).parent_path();
   fs::create_directories(site.db_dir);
   CheckDatabaseIsFree(options.db);

@@ -19,12 +19,15 @@ import sys
 GENERATORS = {
     'metrics': ['rlpos-sim', 'describe', 'metrics'],
     'track-metrics': ['rlpos-sim', 'describe', 'track-metrics'],
+    'default-sets': ['rlpos-sim', 'describe', 'defaults'],
 }
+# settings-<section>: that section's settings table (rlpos-sim describe settings --section).
+SETTINGS_PREFIX = 'settings-'
 # The exit codes' one declaration: the ExitCode enum of rlpos-campaign. The docs' table explains
 # each code at more length, so only its set of codes is checked against the enum.
 EXIT_CODES_HEADER = 'coordinator/cli/campaign_commands.h'
 EXIT_CODE = re.compile(r'^\s*kExit\w+\s*=\s*(\d+),', re.M)
-BLOCK = re.compile(r'(<!-- BEGIN GENERATED ([\w-]+) -->\n)(.*?)(<!-- END GENERATED \2 -->)', re.S)
+BLOCK = re.compile(r'(<!-- BEGIN GENERATED ([\w.-]+) -->\n)(.*?)(<!-- END GENERATED \2 -->)', re.S)
 LINK = re.compile(r'\[[^\]]*\]\(([^)\s]+)\)')
 
 
@@ -65,8 +68,15 @@ def check_links(pages, source_dir):
     return errors
 
 
+def generator(name):
+    """The command that prints block `name`, or None."""
+    if name.startswith(SETTINGS_PREFIX):  # one section's settings table
+        return ['rlpos-sim', 'describe', 'settings', '--section', name[len(SETTINGS_PREFIX):]]
+    return GENERATORS.get(name)
+
+
 def generated(bin_dir, name):
-    cmd = GENERATORS[name]
+    cmd = generator(name)
     run = subprocess.run([os.path.join(bin_dir, cmd[0])] + cmd[1:], capture_output=True,
                          text=True, timeout=60)
     if run.returncode != 0:
@@ -96,12 +106,12 @@ def check_blocks(pages, bin_dir, source_dir, fix):
             if name == 'exit-codes':
                 errors.extend(check_exit_codes(rel, m.group(3), source_dir))
                 return m.group(0)
-            if name not in GENERATORS:
+            if generator(name) is None:
                 errors.append(f'{rel}: generated block "{name}" has no generator')
                 return m.group(0)
             want = generated(bin_dir, name)
             if m.group(3) != want and not fix:
-                errors.append(f'{rel}: block "{name}" differs from `{" ".join(GENERATORS[name])}`'
+                errors.append(f'{rel}: block "{name}" differs from `{" ".join(generator(name))}`'
                               f' (run tests/docs/check_docs.py BIN_DIR . --fix)')
             return m.group(1) + want + m.group(4)
 

@@ -14,6 +14,7 @@
 #include "common/config/config_error.h"
 #include "common/hash/sha256.h"
 #include "common/provenance/provenance.h"
+#include "common/scenario/default_sets.h"
 #include "common/scenario/names.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/scenario_parser.h"
@@ -51,22 +52,12 @@ std::vector<std::string> StyleNames(const std::vector<GeneratorStyle>& styles) {
   return names;
 }
 
-// What every drawn scenario gets before the user's --set: the fidelity the batched training
-// runs, PPO, the observations that mean the same everywhere, and a network and batch sized for
-// many scenarios (docs/rl.md, "A policy for any scenario").
+// What every drawn scenario gets before the user's --set: the named default set (default_sets.h)
+// and the command's --seed.
 std::vector<std::string> GeneralistDefaults(const TrainOptions& t, int max_uavs) {
-  std::vector<std::string> o = AlgorithmOverrides("ppo");
-  o.push_back("env.fidelity=analytic");
-  o.push_back(max_uavs > 1
-                  ? R"(env.observations=["zone","ues","heights","coverage","lookahead","others"])"
-                  : R"(env.observations=["zone","ues","heights","coverage","lookahead"])");
-  o.push_back("agent.hidden=[128,128]");
-  o.push_back("agent.ppo.num_envs=16");
-  o.push_back("agent.ppo.gamma=0.95");
-  o.push_back("agent.ppo.epochs=4");
-  o.push_back("agent.train_episode_steps=40");
-  if (t.seed >= 0)
-    o.push_back("agent.seed=" + std::to_string(t.seed));
+  std::vector<std::string> o = AnyScenarioDefaults(max_uavs).overrides;
+  if (t.seed)
+    o.push_back("agent.seed=" + std::to_string(*t.seed));
   return o;
 }
 
@@ -186,13 +177,16 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     throw ConfigError("--generated", "and --scenarios exclude each other");
   if (!options.scenario_file.empty())
     throw ConfigError("--scenario", "trains for one scenario; --generated and --scenarios for any");
-  if (t.steps <= 0)
+  if (!t.steps)
     throw ConfigError("--steps", "is required with --generated and --scenarios");
-  if (t.episodes > 0)
+  const long long steps = *t.steps;
+  const int validation_scenarios =
+      t.validation_scenarios.value_or(GeneralistOptions{}.validation_scenarios);
+  if (t.episodes)
     throw ConfigError("--episodes", "counts one scenario's episodes; give --steps instead");
-  if (!t.algorithm.empty() && t.algorithm != "ppo")
+  if (t.algorithm && *t.algorithm != "ppo")
     throw ConfigError("--algorithm", "only ppo trains across scenarios in this version");
-  if (!t.fidelity.empty() && t.fidelity != "analytic")
+  if (t.fidelity && *t.fidelity != "analytic")
     throw ConfigError("--fidelity", "training across scenarios runs at analytic fidelity");
   if (!t.scenarios_dir.empty() && (t.uavs != "1" || !t.ues.empty()))
     throw ConfigError("--uavs", "and --ues shape --generated's draws; --scenarios takes the set's");
@@ -206,7 +200,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
   // What the training is: a checkpoint of anything else is not resumed.
   const GeneralistCheckpoint checkpoint(
       partial, Sha256Hex(ToJson(settings).dump() + source.description.dump() + "|" +
-                         std::to_string(t.steps) + "|" + std::to_string(t.validation_scenarios)));
+                         std::to_string(steps) + "|" + std::to_string(validation_scenarios)));
   const std::optional<SavedCheckpoint> resumed = checkpoint.Find();
   std::error_code ec;
   if (!resumed) {
@@ -217,10 +211,10 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
   try {
     UavPositioningEnv example(settings);
     PpoAgent agent(settings.agent, static_cast<int>(example.ObservationSpace().Dim()),
-                   example.ActionSpace().n, t.steps, example.UeSlots());
+                   example.ActionSpace().n, steps, example.UeSlots());
     GeneralistOptions g;
-    g.steps = t.steps;
-    g.validation_scenarios = t.validation_scenarios;
+    g.steps = steps;
+    g.validation_scenarios = validation_scenarios;
     const fs::path curve_file = partial / "learning_curve.csv";
     std::ofstream curve;
     GeneralistCheckpoints checkpoints;
@@ -234,7 +228,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
       seconds_before = resumed->seconds;
       std::fprintf(stderr, "resuming from the checkpoint in %s: step %lld of %lld\n",
                    partial.string().c_str(), static_cast<long long>(resumed->state.result.steps),
-                   t.steps);
+                   steps);
     } else {
       curve.open(curve_file);
       curve << "steps,episodes,train_final_reward,validation_ratio,validation_worst_ratio,"
@@ -268,10 +262,9 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
         return;
       last_print = now;
       const double elapsed = std::chrono::duration<double>(now - started).count();
-      const double share =
-          std::min(1.0, static_cast<double>(p.steps) / static_cast<double>(t.steps));
+      const double share = std::min(1.0, static_cast<double>(p.steps) / static_cast<double>(steps));
       std::fprintf(stderr, "steps %lld/%lld (%.0f%%), episodes %lld, final reward %.3f",
-                   static_cast<long long>(p.steps), t.steps, 100 * share,
+                   static_cast<long long>(p.steps), steps, 100 * share,
                    static_cast<long long>(p.episodes), p.train_final_reward);
       if (p.validation)
         std::fprintf(stderr, ", validation %.3f of the oracle, worst %.3f (best mean %.3f)",
@@ -307,7 +300,7 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
       result["training"]["generator_seeds"] = {first + r.first_draw, first + r.last_draw};
       result["training"]["validation_seeds"] = {
           kValidationSeedBase,
-          kValidationSeedBase + static_cast<std::uint64_t>(t.validation_scenarios) - 1};
+          kValidationSeedBase + static_cast<std::uint64_t>(validation_scenarios) - 1};
     }
     // The replay's runs: a general policy is flown greedy from the baseline with run 1.
     result.update(SeedStreamJson(first_run, 1));

@@ -75,17 +75,17 @@ void WriteCurveRow(std::ostream& out, const EpisodeRecord& r) {
 // The scenario overrides the train flags make.
 std::vector<std::string> TrainOverrides(const TrainOptions& t) {
   std::vector<std::string> extra;
-  if (!t.algorithm.empty()) {
+  if (t.algorithm) {
     // SAC acts on displacements, DQN and PPO on the moves: the flag picks the space as well.
-    for (auto& o : AlgorithmOverrides(t.algorithm))
+    for (auto& o : AlgorithmOverrides(*t.algorithm))
       extra.push_back(std::move(o));
   }
-  if (!t.fidelity.empty())
-    extra.push_back("env.fidelity=" + t.fidelity);
-  if (t.seed >= 0)
-    extra.push_back("agent.seed=" + std::to_string(t.seed));
-  if (t.episodes > 0)
-    extra.push_back("agent.train_episodes=" + std::to_string(t.episodes));
+  if (t.fidelity)
+    extra.push_back("env.fidelity=" + *t.fidelity);
+  if (t.seed)
+    extra.push_back("agent.seed=" + std::to_string(*t.seed));
+  if (t.episodes)
+    extra.push_back("agent.train_episodes=" + std::to_string(*t.episodes));
   return extra;
 }
 
@@ -277,7 +277,7 @@ int TrainCommand(const CommonOptions& options, const TrainOptions& t) {
   if (options.scenario_file.empty())
     throw ConfigError("--scenario",
                       "is required (or --generated or --scenarios, for any scenario)");
-  if (t.steps > 0)
+  if (t.steps)
     throw ConfigError("--steps", "is for --generated and --scenarios; give --episodes");
   const Scenario s = LoadScenarioFor(options, TrainOverrides(t));
   if (s.agent.improvement_reward) {

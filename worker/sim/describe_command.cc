@@ -4,9 +4,9 @@
 
 #include "common/metrics/eval_metrics.h"
 #include "common/metrics/track_metrics.h"
-#include "common/scenario/hyperparameter_docs.h"
 #include "common/scenario/names.h"
 #include "common/scenario/scenario_parser.h"
+#include "common/scenario/settings_docs.h"
 #include "worker/sim/commands.h"
 
 namespace rlpos::sim {
@@ -25,6 +25,23 @@ void AddDescribe(CLI::App& app, DescribeCommand& describe) {
           "--algorithm", describe.algorithm,
           Choices(kAlgorithms) + ": its own and the shared ones (default: every algorithm)")
       ->check(CLI::IsMember(AllAlgorithms()));
+  describe.settings = describe.command->add_subcommand(
+      "settings",
+      "Print every setting of a scenario, section by section (key, type, default, values, doc)");
+  std::vector<std::string> sections;
+  std::string listed;
+  for (const auto& section : AllSettingsSections()) {
+    sections.push_back(section.section);
+    listed += (listed.empty() ? "" : ", ") + section.section;
+  }
+  describe.settings
+      ->add_option("--section", describe.section,
+                   "One section's table alone, without heading: " + listed)
+      ->check(CLI::IsMember(sections));
+  describe.defaults = describe.command->add_subcommand(
+      "defaults", "Print the named default sets a kind of run starts from (name, use, settings)");
+  describe.settings->add_flag("--json", describe.json,
+                              "As JSON: [{section, path, summary, settings: [{key, ...}]}]");
 }
 
 int RunDescribe(const DescribeCommand& describe) {
@@ -32,8 +49,20 @@ int RunDescribe(const DescribeCommand& describe) {
     std::cout << EvalMetricsMarkdown();
   else if (*describe.track_metrics)
     std::cout << TrackMetricsMarkdown();
-  else
+  else if (*describe.defaults)
+    std::cout << DefaultSetsMarkdown();
+  else if (*describe.hyperparameters)
     std::cout << HyperparametersMarkdown(HyperparameterSectionsFor(describe.algorithm));
+  else if (describe.json)
+    std::cout << SettingsSectionsJson(describe.section.empty()
+                                          ? AllSettingsSections()
+                                          : std::vector{SettingsSectionNamed(describe.section)})
+                     .dump(2)
+              << "\n";
+  else if (!describe.section.empty())
+    std::cout << SettingsTableMarkdown(SettingsSectionNamed(describe.section));
+  else
+    std::cout << SettingsSectionsMarkdown(AllSettingsSections());
   return kExitOk;
 }
 

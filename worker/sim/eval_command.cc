@@ -26,10 +26,10 @@ void ShowProgress(double now, double end) {
 
 int RunEval(const CommonOptions& options, const EvalOptions& eval) {
   std::vector<std::string> extra;
-  if (eval.duration > 0)
-    extra.push_back("simulation.duration=" + std::to_string(eval.duration));
-  if (eval.run >= 0)
-    extra.push_back("simulation.run=" + std::to_string(eval.run));
+  if (eval.duration)
+    extra.push_back("simulation.duration=" + std::to_string(*eval.duration));
+  if (eval.run)
+    extra.push_back("simulation.run=" + std::to_string(*eval.run));
   const Scenario scenario = LoadScenarioFor(options, extra);
   const Placement placement = ParsePlacement(scenario, eval.positions, "--position");
   Log(LogLevel::kInfo, "evaluating scenario " + scenario.name);

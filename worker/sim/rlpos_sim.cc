@@ -9,7 +9,7 @@
 //   rlpos-sim position --scenario FILE --positioner NAME [--policy DIR] [--json]
 //   rlpos-sim track --scenario FILE --positioner NAME --duration S --RngRun N
 //                   [--fidelity analytic] [--json]
-//   rlpos-sim describe metrics | hyperparameters [--algorithm dqn|ppo|sac]
+//   rlpos-sim describe metrics | track-metrics | hyperparameters [--algorithm A] | settings
 //   rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]
 //   rlpos-sim render SCENARIO [--position x,y,z]... [--result FILE] [--side] --out FILE.png|.svg
 //   rlpos-sim generate --seed N [--style urban|campus|suburb|open] [--uavs K] [--ues M]

@@ -2,6 +2,7 @@
 // What rlpos-sim and the RL module it loads (worker/rl_commands) share: the subcommands' options,
 // the exit codes and how a command loads its scenario. The module's entry point is
 // rl_plugin_api.h.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,17 +27,18 @@ Scenario LoadScenarioFor(const CommonOptions& options, std::vector<std::string> 
 
 struct EvalOptions {
   std::vector<std::string> positions;  // x,y,z per UAV
-  double duration = -1;
-  long long run = -1;
+  std::optional<double> duration;      // unset: the scenario's simulation.duration
+  std::optional<long long> run;        // unset: the scenario's simulation.run
   bool json = false;
   bool progress = false;
 };
 
 struct TrainOptions {
-  std::string algorithm;  // empty: the scenario's agent.algorithm
-  std::string fidelity;   // empty: the scenario's env.fidelity
-  long long seed = -1;    // -1: the scenario's agent.seed
-  int episodes = -1;      // -1: the scenario's agent.train_episodes
+  // Unset: the scenario's agent.algorithm, env.fidelity, agent.seed, agent.train_episodes.
+  std::optional<std::string> algorithm;
+  std::optional<std::string> fidelity;
+  std::optional<long long> seed;
+  std::optional<int> episodes;
   std::string out;
   bool json = false;
   // A policy for any scenario (instead of --scenario): trained on a fresh generated scenario per
@@ -45,8 +47,9 @@ struct TrainOptions {
   std::string scenarios_dir;
   std::string uavs = "1";  // --generated: UAV counts, "1" or "1-3"
   std::string ues;         // --generated: UE counts, "6-16" (empty: the generator's default)
-  long long steps = -1;    // env steps to train on (--generated, --scenarios)
-  int validation_scenarios = 24;
+  std::optional<long long> steps;  // env steps to train on (--generated, --scenarios)
+  // Unset: the training's own (GeneralistOptions, worker/vector_training).
+  std::optional<int> validation_scenarios;
   double checkpoint_seconds = 60;  // between checkpoints (--generated, --scenarios)
 };
 

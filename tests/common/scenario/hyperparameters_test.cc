@@ -7,7 +7,7 @@
 #include <sstream>
 #include <type_traits>
 
-#include "common/scenario/hyperparameter_docs.h"
+#include "common/scenario/settings_docs.h"
 #include "common/scenario/scenario_parser.h"
 #include "tests/common/scenario/scenario_error.h"
 
@@ -16,15 +16,8 @@ namespace {
 
 using nlohmann::json;
 
-std::string Pointer(const std::string& dotted_key) {
-  std::string path = "/" + dotted_key;
-  for (auto& c : path)
-    c = (c == '.') ? '/' : c;
-  return path;
-}
-
 // A value inside the declared range that is not the default.
-json ValidValue(const HyperparameterRow& row) {
+json ValidValue(const SettingRow& row) {
   const json fallback = json::parse(row.default_value);
   const NumberRange& r = row.bounds;
   if (row.type == "boolean")
@@ -40,7 +33,7 @@ json ValidValue(const HyperparameterRow& row) {
 }
 
 // Values just beyond the declared range (none for booleans, "above" only when bounded).
-std::vector<json> OutOfRangeValues(const HyperparameterRow& row) {
+std::vector<json> OutOfRangeValues(const SettingRow& row) {
   if (row.type == "boolean")
     return {"yes"};
   const NumberRange& r = row.bounds;
@@ -107,13 +100,13 @@ TEST(Hyperparameters, TheDocsPageIsTheDeclarationsRendering) {
 }
 
 // The row of `key` in `section`; fails the test when there is none.
-const HyperparameterRow& RowOf(const HyperparameterSection& section, const std::string& key) {
+const SettingRow& RowOf(const SettingsSection& section, const std::string& key) {
   for (const auto& row : section.rows) {
     if (row.key == key)
       return row;
   }
   ADD_FAILURE() << key << " is not in " << section.section;
-  static const HyperparameterRow none{};
+  static const SettingRow none{};
   return none;
 }
 
@@ -164,7 +157,7 @@ TEST(Hyperparameters, AnAlgorithmsTablesAreTheSharedOneAndItsOwn) {
   EXPECT_EQ(sections[1].section, "ppo");
   EXPECT_EQ(sections[1].rows[0].key, "agent.ppo.learning_rate");
   EXPECT_EQ(sections[1].rows[0].default_value, "0.001");
-  EXPECT_EQ(sections[1].rows[0].range, "(0, 1]");
+  EXPECT_EQ(sections[1].rows[0].values, "(0, 1]");
   EXPECT_EQ(AllHyperparameterSections().size(), 4u);
 }
 

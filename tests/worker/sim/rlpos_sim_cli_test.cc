@@ -320,5 +320,29 @@ TEST(RlposSimCli, DescribeRefusesAnUnknownAlgorithmOrNoTable) {
   EXPECT_EQ(RunCommand(Sim("describe")).exit_code, 2);
 }
 
+TEST(RlposSimCli, DescribeSettingsEverySectionOrOne) {
+  const auto all = RunCommand(Sim("describe settings"));
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  for (const char* heading :
+       {"## venue\n", "## wifi\n", "## env.reward\n", "## agent\n", "## sac\n"})
+    EXPECT_NE(all.out.find(heading), std::string::npos) << heading;
+  const auto wifi = RunCommand(Sim("describe settings --section wifi"));
+  ASSERT_EQ(wifi.exit_code, 0) << wifi.err;
+  EXPECT_EQ(wifi.out.rfind("| key | type | default | values | |\n", 0), 0u) << wifi.out;
+  EXPECT_NE(wifi.out.find("| `wifi.tx_power` | real | 20.0 dBm | [-30, 40] dBm |"),
+            std::string::npos)
+      << wifi.out;
+  EXPECT_EQ(wifi.out.find("env."), std::string::npos) << wifi.out;
+  const auto json = RunCommand(Sim("describe settings --section env.reward --json"));
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const auto sections = nlohmann::json::parse(json.out);
+  ASSERT_EQ(sections.size(), 1u) << json.out;
+  EXPECT_EQ(sections[0]["settings"][0]["key"], "env.reward.name");
+  const auto unknown = RunCommand(Sim("describe settings --section wlan"));
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_TRUE(unknown.out.empty()) << unknown.out;
+  EXPECT_NE(unknown.err.find("--section"), std::string::npos) << unknown.err;
+}
+
 }  // namespace
 }  // namespace rlpos::testing
