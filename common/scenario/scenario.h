@@ -9,14 +9,11 @@
 #include <vector>
 
 #include "common/config/object_spec.h"
-#include "common/scenario/agent_hyperparameters.h"
+#include "common/scenario/agent_settings.h"
 #include "common/scenario/building_settings.h"
-#include "common/scenario/dqn_hyperparameters.h"
 #include "common/scenario/env_settings.h"
 #include "common/scenario/geometry.h"
 #include "common/scenario/mobility_settings.h"
-#include "common/scenario/ppo_hyperparameters.h"
-#include "common/scenario/sac_hyperparameters.h"
 #include "common/scenario/traffic_settings.h"
 #include "common/scenario/uav_settings.h"
 #include "common/scenario/ue_settings.h"
@@ -32,28 +29,6 @@ using Placement = std::vector<Vec3>;
 constexpr double kMinUavSeparation = 1.0;
 // The most UAVs a scenario holds (bounded like every list from a document).
 constexpr std::size_t kMaxUavs = 8;
-
-// The agent: its algorithm, network and hyperparameters. Each algorithm declares its own in
-// one file (scenario/dqn_hyperparameters.h, ppo_..., sac_...) and reads only its own member;
-// the keys every algorithm shares (agent_hyperparameters.h) are the base, as their keys sit in
-// "agent" itself. DQN's keys sit in "agent" too (DQN came first), but in C++ they are
-// agent.dqn: a PPO or SAC that named DQN's gamma or replay would not compile.
-// agent.ue_encoder's bounds: a few small layers, applied to each UE slot.
-constexpr int kMaxUeEncoderLayers = 4;
-constexpr int kMaxUeEncoderWidth = 512;
-
-struct AgentSpec : AgentCommonSpec {
-  std::string algorithm = "dqn";  // dqn | ppo | sac (sac needs env.action_space "continuous")
-  std::vector<int> hidden = {32, 32};
-  // PPO only, with "ues" in env.observations: the widths of a network shared by the UE slots
-  // (ReLU after each), whose mean over the present slots stands in for the slots in the input of
-  // the hidden layers, so the policy takes the UEs as a set. Empty: none, the slots go in as they
-  // are.
-  std::vector<int> ue_encoder;
-  DqnSpec dqn;
-  PpoSpec ppo;
-  SacSpec sac;
-};
 
 struct Scenario {
   std::string name;

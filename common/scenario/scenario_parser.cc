@@ -80,43 +80,12 @@ Spec ReadAlgorithm(const json& v, const SettingsTable<Spec>& table) {
   return spec;
 }
 
-std::vector<int> ReadHidden(const json& h, const std::string& path) {
-  if (!h.is_array() || h.empty())
-    throw ConfigError(path, "expected [units, ...]");
-  std::vector<int> hidden;
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    hidden.push_back(static_cast<int>(CheckedNumber(h[i], JoinPath(path, i), Between(1, 4096))));
-  }
-  return hidden;
-}
-
-std::vector<int> ReadUeEncoder(const json& e, const std::string& path) {
-  if (!e.is_array())
-    throw ConfigError(path, "expected [units, ...] (or [] for none)");
-  if (e.size() > static_cast<std::size_t>(kMaxUeEncoderLayers)) {
-    throw ConfigError(
-        path, std::to_string(e.size()) + " layers; at most " + std::to_string(kMaxUeEncoderLayers));
-  }
-  std::vector<int> widths;
-  for (std::size_t i = 0; i < e.size(); ++i) {
-    const std::string at = JoinPath(path, i);
-    const double units = CheckedNumber(e[i], at, Between(1, kMaxUeEncoderWidth));
-    if (units != std::floor(units))
-      throw ConfigError(at, "expected an integer");
-    widths.push_back(static_cast<int>(units));
-  }
-  return widths;
-}
-
 AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   ObjectReader r(v, "/agent");
   AgentSpec a;
-  a.algorithm = r.String("algorithm", a.algorithm, AllAlgorithms());
+  ReadSettings(r, AgentNetworkSettings(), a);
+  // The shared keys' defaults follow the algorithm and the number of UAVs.
   static_cast<AgentCommonSpec&>(a) = AgentCommonDefaults(a.algorithm, uavs);
-  if (const json* h = r.Child("hidden"))
-    a.hidden = ReadHidden(*h, r.PathOf("hidden"));
-  if (const json* e = r.Child("ue_encoder"))
-    a.ue_encoder = ReadUeEncoder(*e, r.PathOf("ue_encoder"));
   ReadSettings(r, DqnHyperparameters(), a.dqn);
   ReadSettings(r, AgentCommonHyperparameters(), static_cast<AgentCommonSpec&>(a));
   if (const json* p = r.Child("ppo"))
@@ -147,13 +116,11 @@ void CheckUeEncoder(const Scenario& s) {
 }
 
 json AgentJson(const AgentSpec& a) {
-  json agent = {{"algorithm", a.algorithm}, {"hidden", a.hidden}};
+  json agent = SettingsJson(a, AgentNetworkSettings());
   WriteSettings(a.dqn, DqnHyperparameters(), agent);
   WriteSettings<AgentCommonSpec>(a, AgentCommonHyperparameters(), agent);
   WriteSettings(a.ppo, PpoHyperparameters(), agent["ppo"]);
   WriteSettings(a.sac, SacHyperparameters(), agent["sac"]);
-  if (!a.ue_encoder.empty())  // absent when off: documents stay as they were before it
-    agent["ue_encoder"] = a.ue_encoder;
   return agent;
 }
 

@@ -34,7 +34,7 @@ std::vector<SettingsSection> AllSettingsSections() {
       DescribeSettings(GaussMarkovSettings()), DescribeSettings(CrowdSettings()),
       DescribeSettings(WifiSettings()),        DescribeSettings(TrafficSettings()),
       DescribeSettings(SimulationSettings()),  DescribeSettings(EnvSettings()),
-      DescribeSettings(RewardSettings())};
+      DescribeSettings(RewardSettings()),      DescribeSettings(AgentNetworkSettings())};
   for (auto& section : AllHyperparameterSections())
     out.push_back(std::move(section));
   return out;

@@ -123,7 +123,7 @@ TEST(Settings, EveryScenarioSectionIsDeclared) {
   EXPECT_EQ(names, (std::set<std::string>{"venue", "building", "ue", "uav", "mobility.random_walk",
                                           "mobility.random_waypoint", "mobility.gauss_markov",
                                           "mobility.crowd", "wifi", "traffic", "simulation", "env",
-                                          "env.reward"}));
+                                          "env.reward", "agent.network"}));
 }
 
 TEST(Settings, EveryDeclaredOneIsAcceptedAndWrittenBack) {
