@@ -11,9 +11,10 @@
 //                                hyperparameters and every env and Wi-Fi setting included)
 //   policies/<folder>/result.json    what the policy reader takes from result.json (seed stream,
 //                                general policy's scope), written as result.json lays it out
-//   campaigns/<name>.txt         campaigns/<name>.json: its id, canonical text, each scenario as
-//                                its jobs parse it, and every job as the store and the result
-//                                cache identify it, in expansion order
+//   campaigns/<name>.txt         campaigns/<name>.json: its id, the hash of each scenario as its
+//                                jobs parse it, and every job as the store and the result cache
+//                                identify it (content base, position rule's hash), in
+//                                expansion order
 //   generate/<name>.json         rlpos-sim generate's document for a seed, style, UAV count and
 //                                mobility
 // A failure names the golden file and shows its first differing line.
