@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -147,16 +148,24 @@ void ReadSettings(ObjectReader& reader, const SettingsTable<Spec>& table, Spec& 
     table.check(spec, reader);
 }
 
-// `document`'s object at the table's path (absent: {}) read into a spec that starts from
-// `defaults`; any key the table does not declare is an error with a "did you mean".
+// The object `v` at `path` (a list's element: "/ues/3") read into `spec`, which holds its
+// defaults; any key the table does not declare is an error with a "did you mean".
+template <typename Spec>
+Spec ReadObject(const nlohmann::json& v, const std::string& path, const SettingsTable<Spec>& table,
+                Spec spec) {
+  ObjectReader reader(v, path);
+  ReadSettings(reader, table, spec);
+  reader.Finish();
+  return spec;
+}
+
+// A section's object at the table's path (absent: {}) read into a spec that starts from
+// `defaults`.
 template <typename Spec>
 Spec ReadSection(const nlohmann::json* object, const SettingsTable<Spec>& table,
                  Spec defaults = {}) {
   static const nlohmann::json kEmpty = nlohmann::json::object();
-  ObjectReader reader(object ? *object : kEmpty, table.path);
-  ReadSettings(reader, table, defaults);
-  reader.Finish();
-  return defaults;
+  return ReadObject(object ? *object : kEmpty, table.path, table, std::move(defaults));
 }
 
 // Writes every declared setting of `spec` that is written into `object` under its key.

@@ -68,4 +68,8 @@ const SettingsTable<RandomWaypointSpec>& RandomWaypointSettings();
 const SettingsTable<GaussMarkovSpec>& GaussMarkovSettings();
 const SettingsTable<CrowdSpec>& CrowdSettings();
 
+// A UE's "mobility" object: "model" and that model's own settings.
+MobilitySpec ReadMobility(const nlohmann::json& v, const std::string& path);
+nlohmann::json MobilityJson(const MobilitySpec& m);
+
 }  // namespace rlpos

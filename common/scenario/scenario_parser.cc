@@ -20,26 +20,16 @@ namespace {
 
 using nlohmann::json;
 
-// A list element's object at `path` read by `table` into `spec`, which holds its defaults.
-template <typename Spec>
-Spec ReadElement(const json& v, const std::string& path, const SettingsTable<Spec>& table,
-                 Spec spec) {
-  ObjectReader r(v, path);
-  ReadSettings(r, table, spec);
-  r.Finish();
-  return spec;
-}
-
 BuildingSpec ReadBuilding(const json& v, const std::string& path, std::size_t index) {
   BuildingSpec defaults;
   defaults.name = "building" + std::to_string(index);
-  return ReadElement(v, path, BuildingSettings(), defaults);
+  return ReadObject(v, path, BuildingSettings(), defaults);
 }
 
 UeSpec ReadUe(const json& v, const std::string& path, std::size_t index, const PhyProfile& phy) {
   UeSpec defaults;
   defaults.name = "ue" + std::to_string(index);
-  UeSpec ue = ReadElement(v, path, UeSettings(), defaults);
+  UeSpec ue = ReadObject(v, path, UeSettings(), defaults);
   // A demand given as an MCS is that MCS's rate with the scenario's PHY.
   if (ue.demand_mcs >= 0) {
     const int max = MaxMcs(phy.standard);
@@ -58,7 +48,7 @@ UavSpec ReadUav(const json& v, const Venue& venue, const std::string& path,
   defaults.name = default_name;
   defaults.zone = {0, venue.width, 0, venue.depth, 1.0, venue.height};
   defaults.initial = {venue.width / 2, venue.depth / 2, 10.0};
-  return ReadElement(v, path, UavSettings(), defaults);
+  return ReadObject(v, path, UavSettings(), defaults);
 }
 
 EnvSpec ReadEnv(const json& v) {
@@ -70,16 +60,6 @@ EnvSpec ReadEnv(const json& v) {
   return e;
 }
 
-// An algorithm's own object ("agent.ppo", "agent.sac"): its declared hyperparameters only.
-template <typename Spec>
-Spec ReadAlgorithm(const json& v, const SettingsTable<Spec>& table) {
-  ObjectReader r(v, table.path);
-  Spec spec;
-  ReadSettings(r, table, spec);
-  r.Finish();
-  return spec;
-}
-
 AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   ObjectReader r(v, "/agent");
   AgentSpec a;
@@ -88,11 +68,9 @@ AgentSpec ReadAgent(const json& v, std::size_t uavs) {
   static_cast<AgentCommonSpec&>(a) = AgentCommonDefaults(a.algorithm, uavs);
   ReadSettings(r, DqnHyperparameters(), a.dqn);
   ReadSettings(r, AgentCommonHyperparameters(), static_cast<AgentCommonSpec&>(a));
-  if (const json* p = r.Child("ppo"))
-    a.ppo = ReadAlgorithm(*p, PpoHyperparameters());
+  a.ppo = ReadSection(r.Child("ppo"), PpoHyperparameters());
   const json* sac = r.Child("sac");
-  if (sac)
-    a.sac = ReadAlgorithm(*sac, SacHyperparameters());
+  a.sac = ReadSection(sac, SacHyperparameters());
   // SAC's replay read DQN's agent.replay_capacity before it had its own: a SAC scenario that
   // sets only that one keeps its replay.
   if (a.algorithm == "sac" && r.Has("replay_capacity") &&

@@ -41,57 +41,6 @@ json UeMobilityJson(const UeSpec& ue) {
 
 }  // namespace
 
-MobilitySpec ReadMobility(const json& v, const std::string& path) {
-  ObjectReader r(v, path);
-  MobilitySpec m;
-  m.model = *ParseMobilityModel(r.String("model", "static", MobilityModelNames()));
-  switch (m.model) {
-    case MobilityModel::kStatic: {
-      // Documents written before the other models carry random_walk's keys: read, unused.
-      RandomWalkSpec unused;
-      ReadSettings(r, RandomWalkSettings(), unused);
-      break;
-    }
-    case MobilityModel::kRandomWalk:
-      ReadSettings(r, RandomWalkSettings(), m.random_walk);
-      break;
-    case MobilityModel::kRandomWaypoint:
-      ReadSettings(r, RandomWaypointSettings(), m.random_waypoint);
-      break;
-    case MobilityModel::kGaussMarkov:
-      ReadSettings(r, GaussMarkovSettings(), m.gauss_markov);
-      break;
-    case MobilityModel::kCrowd:
-      ReadSettings(r, CrowdSettings(), m.crowd);
-      break;
-  }
-  r.Finish();
-  return m;
-}
-
-// The model and its own parameters only.
-json MobilityJson(const MobilitySpec& m) {
-  json out = json::object();
-  switch (m.model) {
-    case MobilityModel::kStatic:
-      break;
-    case MobilityModel::kRandomWalk:
-      out = SettingsJson(m.random_walk, RandomWalkSettings());
-      break;
-    case MobilityModel::kRandomWaypoint:
-      out = SettingsJson(m.random_waypoint, RandomWaypointSettings());
-      break;
-    case MobilityModel::kGaussMarkov:
-      out = SettingsJson(m.gauss_markov, GaussMarkovSettings());
-      break;
-    case MobilityModel::kCrowd:
-      out = SettingsJson(m.crowd, CrowdSettings());
-      break;
-  }
-  out["model"] = MobilityModelName(m.model);
-  return out;
-}
-
 const SettingsTable<UeSpec>& UeSettings() {
   static const SettingsTable<UeSpec> table{
       "ue",

@@ -20,8 +20,4 @@ struct UeSpec {
 
 const SettingsTable<UeSpec>& UeSettings();
 
-// A UE's "mobility" object: "model" and that model's own settings.
-MobilitySpec ReadMobility(const nlohmann::json& v, const std::string& path);
-nlohmann::json MobilityJson(const MobilitySpec& m);
-
 }  // namespace rlpos
