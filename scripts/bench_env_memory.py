@@ -2,7 +2,7 @@
 """Benchmark: the memory of analytic envs. Builds `--envs` envs of one scenario in this process,
 steps each `--steps` seeded random actions (resets included, as episodes end), and prints the
 growth of the process's resident memory per env: after building them, and after stepping them
-(which fills each env's bounded memo of analytic states, worker/uav_env/placement_memo.h).
+(which fills each env's bounded memo of analytic states, worker/env/uav_env/placement_memo.h).
 Asserts nothing.
 
   build/bin/rlpos-python scripts/bench_env_memory.py [--scenario FILE]

@@ -30,7 +30,7 @@ struct RunMetricFields {
   int n_ues = 0;
   int demands_met = 0;
   // Not measured by the packets: the env's reward at the placement by the analytic model, set
-  // by whoever evaluates (worker/uav_env/analytic_evaluator.h: AnalyticReward).
+  // by whoever evaluates (worker/env/uav_env/analytic_evaluator.h: AnalyticReward).
   Real reward{};
 };
 

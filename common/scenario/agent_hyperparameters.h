@@ -1,7 +1,7 @@
 #pragma once
 // The hyperparameters every algorithm shares (training length, checkpoints, seed, reward
-// standardisation): declared once here, read by worker/agent and
-// worker/rl_commands/train_command.cc. Their keys sit in the scenario's "agent" object.
+// standardisation): declared once here, read by worker/learning/agent and
+// worker/programs/rl_commands/train_command.cc. Their keys sit in the scenario's "agent" object.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>

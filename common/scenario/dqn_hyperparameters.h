@@ -1,8 +1,9 @@
 #pragma once
-// DQN's hyperparameters (the paper's agent): declared once here, read by worker/agent/dqn_agent.cc
-// only, as AgentSpec::dqn. Its keys sit in the scenario's "agent" object itself (DQN came first).
-// Of them, the paper's Table II gives replay_capacity (10^6), batch_size (64) and epsilon_start
-// (1, kept throughout there); the others differ from it or are not in it, as each entry says.
+// DQN's hyperparameters (the paper's agent): declared once here, read by
+// worker/learning/agent/dqn_agent.cc only, as AgentSpec::dqn. Its keys sit in the scenario's
+// "agent" object itself (DQN came first). Of them, the paper's Table II gives replay_capacity
+// (10^6), batch_size (64) and epsilon_start (1, kept throughout there); the others differ from it
+// or are not in it, as each entry says.
 #include <cstdint>
 
 #include "common/config/setting.h"

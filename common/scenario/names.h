@@ -43,7 +43,7 @@ constexpr std::array<std::string_view, A + B> Concat(const std::array<std::strin
 }
 
 // env.observations: the scenario's own fields (their count follows its UAVs and UEs), and the
-// fields that mean the same in every scenario (worker/gym/general_observation.h).
+// fields that mean the same in every scenario (worker/env/gym/general_observation.h).
 inline constexpr std::array<std::string_view, 7> kScenarioObservations{
     "x", "y", "z", "n_los", "throughput", "demands_met", "snr"};
 inline constexpr std::array<std::string_view, 7> kGeneralObservations{

@@ -1,6 +1,6 @@
 #pragma once
 // SAC's hyperparameters (twin Q, tanh-squashed Gaussian policy, automatic temperature):
-// declared once here, read by worker/agent/sac_agent.cc. Defaults: Haarnoja et al. 2018 /
+// declared once here, read by worker/learning/agent/sac_agent.cc. Defaults: Haarnoja et al. 2018 /
 // CleanRL's sac_continuous_action.py, except the warm-up (1,000 random steps, not 5,000: half
 // of a 10,000-step training would be random). The replay's capacity is its own
 // (agent.sac.replay_capacity), not DQN's.

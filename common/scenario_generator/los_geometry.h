@@ -3,7 +3,7 @@
 // condition the worker's loss model asks (ns-3's BuildingsChannelConditionModel between two
 // outdoor nodes): a link is NLoS when the segment between its ends meets a building's box,
 // [xmin, xmax] x [ymin, ymax] x [0, height], boundary included. A test compares the two on
-// the shipped scenarios (tests/worker/uav_env).
+// the shipped scenarios (tests/worker/env/uav_env).
 #include <vector>
 
 #include "common/scenario/scenario.h"

@@ -17,8 +17,8 @@
 #include "common/config/config_error.h"
 #include "tests/bench/bench_scenario.h"
 #include "tests/support/program_usage.h"
-#include "worker/environment/scenario_loading.h"
-#include "worker/environment/uav_network.h"
+#include "worker/env/network/scenario_loading.h"
+#include "worker/env/network/uav_network.h"
 
 namespace {
 

@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/program_usage.h"
-#include "worker/environment/obstacle_aware_propagation_loss_model.h"
+#include "worker/env/network/obstacle_aware_propagation_loss_model.h"
 
 using namespace ns3;
 using nlohmann::json;

@@ -4,7 +4,7 @@
 #include <cstdlib>
 
 #include "common/config/config_error.h"
-#include "worker/environment/scenario_loading.h"
+#include "worker/env/network/scenario_loading.h"
 
 std::optional<rlpos::Scenario> LoadBenchScenario(const char* path, const char* duration_s) {
   double duration = 0.0;

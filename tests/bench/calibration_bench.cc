@@ -16,8 +16,8 @@
 #include "common/scenario/scenario_checks.h"
 #include "tests/bench/bench_scenario.h"
 #include "tests/support/program_usage.h"
-#include "worker/environment/uav_network.h"
-#include "worker/uav_env/analytic_evaluator.h"
+#include "worker/env/network/uav_network.h"
+#include "worker/env/uav_env/analytic_evaluator.h"
 
 namespace {
 

@@ -11,9 +11,9 @@
 
 #include "common/config/config_error.h"
 #include "tests/support/program_usage.h"
-#include "worker/agent/dqn_agent.h"
-#include "worker/environment/scenario_loading.h"
-#include "worker/uav_env/uav_positioning_env.h"
+#include "worker/env/network/scenario_loading.h"
+#include "worker/env/uav_env/uav_positioning_env.h"
+#include "worker/learning/agent/dqn_agent.h"
 
 namespace {
 

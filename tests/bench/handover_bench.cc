@@ -13,7 +13,7 @@
 
 #include "tests/bench/bench_scenario.h"
 #include "tests/support/program_usage.h"
-#include "worker/environment/uav_network.h"
+#include "worker/env/network/uav_network.h"
 
 namespace {
 

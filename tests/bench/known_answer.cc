@@ -3,10 +3,10 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "worker/agent/make_agent.h"
-#include "worker/agent/trainer.h"
-#include "worker/gym/classic/cartpole_env.h"
-#include "worker/gym/classic/pendulum_env.h"
+#include "worker/learning/agent/make_agent.h"
+#include "worker/learning/agent_base/trainer.h"
+#include "worker/learning/classic_envs/cartpole_env.h"
+#include "worker/learning/classic_envs/pendulum_env.h"
 
 namespace rlpos {
 namespace {

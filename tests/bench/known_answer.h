@@ -1,7 +1,7 @@
 #pragma once
 // Known answers for the agents: DQN and PPO on CartPole-v1, SAC on Pendulum-v1 (Gymnasium's
-// dynamics, worker/gym/classic), trained through the trainer's own episodes (RunEpisode) and
-// scored greedily at intervals until the usual solved level is first reached. A failure here is
+// dynamics, worker/learning/classic_envs), trained through the trainer's own episodes (RunEpisode)
+// and scored greedily at intervals until the usual solved level is first reached. A failure here is
 // an implementation bug that tuning on the UAV env could hide.
 #include <cstdint>
 #include <functional>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "common/scenario/scenario.h"
-#include "worker/gym/env.h"
+#include "worker/env/gym/env.h"
 
 namespace rlpos {
 

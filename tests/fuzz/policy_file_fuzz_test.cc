@@ -14,7 +14,7 @@
 #include <string>
 
 #include "tests/fuzz/fuzz_input.h"
-#include "worker/agent/saved_tensors.h"
+#include "worker/learning/agent_base/saved_tensors.h"
 
 namespace rlpos {
 namespace {

@@ -1,7 +1,8 @@
 #pragma once
 // The usage of the small programs built beside the tests (benchmarks, the hostile peer): asked
 // for (--help or -h anywhere), on stdout with exit 0, as every program in bin/ answers --help
-// (tests/worker/sim/help_test.cc runs them all); a wrong argument count, on stderr with exit 2.
+// (tests/worker/programs/rlpos_sim/help_test.cc runs them all); a wrong argument count, on stderr
+// with exit 2.
 #include <cstdio>
 #include <cstring>
 

@@ -1,6 +1,6 @@
 #include "worker/map/map_links.h"
 
-#include "worker/environment/uav_network.h"
+#include "worker/env/network/uav_network.h"
 
 namespace rlpos::map {
 

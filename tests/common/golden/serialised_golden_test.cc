@@ -45,7 +45,7 @@
 #include "common/scenario_generator/generated_mobility.h"
 #include "common/scenario_generator/scenario_generator.h"
 #include "tests/common/golden/golden_file.h"
-#include "worker/policy_folder/policy_folder.h"
+#include "worker/learning/policy_folder/policy_folder.h"
 
 namespace rlpos {
 namespace {

@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "common/config/config_error.h"
-#include "worker/environment/scenario_loading.h"
+#include "worker/env/network/scenario_loading.h"
 #include "worker/map/map_links.h"
 #include "worker/map/map_render.h"
 #include "worker/map/map_style.h"

@@ -1,0 +1,69 @@
+// A UAV that flies during an ns-3 run (UavMotion::kFlies): ns-3's waypoint mobility moves it
+// along each leg at constant velocity, and the links follow.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "tests/worker/env/network/shipped_scenario.h"
+#include "worker/env/network/uav_network.h"
+
+namespace rlpos {
+namespace {
+
+// A position of scenario B that sees all four UEs (see docs/scenarios.md).
+const Vec3 kSeesAllB{50, 35, 10};
+
+Vec3 Between(const Vec3& a, const Vec3& b, double share) {
+  return {a.x + (b.x - a.x) * share, a.y + (b.y - a.y) * share, a.z + (b.z - a.z) * share};
+}
+
+void ExpectAt(const UavNetwork& network, const Vec3& expected, const char* when) {
+  const Vec3 at = network.UavPositions().front();
+  EXPECT_NEAR(at.x, expected.x, 1e-6) << when;
+  EXPECT_NEAR(at.y, expected.y, 1e-6) << when;
+  EXPECT_NEAR(at.z, expected.z, 1e-6) << when;
+}
+
+int LosCount(const UavNetwork& network) {
+  int n = 0;
+  for (const LinkState& link : network.LinksTo(0))
+    n += link.los ? 1 : 0;
+  return n;
+}
+
+TEST(FlyingUav, FliesEachLegAtConstantVelocityAndTheLinksFollow) {
+  const Scenario b = LoadShipped("b", {"simulation.duration=1.2"});
+  const Vec3 start = b.InitialPlacement().front();
+  UavNetwork network(b, {start}, Handover::kOff, UavMotion::kFlies);
+  ASSERT_LT(LosCount(network), 4);
+  network.FlyUav(0, kSeesAllB, 0.4);
+  network.RunUntil(0.2);
+  ExpectAt(network, Between(start, kSeesAllB, 0.5), "halfway through the first leg");
+  network.RunUntil(0.6);
+  ExpectAt(network, kSeesAllB, "after the first leg");
+  EXPECT_EQ(LosCount(network), 4);
+  // The next leg starts when it is given, not when the last one ended.
+  network.FlyUav(0, start, 1.0);
+  network.RunUntil(0.8);
+  ExpectAt(network, Between(kSeesAllB, start, 0.5), "halfway through the second leg");
+  network.RunUntil(1.1);
+  ExpectAt(network, start, "after the second leg");
+  EXPECT_LT(LosCount(network), 4);
+}
+
+TEST(FlyingUav, RefusesWhatItCannotFly) {
+  const Scenario b = LoadShipped("b", {"simulation.duration=2"});
+  {
+    UavNetwork fixed(b, b.InitialPlacement());
+    EXPECT_THROW(fixed.FlyUav(0, kSeesAllB, 1.0), std::logic_error);
+  }
+  UavNetwork flying(b, b.InitialPlacement(), Handover::kOff, UavMotion::kFlies);
+  EXPECT_THROW(flying.SetUavPositions({kSeesAllB}), std::logic_error);
+  EXPECT_THROW(flying.FlyUav(0, kSeesAllB, 0.0), std::invalid_argument);
+  EXPECT_THROW(flying.FlyUav(1, kSeesAllB, 1.0), std::out_of_range);
+  flying.FlyUav(0, kSeesAllB, 1.5);
+  EXPECT_THROW(flying.FlyUav(0, b.InitialPlacement().front(), 1.0), std::logic_error);
+}
+
+}  // namespace
+}  // namespace rlpos
