@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/scenario/building_obstacles.h"
+
 namespace rlpos {
 namespace {
 
@@ -39,6 +41,59 @@ double EntryDistance(const Vec3& origin, const Vec3& u, const Box& b) {
   return enter <= leave ? enter : std::numeric_limits<double>::infinity();
 }
 
+// The same for a footprint between two heights: the ray's stretch within the heights, then the
+// first point of that stretch on the ground shape (its start, or where it crosses an edge).
+double EntryDistance(const Vec3& origin, const Vec3& u, const Solid& solid) {
+  if (solid.IsBox())
+    return EntryDistance(origin, u, solid.box);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double enter = 0.0, leave = kInf;
+  if (u.z == 0.0) {
+    if (origin.z < solid.box.zmin || origin.z > solid.box.zmax)
+      return kInf;
+  } else {
+    double t0 = (solid.box.zmin - origin.z) / u.z, t1 = (solid.box.zmax - origin.z) / u.z;
+    if (t0 > t1)
+      std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+    if (enter > leave)
+      return kInf;
+  }
+  const Point2 start{origin.x + enter * u.x, origin.y + enter * u.y};
+  if (Contains(solid.footprint, start))
+    return enter;
+  if (u.x == 0.0 && u.y == 0.0)
+    return kInf;  // vertical, and not over the shape
+  double first = kInf;
+  const auto cross_edges = [&](const Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point2& a = ring[i];
+      const Point2& b = ring[(i + 1) % ring.size()];
+      // origin + t u = a + s (b - a), in the plane: Cramer's rule.
+      const double ex = b.x - a.x, ey = b.y - a.y;
+      const double det = u.x * (-ey) - u.y * (-ex);
+      if (det == 0.0)
+        continue;  // parallel: an edge along the ray is met at its end, by the next edge
+      const double rx = a.x - origin.x, ry = a.y - origin.y;
+      const double t = (rx * (-ey) - ry * (-ex)) / det;
+      const double s = (u.x * ry - u.y * rx) / det;
+      if (s >= 0.0 && s <= 1.0 && t >= enter && t <= leave)
+        first = std::min(first, t);
+    }
+  };
+  cross_edges(solid.footprint.outer);
+  for (const Ring& hole : solid.footprint.holes)
+    cross_edges(hole);
+  return first;
+}
+
+bool Holds(const Solid& solid, const Vec3& p) {
+  if (solid.IsBox())
+    return solid.box.Contains(p);
+  return p.z >= solid.box.zmin && p.z <= solid.box.zmax && Contains(solid.footprint, {p.x, p.y});
+}
+
 }  // namespace
 
 OffsetGeometry OffsetGeometryOf(const Scenario& s) {
@@ -49,7 +104,7 @@ OffsetGeometry OffsetGeometryOf(const Scenario& s) {
               std::max(zone.ymin, venue.ymin), std::min(zone.ymax, venue.ymax),
               std::max(zone.zmin, venue.zmin), std::min(zone.zmax, venue.zmax)};
   for (const auto& b : s.buildings)
-    g.obstacles.push_back(b.Footprint3d());
+    g.obstacles.push_back(BuildingSolid(b));
   return g;
 }
 
@@ -83,7 +138,7 @@ Vec3 OffsetPosition(const Vec3& center, int k, const OffsetGeometry& geometry, d
   double reach = length;
   for (const auto& obstacle : geometry.obstacles) {
     // A centre inside a building is the agent's problem, not something to route around.
-    if (obstacle.Contains(center))
+    if (Holds(obstacle, center))
       continue;
     const double entry = EntryDistance(center, u, obstacle);
     if (entry <= length)

@@ -4,6 +4,7 @@
 // kept where the UAV may actually fly. Pure geometry, no ns-3.
 #include <vector>
 
+#include "common/geometry/obstacles.h"
 #include "common/scenario/scenario.h"
 
 namespace rlpos {
@@ -15,8 +16,8 @@ constexpr double kOffsetDistance = 10.0;  // m
 constexpr double kObstacleMargin = 0.5;  // m
 
 struct OffsetGeometry {
-  Box bounds;                  // where the UAV may be: the scenario's uav.zone within the venue
-  std::vector<Box> obstacles;  // building volumes
+  Box bounds;                    // where the UAV may be: the scenario's uav.zone within the venue
+  std::vector<Solid> obstacles;  // building volumes: boxes, or footprints between two heights
 };
 
 OffsetGeometry OffsetGeometryOf(const Scenario& scenario);

@@ -1,6 +1,10 @@
 #include "common/job/position_rule.h"
 
 #include <stdexcept>
+#include <utility>
+
+#include "common/config/config_error.h"
+#include "common/scenario/geometry.h"
 
 namespace rlpos {
 namespace {
@@ -22,6 +26,44 @@ Box BoxFromJson(const json& v) {
           v[3].get<double>(), v[4].get<double>(), v[5].get<double>()};
 }
 
+Ring RingFromJson(const json& v) {
+  try {
+    return ReadRing(v, "/footprint");
+  } catch (const ConfigError& e) {
+    throw std::invalid_argument(std::string("an obstacle's ring: ") + e.what());
+  }
+}
+
+// A box keeps its six numbers (the form rules had before footprints, which campaign ids hash);
+// a footprint building is {"footprint", "holes", "z": [zmin, zmax]}.
+json SolidJson(const Solid& solid) {
+  if (solid.IsBox())
+    return BoxJson(solid.box);
+  json holes = json::array();
+  for (const Ring& hole : solid.footprint.holes)
+    holes.push_back(RingJson(hole));
+  return {{"footprint", RingJson(solid.footprint.outer)},
+          {"holes", holes},
+          {"z", {solid.box.zmin, solid.box.zmax}}};
+}
+
+Solid SolidFromJson(const json& v) {
+  if (v.is_array())
+    return Solid::OfBox(BoxFromJson(v));
+  if (!v.is_object() || !v.contains("footprint") || !v.contains("holes") ||
+      !v["holes"].is_array() || !v.contains("z") || !v["z"].is_array() || v["z"].size() != 2 ||
+      !v["z"][0].is_number() || !v["z"][1].is_number()) {
+    throw std::invalid_argument("an obstacle is a box or {footprint, holes, z}");
+  }
+  Footprint footprint{RingFromJson(v["footprint"]), {}};
+  for (const auto& hole : v["holes"])
+    footprint.holes.push_back(RingFromJson(hole));
+  const double zmin = v["z"][0].get<double>(), zmax = v["z"][1].get<double>();
+  if (!(zmin < zmax) || !FootprintDefect(footprint).empty())
+    throw std::invalid_argument("an obstacle's footprint is not a valid polygon");
+  return Solid::Prism(std::move(footprint), zmin, zmax);
+}
+
 }  // namespace
 
 Placement ApplyPositionRule(const PositionRule& rule, const Placement& produced) {
@@ -40,7 +82,7 @@ json ToJson(const PositionRule& rule) {
     return {{"offset", 0}};
   json obstacles = json::array();
   for (const auto& b : rule.geometry.obstacles)
-    obstacles.push_back(BoxJson(b));
+    obstacles.push_back(SolidJson(b));
   return {{"offset", rule.offset},
           {"distance", rule.distance},
           {"bounds", BoxJson(rule.geometry.bounds)},
@@ -66,7 +108,7 @@ PositionRule PositionRuleFromJson(const json& v) {
   rule.distance = v["distance"].get<double>();
   rule.geometry.bounds = BoxFromJson(v["bounds"]);
   for (const auto& b : v["obstacles"])
-    rule.geometry.obstacles.push_back(BoxFromJson(b));
+    rule.geometry.obstacles.push_back(SolidFromJson(b));
   return rule;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// Where a UE may walk: the venue's ground minus every building's footprint (walls included),
-// and which straight legs stay in it.
+// Where a UE may walk: the venue's ground minus every building's ground shape (walls included;
+// a box's rectangle or a footprint, holes open), and which straight legs stay in it.
 #include <vector>
 
+#include "common/geometry/footprint.h"
 #include "common/scenario/scenario.h"
 
 namespace rlpos {
@@ -19,12 +20,13 @@ class WalkableArea {
   bool LegIsClear(const Vec3& a, const Vec3& b) const;
 
  private:
-  struct Rectangle {
-    double xmin, xmax, ymin, ymax;
+  struct Shape {
+    Footprint ground;
+    Bounds2 bounds;  // checked first: most shapes are far from a given point or leg
   };
   double width_;
   double depth_;
-  std::vector<Rectangle> footprints_;
+  std::vector<Shape> shapes_;
 };
 
 }  // namespace rlpos

@@ -5,6 +5,8 @@
 
 #include "common/config/config_error.h"
 #include "common/config/object_reader.h"
+#include "common/scenario/building_checks.h"
+#include "common/scenario/building_obstacles.h"
 
 namespace rlpos {
 namespace {
@@ -106,8 +108,7 @@ void CheckUeMobility(const Scenario& s, std::size_t i) {
 
 int FootprintContaining(const Scenario& scenario, double x, double y) {
   for (std::size_t i = 0; i < scenario.buildings.size(); ++i) {
-    const auto& b = scenario.buildings[i];
-    if (x >= b.xmin && x <= b.xmax && y >= b.ymin && y <= b.ymax)
+    if (GroundShapeHolds(scenario.buildings[i], x, y))
       return static_cast<int>(i);
   }
   return -1;
@@ -127,33 +128,14 @@ bool OverlapsAnother(const Placement& placement, std::size_t uav, const Vec3& p)
 
 int BuildingContaining(const Scenario& scenario, const Vec3& p) {
   for (std::size_t i = 0; i < scenario.buildings.size(); ++i) {
-    if (scenario.buildings[i].Footprint3d().Contains(p))
+    if (BuildingHolds(scenario.buildings[i], p))
       return static_cast<int>(i);
   }
   return -1;
 }
 
 void CheckScenarioGeometry(const Scenario& s) {
-  for (std::size_t i = 0; i < s.buildings.size(); ++i) {
-    const auto& b = s.buildings[i];
-    const std::string path = JoinPath("/buildings", i);
-    if (b.xmin < 0 || b.xmax > s.venue.width || b.ymin < 0 || b.ymax > s.venue.depth ||
-        b.height > s.venue.height) {
-      std::ostringstream out;
-      out << "building \"" << b.name << "\" [" << b.xmin << ", " << b.xmax << "] x [" << b.ymin
-          << ", " << b.ymax << "] x [0, " << b.height << "] is outside the venue";
-      throw ConfigError(path, out.str());
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      const auto& o = s.buildings[j];
-      // Touching walls are allowed (a terrace); a shared volume is not.
-      const bool overlap = b.xmin < o.xmax && o.xmin < b.xmax && b.ymin < o.ymax && o.ymin < b.ymax;
-      if (overlap) {
-        throw ConfigError(path, "building \"" + b.name + "\" overlaps building " +
-                                    std::to_string(j) + " (\"" + o.name + "\")");
-      }
-    }
-  }
+  CheckBuildings(s);
   for (std::size_t i = 0; i < s.ues.size(); ++i) {
     const std::string path = JoinPath(JoinPath("/ues", i), "position");
     CheckInVenue(s.venue, s.ues[i].position, path, "UE");

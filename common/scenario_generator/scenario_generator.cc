@@ -5,7 +5,7 @@
 #include "common/scenario_generator/building_layouts.h"
 #include "common/scenario_generator/generated_json.h"
 #include "common/scenario_generator/generated_mobility.h"
-#include "common/scenario_generator/los_geometry.h"
+#include "common/scenario_generator/hidden_ues.h"
 #include "common/scenario_generator/portable_random.h"
 #include "common/scenario_generator/uav_baseline.h"
 #include "common/scenario_generator/ue_placement.h"

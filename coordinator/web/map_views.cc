@@ -3,6 +3,7 @@
 #include <map>
 
 #include "common/config/config_error.h"
+#include "common/scenario/geometry.h"
 #include "common/scenario/scenario_parser.h"
 #include "coordinator/reporting/run_groups.h"
 #include "coordinator/web/track_frames.h"
@@ -19,13 +20,16 @@ json PointJson(const Vec3& p) {
 json GeometryJson(const Scenario& s) {
   json buildings = json::array(), ues = json::array(), uavs = json::array();
   for (const auto& b : s.buildings) {
-    buildings.push_back({{"name", b.name},
-                         {"xmin", b.xmin},
-                         {"xmax", b.xmax},
-                         {"ymin", b.ymin},
-                         {"ymax", b.ymax},
-                         {"height", b.height},
-                         {"floors", b.floors}});
+    json building = {{"name", b.name}, {"xmin", b.xmin},     {"xmax", b.xmax},    {"ymin", b.ymin},
+                     {"ymax", b.ymax}, {"height", b.height}, {"floors", b.floors}};
+    // A footprint building's exact shape; its xmin..ymax are then its bounding box. A box
+    // keeps the keys it always had.
+    if (b.HasFootprint()) {
+      building["footprint"] = RingJson(b.footprint.outer);
+      building["holes"] = RingsJson(b.footprint.holes);
+      building["min_height"] = b.min_height;
+    }
+    buildings.push_back(std::move(building));
   }
   for (const auto& u : s.ues) {
     json ue = PointJson(u.position);

@@ -10,6 +10,7 @@ namespace rlpos::web {
 // Generated from page/ by embed_page.cmake.
 extern const char kPageIndexHtml[];
 extern const char kPageAppJs[];
+extern const char kPageMapJs[];
 extern const char kPageStyleCss[];
 
 namespace {
@@ -35,12 +36,17 @@ void ReplaceOnce(std::string& text, const std::string& marker, const std::string
 }
 
 Page BuildPage() {
-  const std::string script = std::string("\n") + kPageAppJs;
+  // Two inline scripts, each admitted by its hash: map.js first, since app.js draws the page as
+  // it finishes loading and then calls into it (top-level names are shared across scripts).
+  const std::string map_script = std::string("\n") + kPageMapJs;
+  const std::string app_script = std::string("\n") + kPageAppJs;
   const std::string style = std::string("\n") + kPageStyleCss;
   Page page{kPageIndexHtml, ""};
   ReplaceOnce(page.html, "<style></style>", "<style>" + style + "</style>");
-  ReplaceOnce(page.html, "<script></script>", "<script>" + script + "</script>");
-  page.csp = "default-src 'none'; script-src " + CspHash(script) + "; style-src " + CspHash(style) +
+  ReplaceOnce(page.html, "<script></script>",
+              "<script>" + map_script + "</script>\n<script>" + app_script + "</script>");
+  page.csp = "default-src 'none'; script-src " + CspHash(map_script) + " " + CspHash(app_script) +
+             "; style-src " + CspHash(style) +
              "; connect-src 'self'; img-src 'self' data: blob:; base-uri 'none'; "
              "form-action 'none'; frame-ancestors 'none'";
   return page;

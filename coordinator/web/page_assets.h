@@ -1,7 +1,7 @@
 #pragma once
-// The campaign page: one HTML file with its script and style inlined (page/index.html,
-// page/app.js, page/style.css, built into the program by embed_page.cmake), and the
-// Content-Security-Policy that lets only those two run: no other script, style, frame or
+// The campaign page: one HTML file with its scripts and style inlined (page/index.html,
+// page/map.js and page/app.js, page/style.css, built into the program by embed_page.cmake), and
+// the Content-Security-Policy that lets only those run: no other script, style, frame or
 // network origin (the page works offline and talks to /api/ only).
 #include <string>
 

@@ -1,10 +1,13 @@
-// The top view's labels: each building's name and height inside it (turned to fit a narrow one),
-// then the UAVs' heights and the UEs' demands, each put where it hides no marker and no other
-// label (the first free spot of a few around its point).
+// The top view's labels: each building's name and height inside it (turned to fit a narrow one;
+// in a footprint, at a point of the shape where it fits), then the UAVs' heights and the UEs'
+// demands, each put where it hides no marker and no other label (the first free spot of a few
+// around its point).
 #include <cmath>
 #include <vector>
 
+#include "common/scenario/building_obstacles.h"
 #include "worker/map/map_painter.h"
+#include "worker/map/map_shapes.h"
 
 namespace rlpos::map {
 namespace {
@@ -18,23 +21,36 @@ struct BuildingLabel {
   bool turned = false;  // written bottom to top, along a footprint taller than wide
 };
 
-// The first of the label's forms that fits the footprint (w x h points), or none.
-bool FitBuildingLabel(cairo_t* cr, const BuildingSpec& b, double w, double h,
-                      BuildingLabel& label) {
+// Where a building's label goes inside it: the label, centred on `at` (metres).
+struct Fit {
+  BuildingLabel label;
+  Point2 at;
+};
+
+// The first of the label's forms that fits inside the building's ground shape, upright, else
+// turned, at the first of its label points where it does; none when it fits nowhere. Each form
+// keeps 3 points of room either side and 1 above and below.
+bool FitBuildingLabel(cairo_t* cr, const BuildingSpec& b, double scale, Fit& fit) {
   const std::string height = ShortNumber(b.height) + " m";
   const std::vector<std::vector<std::string>> forms = {
       {b.name, height}, {b.name + ", " + height}, {height}};
   const double line_height = kBuildingFont * 1.25;
+  const Footprint shape = GroundShape(b);
+  const std::vector<Point2> points = LabelPoints(b);
   for (const auto& lines : forms) {
     double width = 0;
     for (const auto& line : lines)
       width = std::max(width, MeasureText(cr, line, 0, 0, Anchor::kLeft).width);
     const double tall = line_height * static_cast<double>(lines.size());
     for (bool turned : {false, true}) {
-      const double across = turned ? h : w, along = turned ? w : h;
-      if (width + 6 <= across && tall + 2 <= along) {
-        label = {lines, turned};
-        return true;
+      // Half the room it needs, in metres.
+      const double half_x = (turned ? tall + 2 : width + 6) / scale / 2;
+      const double half_y = (turned ? width + 6 : tall + 2) / scale / 2;
+      for (const Point2& p : points) {
+        if (RectangleInside(shape, {p.x - half_x, p.y - half_y, p.x + half_x, p.y + half_y})) {
+          fit = {{lines, turned}, p};
+          return true;
+        }
       }
     }
   }
@@ -202,13 +218,13 @@ std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, cons
   std::vector<TextBox> boxes;
   SelectFont(cr, kBuildingFont);
   for (const BuildingSpec& b : s.buildings) {
-    const double w = (b.xmax - b.xmin) * view.scale, h = (b.ymax - b.ymin) * view.scale;
-    const double cx = view.CanvasX({(b.xmin + b.xmax) / 2, 0, 0});
-    const double cy = view.CanvasY({0, (b.ymin + b.ymax) / 2, 0});
-    BuildingLabel label;
-    if (FitBuildingLabel(cr, b, w, h, label) && !Hides(LabelBox(cr, label, cx, cy), markers)) {
-      DrawBuildingLabel(cr, label, cx, cy, BuildingTextIsLight(b.height, s.venue.height));
-      boxes.push_back(LabelBox(cr, label, cx, cy));
+    Fit fit;
+    const bool fits = FitBuildingLabel(cr, b, view.scale, fit);
+    const Point2 at = fits ? fit.at : LabelPoints(b).front();
+    const double cx = view.CanvasX({at.x, 0, 0}), cy = view.CanvasY({0, at.y, 0});
+    if (fits && !Hides(LabelBox(cr, fit.label, cx, cy), markers)) {
+      DrawBuildingLabel(cr, fit.label, cx, cy, BuildingTextIsLight(b.height, s.venue.height));
+      boxes.push_back(LabelBox(cr, fit.label, cx, cy));
       continue;
     }
     // Too small for its label, or a UAV or UE sits where it would go: the label goes beside the
@@ -216,6 +232,7 @@ std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, cons
     const std::string text = b.name + ", " + ShortNumber(b.height) + " m";
     Obstacles taken{markers, Lines(scene, view)};
     taken.boxes.insert(taken.boxes.end(), boxes.begin(), boxes.end());
+    const double w = (b.xmax - b.xmin) * view.scale, h = (b.ymax - b.ymin) * view.scale;
     const TextBox box = PlaceLabel(cr, text, cx, cy, std::max(w, h) / 2 + 6, taken, view.rect);
     DrawPlaced(cr, text, box, kInk);
     boxes.push_back(box);

@@ -42,6 +42,8 @@ void DrawViewAxes(cairo_t* cr, const View& view, const Venue& venue);
 
 // Everything a view shows of the scene (map_view.cc).
 void DrawView(cairo_t* cr, const MapScene& scene, const View& view);
+// Its buildings, far ones first (map_buildings.cc).
+void DrawBuildings(cairo_t* cr, const Scenario& s, const View& view);
 // The labels of the top view: buildings (name, height) and UEs (demand) (map_labels.cc).
 // Returns the boxes the building labels took.
 std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view);

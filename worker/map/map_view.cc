@@ -8,21 +8,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// How far from the viewer a box is along the view's depth axis: boxes are drawn far first.
-double DepthKey(const View& view, const BuildingSpec& b) {
-  if (view.IsTop())
-    return b.height;  // seen from above: the taller on top
-  if (view.horizontal == Axis::kX)
-    return -(b.ymin + b.ymax);  // from the south: the larger y, the farther
-  return b.xmin + b.xmax;       // from the east: the smaller x, the farther
-}
-
-void BoxPath(cairo_t* cr, const View& view, const Vec3& lo, const Vec3& hi) {
-  const double x0 = view.CanvasX(lo), x1 = view.CanvasX(hi);
-  const double y0 = view.CanvasY(lo), y1 = view.CanvasY(hi);
-  cairo_rectangle(cr, std::min(x0, x1), std::min(y0, y1), std::fabs(x1 - x0), std::fabs(y1 - y0));
-}
-
 void DrawZones(cairo_t* cr, const Scenario& s, const View& view) {
   const double dashes[] = {6.0, 4.0};
   cairo_save(cr);
@@ -50,24 +35,6 @@ void DrawZones(cairo_t* cr, const Scenario& s, const View& view) {
     cairo_stroke(cr);
   }
   cairo_restore(cr);
-}
-
-void DrawBuildings(cairo_t* cr, const Scenario& s, const View& view) {
-  std::vector<std::size_t> order(s.buildings.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-    order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return DepthKey(view, s.buildings[a]) < DepthKey(view, s.buildings[b]);
-  });
-  for (std::size_t i : order) {
-    const BuildingSpec& b = s.buildings[i];
-    BoxPath(cr, view, {b.xmin, b.ymin, 0.0}, {b.xmax, b.ymax, b.height});
-    SetColour(cr, BuildingColour(b.height, s.venue.height));
-    cairo_fill_preserve(cr);
-    SetColour(cr, kInk);
-    cairo_set_line_width(cr, 0.8);
-    cairo_stroke(cr);
-  }
 }
 
 void DrawLinks(cairo_t* cr, const MapScene& scene, const View& view) {

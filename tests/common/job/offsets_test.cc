@@ -9,6 +9,8 @@
 namespace rlpos {
 namespace {
 
+using nlohmann::json;
+
 OffsetGeometry OpenSky() {
   return {{0, 100, 0, 100, 5, 60}, {}};
 }
@@ -71,6 +73,43 @@ TEST(Offsets, PassOverLowBuildings) {
   // 5 m above the 20 m tower, the baseline flies over it freely.
   ExpectAt(OffsetPosition({50, 50, 25}, 1, b), 60, 50, 25);
   ExpectAt(OffsetPosition({50, 50, 25}, 4, b), 50, 40, 25);
+}
+
+// An L-shaped building, arms x 40-60 (y 40-45) and y 40-60 (x 40-45), 20 m tall, over open sky.
+OffsetGeometry Ell() {
+  OffsetGeometry g = OpenSky();
+  g.obstacles.push_back(
+      Solid::Prism({{{40, 40}, {60, 40}, {60, 45}, {45, 45}, {45, 60}, {40, 60}}, {}}, 0, 20));
+  return g;
+}
+
+TEST(Offsets, AFootprintStopsThemAtItsWallsNotItsBoundingBox) {
+  // From the L's notch (inside its bounding box, outside the building).
+  const auto p = OffsetPositions({52, 52, 10}, Ell());
+  ExpectAt(p[0], 62, 52, 10);    // +x: open ground
+  ExpectAt(p[1], 45.5, 52, 10);  // -x: stops 0.5 m short of the west arm (x 45)
+  ExpectAt(p[2], 52, 62, 10);    // +y: open ground
+  ExpectAt(p[3], 52, 45.5, 10);  // -y: short of the south arm (y 45)
+  // Over the west arm, below its roof: +z leaves it; from under a part that starts above ground,
+  // +z stops below it.
+  ExpectAt(OffsetPositions({42, 52, 10}, Ell())[4], 42, 52, 20);
+  OffsetGeometry arch = OpenSky();
+  arch.obstacles.push_back(Solid::Prism({{{30, 30}, {60, 30}, {60, 35}, {30, 35}}, {}}, 12, 20));
+  ExpectAt(OffsetPositions({40, 32, 5}, arch)[4], 40, 32, 11.5);
+}
+
+TEST(PositionRule, AFootprintObstacleRoundTrips) {
+  PositionRule rule;
+  rule.offset = 2;
+  rule.geometry = Ell();
+  const json text = ToJson(rule);
+  EXPECT_EQ(text["obstacles"][0]["z"], json({0, 20}));
+  const PositionRule back = PositionRuleFromJson(json::parse(text.dump()));
+  EXPECT_EQ(ToJson(back), text);
+  ExpectAt(ApplyPositionRule(back, {{52, 52, 10}}).at(0), 45.5, 52, 10);
+  json bad = text;
+  bad["obstacles"][0]["footprint"] = json::array({{0, 0}, {1, 1}, {0, 1}, {1, 0}});  // a bow tie
+  EXPECT_THROW(PositionRuleFromJson(bad), std::invalid_argument);
 }
 
 TEST(Offsets, UnknownPositionIndex) {

@@ -17,7 +17,7 @@
 #include "common/phy/mcs_table.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
-#include "common/scenario_generator/los_geometry.h"
+#include "common/scenario_generator/hidden_ues.h"
 #include "common/scenario_generator/uav_baseline.h"
 #include "common/scenario_generator/ue_placement.h"
 

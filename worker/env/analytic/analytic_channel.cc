@@ -11,9 +11,11 @@
 #include <string>
 
 #include "common/config/config_error.h"
+#include "common/scenario/building_obstacles.h"
 #include "worker/env/network/loss_model_spec.h"
 #include "worker/env/network/ns3_object_spec.h"
 #include "worker/env/network/obstacle_aware_propagation_loss_model.h"
+#include "worker/env/network/obstacles_channel_condition_model.h"
 #include "worker/env/network/wifi_channel_plan.h"
 
 namespace rlpos {
@@ -56,7 +58,7 @@ struct AnalyticChannel::LossModels {
 };
 
 AnalyticChannel::AnalyticChannel(const Scenario& scenario)
-    : geometry_(scenario.buildings),
+    : geometry_(BuildingObstacles(scenario.buildings)),
       tx_dbm_(scenario.wifi.tx_power_dbm + scenario.wifi.antenna_gain_dbi),
       rx_gain_db_(scenario.wifi.antenna_gain_dbi),
       noise_floor_dbm_(scenario.wifi.noise_floor_dbm) {
@@ -73,9 +75,13 @@ AnalyticChannel::AnalyticChannel(const Scenario& scenario)
   if (auto aware = ns3::DynamicCast<ns3::ObstacleAwarePropagationLossModel>(loss->top)) {
     ns3::PointerValue condition;
     aware->GetAttribute("ChannelConditionModel", condition);
-    if (!condition.Get<ns3::BuildingsChannelConditionModel>()) {
+    // It decides LoS from the venue's obstacles, which is what either model does (ns-3's own for
+    // box buildings only: the scenario checks refuse it with footprints).
+    if (!condition.Get<ns3::ObstaclesChannelConditionModel>() &&
+        !condition.Get<ns3::BuildingsChannelConditionModel>()) {
       throw ConfigError(path + "/attributes/ChannelConditionModel",
                         "the analytic fidelity decides LoS from the buildings: "
+                        "ns3::ObstaclesChannelConditionModel or "
                         "ns3::BuildingsChannelConditionModel only; use packet fidelity");
     }
     loss->aware = aware;

@@ -11,8 +11,8 @@
 #include <memory>
 #include <vector>
 
+#include "common/geometry/obstacles.h"
 #include "common/scenario/scenario.h"
-#include "worker/env/analytic/building_geometry.h"
 #include "worker/env/analytic/mcs_error_rates.h"
 
 namespace rlpos {
@@ -52,7 +52,7 @@ class AnalyticChannel {
  private:
   double SnrDb(const Vec3& ue, const Vec3& uav, bool los);
   struct LossModels;  // the ns-3 objects (pimpl: no ns-3 header here)
-  BuildingGeometry geometry_;
+  Obstacles geometry_;
   std::vector<Vec3> ues_;
   double tx_dbm_ = 0.0;  // transmit power plus the sender's antenna gain
   double rx_gain_db_ = 0.0;

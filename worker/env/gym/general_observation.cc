@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "common/geometry/footprint.h"
 #include "common/scenario/names.h"
 #include "worker/env/gym/moves.h"
 
@@ -82,8 +83,12 @@ void AddHeights(const Scenario& s, const StepInfo& info, std::vector<double>& ou
     for (int col = 0; col < cells; ++col) {
       const double x0 = uav.x + (col - half - 0.5) * size;
       double top = 0.0;
+      const Footprint cell{{{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}},
+                           {}};
       for (const BuildingSpec& b : s.buildings) {
-        if (b.xmin < x0 + size && b.xmax > x0 && b.ymin < y0 + size && b.ymax > y0)
+        // The bounding box first (a box building's whole test), then a footprint's own shape.
+        if (b.xmin < x0 + size && b.xmax > x0 && b.ymin < y0 + size && b.ymax > y0 &&
+            (!b.HasFootprint() || InteriorsOverlap(b.footprint, cell, 0.0)))
           top = std::max(top, b.height);
       }
       out.push_back(std::min(top / kObservedRangeM, kObservedHeightLimit));

@@ -116,17 +116,13 @@ ns3::Ptr<ns3::Object> CreateFromSpec(const ObjectSpec& spec, const std::string& 
   return object;
 }
 
-int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
-                       const ns3::AttributeValue& value, const std::set<const ns3::Object*>& skip) {
+void VisitObjectTree(ns3::Ptr<ns3::Object> root,
+                     const std::function<void(ns3::Ptr<ns3::Object>)>& visit) {
   if (!root)
-    return 0;
-  int count = 0;
+    return;
+  visit(root);
   const ns3::TypeId tid = root->GetInstanceTypeId();
   ns3::TypeId::AttributeInformation info;
-  if (!skip.count(ns3::PeekPointer(root)) && tid.LookupAttributeByName(attribute, &info)) {
-    root->SetAttribute(attribute, value);
-    ++count;
-  }
   for (const auto& name : AttributeNames(tid)) {
     tid.LookupAttributeByName(name, &info);
     if (!dynamic_cast<const ns3::PointerChecker*>(ns3::PeekPointer(info.checker)))
@@ -135,8 +131,21 @@ int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
       continue;
     ns3::PointerValue child;
     root->GetAttribute(name, child);
-    count += SetAttributeInTree(child.Get<ns3::Object>(), attribute, value, skip);
+    VisitObjectTree(child.Get<ns3::Object>(), visit);
   }
+}
+
+int SetAttributeInTree(ns3::Ptr<ns3::Object> root, const std::string& attribute,
+                       const ns3::AttributeValue& value, const std::set<const ns3::Object*>& skip) {
+  int count = 0;
+  VisitObjectTree(root, [&](ns3::Ptr<ns3::Object> object) {
+    ns3::TypeId::AttributeInformation info;
+    if (!skip.count(ns3::PeekPointer(object)) &&
+        object->GetInstanceTypeId().LookupAttributeByName(attribute, &info)) {
+      object->SetAttribute(attribute, value);
+      ++count;
+    }
+  });
   return count;
 }
 

@@ -5,6 +5,7 @@
 #include <ns3/object.h>
 #include <ns3/type-id.h>
 
+#include <functional>
 #include <mutex>
 #include <set>
 #include <string>
@@ -19,6 +20,10 @@ namespace rlpos {
 ns3::Ptr<ns3::Object> CreateFromSpec(const ObjectSpec& spec, const std::string& path,
                                      ns3::TypeId base, const std::string& tracked_attribute = "",
                                      std::set<const ns3::Object*>* explicitly_set = nullptr);
+
+// Calls `visit` on `root` and on every object reachable from it through pointer attributes.
+void VisitObjectTree(ns3::Ptr<ns3::Object> root,
+                     const std::function<void(ns3::Ptr<ns3::Object>)>& visit);
 
 // Sets `attribute` on `root` and every object reachable from it through pointer attributes,
 // except the objects in `skip`. Returns how many objects were set.

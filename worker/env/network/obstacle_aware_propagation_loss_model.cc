@@ -1,7 +1,6 @@
 #include "worker/env/network/obstacle_aware_propagation_loss_model.h"
 
 #include <ns3/boolean.h>
-#include <ns3/buildings-channel-condition-model.h>
 #include <ns3/itu-r-1411-los-propagation-loss-model.h>
 #include <ns3/itu-r-1411-nlos-over-rooftop-propagation-loss-model.h>
 #include <ns3/log.h>
@@ -10,6 +9,8 @@
 
 #include <algorithm>
 #include <utility>
+
+#include "worker/env/network/obstacles_channel_condition_model.h"
 
 namespace ns3 {
 
@@ -36,11 +37,13 @@ TypeId ObstacleAwarePropagationLossModel::GetTypeId() {
               BooleanValue(true),
               MakeBooleanAccessor(&ObstacleAwarePropagationLossModel::m_nlosNeverBelowLos),
               MakeBooleanChecker())
-          .AddAttribute("ChannelConditionModel",
-                        "Decides LoS or NLoS per link (default BuildingsChannelConditionModel).",
-                        PointerValue(),
-                        MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_conditionModel),
-                        MakePointerChecker<ChannelConditionModel>());
+          .AddAttribute(
+              "ChannelConditionModel",
+              "Decides LoS or NLoS per link (default ObstaclesChannelConditionModel: the venue's "
+              "buildings, boxes or footprints).",
+              PointerValue(),
+              MakePointerAccessor(&ObstacleAwarePropagationLossModel::m_conditionModel),
+              MakePointerChecker<ChannelConditionModel>());
   return tid;
 }
 
@@ -54,7 +57,7 @@ void ObstacleAwarePropagationLossModel::NotifyConstructionCompleted() {
   if (!m_nlosModel)
     m_nlosModel = CreateObject<ItuR1411NlosOverRooftopPropagationLossModel>();
   if (!m_conditionModel)
-    m_conditionModel = CreateObject<BuildingsChannelConditionModel>();
+    m_conditionModel = CreateObject<ObstaclesChannelConditionModel>();
   PropagationLossModel::NotifyConstructionCompleted();
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // ns3::ObstacleAwarePropagationLossModel: per link, asks a channel condition model (by default
-// the building geometry, ns3::BuildingsChannelConditionModel) whether the link is LoS, and applies
-// the LoS or the NLoS loss model accordingly.
+// ns3::ObstaclesChannelConditionModel, the venue's buildings as boxes or footprints, given by
+// the network that builds it) whether the link is LoS, and applies the LoS or the NLoS loss model
+// accordingly.
 //
 // Why not ns3::HybridBuildingsPropagationLossModel: between two outdoor nodes it switches
 // between ITU-R P.1411 LoS and NLoS by distance, never by geometry, so the throughput of a link

@@ -9,6 +9,7 @@
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/env/network/ns3_object_spec.h"
+#include "worker/env/network/venue_obstacles.h"
 #include "worker/env/network/wifi_channel_plan.h"
 
 namespace rlpos {
@@ -16,7 +17,11 @@ namespace rlpos {
 void CheckScenarioAgainstNs3(const Scenario& scenario) {
   std::lock_guard<std::mutex> lock(Ns3ObjectsMutex());
   PlanUavChannels(scenario);
-  CreateFromSpec(scenario.propagation, "/propagation", ns3::PropagationLossModel::GetTypeId());
+  // Footprint buildings need a loss model that asks the venue's obstacles, not ns-3's boxes.
+  GiveObstacles(
+      scenario,
+      CreateFromSpec(scenario.propagation, "/propagation", ns3::PropagationLossModel::GetTypeId()),
+      nullptr, "/propagation");
   CreateFromSpec(scenario.wifi.rate_manager, "/wifi/rate_manager",
                  ns3::WifiRemoteStationManager::GetTypeId());
 }

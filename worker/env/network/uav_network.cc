@@ -3,7 +3,6 @@
 // uav_network_*.cc files beside it.
 #include "worker/env/network/uav_network.h"
 
-#include <ns3/building.h>
 #include <ns3/buildings-helper.h>
 #include <ns3/core-module.h>
 #include <ns3/double.h>
@@ -21,44 +20,16 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/scenario/building_obstacles.h"
 #include "worker/env/network/association.h"
 #include "worker/env/network/loss_model_spec.h"
 #include "worker/env/network/ns3_object_spec.h"
 #include "worker/env/network/uav_network_impl.h"
 #include "worker/env/network/ue_mobility.h"
+#include "worker/env/network/venue_obstacles.h"
 
 namespace rlpos {
 namespace {
-
-ns3::Building::BuildingType_t BuildingType(const std::string& type) {
-  if (type == "office")
-    return ns3::Building::Office;
-  if (type == "commercial")
-    return ns3::Building::Commercial;
-  return ns3::Building::Residential;
-}
-
-ns3::Building::ExtWallsType_t WallsType(const std::string& walls) {
-  if (walls == "wood")
-    return ns3::Building::Wood;
-  if (walls == "concrete_without_windows")
-    return ns3::Building::ConcreteWithoutWindows;
-  if (walls == "stone_blocks")
-    return ns3::Building::StoneBlocks;
-  return ns3::Building::ConcreteWithWindows;
-}
-
-void BuildBuildings(const Scenario& s) {
-  for (const auto& b : s.buildings) {
-    auto building = ns3::CreateObject<ns3::Building>();
-    building->SetBoundaries(ns3::Box(b.xmin, b.xmax, b.ymin, b.ymax, 0.0, b.height));
-    building->SetBuildingType(BuildingType(b.type));
-    building->SetExtWallsType(WallsType(b.walls));
-    building->SetNFloors(static_cast<uint16_t>(b.floors));
-    building->SetNRoomsX(static_cast<uint16_t>(b.rooms_x));
-    building->SetNRoomsY(static_cast<uint16_t>(b.rooms_y));
-  }
-}
 
 std::atomic<bool>& NetworkAlive() {
   static std::atomic<bool> alive{false};
@@ -84,7 +55,10 @@ void UavNetwork::Impl::BuildChannelModels() {
   // One model serves every UAV's channel: the first UAV's frequency (two 5 GHz channels differ
   // by well under 1 dB of path loss).
   loss = CreateLossModel(scenario, plans[0].center_frequency_hz);
-  geometry = ns3::CreateObject<ns3::BuildingsChannelConditionModel>();
+  auto obstacles = std::make_shared<const Obstacles>(BuildingObstacles(scenario.buildings));
+  GiveObstacles(scenario, loss, obstacles, "/propagation");
+  geometry = ns3::CreateObject<ns3::ObstaclesChannelConditionModel>();
+  geometry->SetObstacles(obstacles);
 }
 
 void UavNetwork::Impl::BuildNodes(const Placement& placement) {
@@ -166,7 +140,7 @@ UavNetwork::UavNetwork(const Scenario& scenario, const Placement& placement, Han
     m.channels.push_back(plan.channel);
   m.BuildChannelModels();
   m.error_model = ns3::ObjectFactory(kErrorRateModel).Create<ns3::ErrorRateModel>();
-  BuildBuildings(scenario);
+  BuildNs3Buildings(scenario);
   m.BuildNodes(placement);
   m.serving = AssociateUes(scenario, m.SnrTable());
   ns3::WifiHelper wifi;

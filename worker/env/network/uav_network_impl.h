@@ -3,7 +3,6 @@
 // its nodes and addresses, the links), uav_network_wifi.cc (the radios), uav_network_flows.cc
 // (the UEs' flows) and uav_network_handover.cc (moving a flow to another UAV).
 #include <ns3/application.h>
-#include <ns3/buildings-channel-condition-model.h>
 #include <ns3/mac48-address.h>
 #include <ns3/mobility-model.h>
 #include <ns3/net-device-container.h>
@@ -24,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "worker/env/network/obstacles_channel_condition_model.h"
 #include "worker/env/network/traffic_monitor.h"
 #include "worker/env/network/uav_network.h"
 #include "worker/env/network/wifi_channel_plan.h"
@@ -60,7 +60,7 @@ struct UavNetwork::Impl {
   std::vector<WifiChannelPlan> plans;  // per UAV
   std::vector<int> channels;           // per UAV: its channel number
   ns3::Ptr<ns3::PropagationLossModel> loss;
-  ns3::Ptr<ns3::BuildingsChannelConditionModel> geometry;
+  ns3::Ptr<ns3::ObstaclesChannelConditionModel> geometry;  // LoS for Link(), as the loss asks
   ns3::NodeContainer ues;
   ns3::NodeContainer uavs;
   std::vector<ns3::Ptr<ns3::WifiNetDevice>> uav_devices;

@@ -1,9 +1,12 @@
 #pragma once
-// rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]: another tool's scenario as ours
-// (common/scenario_import), checked as `validate` checks a scenario (ns-3 included) before
-// anything is written; a warning on stderr names each field that was not carried over.
+// rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]: another tool's scenario as ours; and
+// import --from osm|geojson FILE --center LAT,LON --size WxD (or --bbox): a real place, its
+// buildings as footprints (common/scenario_import). Either is checked as `validate` checks a
+// scenario (ns-3 included) before anything is written; warnings go to stderr.
 #include <CLI/CLI.hpp>
 #include <string>
+
+#include "common/scenario_import/place_options.h"
 
 namespace rlpos::sim {
 
@@ -11,6 +14,9 @@ struct ImportCommand {
   CLI::App* command = nullptr;
   std::string from;
   std::string out;  // empty: stdout
+  // --from osm|geojson: the venue as given (parsed by place_options.h), and the rest.
+  std::string center, size, bbox;
+  PlaceImportOptions place;
 };
 
 // Adds `import` to `app`; its CONFIG argument goes to `config_file` (the file errors name).

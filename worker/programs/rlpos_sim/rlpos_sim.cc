@@ -11,6 +11,7 @@
 //                   [--fidelity analytic] [--json]
 //   rlpos-sim describe metrics | track-metrics | hyperparameters [--algorithm A] | settings
 //   rlpos-sim import --from rlpos3 CONFIG.json [--out FILE]
+//   rlpos-sim import --from osm|geojson FILE --center LAT,LON --size WxD [--ues N] [--out FILE]
 //   rlpos-sim render SCENARIO [--position x,y,z]... [--result FILE] [--side] --out FILE.png|.svg
 //   rlpos-sim generate --seed N [--style urban|campus|suburb|open] [--uavs K] [--ues M]
 //                      [--out FILE]

@@ -70,11 +70,15 @@ int RunValidate(const CommonOptions& options, bool json) {
          {"ues_served", std::count(serving.begin(), serving.end(), static_cast<int>(u))}});
   }
   const auto& p = scenario.uavs.front().initial;
+  const std::size_t footprints = static_cast<std::size_t>(
+      std::count_if(scenario.buildings.begin(), scenario.buildings.end(),
+                    [](const BuildingSpec& b) { return b.HasFootprint(); }));
   if (json) {
     std::cout << nlohmann::json{{"scenario", scenario.name},
                                 {"valid", true},
                                 {"ues", ues.size()},
                                 {"buildings", scenario.buildings.size()},
+                                {"footprints", footprints},
                                 {"total_demand_mbps", scenario.TotalDemandMbps()},
                                 {"baseline", {p.x, p.y, p.z}},
                                 {"n_los_at_baseline", n_los},
@@ -89,7 +93,10 @@ int RunValidate(const CommonOptions& options, bool json) {
   std::printf("  scenario    %s\n", scenario.name.c_str());
   std::printf("  venue       %g x %g m, height limit %g m\n", scenario.venue.width,
               scenario.venue.depth, scenario.venue.height);
-  std::printf("  buildings   %zu\n", scenario.buildings.size());
+  if (footprints > 0)
+    std::printf("  buildings   %zu (%zu footprints)\n", scenario.buildings.size(), footprints);
+  else
+    std::printf("  buildings   %zu\n", scenario.buildings.size());
   std::printf("  UEs         %zu, total demand %.1f Mbit/s\n", scenario.ues.size(),
               scenario.TotalDemandMbps());
   std::printf("  Wi-Fi       %s, channel %d, %d MHz, GI %d ns, %s, %s\n",

@@ -294,7 +294,8 @@ TEST(AnalyticChannel, RefusesLossModelsItCannotFollow) {
       {"type", "ns3::ThreeGppUmaChannelConditionModel"}};
   EXPECT_EQ(refusal(condition),
             "/propagation/attributes/ChannelConditionModel: the analytic fidelity decides LoS "
-            "from the buildings: ns3::BuildingsChannelConditionModel only; use packet fidelity");
+            "from the buildings: ns3::ObstaclesChannelConditionModel or "
+            "ns3::BuildingsChannelConditionModel only; use packet fidelity");
   EXPECT_EQ(refusal({"ns3::FriisPropagationLossModel", nlohmann::json::object()}), "accepted");
 }
 

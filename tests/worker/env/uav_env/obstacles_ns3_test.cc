@@ -1,8 +1,7 @@
-// Our building geometry's LoS against ns-3's BuildingsChannelConditionModel for the same two
-// points, over the cases the env's trajectories rarely meet: both ends indoors (one building or
-// two), one indoors, and points on the boxes' faces, edges and corners.
-#include "worker/env/analytic/building_geometry.h"
-
+// The one LoS rule (common/geometry/obstacles.h), directly and as the packet level's
+// ns3::ObstaclesChannelConditionModel, against ns-3's BuildingsChannelConditionModel for the same
+// two points, over the cases the env's trajectories rarely meet: both ends indoors (one building
+// or two), one indoors, and points on the boxes' faces, edges and corners.
 #include <gtest/gtest.h>
 #include <ns3/building.h>
 #include <ns3/buildings-channel-condition-model.h>
@@ -10,8 +9,13 @@
 #include <ns3/mobility-building-info.h>
 #include <ns3/simulator.h>
 
+#include <memory>
 #include <random>
 #include <vector>
+
+#include "common/geometry/obstacles.h"
+#include "common/scenario/building_obstacles.h"
+#include "worker/env/network/obstacles_channel_condition_model.h"
 
 namespace rlpos {
 namespace {
@@ -32,7 +36,7 @@ ns3::Ptr<ns3::MobilityModel> End() {
   return mobility;
 }
 
-TEST(BuildingGeometry, SameLosAsNs3) {
+TEST(Obstacles, SameLosAsNs3) {
   const std::vector<BuildingSpec> buildings = {
       Building(10, 30, 10, 25, 20), Building(40, 45.5, 10, 60, 35), Building(10, 30, 40, 50, 8)};
   ns3::Simulator::Destroy();  // ns-3's building list is process-wide: start from an empty one
@@ -40,7 +44,9 @@ TEST(BuildingGeometry, SameLosAsNs3) {
     auto building = ns3::CreateObject<ns3::Building>();
     building->SetBoundaries(ns3::Box(b.xmin, b.xmax, b.ymin, b.ymax, 0.0, b.height));
   }
-  const BuildingGeometry ours(buildings);
+  const auto ours = std::make_shared<const Obstacles>(BuildingObstacles(buildings));
+  auto channel_model = ns3::CreateObject<ns3::ObstaclesChannelConditionModel>();
+  channel_model->SetObstacles(ours);
   auto ns3_rule = ns3::CreateObject<ns3::BuildingsChannelConditionModel>();
   auto a = End(), b = End();
   // Points on a 2.5 m grid (it holds every face of the boxes) and anywhere.
@@ -56,11 +62,15 @@ TEST(BuildingGeometry, SameLosAsNs3) {
     const Vec3 p = point(k % 2 == 0), q = point(k % 3 == 0);
     a->SetPosition({p.x, p.y, p.z});
     b->SetPosition({q.x, q.y, q.z});
-    const bool theirs = ns3_rule->GetChannelCondition(a, b)->IsLos();
-    ASSERT_EQ(ours.Los(p, q), theirs) << "(" << p.x << ", " << p.y << ", " << p.z << ") to (" << q.x
-                                      << ", " << q.y << ", " << q.z << ")";
+    const auto condition = ns3_rule->GetChannelCondition(a, b);
+    const auto ours_in_ns3 = channel_model->GetChannelCondition(a, b);
+    const bool theirs = condition->IsLos();
+    ASSERT_EQ(ours_in_ns3->IsLos(), theirs);
+    ASSERT_EQ(ours_in_ns3->GetO2iCondition(), condition->GetO2iCondition());
+    ASSERT_EQ(ours->Los(p, q), theirs) << "(" << p.x << ", " << p.y << ", " << p.z << ") to ("
+                                       << q.x << ", " << q.y << ", " << q.z << ")";
     (theirs ? los : nlos) += 1;
-    const int inside = (ours.BuildingAt(p) >= 0 ? 1 : 0) + (ours.BuildingAt(q) >= 0 ? 1 : 0);
+    const int inside = (ours->SolidAt(p) >= 0 ? 1 : 0) + (ours->SolidAt(q) >= 0 ? 1 : 0);
     both_in += inside == 2 ? 1 : 0;
     one_in += inside == 1 ? 1 : 0;
   }
