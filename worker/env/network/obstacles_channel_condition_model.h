@@ -17,16 +17,22 @@ class ObstaclesChannelConditionModel : public ChannelConditionModel {
  public:
   static TypeId GetTypeId();
 
-  // The venue's obstacles; a model asked before they are set is a programming error.
+  // The venue's obstacles. Until they are set, the model reads ns-3's own buildings
+  // (ns3::BuildingList, boxes), as BuildingsChannelConditionModel does, so that it also works
+  // in a plain ns-3 program.
   void SetObstacles(std::shared_ptr<const rlpos::Obstacles> obstacles);
-  bool HasObstacles() const { return m_obstacles != nullptr; }
 
   Ptr<ChannelCondition> GetChannelCondition(Ptr<const MobilityModel> a,
                                             Ptr<const MobilityModel> b) const override;
   int64_t AssignStreams(int64_t stream) override;
 
  private:
+  const rlpos::Obstacles& CurrentObstacles() const;
+
   std::shared_ptr<const rlpos::Obstacles> m_obstacles;
+  // Without SetObstacles: the boxes of ns3::BuildingList, rebuilt when the list grows.
+  mutable std::shared_ptr<const rlpos::Obstacles> m_listObstacles;
+  mutable uint32_t m_listSize = 0;
 };
 
 }  // namespace ns3

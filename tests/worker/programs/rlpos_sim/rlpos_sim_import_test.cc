@@ -84,6 +84,44 @@ void ExpectRejected(const TempDir& dir, const std::string& args, const std::stri
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+const std::string kHelsinki = std::string(RLPOS_SOURCE_DIR) + "/data/osm/helsinki-central.osm.pbf";
+const std::string kSquare = " --center 60.1697,24.9505 --size 150x150 --ues 8 --seed 3";
+
+TEST(RlposSimImport, ARealPlaceValidatesWithItsFootprintsAndTheSameBytesTwice) {
+  TempDir dir;
+  const auto first =
+      RunCommand(Sim("import --from osm " + kHelsinki + kSquare + " --out " + dir.File("a.json")));
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_NE(first.err.find("rlpos-sim: import: 150 x 150 m: "), std::string::npos) << first.err;
+  const auto second =
+      RunCommand(Sim("import --from osm " + kHelsinki + kSquare + " --out " + dir.File("b.json")));
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_EQ(ReadFile(dir.File("a.json")), ReadFile(dir.File("b.json")));
+  const auto validated = RunCommand(Sim("validate " + dir.File("a.json")));
+  ASSERT_EQ(validated.exit_code, 0) << validated.err;
+  const nlohmann::json scenario = nlohmann::json::parse(ReadFile(dir.File("a.json")));
+  const std::size_t buildings = scenario["buildings"].size();
+  ASSERT_GT(buildings, 0u);
+  const std::string count = std::to_string(buildings);
+  EXPECT_NE(validated.out.find("buildings   " + count + " (" + count + " footprints)"),
+            std::string::npos)
+      << validated.out;
+}
+
+TEST(RlposSimImport, BadPlaceInputIsOneLineAndWritesNothing) {
+  TempDir dir;
+  ExpectRejected(dir, "--from osm " + dir.File("missing.osm.pbf") + kSquare,
+                 dir.File("missing.osm.pbf") + ": cannot open: No such file or directory");
+  ExpectRejected(dir, "--from osm " + kHelsinki + " --center 10,10 --size 100x100",
+                 "rlpos-sim: error: --center: the venue's centre 10,10 is outside the data");
+  ExpectRejected(dir, "--from osm " + kHelsinki,
+                 "rlpos-sim: error: --center: the venue needs --center LAT,LON with --size WxD");
+  ExpectRejected(dir, "--from osm " + kHelsinki + " --center 60.1697,24.9505 --size 150 --ues 0",
+                 "rlpos-sim: error: --ues: expected 1 to 100 UEs, got 0");
+  ExpectRejected(dir, "--from geojson " + kHelsinki + kSquare,
+                 "rlpos-sim: error: --from: \"geojson\" does not read an OpenStreetMap file");
+}
+
 TEST(RlposSimImport, BadInputIsOneLineAndWritesNothing) {
   TempDir dir;
   WriteFile(dir.File("malformed.json"), "{\"Gym\": {");
@@ -92,7 +130,8 @@ TEST(RlposSimImport, BadInputIsOneLineAndWritesNothing) {
   ExpectRejected(dir, "--from rlpos3 " + dir.File("missing.json"),
                  dir.File("missing.json") + ": cannot open: No such file or directory");
   ExpectRejected(dir, "--from rlpos2 " + kFull,
-                 "rlpos-sim: error: --from: unknown format \"rlpos2\" (known: rlpos3)");
+                 "rlpos-sim: error: --from: unknown format \"rlpos2\" (known: rlpos3, osm, "
+                 "geojson)");
   ExpectRejected(dir, "--from rlpos3 " + Edited(dir, "del c[\"Gym\"][\"venueSize\"][\"Ymax\"]"),
                  "edited.json: /Gym/venueSize/Ymax: is required (a number)");
   ExpectRejected(dir,
