@@ -108,11 +108,29 @@ std::vector<BuildingSpec> BaselineBoxes(const std::vector<PlaceBuilding>& buildi
   return boxes;
 }
 
+constexpr double kUavSpreadM = 5.0;
+
 // The generator's baseline over the box of the central building; a UAV over a taller footprint
 // than that (the box is not the footprint) rises above it.
 std::vector<UavSpec> PlaceUavs(const Venue& venue, const std::vector<PlaceBuilding>& buildings,
                                int count) {
   std::vector<UavSpec> uavs = BaselineUavs(venue, BaselineBoxes(buildings), count);
+  // Over a small central building the roof's even steps can fall under the checks' 1 m between
+  // UAVs: then they stand 5 m apart along x around the roof's middle, inside the venue.
+  bool crowded = false;
+  for (std::size_t u = 1; u < uavs.size(); ++u)
+    crowded = crowded || std::abs(uavs[u].initial.x - uavs[u - 1].initial.x) +
+                                 std::abs(uavs[u].initial.y - uavs[u - 1].initial.y) <
+                             kUavSpreadM;
+  if (crowded) {
+    const double middle = std::clamp(uavs.front().initial.x, kUavSpreadM * count / 2.0,
+                                     venue.width - kUavSpreadM * count / 2.0);
+    for (std::size_t u = 0; u < uavs.size(); ++u) {
+      const double offset = kUavSpreadM * (static_cast<double>(u) - (count - 1) / 2.0);
+      uavs[u].initial.x = std::round(2.0 * (middle + offset)) / 2.0;  // to the half metre
+      uavs[u].initial.y = uavs.front().initial.y;
+    }
+  }
   for (auto& uav : uavs) {
     for (const auto& b : buildings) {
       if (Contains(b.footprint, {uav.initial.x, uav.initial.y}))

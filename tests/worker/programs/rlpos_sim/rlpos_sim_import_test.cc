@@ -108,6 +108,23 @@ TEST(RlposSimImport, ARealPlaceValidatesWithItsFootprintsAndTheSameBytesTwice) {
       << validated.out;
 }
 
+// Here the building nearest the centre is 2 m long: the roof's even steps would put three UAVs
+// 0.5 m apart, which the checks refuse; they stand 5 m apart instead.
+TEST(RlposSimImport, SeveralUavsOverASmallRoofStandApart) {
+  TempDir dir;
+  const auto r = RunCommand(Sim("import --from osm " + kHelsinki +
+                                " --center 60.169816,24.937947 --size 300x300 --ues 20 "
+                                "--ue-groups 1 --uavs 3 --seed 756589 --out " +
+                                dir.File("crop.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json uavs = nlohmann::json::parse(ReadFile(dir.File("crop.json")))["uavs"];
+  ASSERT_EQ(uavs.size(), 3u);
+  for (std::size_t u = 1; u < uavs.size(); ++u) {
+    EXPECT_EQ(uavs[u]["position"][0].get<double>() - uavs[u - 1]["position"][0].get<double>(), 5.0);
+    EXPECT_EQ(uavs[u]["position"][1], uavs[0]["position"][1]);
+  }
+}
+
 TEST(RlposSimImport, BadPlaceInputIsOneLineAndWritesNothing) {
   TempDir dir;
   ExpectRejected(dir, "--from osm " + dir.File("missing.osm.pbf") + kSquare,
