@@ -20,20 +20,23 @@ function buildingShape(b, X, Y, scale, attrs) {
 }
 
 // Where a building's label goes: a box's centre; in a footprint, the middle of the widest inside
-// stretch of the line across its middle, so not in an L's notch nor in a courtyard.
+// stretch of a few lines across it (middle first), so not in an L's notch nor in a courtyard.
 function labelPoint(b) {
-  const cx = (b.xmin + b.xmax) / 2, cy = (b.ymin + b.ymax) / 2, xs = [];
-  if (!b.footprint) return [cx, cy];
-  for (const r of [b.footprint, ...(b.holes || [])]) {
-    r.forEach(([x0, y0], i) => {
-      const [x1, y1] = r[(i + 1) % r.length];
-      if ((y0 > cy) !== (y1 > cy)) xs.push(x0 + (cy - y0) * (x1 - x0) / (y1 - y0));
-    });
-  }
-  xs.sort((p, q) => p - q);
-  let best = [cx, cy], widest = -1;
-  for (let i = 0; i + 1 < xs.length; i += 2) {
-    if (xs[i + 1] - xs[i] > widest) { widest = xs[i + 1] - xs[i]; best = [(xs[i] + xs[i + 1]) / 2, cy]; }
+  const centre = [(b.xmin + b.xmax) / 2, (b.ymin + b.ymax) / 2];
+  if (!b.footprint) return centre;
+  let best = centre, widest = -1;
+  for (const k of [4, 3, 5, 2, 6, 1, 7]) {
+    const y = b.ymin + (b.ymax - b.ymin) * k / 8, xs = [];
+    for (const r of [b.footprint, ...(b.holes || [])]) {
+      r.forEach(([x0, y0], i) => {
+        const [x1, y1] = r[(i + 1) % r.length];
+        if ((y0 > y) !== (y1 > y)) xs.push(x0 + (y - y0) * (x1 - x0) / (y1 - y0));
+      });
+    }
+    xs.sort((p, q) => p - q);
+    for (let i = 0; i + 1 < xs.length; i += 2) {
+      if (xs[i + 1] - xs[i] > widest) { widest = xs[i + 1] - xs[i]; best = [(xs[i] + xs[i + 1]) / 2, y]; }
+    }
   }
   return best;
 }

@@ -42,7 +42,7 @@ class MapFootprintsTest : public ::testing::Test {
     std::ofstream(file) << YardScenario().dump(2);
     const json spec = {{"name", "yard-map"},
                        {"scenarios", {{{"file", file}}}},
-                       {"rng_runs", {1}},
+                       {"rng_runs", {1, 1}},
                        {"positioners", {"baseline"}}};
     const ExpandedCampaign campaign = ExpandCampaign(ParseCampaign(spec, "/"));
     CoordinatorStore store(dir_.File("rlpos.db"));
