@@ -39,10 +39,6 @@ double TrajectoryHorizon(const Scenario& scenario) {
   return std::max(scenario.simulation.duration, scenario.env.episode_duration);
 }
 
-UeTrajectory UeTrajectoryOf(const Scenario& scenario, std::size_t ue, double horizon) {
-  return Walk(scenario, WalkableArea(scenario), ue, horizon);
-}
-
 std::vector<UeTrajectory> UeTrajectories(const Scenario& scenario, double horizon) {
   const WalkableArea area(scenario);
   std::vector<UeTrajectory> out;

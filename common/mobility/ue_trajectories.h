@@ -12,11 +12,10 @@ namespace rlpos {
 // env.episode_duration (a UE stays at its last position after it).
 double TrajectoryHorizon(const Scenario& scenario);
 
-// UE `ue`'s trajectory over [0, horizon], seeded by simulation.seed, simulation.run and `ue`.
-// A static UE stays at its position. Throws ConfigError at /ues/<ue>/mobility, naming the UE,
-// when the buildings leave it no way to walk (kMaxMobilityDraws draws).
-UeTrajectory UeTrajectoryOf(const Scenario& scenario, std::size_t ue, double horizon);
-// All of them, in the order of scenario.ues.
+// Every UE's trajectory over [0, horizon], in the order of scenario.ues: UE `ue`'s seeded by
+// simulation.seed, simulation.run and `ue`. A static UE stays at its position. Throws
+// ConfigError at /ues/<ue>/mobility, naming the UE, when the buildings leave it no way to walk
+// (kMaxMobilityDraws draws).
 std::vector<UeTrajectory> UeTrajectories(const Scenario& scenario, double horizon);
 std::vector<UeTrajectory> UeTrajectories(const Scenario& scenario);
 

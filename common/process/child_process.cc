@@ -9,7 +9,9 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 
@@ -34,12 +36,64 @@ int OpenOutput(const std::string& file) {
   return fd;
 }
 
+// Where execvp would look for `file`: itself when it has a '/', else in each folder of PATH
+// (glibc's default when PATH is unset; an empty entry is the current folder).
+std::vector<std::string> SearchPath(const std::string& file) {
+  if (file.find('/') != std::string::npos)
+    return {file};
+  if (file.empty())
+    return {};
+  const char* path = std::getenv("PATH");
+  const std::string folders = path != nullptr ? path : "/bin:/usr/bin";
+  std::vector<std::string> out;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t end = folders.find(':', begin);
+    const std::string folder = folders.substr(begin, end - begin);
+    out.push_back(folder.empty() ? file : folder + "/" + file);
+    if (end == std::string::npos)
+      break;
+    begin = end + 1;
+  }
+  return out;
+}
+
+// In the vfork child: execs the first of `paths` that runs, trying the next as execvp does
+// (after "not found" or "not allowed"); the errno when none does (EACCES when one was not
+// allowed, ENOENT when there was none). System calls only.
+int ExecFirst(const char* const* paths, std::size_t count, char* const* args) {
+  int error = ENOENT;
+  bool denied = false;
+  for (std::size_t i = 0; i < count; ++i) {
+    ::execv(paths[i], args);
+    error = errno;
+    switch (error) {
+      case EACCES:
+        denied = true;
+        break;
+      case ENOENT:
+      case ESTALE:
+      case ENOTDIR:
+      case ENODEV:
+      case ETIMEDOUT:
+        break;
+      default:
+        return error;
+    }
+  }
+  return denied ? EACCES : error;
+}
+
 }  // namespace
 
 std::string Describe(const ChildExit& exit) {
   if (exit.exited)
     return "exit code " + std::to_string(exit.code);
   return "signal " + std::to_string(exit.signal) + " (" + strsignal(exit.signal) + ")";
+}
+
+int ShellStatus(const ChildExit& exit) {
+  return exit.exited ? exit.code : 128 + exit.signal;
 }
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::string& stdout_file,
@@ -54,6 +108,25 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
     ::close(out);
     throw;
   }
+  try {
+    Start(argv, {argv[0]}, out, err);
+  } catch (...) {
+    ::close(out);
+    ::close(err);
+    throw;
+  }
+  ::close(out);
+  ::close(err);
+}
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, int output_fd) {
+  if (argv.empty())
+    throw std::runtime_error("empty command line");
+  Start(argv, SearchPath(argv[0]), output_fd, output_fd);
+}
+
+void ChildProcess::Start(const std::vector<std::string>& argv,
+                         const std::vector<std::string>& programs, int out, int err) {
   // Everything the child needs is prepared before vfork: the child shares this memory until it
   // execs, so it only makes system calls, touching no heap and no lock. (fork copied the
   // page tables of a large, threaded process, and every page the parent then wrote took a
@@ -62,7 +135,13 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   for (const auto& a : argv)
     args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  std::vector<const char*> paths;
+  for (const auto& p : programs)
+    paths.push_back(p.c_str());
   const pid_t parent = ::getpid();
+  // Written by the child, which shares this memory until it execs or exits: the parent reads it
+  // once vfork returns.
+  volatile int exec_error = 0;
   // No signal handler of ours may run in the child while it shares our memory: all signals are
   // blocked around vfork; the child resets the handlers to their defaults, then restores the
   // mask for the program it runs.
@@ -91,14 +170,16 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
     if (devnull >= 0)
       ::dup2(devnull, STDIN_FILENO);
     ::sigprocmask(SIG_SETMASK, &previous, nullptr);
-    ::execv(args[0], args.data());
+    const int error = ExecFirst(paths.data(), paths.size(), args.data());
+    exec_error = error;
     // strerrordesc_np: a constant string, no locale, no allocation.
-    const char* reason = ::strerrordesc_np(errno);
+    const char* reason = ::strerrordesc_np(error);
     if (reason == nullptr)
       reason = "unknown error";
+    const char* program = paths.empty() ? args[0] : paths.front();
     const char prefix[] = "cannot run ";
     (void)!::write(STDERR_FILENO, prefix, sizeof prefix - 1);
-    (void)!::write(STDERR_FILENO, args[0], std::strlen(args[0]));
+    (void)!::write(STDERR_FILENO, program, std::strlen(program));
     (void)!::write(STDERR_FILENO, ": ", 2);
     (void)!::write(STDERR_FILENO, reason, std::strlen(reason));
     (void)!::write(STDERR_FILENO, "\n", 1);
@@ -106,14 +187,10 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   }
   const int vfork_error = errno;
   ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-  if (pid_ < 0) {
-    ::close(out);
-    ::close(err);
+  if (pid_ < 0)
     throw std::runtime_error(std::string("vfork: ") + std::strerror(vfork_error));
-  }
+  exec_error_ = exec_error;
   ::setpgid(pid_, pid_);  // also from the parent: no race with an early Kill
-  ::close(out);
-  ::close(err);
 }
 
 ChildProcess::~ChildProcess() {
@@ -131,6 +208,19 @@ bool ChildProcess::Poll() {
     done_ = true;
   }
   return done_;
+}
+
+const ChildExit& ChildProcess::Wait() {
+  if (done_)
+    return exit_;
+  int status = 0;
+  while (::waitpid(pid_, &status, 0) < 0) {
+    if (errno != EINTR)
+      throw std::runtime_error(std::string("waitpid failed: ") + std::strerror(errno));
+  }
+  exit_ = FromWaitStatus(status);
+  done_ = true;
+  return exit_;
 }
 
 void ChildProcess::Terminate() {
@@ -155,6 +245,52 @@ void ChildProcess::Kill(double grace_s) {
     exit_ = FromWaitStatus(status);
     done_ = true;
   }
+}
+
+ProcessResult RunProcess(const std::vector<std::string>& argv) {
+  ProcessResult result;
+  if (argv.empty()) {
+    result.output = "no program given";
+    return result;
+  }
+  int pipe_fds[2];
+  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    result.output = std::string("pipe failed: ") + std::strerror(errno);
+    return result;
+  }
+  std::unique_ptr<ChildProcess> child;
+  try {
+    child = std::make_unique<ChildProcess>(argv, pipe_fds[1]);
+  } catch (const std::exception& e) {
+    ::close(pipe_fds[0]);
+    ::close(pipe_fds[1]);
+    result.output = argv[0] + ": " + e.what();
+    return result;
+  }
+  ::close(pipe_fds[1]);
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(pipe_fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR)
+      continue;
+    if (n <= 0)
+      break;
+    result.output.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(pipe_fds[0]);
+  try {
+    result.exit = child->Wait();
+  } catch (const std::exception& e) {
+    result.output += e.what();
+    return result;
+  }
+  if (child->exec_error() != 0) {
+    result.output = argv[0] + ": " + std::strerror(child->exec_error());
+    return result;
+  }
+  // The shell's convention for "not found / not run".
+  result.started = !result.exit.exited || result.exit.code != 127;
+  return result;
 }
 
 }  // namespace rlpos

@@ -25,8 +25,4 @@ bool StopRequested() {
   return g_stop != 0;
 }
 
-void RequestStop() {
-  g_stop = 1;
-}
-
 }  // namespace rlpos

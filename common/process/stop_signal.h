@@ -5,6 +5,5 @@ namespace rlpos {
 
 void InstallStopSignalHandlers();
 bool StopRequested();
-void RequestStop();
 
 }  // namespace rlpos

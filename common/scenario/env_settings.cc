@@ -127,13 +127,10 @@ const SettingsTable<RewardSpec>& RewardSettings() {
       "/env/reward",
       "The reward of a step: w1 x nLoS / N + w2 x throughput / total demand, + w3 x demands met "
       "/ N with demand_aware.",
-      {{"name",
-        &RewardSpec::name,
-        NoRange(),
+      {{"name", &RewardSpec::name, NoRange(),
         "`paper`: w1 x nLoS / N + w2 x throughput / total demand; `demand_aware`: plus w3 x the "
         "UEs whose SNR meets their demand's MCS / N",
-        "",
-        {"paper", "demand_aware"}},
+        "", NameList(kRewards)},
        {"w1", &RewardSpec::w1, NonNegative(), "weight of the UEs in LoS, nLoS / N"},
        {"w2", &RewardSpec::w2, NonNegative(), "weight of throughput / total demand"},
        {"w3",

@@ -30,6 +30,9 @@ inline constexpr std::array<std::string_view, 3> kPlacingPositioners{"baseline",
 inline constexpr std::array<std::string_view, 2> kTrackingPositioners{"oracle-track",
                                                                       "centroid-track"};
 
+// env.reward.name: the rewards worker/env/gym/reward.cc makes, in the order of its factories.
+inline constexpr std::array<std::string_view, 2> kRewards{"paper", "demand_aware"};
+
 // `a` then `b`.
 template <std::size_t A, std::size_t B>
 constexpr std::array<std::string_view, A + B> Concat(const std::array<std::string_view, A>& a,

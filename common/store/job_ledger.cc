@@ -49,14 +49,14 @@ SubmitResult JobLedger::Submit(const CampaignPlan& campaign) {
   Statement existing = db_->Prepare("SELECT spec_json FROM campaigns WHERE id = ?");
   existing.Bind(campaign.id);
   if (existing.Step()) {
-    if (existing.Text(0) != spec_text) {
+    if (existing.Text(existing.Column("spec_json")) != spec_text) {
       // 48 bits of FNV-1a make this practically impossible; refuse rather than mix campaigns.
       throw StoreError(store_.file(),
                        "campaign id " + campaign.id + " is taken by another campaign");
     }
-    Statement count = db_->Prepare("SELECT COUNT(*) FROM jobs WHERE campaign_id = ?");
+    Statement count = db_->Prepare("SELECT COUNT(*) AS jobs FROM jobs WHERE campaign_id = ?");
     count.Bind(campaign.id).Step();
-    result.jobs = static_cast<int>(count.Int(0));
+    result.jobs = static_cast<int>(count.Int(count.Column("jobs")));
     return result;  // the transaction rolls back: nothing was written
   }
 
@@ -143,8 +143,9 @@ std::vector<ReadyJob> JobLedger::ListReady(std::size_t per_campaign) {
   std::vector<std::string> campaigns;
   Statement active =
       db_->Prepare("SELECT id FROM campaigns WHERE state = 'active' ORDER BY created_at, id");
+  const ResultColumn campaign_column = active.Column("id");
   while (active.Step())
-    campaigns.push_back(active.Text(0));
+    campaigns.push_back(active.Text(campaign_column));
   Statement select = db_->Prepare(
       std::string("SELECT j.id, j.campaign_id, j.key, j.attempt, j.timeout_s, ") + kParamColumns +
       " FROM jobs j WHERE j.state = 'ready' AND j.campaign_id = ? AND j.kind = ? "
@@ -152,6 +153,10 @@ std::vector<ReadyJob> JobLedger::ListReady(std::size_t per_campaign) {
       "AND (j.cache_twin IS NULL OR NOT EXISTS (SELECT 1 FROM jobs t WHERE t.id = j.cache_twin "
       "AND t.state IN ('ready', 'running'))) "
       "ORDER BY j.seq LIMIT ?");
+  const ResultColumn id = select.Column("id"), campaign_id = select.Column("campaign_id"),
+                     key = select.Column("key"), attempt = select.Column("attempt"),
+                     timeout_s = select.Column("timeout_s");
+  const ParamColumns params(select);
   std::vector<ReadyJob> out;
   for (const auto& campaign : campaigns) {
     std::size_t taken = 0;
@@ -165,12 +170,12 @@ std::vector<ReadyJob> JobLedger::ListReady(std::size_t per_campaign) {
                                   : static_cast<std::int64_t>(per_campaign - taken));
       while (select.Step()) {
         ReadyJob job;
-        job.id = select.Text(0);
-        job.campaign_id = select.Text(1);
-        job.key = select.Text(2);
-        job.attempt = static_cast<int>(select.Int(3));
-        job.timeout_s = select.Double(4);
-        job.params = ReadParams(select, 5, job.placement, store_.file());
+        job.id = select.Text(id);
+        job.campaign_id = select.Text(campaign_id);
+        job.key = select.Text(key);
+        job.attempt = static_cast<int>(select.Int(attempt));
+        job.timeout_s = select.Double(timeout_s);
+        job.params = ReadParams(select, params, job.placement, store_.file());
         out.push_back(std::move(job));
         ++taken;
       }
@@ -197,19 +202,24 @@ bool JobLedger::MarkRunning(const std::string& job_id, const std::string& worker
 std::vector<RunningJob> JobLedger::ListRunning() {
   Statement select = db_->Prepare(std::string("SELECT ") + kRunningJobColumns +
                                   " FROM jobs WHERE state = 'running' ORDER BY started_at, id");
+  const RunningJobColumns columns(select);
   std::vector<RunningJob> out;
   while (select.Step())
-    out.push_back(ReadRunningJob(select));
+    out.push_back(ReadRunningJob(select, columns));
   return out;
 }
 
 std::vector<RunningSlot> JobLedger::RunningSlots() {
   Statement select = db_->Prepare(
-      "SELECT COALESCE(worker_id, ''), campaign_id, COALESCE(slot, 0) FROM jobs "
-      "WHERE state = 'running'");
+      "SELECT COALESCE(worker_id, '') AS worker_id, campaign_id, COALESCE(slot, 0) AS slot "
+      "FROM jobs WHERE state = 'running'");
+  const ResultColumn worker_id = select.Column("worker_id"),
+                     campaign_id = select.Column("campaign_id"), slot = select.Column("slot");
   std::vector<RunningSlot> out;
-  while (select.Step())
-    out.push_back({select.Text(0), select.Text(1), static_cast<int>(select.Int(2))});
+  while (select.Step()) {
+    out.push_back(
+        {select.Text(worker_id), select.Text(campaign_id), static_cast<int>(select.Int(slot))});
+  }
   return out;
 }
 

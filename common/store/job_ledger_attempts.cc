@@ -16,12 +16,13 @@ JobUpdate JobLedger::RecordFailure(const std::string& job_id, int attempt, const
   select.Bind(job_id);
   if (!select.Step())
     return JobUpdate::kUnknown;
-  if (select.Text(0) != "running" || select.Int(1) != attempt)
+  if (select.Text(select.Column("state")) != "running" ||
+      select.Int(select.Column("attempt")) != attempt)
     return JobUpdate::kStale;
-  if (!worker_id.empty() && select.OptionalText(4) != worker_id)
+  if (!worker_id.empty() && select.OptionalText(select.Column("worker_id")) != worker_id)
     return JobUpdate::kStale;
-  const int max_attempts = static_cast<int>(select.Int(2));
-  const std::string campaign_id = select.Text(3);
+  const int max_attempts = static_cast<int>(select.Int(select.Column("max_attempts")));
+  const std::string campaign_id = select.Text(select.Column("campaign_id"));
   select.Reset();
   const JobUpdate update = FailAttempt(job_id, attempt, max_attempts, error);
   UpdateCampaignState(campaign_id);
@@ -86,9 +87,12 @@ std::vector<std::string> JobLedger::RequeueWorker(const std::string& worker_id) 
     std::string campaign_id;
   };
   std::vector<Held> held;
+  const ResultColumn id = select.Column("id"), attempt = select.Column("attempt"),
+                     infra_losses = select.Column("infra_losses"),
+                     campaign_id = select.Column("campaign_id");
   while (select.Step()) {
-    held.push_back({select.Text(0), static_cast<int>(select.Int(1)),
-                    static_cast<int>(select.Int(2)), select.Text(3)});
+    held.push_back({select.Text(id), static_cast<int>(select.Int(attempt)),
+                    static_cast<int>(select.Int(infra_losses)), select.Text(campaign_id)});
   }
   select.Reset();
   std::vector<std::string> ids;
@@ -129,9 +133,10 @@ std::vector<RunningJob> JobLedger::CancelCampaign(const std::string& campaign_id
       db_->Prepare(std::string("SELECT ") + kRunningJobColumns +
                    " FROM jobs WHERE campaign_id = ? AND state = 'running' ORDER BY id");
   running.Bind(campaign_id);
+  const RunningJobColumns columns(running);
   std::vector<RunningJob> stopped;
   while (running.Step())
-    stopped.push_back(ReadRunningJob(running));
+    stopped.push_back(ReadRunningJob(running, columns));
   db_->Prepare(
          "UPDATE jobs SET state = 'cancelled', finished_at = ? "
          "WHERE campaign_id = ? AND state IN ('pending', 'ready', 'running')")
@@ -152,8 +157,9 @@ int JobLedger::RetryFailed(const std::string& campaign_id) {
       "SELECT id FROM jobs WHERE campaign_id = ? AND state IN ('failed', 'cancelled')");
   revive.Bind(campaign_id);
   std::vector<std::string> revived_ids;
+  const ResultColumn id_column = revive.Column("id");
   while (revive.Step())
-    revived_ids.push_back(revive.Text(0));
+    revived_ids.push_back(revive.Text(id_column));
   revive.Reset();
   // A job whose dependency has not succeeded (it is being retried too) waits as pending.
   // attempt + 1 makes any late result of the old attempt stale.

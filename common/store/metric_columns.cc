@@ -16,7 +16,7 @@ void ExtendView(Database& db, const std::string& name, const std::string& column
   select.Bind(name);
   if (!select.Step())
     throw StoreError(db.file(), "has no view " + name);
-  std::string sql = select.Text(0);
+  std::string sql = select.Text(select.Column("sql"));
   select.Reset();
   const std::size_t from = sql.rfind("\nFROM ");
   if (from == std::string::npos)

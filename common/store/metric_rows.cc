@@ -35,15 +35,30 @@ void BindMetrics(Statement& insert, const Fields& fields, Real real_of, Count co
   }
 }
 
-// Reads the metrics from `column` on, in the order of ColumnList.
-template <typename Fields, typename Real, typename Count>
-void ReadMetrics(const Statement& select, int column, Fields& fields, Real real_of,
-                 Count count_of) {
+// The metrics' result columns of `select`, named by `column` (the run's or a UAV's view names),
+// in the order of kStoredMetrics; none for a metric that side lacks.
+template <typename Column>
+std::vector<std::optional<ResultColumn>> MetricColumns(const Statement& select, Column column) {
+  std::vector<std::optional<ResultColumn>> out;
   for (const auto& m : kStoredMetrics) {
+    const char* name = column(m);
+    out.push_back(name ? std::optional<ResultColumn>(select.Column(name)) : std::nullopt);
+  }
+  return out;
+}
+
+// Reads the metrics from their `columns` (MetricColumns).
+template <typename Fields, typename Real, typename Count>
+void ReadMetrics(const Statement& select, const std::vector<std::optional<ResultColumn>>& columns,
+                 Fields& fields, Real real_of, Count count_of) {
+  for (std::size_t i = 0; i < kStoredMetrics.size(); ++i) {
+    const auto& m = kStoredMetrics[i];
+    if (!columns[i])
+      continue;
     if (const auto real = real_of(m)) {
-      fields.*real = select.OptionalDouble(column++);
+      fields.*real = select.OptionalDouble(*columns[i]);
     } else if (const auto count = count_of(m)) {
-      fields.*count = static_cast<int>(select.Int(column++));
+      fields.*count = static_cast<int>(select.Int(*columns[i]));
     }
   }
 }
@@ -100,17 +115,21 @@ std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_
   Statement select = db.Prepare("SELECT job_id, scenario, positioner, rng_run, x, y, z" +
                                 ColumnList(kRunView) + " FROM v_eval_runs" + kOfCampaignInOrder);
   select.Bind(campaign_id);
+  const ResultColumn job_id = select.Column("job_id"), scenario = select.Column("scenario"),
+                     label = select.Column("positioner"), rng_run = select.Column("rng_run"),
+                     x = select.Column("x"), y = select.Column("y"), z = select.Column("z");
+  const auto metrics = MetricColumns(select, kRunView);
   std::vector<MetricRow> out;
   while (select.Step()) {
     MetricRow m;
-    m.job_id = select.Text(0);
-    m.scenario = select.Text(1);
-    m.label = select.Text(2);
-    m.rng_run = select.Int(3);
-    m.x = select.Double(4);
-    m.y = select.Double(5);
-    m.z = select.Double(6);
-    ReadMetrics(select, 7, m, kRunReal, kRunCount);
+    m.job_id = select.Text(job_id);
+    m.scenario = select.Text(scenario);
+    m.label = select.Text(label);
+    m.rng_run = select.Int(rng_run);
+    m.x = select.Double(x);
+    m.y = select.Double(y);
+    m.z = select.Double(z);
+    ReadMetrics(select, metrics, m, kRunReal, kRunCount);
     out.push_back(std::move(m));
   }
   return out;
@@ -121,19 +140,24 @@ std::vector<UavMetricRow> ReadUavMetricRows(Database& db, const std::string& cam
       db.Prepare("SELECT job_id, scenario, positioner, rng_run, uav, uav_name, x, y, z" +
                  ColumnList(kUavView) + " FROM v_eval_uavs" + kOfCampaignInOrder + ", uav");
   select.Bind(campaign_id);
+  const ResultColumn job_id = select.Column("job_id"), scenario = select.Column("scenario"),
+                     label = select.Column("positioner"), rng_run = select.Column("rng_run"),
+                     uav = select.Column("uav"), name = select.Column("uav_name"),
+                     x = select.Column("x"), y = select.Column("y"), z = select.Column("z");
+  const auto metrics = MetricColumns(select, kUavView);
   std::vector<UavMetricRow> out;
   while (select.Step()) {
     UavMetricRow m;
-    m.job_id = select.Text(0);
-    m.scenario = select.Text(1);
-    m.label = select.Text(2);
-    m.rng_run = select.Int(3);
-    m.uav = static_cast<int>(select.Int(4));
-    m.name = select.Text(5);
-    m.x = select.Double(6);
-    m.y = select.Double(7);
-    m.z = select.Double(8);
-    ReadMetrics(select, 9, m, kUavReal, kUavCount);
+    m.job_id = select.Text(job_id);
+    m.scenario = select.Text(scenario);
+    m.label = select.Text(label);
+    m.rng_run = select.Int(rng_run);
+    m.uav = static_cast<int>(select.Int(uav));
+    m.name = select.Text(name);
+    m.x = select.Double(x);
+    m.y = select.Double(y);
+    m.z = select.Double(z);
+    ReadMetrics(select, metrics, m, kUavReal, kUavCount);
     out.push_back(std::move(m));
   }
   return out;

@@ -21,10 +21,13 @@ constexpr const char* kOracle =
 const std::string kSelect =
     std::string(
         "SELECT r.scenario, o.uavs, CASE WHEN t.kind = 'train' THEN "
-        "COALESCE(json_extract(t.result_json, '$.algorithm'), '') ELSE r.positioner END, "
-        "CASE WHEN t.kind = 'train' THEN COALESCE(t.train_seed, 0) ELSE 0 END, r.positioner, "
-        "COUNT(*), AVG(r.reward), o.reward, t.kind = 'train', "
+        "COALESCE(json_extract(t.result_json, '$.algorithm'), '') ELSE r.positioner END "
+        "AS algorithm, "
+        "CASE WHEN t.kind = 'train' THEN COALESCE(t.train_seed, 0) ELSE 0 END AS seed, "
+        "r.positioner AS label, COUNT(*) AS runs, AVG(r.reward) AS rl_reward, "
+        "o.reward AS oracle_reward, t.kind = 'train' AS trained, "
         "MAX(COALESCE(s.finished_at - s.started_at, t.finished_at - t.started_at)) "
+        "AS placement_s "
         "FROM v_eval_runs r "
         "JOIN jobs e ON e.id = r.job_id "
         "JOIN jobs t ON t.id = e.depends_on "
@@ -60,19 +63,25 @@ bool OptimalityRow::IsOracle() const {
 std::vector<OptimalityRow> ReadOptimalityRows(Database& db, const std::string& campaign_id) {
   Statement select = db.Prepare(kSelect);
   select.Bind(campaign_id);
+  const ResultColumn scenario = select.Column("scenario"), uavs = select.Column("uavs"),
+                     algorithm = select.Column("algorithm"), seed = select.Column("seed"),
+                     label = select.Column("label"), runs = select.Column("runs"),
+                     rl_reward = select.Column("rl_reward"),
+                     oracle_reward = select.Column("oracle_reward"),
+                     trained = select.Column("trained"), placement_s = select.Column("placement_s");
   std::vector<OptimalityRow> out;
   while (select.Step()) {
     OptimalityRow row;
-    row.scenario = select.Text(0);
-    row.uavs = static_cast<int>(select.Int(1));
-    row.algorithm = select.Text(2);
-    row.train_seed = static_cast<std::uint64_t>(select.Int(3));
-    row.label = select.Text(4);
-    row.runs = static_cast<int>(select.Int(5));
-    row.rl_reward = select.Double(6);
-    row.oracle_reward = select.Double(7);
-    row.trained = select.Int(8) != 0;
-    row.placement_s = select.OptionalDouble(9);
+    row.scenario = select.Text(scenario);
+    row.uavs = static_cast<int>(select.Int(uavs));
+    row.algorithm = select.Text(algorithm);
+    row.train_seed = static_cast<std::uint64_t>(select.Int(seed));
+    row.label = select.Text(label);
+    row.runs = static_cast<int>(select.Int(runs));
+    row.rl_reward = select.Double(rl_reward);
+    row.oracle_reward = select.Double(oracle_reward);
+    row.trained = select.Int(trained) != 0;
+    row.placement_s = select.OptionalDouble(placement_s);
     out.push_back(std::move(row));
   }
   return out;

@@ -19,9 +19,9 @@ void ResultCache::ResolveFromCache(const std::string& job_id) {
   job.Bind(job_id);
   if (!job.Step())
     return;
-  const std::optional<std::string> key = job.OptionalText(0);
-  const int attempt = static_cast<int>(job.Int(1));
-  const bool use_cache = job.Int(2) != 0;
+  const std::optional<std::string> key = job.OptionalText(job.Column("cache_key"));
+  const int attempt = static_cast<int>(job.Int(job.Column("attempt")));
+  const bool use_cache = job.Int(job.Column("use_cache")) != 0;
   job.Reset();
   if (!key || !use_cache)
     return;
@@ -30,7 +30,7 @@ void ResultCache::ResolveFromCache(const std::string& job_id) {
       "ORDER BY cached_from IS NOT NULL, finished_at LIMIT 1");
   done.Bind(*key).Bind(job_id);
   if (done.Step()) {
-    const std::string source = done.Text(0);
+    const std::string source = done.Text(done.Column("id"));
     done.Reset();
     ServeFrom(job_id, attempt, source);
     return;
@@ -42,7 +42,7 @@ void ResultCache::ResolveFromCache(const std::string& job_id) {
       "AND cache_twin IS NULL ORDER BY state = 'ready', seq LIMIT 1");
   twin.Bind(*key).Bind(job_id);
   if (twin.Step()) {
-    const std::string other = twin.Text(0);
+    const std::string other = twin.Text(twin.Column("id"));
     twin.Reset();
     db_->Prepare("UPDATE jobs SET cache_twin = ? WHERE id = ?").Bind(other).Bind(job_id).Run();
   }
@@ -53,8 +53,9 @@ void ResultCache::ServeWaiting(const std::string& job_id) {
       db_->Prepare("SELECT id, attempt FROM jobs WHERE cache_twin = ? AND state = 'ready'");
   waiting.Bind(job_id);
   std::vector<std::pair<std::string, int>> jobs;
+  const ResultColumn id_column = waiting.Column("id"), attempt_column = waiting.Column("attempt");
   while (waiting.Step())
-    jobs.emplace_back(waiting.Text(0), static_cast<int>(waiting.Int(1)));
+    jobs.emplace_back(waiting.Text(id_column), static_cast<int>(waiting.Int(attempt_column)));
   waiting.Reset();
   for (const auto& [id, attempt] : jobs)
     ServeFrom(id, attempt, job_id);
@@ -69,17 +70,20 @@ void ResultCache::ServeFrom(const std::string& job_id, int attempt, const std::s
     return;
   nlohmann::json result;
   try {
-    result = nlohmann::json::parse(select.Text(0));
+    result = nlohmann::json::parse(select.Text(select.Column("result_json")));
   } catch (const nlohmann::json::exception& e) {
     throw StoreError(store_.file(), "job " + source + ": malformed result_json: " + e.what());
   }
   Provenance provenance;
-  provenance.host = select.OptionalText(1).value_or("");
-  provenance.rlpos_version = select.OptionalText(2).value_or("");
-  provenance.ns3_version = select.OptionalText(3).value_or("");
-  provenance.torch_version = select.OptionalText(4).value_or("");
-  provenance.cyclonedds_version = select.OptionalText(5).value_or("");
-  provenance.scenario_sha256 = select.OptionalText(6).value_or("");
+  const auto text = [&select](const char* column) {
+    return select.OptionalText(select.Column(column)).value_or("");
+  };
+  provenance.host = text("host");
+  provenance.rlpos_version = text("rlpos_version");
+  provenance.ns3_version = text("ns3_version");
+  provenance.torch_version = text("torch_version");
+  provenance.cyclonedds_version = text("cyclonedds_version");
+  provenance.scenario_sha256 = text("scenario_sha256");
   select.Reset();
 
   Transaction transaction(*db_);

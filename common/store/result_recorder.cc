@@ -77,21 +77,22 @@ std::optional<JobUpdate> ResultRecorder::ReadSettling(const std::string& job_id,
   select.Bind(job_id);
   if (!select.Step())
     return JobUpdate::kUnknown;
-  if (select.Text(0) != "running" || select.Int(1) != attempt)
+  const auto column = [&select](const char* name) { return select.Column(name); };
+  if (select.Text(column("state")) != "running" || select.Int(column("attempt")) != attempt)
     return JobUpdate::kStale;
-  if (!worker_id.empty() && select.OptionalText(5) != worker_id)
+  if (!worker_id.empty() && select.OptionalText(column("worker_id")) != worker_id)
     return JobUpdate::kStale;
-  job.max_attempts = static_cast<int>(select.Int(2));
-  job.campaign_id = select.Text(3);
-  job.label = select.Text(4);
-  job.kind = ParseJobKind(select.Text(6));
-  job.scenario = select.Text(7);
-  job.rng_run = select.OptionalInt(8);
-  job.positioner = select.OptionalText(13).value_or("");
-  job.fidelity = select.OptionalText(14).value_or("");
-  job.duration_s = select.OptionalDouble(15);
+  job.max_attempts = static_cast<int>(select.Int(column("max_attempts")));
+  job.campaign_id = select.Text(column("campaign_id"));
+  job.label = select.Text(column("label"));
+  job.kind = ParseJobKind(select.Text(column("kind")));
+  job.scenario = select.Text(column("scenario"));
+  job.rng_run = select.OptionalInt(column("rng_run"));
+  job.positioner = select.OptionalText(column("positioner")).value_or("");
+  job.fidelity = select.OptionalText(column("fidelity")).value_or("");
+  job.duration_s = select.OptionalDouble(column("duration_s"));
   try {
-    job.placement = ReadPlacement(select, 9);
+    job.placement = ReadPlacement(select, PlacementColumns(select));
   } catch (const std::exception& e) {
     throw StoreError(store_.file(), "job " + job_id + ": malformed positions_json: " + e.what());
   }

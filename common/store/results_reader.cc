@@ -11,19 +11,31 @@ namespace {
 
 using nlohmann::json;
 
-CampaignProgress ReadProgress(const Statement& row) {
+// The columns of kProgressColumns, and the counts' members they fill.
+struct ProgressColumns {
+  explicit ProgressColumns(const Statement& select)
+      : campaign_id(select.Column("campaign_id")),
+        name(select.Column("name")),
+        state(select.Column("state")) {
+    for (const auto& [column, member] : kCounts)
+      counts.push_back({select.Column(column), member});
+  }
+  static constexpr std::pair<const char*, int CampaignProgress::*> kCounts[] = {
+      {"total", &CampaignProgress::total},         {"pending", &CampaignProgress::pending},
+      {"ready", &CampaignProgress::ready},         {"running", &CampaignProgress::running},
+      {"succeeded", &CampaignProgress::succeeded}, {"failed", &CampaignProgress::failed},
+      {"cancelled", &CampaignProgress::cancelled}, {"cached", &CampaignProgress::cached}};
+  ResultColumn campaign_id, name, state;
+  std::vector<std::pair<ResultColumn, int CampaignProgress::*>> counts;
+};
+
+CampaignProgress ReadProgress(const Statement& row, const ProgressColumns& c) {
   CampaignProgress p;
-  p.campaign_id = row.Text(0);
-  p.name = row.Text(1);
-  p.state = row.Text(2);
-  p.total = static_cast<int>(row.Int(3));
-  p.pending = static_cast<int>(row.Int(4));
-  p.ready = static_cast<int>(row.Int(5));
-  p.running = static_cast<int>(row.Int(6));
-  p.succeeded = static_cast<int>(row.Int(7));
-  p.failed = static_cast<int>(row.Int(8));
-  p.cancelled = static_cast<int>(row.Int(9));
-  p.cached = static_cast<int>(row.Int(10));
+  p.campaign_id = row.Text(c.campaign_id);
+  p.name = row.Text(c.name);
+  p.state = row.Text(c.state);
+  for (const auto& [column, member] : c.counts)
+    p.*member = static_cast<int>(row.Int(column));
   return p;
 }
 
@@ -45,13 +57,16 @@ std::vector<std::string> ResultsReader::CampaignBuilds(const std::string& campai
       "WHERE campaign_id = ? AND state = 'succeeded' AND rlpos_version IS NOT NULL "
       "ORDER BY 1, 2, 3, 4");
   select.Bind(campaign_id);
+  const ResultColumn rlpos = select.Column("rlpos_version"), ns3 = select.Column("ns3_version"),
+                     torch = select.Column("torch_version"),
+                     cyclonedds = select.Column("cyclonedds_version");
   std::vector<std::string> builds;
   while (select.Step()) {
     Provenance p;
-    p.rlpos_version = select.Text(0);
-    p.ns3_version = select.OptionalText(1).value_or("?");
-    p.torch_version = select.OptionalText(2).value_or("?");
-    p.cyclonedds_version = select.OptionalText(3).value_or("?");
+    p.rlpos_version = select.Text(rlpos);
+    p.ns3_version = select.OptionalText(ns3).value_or("?");
+    p.torch_version = select.OptionalText(torch).value_or("?");
+    p.cyclonedds_version = select.OptionalText(cyclonedds).value_or("?");
     builds.push_back(DescribeBuild(p));
   }
   return builds;
@@ -62,42 +77,44 @@ CampaignProgress ResultsReader::Progress(const std::string& campaign_id) {
   select.Bind(campaign_id);
   if (!select.Step())
     throw StoreError(store_.file(), "no campaign \"" + campaign_id + "\"");
-  return ReadProgress(select);
+  return ReadProgress(select, ProgressColumns(select));
 }
 
 std::vector<CampaignProgress> ResultsReader::AllProgress() {
   Statement select =
       db_->Prepare(std::string(kProgressColumns) + " ORDER BY created_utc, campaign_id");
+  const ProgressColumns columns(select);
   std::vector<CampaignProgress> out;
   while (select.Step())
-    out.push_back(ReadProgress(select));
+    out.push_back(ReadProgress(select, columns));
   return out;
 }
 
 std::optional<JobRecord> ResultsReader::GetJob(const std::string& job_id) {
   Statement select = db_->Prepare(
       std::string("SELECT id, campaign_id, key, label, state, depends_on, attempt, max_attempts, "
-                  "timeout_s, worker_id, error, result_json, COALESCE(slot, 0), ") +
+                  "timeout_s, worker_id, error, result_json, COALESCE(slot, 0) AS slot, ") +
       kParamColumns + " FROM jobs WHERE id = ?");
   select.Bind(job_id);
   if (!select.Step())
     return std::nullopt;
+  const auto column = [&select](const char* name) { return select.Column(name); };
   JobRecord r;
-  r.id = select.Text(0);
-  r.campaign_id = select.Text(1);
-  r.key = select.Text(2);
-  r.label = select.Text(3);
-  r.state = select.Text(4);
-  r.depends_on = select.OptionalText(5).value_or("");
-  r.attempt = static_cast<int>(select.Int(6));
-  r.max_attempts = static_cast<int>(select.Int(7));
-  r.timeout_s = select.Double(8);
-  r.worker_id = select.OptionalText(9);
-  r.error = select.OptionalText(10);
-  if (const auto result = select.OptionalText(11))
+  r.id = select.Text(column("id"));
+  r.campaign_id = select.Text(column("campaign_id"));
+  r.key = select.Text(column("key"));
+  r.label = select.Text(column("label"));
+  r.state = select.Text(column("state"));
+  r.depends_on = select.OptionalText(column("depends_on")).value_or("");
+  r.attempt = static_cast<int>(select.Int(column("attempt")));
+  r.max_attempts = static_cast<int>(select.Int(column("max_attempts")));
+  r.timeout_s = select.Double(column("timeout_s"));
+  r.worker_id = select.OptionalText(column("worker_id"));
+  r.error = select.OptionalText(column("error"));
+  if (const auto result = select.OptionalText(column("result_json")))
     r.result = json::parse(*result);
-  r.slot = static_cast<int>(select.Int(12));
-  r.params = ReadParams(select, 13, r.placement, store_.file());
+  r.slot = static_cast<int>(select.Int(column("slot")));
+  r.params = ReadParams(select, ParamColumns(select), r.placement, store_.file());
   return r;
 }
 

@@ -276,11 +276,13 @@ void ConvertArgvColumns(Database& db) {
   };
   std::vector<Row> rows;
   Statement select = db.Prepare("SELECT id, argv_json FROM jobs");
+  const ResultColumn id = select.Column("id"), argv_json = select.Column("argv_json");
   while (select.Step()) {
     try {
-      rows.push_back({select.Text(0), LegacyJobFieldsFromArgv(select.Text(1))});
+      rows.push_back({select.Text(id), LegacyJobFieldsFromArgv(select.Text(argv_json))});
     } catch (const std::exception& e) {
-      throw StoreError(db.file(), "job " + select.Text(0) + ": cannot read argv_json: " + e.what());
+      throw StoreError(db.file(),
+                       "job " + select.Text(id) + ": cannot read argv_json: " + e.what());
     }
   }
   select.Reset();
@@ -387,7 +389,7 @@ void AllowTrackJobs(Database& db) {
   const std::string after = "CHECK (kind IN ('train', 'position', 'eval', 'track'))";
   Statement cookie = db.Prepare("PRAGMA schema_version");
   cookie.Step();
-  const std::int64_t version = cookie.Int(0);
+  const std::int64_t version = cookie.Int(cookie.Column("schema_version"));
   cookie.Reset();
   db.Exec("PRAGMA writable_schema = ON");
   Statement rewrite = db.Prepare(
@@ -431,13 +433,13 @@ int LatestSchemaVersion() {
 
 int ReadSchemaVersion(Database& db) {
   Statement has_version =
-      db.Prepare("SELECT COUNT(*) FROM sqlite_master WHERE type = 'table' AND name = ?");
+      db.Prepare("SELECT COUNT(*) AS n FROM sqlite_master WHERE type = 'table' AND name = ?");
   has_version.Bind("schema_version");
   has_version.Step();
-  if (has_version.Int(0) == 0) {
-    Statement tables = db.Prepare("SELECT COUNT(*) FROM sqlite_master");
+  if (has_version.Int(has_version.Column("n")) == 0) {
+    Statement tables = db.Prepare("SELECT COUNT(*) AS n FROM sqlite_master");
     tables.Step();
-    if (tables.Int(0) > 0) {
+    if (tables.Int(tables.Column("n")) > 0) {
       throw StoreError(db.file(),
                        "is an SQLite database but not an RLpos results store (no schema_version "
                        "table)");
@@ -447,7 +449,7 @@ int ReadSchemaVersion(Database& db) {
   Statement version = db.Prepare("SELECT version FROM schema_version");
   if (!version.Step())
     throw StoreError(db.file(), "schema_version table is empty");
-  const auto v = version.Int(0);
+  const auto v = version.Int(version.Column("version"));
   if (version.Step())
     throw StoreError(db.file(), "schema_version table has several rows");
   return static_cast<int>(v);

@@ -97,39 +97,57 @@ void Statement::Reset() {
   next_ = 1;
 }
 
-bool Statement::IsNull(int column) const {
-  return sqlite3_column_type(stmt_, column) == SQLITE_NULL;
+ResultColumn Statement::Column(std::string_view name) const {
+  int found = -1;
+  const int count = sqlite3_column_count(stmt_);
+  for (int i = 0; i < count; ++i) {
+    const char* column = sqlite3_column_name(stmt_, i);
+    if (column == nullptr || name != column)
+      continue;
+    if (found >= 0)
+      throw StoreError(file_, "two result columns named \"" + std::string(name) +
+                                  "\" (in: " + sql_.substr(0, sql_.find('\n')) + ")");
+    found = i;
+  }
+  if (found < 0)
+    throw StoreError(file_, "no result column named \"" + std::string(name) +
+                                "\" (in: " + sql_.substr(0, sql_.find('\n')) + ")");
+  return ResultColumn(found);
 }
 
-std::int64_t Statement::Int(int column) const {
-  return sqlite3_column_int64(stmt_, column);
+bool Statement::IsNull(ResultColumn column) const {
+  return sqlite3_column_type(stmt_, column.index_) == SQLITE_NULL;
 }
 
-double Statement::Double(int column) const {
-  return sqlite3_column_double(stmt_, column);
+std::int64_t Statement::Int(ResultColumn column) const {
+  return sqlite3_column_int64(stmt_, column.index_);
 }
 
-std::string Statement::Text(int column) const {
-  const auto* text = sqlite3_column_text(stmt_, column);
+double Statement::Double(ResultColumn column) const {
+  return sqlite3_column_double(stmt_, column.index_);
+}
+
+std::string Statement::Text(ResultColumn column) const {
+  const auto* text = sqlite3_column_text(stmt_, column.index_);
   if (!text)
     return {};
   return std::string(reinterpret_cast<const char*>(text),
-                     static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column)));
+                     static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column.index_)));
 }
 
-std::optional<std::string> Statement::OptionalText(int column) const {
+std::optional<std::string> Statement::OptionalText(ResultColumn column) const {
   if (IsNull(column))
     return std::nullopt;
   return Text(column);
 }
 
-std::optional<std::int64_t> Statement::OptionalInt(int column) const {
+std::optional<std::int64_t> Statement::OptionalInt(ResultColumn column) const {
   if (IsNull(column))
     return std::nullopt;
   return Int(column);
 }
 
-std::optional<double> Statement::OptionalDouble(int column) const {
+std::optional<double> Statement::OptionalDouble(ResultColumn column) const {
   if (IsNull(column))
     return std::nullopt;
   return Double(column);

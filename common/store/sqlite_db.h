@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -13,6 +14,17 @@ struct sqlite3_stmt;
 namespace rlpos {
 
 class Database;
+class Statement;
+
+// A result column of a statement, found by its name (Statement::Column) and then read by the
+// index that found: the only way to read a column, so that a reordered SELECT reads the same
+// fields instead of swapping them.
+class ResultColumn {
+ private:
+  friend class Statement;
+  explicit ResultColumn(int index) : index_(index) {}
+  int index_;
+};
 
 class Statement {
  public:
@@ -45,13 +57,18 @@ class Statement {
   // Clears bindings and rewinds, for reuse with new parameters.
   void Reset();
 
-  bool IsNull(int column) const;
-  std::int64_t Int(int column) const;
-  double Double(int column) const;
-  std::string Text(int column) const;
-  std::optional<std::string> OptionalText(int column) const;
-  std::optional<std::int64_t> OptionalInt(int column) const;
-  std::optional<double> OptionalDouble(int column) const;
+  // The result column named `name`: its AS name, else the column's own (`j.id` is "id"). Look
+  // it up once per statement, before reading its rows. Throws StoreError when the statement has
+  // no column of that name, or two.
+  ResultColumn Column(std::string_view name) const;
+
+  bool IsNull(ResultColumn column) const;
+  std::int64_t Int(ResultColumn column) const;
+  double Double(ResultColumn column) const;
+  std::string Text(ResultColumn column) const;
+  std::optional<std::string> OptionalText(ResultColumn column) const;
+  std::optional<std::int64_t> OptionalInt(ResultColumn column) const;
+  std::optional<double> OptionalDouble(ResultColumn column) const;
 
  private:
   friend class Database;

@@ -30,7 +30,7 @@ StoreDb::StoreDb(const std::string& file, StoreOptions options) : options_(std::
   if (!options_.read_only) {
     // WAL: readers (status, report) never block the coordinator's writes, nor it them.
     Statement mode = db_->Prepare("PRAGMA journal_mode = WAL");
-    if (!mode.Step() || mode.Text(0) != "wal") {
+    if (!mode.Step() || mode.Text(mode.Column("journal_mode")) != "wal") {
       throw StoreError(file, "cannot switch to WAL mode");
     }
     // WAL with synchronous NORMAL: a commit is durable against a crash of the coordinator and

@@ -86,22 +86,30 @@ std::vector<TrackRunRow> ReadTrackRunRows(Database& db, const std::string& campa
       "intervals, scored_intervals" +
       MetricColumns() + " FROM v_track_runs" + OfCampaignInOrder());
   select.Bind(campaign_id);
+  const ResultColumn job_id = select.Column("job_id"), scenario = select.Column("scenario"),
+                     label = select.Column("positioner"), rng_run = select.Column("rng_run"),
+                     fidelity = select.Column("fidelity"), duration_s = select.Column("duration_s"),
+                     decision_interval_s = select.Column("decision_interval_s"),
+                     intervals = select.Column("intervals"),
+                     scored_intervals = select.Column("scored_intervals");
+  std::vector<ResultColumn> metrics;
+  for (const TrackMetricDef& m : kTrackMetrics)
+    metrics.push_back(select.Column(m.key));
   std::vector<TrackRunRow> out;
   while (select.Step()) {
     TrackRunRow row;
-    row.job_id = select.Text(0);
-    row.scenario = select.Text(1);
-    row.label = select.Text(2);
-    row.rng_run = select.Int(3);
-    row.fidelity = select.Text(4);
-    row.duration_s = select.Double(5);
-    row.decision_interval_s = select.Double(6);
-    row.intervals = static_cast<int>(select.Int(7));
-    row.scored_intervals = static_cast<int>(select.Int(8));
-    int column = 9;
-    for (const TrackMetricDef& m : kTrackMetrics) {
-      const std::optional<double> v = select.OptionalDouble(column++);
-      row.metrics.*(m.field) = v ? *v : std::numeric_limits<double>::quiet_NaN();
+    row.job_id = select.Text(job_id);
+    row.scenario = select.Text(scenario);
+    row.label = select.Text(label);
+    row.rng_run = select.Int(rng_run);
+    row.fidelity = select.Text(fidelity);
+    row.duration_s = select.Double(duration_s);
+    row.decision_interval_s = select.Double(decision_interval_s);
+    row.intervals = static_cast<int>(select.Int(intervals));
+    row.scored_intervals = static_cast<int>(select.Int(scored_intervals));
+    for (std::size_t i = 0; i < kTrackMetrics.size(); ++i) {
+      const std::optional<double> v = select.OptionalDouble(metrics[i]);
+      row.metrics.*(kTrackMetrics[i].field) = v ? *v : std::numeric_limits<double>::quiet_NaN();
     }
     out.push_back(std::move(row));
   }
@@ -124,23 +132,31 @@ std::vector<TrackIntervalRecord> ReadTrackIntervalRows(Database& db, const std::
       "delay_ms, los_share, demands_met_share, positions_json FROM v_track_intervals" +
       order + ", interval");
   select.Bind(campaign_id);
+  const ResultColumn scenario = select.Column("scenario"), label = select.Column("positioner"),
+                     rng_run = select.Column("rng_run"), interval = select.Column("interval"),
+                     time_s = select.Column("time_s"), scored = select.Column("scored"),
+                     reward = select.Column("reward"),
+                     throughput_mbps = select.Column("throughput_mbps"),
+                     delay_ms = select.Column("delay_ms"), los_share = select.Column("los_share"),
+                     demands_met_share = select.Column("demands_met_share"),
+                     positions_json = select.Column("positions_json");
   std::vector<TrackIntervalRecord> out;
   while (select.Step()) {
     TrackIntervalRecord record;
-    record.scenario = select.Text(0);
-    record.label = select.Text(1);
-    record.rng_run = select.Int(2);
-    record.interval = static_cast<int>(select.Int(3));
+    record.scenario = select.Text(scenario);
+    record.label = select.Text(label);
+    record.rng_run = select.Int(rng_run);
+    record.interval = static_cast<int>(select.Int(interval));
     TrackIntervalRow& row = record.row;
-    row.time_s = select.Double(4);
-    row.scored = select.Int(5) != 0;
-    row.reward = select.Double(6);
-    row.throughput_mbps = select.Double(7);
-    row.delay_ms = select.OptionalDouble(8);
-    row.los_share = select.Double(9);
-    row.demands_met_share = select.Double(10);
+    row.time_s = select.Double(time_s);
+    row.scored = select.Int(scored) != 0;
+    row.reward = select.Double(reward);
+    row.throughput_mbps = select.Double(throughput_mbps);
+    row.delay_ms = select.OptionalDouble(delay_ms);
+    row.los_share = select.Double(los_share);
+    row.demands_met_share = select.Double(demands_met_share);
     // Written by InsertTrackRun from a checked result: [[x, y, z], ...].
-    for (const auto& p : nlohmann::json::parse(select.Text(11)))
+    for (const auto& p : nlohmann::json::parse(select.Text(positions_json)))
       row.positions.push_back(
           {p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>()});
     out.push_back(std::move(record));
@@ -155,25 +171,35 @@ std::vector<TrackSeriesRow> ReadTrackSeriesRows(Database& db, const std::string&
   const std::string group = " ORDER BY";
   order.insert(order.find(group), " GROUP BY v.scenario, v.positioner, v.interval");
   Statement select = db.Prepare(
-      "SELECT v.scenario, v.positioner, v.interval, COUNT(*), AVG(v.time_s), MIN(v.scored), "
-      "AVG(v.reward), AVG(v.throughput_mbps), AVG(v.delay_ms), AVG(v.los_share), "
-      "AVG(v.demands_met_share) FROM v_track_intervals" +
+      "SELECT v.scenario, v.positioner, v.interval, COUNT(*) AS runs, "
+      "AVG(v.time_s) AS mean_time_s, MIN(v.scored) AS all_scored, AVG(v.reward) AS mean_reward, "
+      "AVG(v.throughput_mbps) AS mean_throughput_mbps, AVG(v.delay_ms) AS mean_delay_ms, "
+      "AVG(v.los_share) AS mean_los_share, AVG(v.demands_met_share) AS mean_demands_met_share "
+      "FROM v_track_intervals" +
       order);
   select.Bind(campaign_id);
+  const ResultColumn scenario = select.Column("scenario"), label = select.Column("positioner"),
+                     interval = select.Column("interval"), runs = select.Column("runs"),
+                     time_s = select.Column("mean_time_s"), scored = select.Column("all_scored"),
+                     reward = select.Column("mean_reward"),
+                     throughput_mbps = select.Column("mean_throughput_mbps"),
+                     delay_ms = select.Column("mean_delay_ms"),
+                     los_share = select.Column("mean_los_share"),
+                     demands_met_share = select.Column("mean_demands_met_share");
   std::vector<TrackSeriesRow> out;
   while (select.Step()) {
     TrackSeriesRow row;
-    row.scenario = select.Text(0);
-    row.label = select.Text(1);
-    row.interval = static_cast<int>(select.Int(2));
-    row.runs = static_cast<int>(select.Int(3));
-    row.time_s = select.Double(4);
-    row.scored = select.Int(5) != 0;
-    row.reward = select.Double(6);
-    row.throughput_mbps = select.Double(7);
-    row.delay_ms = select.OptionalDouble(8);
-    row.los_share = select.Double(9);
-    row.demands_met_share = select.Double(10);
+    row.scenario = select.Text(scenario);
+    row.label = select.Text(label);
+    row.interval = static_cast<int>(select.Int(interval));
+    row.runs = static_cast<int>(select.Int(runs));
+    row.time_s = select.Double(time_s);
+    row.scored = select.Int(scored) != 0;
+    row.reward = select.Double(reward);
+    row.throughput_mbps = select.Double(throughput_mbps);
+    row.delay_ms = select.OptionalDouble(delay_ms);
+    row.los_share = select.Double(los_share);
+    row.demands_met_share = select.Double(demands_met_share);
     out.push_back(std::move(row));
   }
   return out;

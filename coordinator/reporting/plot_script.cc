@@ -4,7 +4,7 @@
 #include <sstream>
 #include <utility>
 
-#include "coordinator/reporting/subprocess.h"
+#include "common/process/child_process.h"
 
 namespace rlpos {
 namespace {
@@ -68,14 +68,15 @@ PlotOutcome DrawPlots(const PlotRequest& request) {
         other += line + "\n";
       }
     }
-    if (run.started && run.exit_code == 0)
+    const int status = ShellStatus(run.exit);
+    if (run.started && status == 0)
       return outcome;
     failures.push_back(python + ": " +
-                       (run.started ? "exit status " + std::to_string(run.exit_code) + ": "
+                       (run.started ? "exit status " + std::to_string(status) + ": "
                                     : std::string("cannot run: ")) +
                        Trimmed(other));
     // Another interpreter may help only when this one could not run or lacks matplotlib.
-    if (run.started && run.exit_code != kNoMatplotlib)
+    if (run.started && status != kNoMatplotlib)
       break;
   }
   std::string warning = "plots not drawn by " + request.script + ": ";

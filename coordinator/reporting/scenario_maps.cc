@@ -9,12 +9,12 @@
 
 #include "common/files/atomic_file.h"
 #include "common/hash/sha256.h"
+#include "common/process/child_process.h"
 #include "common/scenario/number_text.h"
 #include "common/scenario/scenario_parser.h"
 #include "common/store/artifact_files.h"
 #include "common/wire/identifiers.h"
 #include "coordinator/reporting/run_groups.h"
-#include "coordinator/reporting/subprocess.h"
 
 namespace rlpos {
 namespace {
@@ -160,7 +160,7 @@ ScenarioMapsOutcome DrawScenarioMaps(ResultsReader& store, const std::string& ca
     const std::string out = (fs::path(out_dir) / map.file).string();
     argv.insert(argv.end(), {"--out", out});
     const ProcessResult run = RunProcess(argv);
-    if (!run.started || run.exit_code != 0) {
+    if (!run.started || ShellStatus(run.exit) != 0) {
       outcome.warnings.push_back("map of scenario " + wire::Printable(name) +
                                  " not drawn: " + FirstLine(run.output));
       continue;

@@ -48,20 +48,27 @@ void PlacementBinding::Bind(const std::string& job_id, const Placement& produced
 
 void PlacementBinding::ReadChunk(Statement& dependants, const Placement& produced,
                                  std::int64_t& after, std::vector<Bound>& bound) {
+  const ResultColumn rowid = dependants.Column("rowid"), job_id = dependants.Column("id"),
+                     position_rule = dependants.Column("position_rule_json"),
+                     kind = dependants.Column("kind"),
+                     content_base = dependants.Column("content_base"),
+                     state = dependants.Column("state");
   while (dependants.Step()) {
-    after = dependants.Int(0);
-    const std::string id = dependants.Text(1);
+    after = dependants.Int(rowid);
+    const std::string id = dependants.Text(job_id);
     PositionRule rule;
     JobKind dependant_kind;
     try {
-      rule = PositionRuleFromJson(nlohmann::json::parse(dependants.Text(2)));
-      dependant_kind = ParseJobKind(dependants.Text(3));
+      rule = PositionRuleFromJson(nlohmann::json::parse(dependants.Text(position_rule)));
+      dependant_kind = ParseJobKind(dependants.Text(kind));
     } catch (const std::exception& e) {
       throw StoreError(store_.file(), "job " + id + ": bad position rule: " + e.what());
     }
     Placement placement = ApplyPositionRule(rule, produced);  // Check passed: cannot throw
-    auto key = JobContentKey(dependants.OptionalText(4).value_or(""), dependant_kind, placement);
-    bound.push_back({id, std::move(placement), std::move(key), dependants.Text(5) == "pending"});
+    auto key = JobContentKey(dependants.OptionalText(content_base).value_or(""), dependant_kind,
+                             placement);
+    bound.push_back(
+        {id, std::move(placement), std::move(key), dependants.Text(state) == "pending"});
   }
   dependants.Reset();
 }

@@ -40,7 +40,7 @@ struct MapLayout {
   Rect legend;
 };
 
-// The layout of `scene`; `legend_height` is what its legend needs (map_legend.h).
+// The layout of `scene`; `legend_height` is what its legend needs (LegendHeight, map_painter.h).
 MapLayout ComputeLayout(const MapScene& scene, double legend_height);
 
 }  // namespace rlpos::map

@@ -25,15 +25,18 @@ std::vector<std::string> Columns(Database& db, const std::string& table) {
   std::vector<std::string> out;
   Statement info = db.Prepare("SELECT name, type, \"notnull\" FROM pragma_table_info(?)");
   info.Bind(table);
+  const ResultColumn name = info.Column("name"), type = info.Column("type"),
+                     not_null = info.Column("notnull");
   while (info.Step())
-    out.push_back(info.Text(0) + " " + info.Text(1) + (info.Int(2) ? " NOT NULL" : ""));
+    out.push_back(info.Text(name) + " " + info.Text(type) +
+                  (info.Int(not_null) ? " NOT NULL" : ""));
   return out;
 }
 
 std::string ViewSql(Database& db, const std::string& view) {
   Statement select = db.Prepare("SELECT sql FROM sqlite_master WHERE name = ?");
   select.Bind(view);
-  return select.Step() ? select.Text(0) : "";
+  return select.Step() ? select.Text(select.Column("sql")) : "";
 }
 
 void MigrateUpTo(Database& db, int version) {

@@ -50,6 +50,62 @@ TEST(Describe, ExitCodeAndSignal) {
   EXPECT_EQ(Describe(ChildExit{false, 0, SIGKILL}), "signal 9 (Killed)");
 }
 
+TEST(ShellStatus, ExitCodeOr128PlusTheSignal) {
+  EXPECT_EQ(ShellStatus(ChildExit{true, 2, 0}), 2);
+  EXPECT_EQ(ShellStatus(ChildExit{true, 0, 0}), 0);
+  EXPECT_EQ(ShellStatus(ChildExit{false, 0, SIGABRT}), 134);
+  EXPECT_EQ(ShellStatus(ChildExit{false, 0, SIGKILL}), 137);
+}
+
+TEST(RunProcess, CollectsStdoutAndStderrInterleavedWithTheExitCode) {
+  const ProcessResult run =
+      RunProcess({"/bin/sh", "-c", "echo out; echo err >&2; echo out2; exit 3"});
+  EXPECT_TRUE(run.started);
+  EXPECT_TRUE(run.exit.exited);
+  EXPECT_EQ(run.exit.code, 3);
+  EXPECT_EQ(run.output, "out\nerr\nout2\n");
+}
+
+TEST(RunProcess, LooksTheProgramUpInPathWithStdinEmpty) {
+  const ProcessResult run = RunProcess({"sh", "-c", "cat; echo done"});
+  EXPECT_TRUE(run.started);
+  EXPECT_EQ(ShellStatus(run.exit), 0);
+  EXPECT_EQ(run.output, "done\n");
+}
+
+TEST(RunProcess, DeathBySignalIs128PlusTheSignal) {
+  const ProcessResult run = RunProcess({"/bin/sh", "-c", "kill -KILL $$"});
+  EXPECT_TRUE(run.started);
+  EXPECT_FALSE(run.exit.exited);
+  EXPECT_EQ(run.exit.signal, SIGKILL);
+  EXPECT_EQ(ShellStatus(run.exit), 137);
+}
+
+TEST(RunProcess, AProgramThatCannotRunIsNotStartedWithTheReason) {
+  ProcessResult run = RunProcess({"rlpos-no-such-program", "--flag"});
+  EXPECT_FALSE(run.started);
+  EXPECT_EQ(run.output, "rlpos-no-such-program: No such file or directory");
+  run = RunProcess({"/nonexistent/python3", "script.py"});
+  EXPECT_FALSE(run.started);
+  EXPECT_EQ(run.output, "/nonexistent/python3: No such file or directory");
+  testing::TempDir dir;
+  const std::string plain = dir.File("not-executable");
+  testing::WriteFile(plain, "#!/bin/sh\necho ran\n");
+  run = RunProcess({plain});
+  EXPECT_FALSE(run.started);
+  EXPECT_EQ(run.output, plain + ": Permission denied");
+  run = RunProcess({});
+  EXPECT_FALSE(run.started);
+  EXPECT_EQ(run.output, "no program given");
+}
+
+// The shell's "not found / not run", whoever says it.
+TEST(RunProcess, ExitCode127IsNotStarted) {
+  const ProcessResult run = RunProcess({"/bin/sh", "-c", "echo missing >&2; exit 127"});
+  EXPECT_FALSE(run.started);
+  EXPECT_EQ(run.output, "missing\n");
+}
+
 TEST_F(ChildProcessTest, ExitCodeAndOutputFiles) {
   auto child = Shell("echo to-out; echo to-err >&2; exit 3");
   EXPECT_GT(child->pid(), 0);

@@ -16,9 +16,9 @@ class TransactionTest : public ::testing::Test {
     db_.Exec("CREATE TABLE t (v INTEGER)");
   }
   int Count(Database& db) {
-    Statement count = db.Prepare("SELECT COUNT(*) FROM t");
+    Statement count = db.Prepare("SELECT COUNT(*) AS n FROM t");
     count.Step();
-    return static_cast<int>(count.Int(0));
+    return static_cast<int>(count.Int(count.Column("n")));
   }
   void Insert(int v) { db_.Prepare("INSERT INTO t (v) VALUES (?)").Bind(v).Run(); }
 
@@ -40,9 +40,9 @@ TEST_F(TransactionTest, AnInnerRollbackKeepsTheOuterWork) {
   }
   outer.Commit();
   EXPECT_EQ(Count(db_), 2);
-  Statement sum = db_.Prepare("SELECT SUM(v) FROM t");
+  Statement sum = db_.Prepare("SELECT SUM(v) AS total FROM t");
   sum.Step();
-  EXPECT_EQ(sum.Int(0), 4);
+  EXPECT_EQ(sum.Int(sum.Column("total")), 4);
 }
 
 TEST_F(TransactionTest, NothingIsOnDiskBeforeTheOutermostCommits) {

@@ -36,9 +36,10 @@ std::string InsertJob(const std::string& id, const std::string& kind) {
          "', 'B', 'x', 'ready', 1, 2, 300, 1000, '{}')";
 }
 
-std::string Text(Database& db, const std::string& sql) {
+// The first row's `column` of `sql`.
+std::string Text(Database& db, const std::string& sql, const char* column) {
   Statement s = db.Prepare(sql);
-  return s.Step() ? s.Text(0) : "";
+  return s.Step() ? s.Text(s.Column(column)) : "";
 }
 
 TEST(TrackSchema, AStoreOfSchema12TakesTrackJobsAndKeepsItsRows) {
@@ -56,12 +57,13 @@ TEST(TrackSchema, AStoreOfSchema12TakesTrackJobsAndKeepsItsRows) {
   Database db(file, false, 1000);
   db.Exec("PRAGMA foreign_keys = ON");
   MigrateSchema(db);
-  EXPECT_EQ(Text(db, "SELECT version FROM schema_version"), std::to_string(LatestSchemaVersion()));
-  EXPECT_EQ(Text(db, "SELECT kind FROM jobs WHERE id = 'c0ffee/eval'"), "eval");
+  EXPECT_EQ(Text(db, "SELECT version FROM schema_version", "version"),
+            std::to_string(LatestSchemaVersion()));
+  EXPECT_EQ(Text(db, "SELECT kind FROM jobs WHERE id = 'c0ffee/eval'", "kind"), "eval");
   db.Exec(InsertJob("c0ffee/track", "track"));
   EXPECT_THROW(db.Exec(InsertJob("c0ffee/bogus", "bogus")), StoreError);
-  EXPECT_EQ(Text(db, "PRAGMA integrity_check"), "ok");
-  EXPECT_EQ(Text(db, "SELECT COUNT(*) FROM pragma_foreign_key_check"), "0");
+  EXPECT_EQ(Text(db, "PRAGMA integrity_check", "integrity_check"), "ok");
+  EXPECT_EQ(Text(db, "SELECT COUNT(*) AS n FROM pragma_foreign_key_check", "n"), "0");
   // Another connection sees the new constraint too.
   Database other(file, false, 1000);
   other.Exec(InsertJob("c0ffee/track2", "track"));
@@ -77,8 +79,8 @@ TEST(TrackSchema, EveryTrackMetricHasItsColumnInTrackRuns) {
         db.Prepare("SELECT type, \"notnull\" FROM pragma_table_info('track_runs') WHERE name = ?");
     info.Bind(m.key);
     ASSERT_TRUE(info.Step()) << m.key << " has no column in track_runs: add it in a migration";
-    EXPECT_EQ(info.Text(0), "REAL") << m.key;
-    EXPECT_EQ(info.Int(1), m.nullable ? 0 : 1) << m.key;
+    EXPECT_EQ(info.Text(info.Column("type")), "REAL") << m.key;
+    EXPECT_EQ(info.Int(info.Column("notnull")), m.nullable ? 0 : 1) << m.key;
   }
 }
 

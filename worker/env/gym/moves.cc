@@ -70,10 +70,6 @@ Vec3 TargetAlone(const Scenario& s, std::size_t uav, const Vec3& delta, const Ve
   return BuildingContaining(s, to) >= 0 ? at : to;
 }
 
-Vec3 MoveTarget(const Scenario& s, std::size_t uav, int action, const Placement& from) {
-  return DisplacementTarget(s, uav, MoveDisplacement(s, action), from);
-}
-
 Vec3 DisplacementTarget(const Scenario& s, std::size_t uav, const Vec3& delta,
                         const Placement& from) {
   const Vec3 to = TargetAlone(s, uav, delta, from.at(uav));

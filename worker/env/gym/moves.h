@@ -33,11 +33,8 @@ Vec3 StepTowards(const Scenario& scenario, std::size_t uav, const Vec3& target,
 // zone, or `at` if that point is inside a building.
 Vec3 TargetAlone(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
                  const Vec3& at);
-// Where ApplyMove puts UAV `uav`, without building the placement (an action mask asks this of
-// every action at every step).
-Vec3 MoveTarget(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
-// The same for a displacement: where ApplyDisplacement puts UAV `uav`. (An env that asks for
-// every action at every step turns its actions into displacements once.)
+// Where ApplyDisplacement puts UAV `uav`, without building the placement (an action mask asks
+// this of every action at every step, its actions turned into displacements once).
 Vec3 DisplacementTarget(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
                         const Placement& from);
 // The placement after a displacement of UAV `uav` (env.action_space "continuous"), with the
@@ -58,7 +55,8 @@ constexpr double kObservedSnrLowDb = -20.0;
 constexpr double kObservedSnrHighDb = 60.0;
 
 // Observation layout and bounds from scenario.env.observations ("snr" expands to one per UE;
-// "x", "y" and "z" to one per UAV; "zone", "ues", "heights" and "others" as
+// "x", "y" and "z" to one per UAV; "n_los", "throughput" and "demands_met" are one value each;
+// the general fields "zone", "ues", "heights", "others", "coverage", "lookahead" and "best" as
 // general_observation.h says). With several UAVs a one-hot of the UAV whose turn it is follows
 // (a shared policy moves them in turn), unless every field is one of the general ones, which
 // already see the world from that UAV.

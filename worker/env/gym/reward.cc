@@ -1,7 +1,11 @@
 #include "worker/env/gym/reward.h"
 
-#include <map>
+#include <array>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
+
+#include "common/scenario/names.h"
 
 namespace rlpos {
 namespace {
@@ -35,13 +39,29 @@ class DemandAwareReward : public Reward {
   double w3_;
 };
 
-std::map<std::string, RewardFactory>& Registry() {
-  static std::map<std::string, RewardFactory> registry = {
-      {"paper", [](const RewardSpec& s) { return std::make_unique<PaperReward>(s); }},
-      {"demand_aware", [](const RewardSpec& s) { return std::make_unique<DemandAwareReward>(s); }},
-  };
-  return registry;
+using RewardFactory = std::unique_ptr<Reward> (*)(const RewardSpec&);
+
+template <typename R>
+std::unique_ptr<Reward> Make(const RewardSpec& spec) {
+  return std::make_unique<R>(spec);
 }
+
+// One factory per name of kRewards, in its order: the parser accepts exactly these.
+constexpr std::array<std::pair<std::string_view, RewardFactory>, 2> kFactories{{
+    {"paper", Make<PaperReward>},
+    {"demand_aware", Make<DemandAwareReward>},
+}};
+
+constexpr bool NamesMatch() {
+  if (kFactories.size() != kRewards.size())
+    return false;
+  for (std::size_t i = 0; i < kRewards.size(); ++i) {
+    if (kFactories[i].first != kRewards[i])
+      return false;
+  }
+  return true;
+}
+static_assert(NamesMatch(), "kFactories must name the rewards of kRewards, in its order");
 
 }  // namespace
 
@@ -49,22 +69,12 @@ RewardInput RewardInputOf(const Scenario& s, int n_los, double throughput_mbps, 
   return {n_los, static_cast<int>(s.ues.size()), throughput_mbps, s.TotalDemandMbps(), demands_met};
 }
 
-void RegisterReward(const std::string& name, RewardFactory factory) {
-  Registry()[name] = std::move(factory);
-}
-
-std::vector<std::string> RewardNames() {
-  std::vector<std::string> names;
-  for (const auto& [name, factory] : Registry())
-    names.push_back(name);
-  return names;
-}
-
 std::unique_ptr<Reward> MakeReward(const RewardSpec& spec) {
-  const auto it = Registry().find(spec.name);
-  if (it == Registry().end())
-    throw std::invalid_argument("unknown reward \"" + spec.name + "\"");
-  return it->second(spec);
+  for (const auto& [name, factory] : kFactories) {
+    if (name == spec.name)
+      return factory(spec);
+  }
+  throw std::invalid_argument("unknown reward \"" + spec.name + "\"");
 }
 
 }  // namespace rlpos

@@ -1,10 +1,8 @@
 #pragma once
-// Pluggable rewards, chosen by name from the scenario's env.reward (a registry, so a new reward
-// is one class and one RegisterReward call).
-#include <functional>
+// The rewards, chosen by name from the scenario's env.reward. The names are declared once, in
+// kRewards (common/scenario/names.h), which the scenario's parser accepts; a new reward is one
+// class, its name there and its factory in reward.cc, in the same order.
 #include <memory>
-#include <string>
-#include <vector>
 
 #include "common/scenario/scenario.h"
 
@@ -28,11 +26,7 @@ class Reward {
 RewardInput RewardInputOf(const Scenario& scenario, int n_los, double throughput_mbps,
                           int demands_met);
 
-using RewardFactory = std::function<std::unique_ptr<Reward>(const RewardSpec&)>;
-
-void RegisterReward(const std::string& name, RewardFactory factory);
-std::vector<std::string> RewardNames();
-// Throws std::invalid_argument for an unknown name.
+// The reward spec.name names (one of kRewards). Throws std::invalid_argument for another name.
 std::unique_ptr<Reward> MakeReward(const RewardSpec& spec);
 
 }  // namespace rlpos

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "common/scenario/names.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/env/gym/lattice_route.h"
@@ -197,13 +198,12 @@ TEST(Reward, DemandAwareAddsDemandsMet) {
   EXPECT_DOUBLE_EQ((*r)({3, 4, 117.0, 234.0, 2}), 0.7 + 0.2 * 0.5);
 }
 
-TEST(Reward, RegistryTakesNewRewardsAndRejectsUnknown) {
-  struct Constant : Reward {
-    double operator()(const RewardInput&) const override { return 42.0; }
-  };
-  RegisterReward("constant", [](const RewardSpec&) { return std::make_unique<Constant>(); });
-  EXPECT_DOUBLE_EQ((*MakeReward({"constant", 0, 0, 0}))({}), 42.0);
+// The parser's names (kRewards) are the rewards there are: each makes one, and no other does.
+TEST(Reward, EveryDeclaredNameMakesARewardAndNoOther) {
+  for (const std::string_view name : kRewards)
+    EXPECT_NE(MakeReward({std::string(name), 0.8, 0.2, 0.2}), nullptr) << name;
   EXPECT_THROW(MakeReward({"nope", 0, 0, 0}), std::invalid_argument);
+  EXPECT_THROW(MakeReward({"", 0, 0, 0}), std::invalid_argument);
 }
 
 }  // namespace
