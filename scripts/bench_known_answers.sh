@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Known answers over several train seeds (docs/rl.md#known-answers): DQN and PPO on CartPole-v1,
+# Known answers over several train seeds (docs/agents.md#known-answers): DQN and PPO on CartPole-v1,
 # SAC on Pendulum-v1; for each algorithm and seed, the training steps at which the greedy policy
 # first reached the solved level (or "unsolved" within the budget), then the worst per
 # algorithm. CI runs seed 1 only (ctest -L known_answer).

@@ -14,7 +14,7 @@ namespace rlpos {
 
 // Four of them have a default per algorithm, which AgentCommonDefaults gives and the parser
 // starts from; the initialisers below are only the default algorithm's (dqn). They were chosen on
-// a generated training set and reported on a held-out one (docs/rl.md, "Defaults chosen on
+// a generated training set and reported on a held-out one (docs/agents.md, "Defaults chosen on
 // scenarios nobody tuned for").
 struct AgentCommonSpec {
   bool normalise_rewards = true;
@@ -35,7 +35,7 @@ struct AgentCommonSpec {
 // need a share of them from the baseline: from random starts alone their greedy policies missed
 // the way from there where the best cells are close to it. Several UAVs take turns, so each moves
 // in only 1/uavs of the steps: the training grows to (uavs + 1) / 2 times one UAV's (three UAVs:
-// twice), what the time budget allows (docs/rl.md). The docs table shows the one-UAV defaults.
+// twice), what the time budget allows (docs/agents.md). The docs table shows the one-UAV defaults.
 inline AgentCommonSpec AgentCommonDefaults(const std::string& algorithm, std::size_t uavs) {
   AgentCommonSpec spec;
   if (algorithm == "dqn") {

@@ -5,8 +5,8 @@
 namespace rlpos {
 namespace {
 
-// The network, batch and horizon that a policy trained across many scenarios needs (docs/rl.md,
-// "A policy for any scenario"), after PPO's own set.
+// The network, batch and horizon that a policy trained across many scenarios needs (docs/
+// any-scenario.md, "A policy for any scenario"), after PPO's own set.
 std::vector<std::string> AnyScenario(const char* observations) {
   return {"agent.algorithm=ppo",         "env.action_space=discrete",
           "env.fidelity=analytic",       std::string("env.observations=") + observations,

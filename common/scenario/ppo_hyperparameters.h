@@ -3,7 +3,7 @@
 // the agent (worker/learning/agent/ppo_agent.cc) and batched training (worker/learning/training).
 // Defaults: CleanRL's ppo.py (Atari/classic control) except the learning rate, gamma, rollout and
 // epochs: that set is tuned for millions of steps, and these were chosen when our training was the
-// paper's 10 episodes of 1,000 steps (docs/rl.md, "PPO and SAC"). PPO's training budget is
+// paper's 10 episodes of 1,000 steps (docs/agents.md, "PPO and SAC"). PPO's training budget is
 // agent.train_episodes's, whose default per algorithm is in agent_hyperparameters.h.
 #include "common/config/config_error.h"
 #include "common/config/setting.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Every section's declared settings as text: the docs tables that `rlpos-sim describe settings`
 // and `describe hyperparameters` print, and docs/hyperparameters.md and the settings tables of
-// docs/scenarios.md and docs/rl.md hold.
+// docs/scenarios.md, mobility.md, env.md and agents.md hold.
 #include <string>
 #include <vector>
 

@@ -5,7 +5,7 @@
 // worker unpacks it into a folder it names itself. Nothing but the names below ever becomes a
 // file, and no path travels. Two formats, told apart as `rlpos-sim position --policy` does:
 // - ours (`rlpos-sim train`): policy.pt, result.json, scenario.json;
-// - TorchScript (docs/rl.md "policy folders"): policy.json, model.pt, scenario.json.
+// - TorchScript (docs/positioners.md "policy folders"): policy.json, model.pt, scenario.json.
 #include <cstddef>
 #include <string>
 #include <vector>

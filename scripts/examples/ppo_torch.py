@@ -57,7 +57,7 @@ def main():
     args = parser.parse_args()
     torch.manual_seed(args.seed)
     rng = np.random.default_rng(args.seed)
-    # Hyperparameters: rlpos's own PPO defaults (docs/rl.md, PPO and SAC).
+    # Hyperparameters: rlpos's own PPO defaults (docs/agents.md, PPO and SAC).
     lr, gamma, lam, clip, ent_coef, vf_coef = 1e-3, 0.9, 0.95, 0.2, 0.01, 0.5
     rollout, epochs, minibatches = 256, 10, 4
 

@@ -1,6 +1,6 @@
 // Who gets the channel at one UAV position: each UE's A-MPDUs over the measurement window,
 // counted from ns-3's PhyTxPsduBegin trace, and the MCS they went at. This is how the capture
-// behind the analytic model's capture term shows (docs/rl.md): strong UEs send more A-MPDUs,
+// behind the analytic model's capture term shows (docs/env.md): strong UEs send more A-MPDUs,
 // and some of them at MCS 0.
 //   rlpos-bench-access SCENARIO.json X,Y,Z [DURATION_S]
 #include <ns3/core-module.h>

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Checks the documentation against the code.
 
-1. Every relative link in README.md, results/README.md and docs/*.md names a file that exists,
-   and every #anchor a heading of that file (GitHub's slugs).
+1. Every relative link in README.md, results/README.md, docs/*.md and docs/experiments/*.md
+   names a file that exists, and every #anchor a heading of that file (GitHub's slugs).
 2. Every block between `<!-- BEGIN GENERATED name -->` and `<!-- END GENERATED name -->` is what
    the program that owns the declaration prints for it (GENERATORS below), so a table that
    mirrors code cannot drift from it. `--fix` rewrites the blocks instead of failing.
+3. Every page of docs/ is at most MAX_PAGE_LINES long: the pages are a reference, and dated runs
+   and how a default was found go to the experiment log, one page per study (docs/experiments/).
 
 Usage: check_docs.py BIN_DIR SOURCE_DIR [--fix]
 """
@@ -29,6 +31,7 @@ EXIT_CODES_HEADER = 'coordinator/cli/campaign_commands.h'
 EXIT_CODE = re.compile(r'^\s*kExit\w+\s*=\s*(\d+),', re.M)
 BLOCK = re.compile(r'(<!-- BEGIN GENERATED ([\w.-]+) -->\n)(.*?)(<!-- END GENERATED \2 -->)', re.S)
 LINK = re.compile(r'\[[^\]]*\]\(([^)\s]+)\)')
+MAX_PAGE_LINES = 600
 
 
 def slug(heading):
@@ -65,6 +68,17 @@ def check_links(pages, source_dir):
                 errors.append(f'{rel}: link to {target}: no such file')
             elif anchor and dest.endswith('.md') and anchor not in anchors(dest):
                 errors.append(f'{rel}: link to {target}: no heading #{anchor}')
+    return errors
+
+
+def check_lengths(pages, source_dir):
+    errors = []
+    for page in pages:
+        rel = os.path.relpath(page, source_dir)
+        count = sum(1 for _ in open(page, encoding='utf-8'))
+        if rel.startswith('docs' + os.sep) and count > MAX_PAGE_LINES:
+            errors.append(f'{rel}: {count} lines, more than {MAX_PAGE_LINES}: split it, or move '
+                          'its dated runs to docs/experiments/')
     return errors
 
 
@@ -129,7 +143,9 @@ def main():
     fix = '--fix' in sys.argv[3:]
     pages = [os.path.join(source_dir, p) for p in ('README.md', 'results/README.md')]
     pages += sorted(glob.glob(os.path.join(source_dir, 'docs', '*.md')))
+    pages += sorted(glob.glob(os.path.join(source_dir, 'docs', 'experiments', '*.md')))
     errors = check_links(pages, source_dir) + check_blocks(pages, bin_dir, source_dir, fix)
+    errors += check_lengths(pages, source_dir)
     for e in errors:
         print(e, file=sys.stderr)
     print(f'{len(pages)} pages, {len(errors)} problems')

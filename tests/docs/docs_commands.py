@@ -14,7 +14,7 @@ A command fails the page when it exits non-zero or when its output loses its sha
 prints one JSON object, a file it writes with `--out FILE` or `> FILE` is there and not empty, a
 .json of them parses, a .png is a PNG, an .svg an SVG.
 
-Usage: docs_commands.py BUILD_DIR SOURCE_DIR WORK_DIR PAGE    (PAGE: README.md, docs/rl.md, ...)
+Usage: docs_commands.py BUILD_DIR SOURCE_DIR WORK_DIR PAGE    (PAGE: README.md, docs/agents.md, ...)
 (tests/docs/CMakeLists.txt registers a test per page that has an opening block.)
 """
 import json

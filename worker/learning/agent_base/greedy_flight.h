@@ -48,12 +48,12 @@ GreedyFlight FlyGreedyFromStarts(Env& env, Agent& agent, std::uint64_t seed,
 
 // The patience of a policy for any scenario's flight (its placement, each decision of a
 // tracking run, its validation in training), chosen on scripts/generate_scenario_set.sh's
-// tune-many and tune sets (docs/rl.md, The best of the flight): long enough for one UAV's way
+// tune-many and tune sets (docs/any-scenario.md, best of the flight): long enough for one UAV's way
 // round a building, in which the reward may not rise.
 constexpr int kGeneralPatienceSteps = 60;
 
 // The flights of a placement of several UAVs by a policy for any scenario, and the steps they may
-// take together, chosen on tune-many (docs/rl.md, Several flights for several UAVs). One flight
+// take together, chosen on tune-many (docs/any-scenario.md, Several flights). One flight
 // from the baseline leaves UAVs that started together moving together, or one stopped before a
 // dip; flights from other starts find what it misses, within a cost of a few hundred steps.
 constexpr int kGeneralPlacementFlights = 8;

@@ -3,7 +3,7 @@
 // settings [--section S] [--json] | defaults: the tables that mirror the code, printed as Markdown
 // (or JSON) from their one declaration (common/metrics/eval_metrics.h, track_metrics.h,
 // common/scenario/*_settings.h, *_hyperparameters.h and default_sets.h). The docs hold this output
-// (docs/scenarios.md between its "GENERATED metrics" and "GENERATED settings-<section>" markers,
+// (docs/*.md between their "GENERATED metrics" and "GENERATED settings-<section>" markers,
 // docs/campaigns.md between its "GENERATED track-metrics" ones, docs/hyperparameters.md), and
 // tests check that they still do.
 #include <CLI/CLI.hpp>

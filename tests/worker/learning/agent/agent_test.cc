@@ -79,10 +79,10 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   EXPECT_EQ(spec.hidden, (std::vector<int>{32, 32}));
   EXPECT_EQ(spec.dqn.replay_capacity, 1000000);
   EXPECT_EQ(spec.dqn.batch_size, 64);
-  // Not the paper's 1e-2: 1e-3 holds with three UAVs (docs/rl.md).
+  // Not the paper's 1e-2: 1e-3 holds with three UAVs (docs/agents.md).
   EXPECT_DOUBLE_EQ(spec.dqn.learning_rate, 1e-3);
   // Not the paper's 10 episodes of 1,000 steps from the baseline: 1,000 of 25 steps from
-  // random starts, a greedy checkpoint every 50 (chosen on generated scenarios, docs/rl.md).
+  // random starts, a greedy checkpoint every 50 (chosen on generated scenarios, docs/agents.md).
   EXPECT_EQ(spec.train_episodes, 1000);
   EXPECT_EQ(spec.train_episode_steps, 25);
   EXPECT_TRUE(spec.exploring_starts);
@@ -92,9 +92,9 @@ TEST(DqnAgent, DefaultsAreThePapersAndTheTargetLagsAnEpisode) {
   EXPECT_DOUBLE_EQ(spec.dqn.epsilon_end, 0.05);
   EXPECT_EQ(spec.dqn.epsilon_decay_steps, 8000);
   // Not the paper's: the target network is refreshed once per paper episode (100 s / 0.1 s),
-  // which is what let scenario A's greedy policy beat the baseline (docs/rl.md).
+  // which is what let scenario A's greedy policy beat the baseline (docs/agents.md).
   EXPECT_EQ(spec.dqn.target_update_interval, 1000);
-  // Not the paper's either: Double DQN and standardised rewards (docs/rl.md).
+  // Not the paper's either: Double DQN and standardised rewards (docs/agents.md).
   EXPECT_TRUE(spec.dqn.double_dqn);
   EXPECT_TRUE(spec.normalise_rewards);
 }

@@ -27,7 +27,7 @@ TEST(PpoAgent, DefaultsAreTheReferenceSetTunedForTenEpisodes) {
   EXPECT_DOUBLE_EQ(ppo.entropy_coefficient, 0.01);
   EXPECT_DOUBLE_EQ(ppo.value_coefficient, 0.5);
   EXPECT_DOUBLE_EQ(ppo.max_grad_norm, 0.5);
-  // Tuned (docs/rl.md, PPO and SAC): the reference 2.5e-4, 0.99, 128 and 4 epochs learn nothing
+  // Tuned (docs/agents.md, PPO and SAC): the reference 2.5e-4, 0.99, 128 and 4 epochs learn nothing
   // in 10k steps.
   EXPECT_DOUBLE_EQ(ppo.learning_rate, 1e-3);
   EXPECT_DOUBLE_EQ(ppo.gamma, 0.9);

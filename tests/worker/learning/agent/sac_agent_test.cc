@@ -27,7 +27,7 @@ AgentSpec SacSpecFor(std::uint64_t seed, int episodes) {
 TEST(SacAgent, DefaultsAreTheReferenceSet) {
   const SacSpec sac;
   // CleanRL's Q rate for both: 3e-4 for the policy left urban scenarios of the generated
-  // training set short of the oracle (docs/rl.md).
+  // training set short of the oracle (docs/agents.md).
   EXPECT_DOUBLE_EQ(sac.policy_learning_rate, 1e-3);
   EXPECT_DOUBLE_EQ(sac.q_learning_rate, 1e-3);
   EXPECT_DOUBLE_EQ(sac.tau, 0.005);

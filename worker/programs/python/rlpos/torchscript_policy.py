@@ -1,5 +1,5 @@
 """Policies trained in PyTorch, exported as a policy folder that `rlpos-sim position --positioner
-rl --policy DIR` flies (docs/rl.md, "TorchScript policy folders")."""
+rl --policy DIR` flies (docs/positioners.md, "TorchScript policy folders")."""
 import json
 import math
 import os
