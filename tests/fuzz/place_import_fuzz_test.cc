@@ -411,6 +411,47 @@ TEST(PlaceImportFuzz, RandomPlacesRefusedOrImported) {
   geojson.ExpectBoth("random places, geojson", kRandomPlaceInputs - kRandomPlaceInputs / 2);
 }
 
+// libosmium keeps a zero byte inside a string of a PBF string table and then reads past the end
+// of the tag list it made of it; the importer checks every tag list first and refuses the file.
+TEST(PlaceImportFuzz, AZeroByteInATagOfAPbfIsRefusedInOneLine) {
+  const std::string original =
+      ReadBytes(std::string(RLPOS_SOURCE_DIR) + "/data/osm/helsinki-central.osm.pbf");
+  std::vector<PbfBlock> blocks = ReadPbfBlocks(original);
+  ASSERT_GT(blocks.size(), 1u);
+  int changed = 0;
+  for (std::size_t b = 1; b < blocks.size(); ++b) {
+    std::vector<ProtoField> fields;
+    ASSERT_TRUE(ParseProto(blocks[b].data, PbfMessage::kPrimitiveBlock, fields));
+    for (ProtoField& f : fields) {
+      if (f.number != 1 || f.kind != ProtoField::Kind::kMessage)
+        continue;  // not the string table
+      for (ProtoField& text : f.fields) {
+        if (text.kind == ProtoField::Kind::kBytes && text.bytes == "building") {
+          text.bytes = std::string("build\0ing", 9);  // same index, so the same tags use it
+          ++changed;
+        }
+      }
+    }
+    blocks[b].data = SerializeProto(fields);
+  }
+  ASSERT_GT(changed, 0) << "no string table holds \"building\"";
+  const FuzzFolder folder;
+  PlaceImportOptions options;
+  options.center = kExtractCentre;
+  options.size = VenueSize{150, 150};
+  options.ues = 4;
+  options.file = folder.Write("input.osm.pbf", PbfFile(blocks));
+  try {
+    ImportPlace(options);
+    FAIL() << "a tag with a zero byte in it was imported";
+  } catch (const ConfigError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("a tag's key or value holds a zero byte"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
 TEST(PlaceImportFuzz, PbfExtractRefusedOrImported) {
   const std::string original =
       ReadBytes(std::string(RLPOS_SOURCE_DIR) + "/data/osm/helsinki-central.osm.pbf");

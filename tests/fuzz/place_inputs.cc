@@ -968,11 +968,10 @@ namespace {
 // The parts of a parsed block an edit may change.
 struct ProtoParts {
   std::vector<ProtoField*> varints, packed, strings, submessages;
-  std::vector<const ProtoField*> table_strings;  // of the string table: tags' keys and values
   std::vector<std::vector<ProtoField>*> messages;
 };
 
-void CollectProto(std::vector<ProtoField>& fields, PbfMessage type, ProtoParts& parts) {
+void CollectProto(std::vector<ProtoField>& fields, ProtoParts& parts) {
   parts.messages.push_back(&fields);
   for (auto& f : fields) {
     if (f.kind == ProtoField::Kind::kVarint) {
@@ -981,23 +980,11 @@ void CollectProto(std::vector<ProtoField>& fields, PbfMessage type, ProtoParts& 
       parts.packed.push_back(&f);
     } else if (f.kind == ProtoField::Kind::kBytes) {
       parts.strings.push_back(&f);
-      if (type == PbfMessage::kStringTable)
-        parts.table_strings.push_back(&f);
     } else if (f.kind == ProtoField::Kind::kMessage) {
       parts.submessages.push_back(&f);
-      CollectProto(f.fields, f.type, parts);
+      CollectProto(f.fields, parts);
     }
   }
-}
-
-// Whether the bytes of a string table could give libosmium a string with a zero byte in it (a
-// known bug: place_inputs.h): when they do not parse here, whether they hold a zero byte at all.
-bool MayHoldZeroInString(const std::string& table) {
-  std::vector<ProtoField> fields;
-  if (!ParseProto(table, PbfMessage::kStringTable, fields))
-    return table.find('\0') != std::string::npos;
-  return std::any_of(fields.begin(), fields.end(),
-                     [](const ProtoField& f) { return f.bytes.find('\0') != std::string::npos; });
 }
 
 // A varint made odd: a limit of some width, a bit flipped, nudged (a zigzag coordinate delta by
@@ -1031,7 +1018,7 @@ std::uint64_t WeirdVarint(std::uint64_t v, FuzzInput& in) {
 
 void EditProto(std::vector<ProtoField>& block, FuzzInput& in) {
   ProtoParts parts;
-  CollectProto(block, PbfMessage::kPrimitiveBlock, parts);
+  CollectProto(block, parts);
   const std::size_t edit = in.Below(11);
   if (edit < 3 && !parts.varints.empty()) {
     ProtoField& f = *parts.varints[in.Below(parts.varints.size())];
@@ -1083,9 +1070,6 @@ void EditProto(std::vector<ProtoField>& block, FuzzInput& in) {
       default:
         text = in.Mutate(text);
     }
-    const auto& table = parts.table_strings;
-    if (!KnownOsmiumBugsIncluded() && std::find(table.begin(), table.end(), &field) != table.end())
-      text.erase(std::remove(text.begin(), text.end(), '\0'), text.end());
   } else if (edit == 10) {
     std::vector<ProtoField*> damageable;
     for (ProtoField* f : parts.submessages) {
@@ -1096,9 +1080,6 @@ void EditProto(std::vector<ProtoField>& block, FuzzInput& in) {
       return;
     ProtoField& f = *damageable[in.Below(damageable.size())];
     std::string damaged = in.Mutate(SerializeProto(f.fields));
-    if (!KnownOsmiumBugsIncluded() && f.type == PbfMessage::kStringTable &&
-        MayHoldZeroInString(damaged))
-      return;
     f.bytes = std::move(damaged);
     f.fields.clear();
     f.kind = ProtoField::Kind::kBytes;

@@ -24,6 +24,8 @@ constexpr LonLat kPlaceFixtureCentre{25.0, 60.0};
 // Texts numbers trip on: NaN, infinities, overflow of every width, signs, units, separators.
 std::string WeirdNumberText(FuzzInput& in);
 
+// A fifth, a heap over-read on a zero byte in a PBF string (a tag's key or value), the importer
+// guards against (osm_reader.cc's CheckTagLists), so the fuzz makes such strings.
 // Known bugs of libosmium (in 2.19.0, the system's, and still in 2.23.1): undefined behaviour
 // (signed overflow) on some bad files, which the RLPOS_SANITIZE build reports. The fuzz keeps
 // clear of them unless RLPOS_FUZZ_KNOWN_BUGS is set (KnownOsmiumBugsIncluded), so that it can
@@ -35,10 +37,6 @@ std::string WeirdNumberText(FuzzInput& in);
 //    area.hpp's object_id_to_area_id, std::abs(id) * 2;
 //  - PBF: coordinates and delta-coded values that overflow 64 bits: pbf_decoder.hpp's
 //    convert_pbf_lat/lon (c * granularity + offset), delta.hpp's DeltaDecode::update;
-//  - PBF: a string of the string table with a zero byte in it, made a tag's key or value: the
-//    builder (osm_object_builder.hpp, add_tag with lengths) stores it as it is, and walking the
-//    tags (tag.hpp's Tag::next, strchr for the end of a key or value) then reads past the end of
-//    the tag list: a heap-buffer-overflow (ASan) in the importer's first get_value_by_key.
 bool KnownOsmiumBugsIncluded();
 // Whether OpenStreetMap XML text holds a coordinate or an id of the first two kinds.
 bool HitsKnownOsmiumXmlBug(const std::string& text);
