@@ -152,9 +152,9 @@ std::vector<std::string> ReadCanonicalList(const json& v, const std::string& pat
   return ordered;
 }
 
-TrainSettings ReadTrain(const json& v) {
+CampaignTrainSection ReadTrain(const json& v) {
   ObjectReader r(v, "/train");
-  TrainSettings train;
+  CampaignTrainSection train;
   if (const json* seeds = r.Child("seeds")) {
     // Not sorted: the first seed is the one whose evals get the plain "rl" labels.
     train.seeds = ReadUniqueList(*seeds, r.PathOf("seeds"), UINT32_MAX, false);
@@ -170,9 +170,9 @@ TrainSettings ReadTrain(const json& v) {
   return train;
 }
 
-EvalSettings ReadEval(const json& v) {
+CampaignEvalSection ReadEval(const json& v) {
   ObjectReader r(v, "/eval");
-  EvalSettings eval;
+  CampaignEvalSection eval;
   if (r.Has("duration"))
     eval.duration = r.Number("duration", 0, Positive());
   if (r.Has("warmup"))
@@ -184,9 +184,9 @@ EvalSettings ReadEval(const json& v) {
   return eval;
 }
 
-TrackSettings ReadTrack(const json& v) {
+CampaignTrackSection ReadTrack(const json& v) {
   ObjectReader r(v, "/track");
-  TrackSettings track;
+  CampaignTrackSection track;
   const json* positioners = r.Child("positioners");
   if (!positioners)
     throw ConfigError("/track/positioners", "is required (for example [\"oracle-track\"])");
@@ -212,7 +212,7 @@ TrackSettings ReadTrack(const json& v) {
 
 // The track runs of `entry` fit: at least one interval, one scored at packet level, and not
 // more than the wire carries back.
-void CheckTrackFits(const TrackSettings& track, const CampaignScenario& entry,
+void CheckTrackFits(const CampaignTrackSection& track, const CampaignScenario& entry,
                     const std::string& path) {
   const Scenario& s = entry.scenario;
   const double interval = s.env.decision_interval;
@@ -234,7 +234,7 @@ void CheckTrackFits(const TrackSettings& track, const CampaignScenario& entry,
 }
 
 CampaignScenario ReadScenarioEntry(const json& v, const std::string& path,
-                                   const ScenarioSource& source, const EvalSettings& eval) {
+                                   const ScenarioSource& source, const CampaignEvalSection& eval) {
   CampaignScenario entry;
   std::string file_path = path;  // where a problem with the file itself is reported
   std::string set_path;
@@ -436,7 +436,7 @@ CampaignSpec ReadCampaignFile(const std::string& file) {
   return ParseCampaign(document, folder.empty() ? "." : folder.string());
 }
 
-std::vector<std::string> EvalOverrides(const EvalSettings& eval) {
+std::vector<std::string> EvalOverrides(const CampaignEvalSection& eval) {
   std::vector<std::string> out;
   if (eval.duration)
     out.push_back("simulation.duration=" + FormatNumber(*eval.duration));

@@ -42,7 +42,9 @@ struct CampaignPolicy {
 // "rl+<name>": a named policy's eval label, apart from trained rl's "rl" and "rl@...".
 std::string PolicyLabel(const std::string& name);
 
-struct TrainSettings {
+// A campaign file's "train" section (rlpos-sim train's own command line is sim::TrainOptions;
+// a scenario's keys are its sections' *Settings).
+struct CampaignTrainSection {
   std::vector<std::uint64_t> seeds{1};  // the first seed gives the plain "rl"/"offsetK" labels
   std::string fidelity = "analytic";    // analytic | packet
   std::optional<int> episodes;  // agent.train_episodes of the train jobs; unset: the scenario's
@@ -51,7 +53,7 @@ struct TrainSettings {
   std::vector<std::string> algorithms;
 };
 
-struct EvalSettings {
+struct CampaignEvalSection {
   std::optional<double> duration;  // s; unset: the scenario's simulation.duration
   std::optional<double> warmup;    // s; unset: the scenario's simulation.warmup
 };
@@ -62,7 +64,7 @@ constexpr int kMaxTrackIntervals = 600;
 
 // Runs in which the UEs walk and the UAVs follow (rlpos-sim track): one job per scenario,
 // positioner and RngRun. "track": {"positioners": [...], "duration": D, "fidelity": F}.
-struct TrackSettings {
+struct CampaignTrackSection {
   // Held (baseline, centroid, oracle) and tracking (oracle-track, centroid-track) ones, in
   // TrackPositionerNames() order; named policies are CampaignSpec::policies marked tracked.
   // Neither: no track section, no track jobs.
@@ -80,9 +82,9 @@ struct CampaignSpec {
   std::vector<std::uint64_t> rng_runs;   // sorted, unique
   std::vector<std::string> positioners;  // canonical order, unique
   std::vector<CampaignPolicy> policies;  // named policies, as listed ("positioners", "track")
-  TrainSettings train;
-  EvalSettings eval;
-  TrackSettings track;
+  CampaignTrainSection train;
+  CampaignEvalSection eval;
+  CampaignTrackSection track;
   int retries = 2;               // extra attempts after the first
   double job_timeout_s = 600.0;  // a running job older than this is failed
 
@@ -127,7 +129,7 @@ CampaignSpec ReadCampaignFile(const std::string& file);
 
 // The campaign's eval settings as overrides ("simulation.duration=D", "simulation.warmup=W"):
 // what every job's scenario is validated with, after the scenario entry's own overrides.
-std::vector<std::string> EvalOverrides(const EvalSettings& eval);
+std::vector<std::string> EvalOverrides(const CampaignEvalSection& eval);
 
 // The canonical resolved campaign: every default explicit, runs and positioners sorted, each
 // scenario's document included, no absolute path (so the campaign id does not depend on where

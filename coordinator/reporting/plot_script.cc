@@ -27,7 +27,7 @@ std::string Trimmed(std::string text) {
 
 }  // namespace
 
-PlotOutcome DrawPlots(const PlotRequest& request) {
+PlotOutcome RenderPlots(const PlotRequest& request) {
   PlotOutcome outcome;
   std::error_code error;
   if (!std::filesystem::is_regular_file(request.script, error)) {

@@ -26,6 +26,6 @@ struct PlotOutcome {
 };
 
 // Runs the script with each interpreter in turn until one has matplotlib.
-PlotOutcome DrawPlots(const PlotRequest& request);
+PlotOutcome RenderPlots(const PlotRequest& request);
 
 }  // namespace rlpos

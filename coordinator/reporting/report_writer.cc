@@ -19,9 +19,9 @@ namespace rlpos {
 namespace {
 
 // The maps of the campaign's scenarios; returns their Markdown section.
-std::string DrawMaps(ResultsReader& store, const std::string& campaign_id,
-                     const std::string& out_dir, const std::string& render_program,
-                     ReportResult& result) {
+std::string RenderMaps(ResultsReader& store, const std::string& campaign_id,
+                       const std::string& out_dir, const std::string& render_program,
+                       ReportResult& result) {
   if (render_program.empty())
     return "";
   if (!std::filesystem::exists(render_program)) {
@@ -29,7 +29,8 @@ std::string DrawMaps(ResultsReader& store, const std::string& campaign_id,
     return "";
   }
   try {
-    const ScenarioMapsOutcome maps = DrawScenarioMaps(store, campaign_id, render_program, out_dir);
+    const ScenarioMapsOutcome maps =
+        RenderScenarioMaps(store, campaign_id, render_program, out_dir);
     result.files.insert(result.files.end(), maps.files.begin(), maps.files.end());
     result.warnings.insert(result.warnings.end(), maps.warnings.begin(), maps.warnings.end());
     return FormatMapsMarkdown(maps.maps);
@@ -80,7 +81,7 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
     result.warnings.push_back(warning);
     markdown += "\n**Warning:** " + warning + ".\n";
   }
-  markdown += DrawMaps(store, campaign_id, out_dir, options.render_program, result);
+  markdown += RenderMaps(store, campaign_id, out_dir, options.render_program, result);
   write("summary.md", markdown);
   const std::string throughput_csv =
       write("throughput_ccdf.csv", FormatThroughputCcdfCsv(throughput));
@@ -107,7 +108,7 @@ ReportResult WriteReport(ResultsReader& store, const std::string& campaign_id,
   if (options.plot_script.empty() ||
       (throughput.empty() && delay.empty() && learning.empty() && tracks.empty()))
     return result;
-  const PlotOutcome plots = DrawPlots(
+  const PlotOutcome plots = RenderPlots(
       {options.plot_script, options.python, throughput_csv, delay_csv, learning_csv, optimality_csv,
        track_distributions_csv, track_series_csv, out_dir, progress.name});
   result.files.insert(result.files.end(), plots.files.begin(), plots.files.end());

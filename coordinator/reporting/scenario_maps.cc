@@ -122,9 +122,9 @@ std::string FirstLine(const std::string& text) {
 
 }  // namespace
 
-ScenarioMapsOutcome DrawScenarioMaps(ResultsReader& store, const std::string& campaign_id,
-                                     const std::string& render_program,
-                                     const std::string& out_dir) {
+ScenarioMapsOutcome RenderScenarioMaps(ResultsReader& store, const std::string& campaign_id,
+                                       const std::string& render_program,
+                                       const std::string& out_dir) {
   ScenarioMapsOutcome outcome;
   const auto scenarios = CampaignScenarios(store, campaign_id);
   const Placements placements = FirstRunPlacements(store, campaign_id);

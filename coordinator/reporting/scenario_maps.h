@@ -27,8 +27,9 @@ struct ScenarioMapsOutcome {
 // A label's placement is that of its eval with the lowest RngRun: every run of a label
 // evaluates the one placement its position or train job gave. A scenario with no eval yet is
 // drawn at its baseline. `render_program` is rlpos-sim; a failure is a warning, not an error.
-ScenarioMapsOutcome DrawScenarioMaps(ResultsReader& store, const std::string& campaign_id,
-                                     const std::string& render_program, const std::string& out_dir);
+ScenarioMapsOutcome RenderScenarioMaps(ResultsReader& store, const std::string& campaign_id,
+                                       const std::string& render_program,
+                                       const std::string& out_dir);
 
 // The "## Maps" section of summary.md.
 std::string FormatMapsMarkdown(const std::vector<ScenarioMap>& maps);

@@ -31,7 +31,7 @@ void ForEachTick(double extent, F&& f) {
 
 }  // namespace
 
-void DrawViewBackground(cairo_t* cr, const View& view, const Venue& venue) {
+void PaintViewBackground(cairo_t* cr, const View& view, const Venue& venue) {
   const Rect& r = view.rect;
   cairo_rectangle(cr, r.left, r.top, r.width, r.height);
   SetColour(cr, kGround);
@@ -49,7 +49,7 @@ void DrawViewBackground(cairo_t* cr, const View& view, const Venue& venue) {
   cairo_stroke(cr);
 }
 
-void DrawViewAxes(cairo_t* cr, const View& view, const Venue& venue) {
+void PaintViewAxes(cairo_t* cr, const View& view, const Venue& venue) {
   const Rect& r = view.rect;
   SetColour(cr, kInk);
   cairo_set_line_width(cr, 1.0);
@@ -60,20 +60,20 @@ void DrawViewAxes(cairo_t* cr, const View& view, const Venue& venue) {
     const double x = r.left + m * view.scale;
     cairo_move_to(cr, x, r.bottom()), cairo_line_to(cr, x, r.bottom() + 4);
     cairo_stroke(cr);
-    DrawText(cr, ShortNumber(m), x, r.bottom() + 15, Anchor::kCentre);
+    PaintText(cr, ShortNumber(m), x, r.bottom() + 15, Anchor::kCentre);
   });
   ForEachTick(Extent(venue, view.vertical), [&](double m) {
     const double y = r.bottom() - m * view.scale;
     cairo_move_to(cr, r.left - 4, y), cairo_line_to(cr, r.left, y);
     cairo_stroke(cr);
-    DrawText(cr, ShortNumber(m), r.left - 6, y + 3.5, Anchor::kRight);
+    PaintText(cr, ShortNumber(m), r.left - 6, y + 3.5, Anchor::kRight);
   });
   SelectFont(cr, 11);
-  DrawText(cr, AxisTitle(view.horizontal), r.left + r.width / 2, r.bottom() + 32, Anchor::kCentre);
+  PaintText(cr, AxisTitle(view.horizontal), r.left + r.width / 2, r.bottom() + 32, Anchor::kCentre);
   cairo_save(cr);
   cairo_translate(cr, r.left - 36, r.top + r.height / 2);
   cairo_rotate(cr, -M_PI / 2);
-  DrawText(cr, AxisTitle(view.vertical), 0, 0, Anchor::kCentre);
+  PaintText(cr, AxisTitle(view.vertical), 0, 0, Anchor::kCentre);
   cairo_restore(cr);
 }
 

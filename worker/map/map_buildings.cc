@@ -40,7 +40,7 @@ void FootprintPath(cairo_t* cr, const View& view, const Footprint& shape) {
 
 }  // namespace
 
-void DrawBuildings(cairo_t* cr, const Scenario& s, const View& view) {
+void PaintBuildings(cairo_t* cr, const Scenario& s, const View& view) {
   std::vector<std::size_t> order(s.buildings.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     order[i] = i;

@@ -57,7 +57,7 @@ bool FitBuildingLabel(cairo_t* cr, const BuildingSpec& b, double scale, Fit& fit
   return false;
 }
 
-void DrawBuildingLabel(cairo_t* cr, const BuildingLabel& label, double cx, double cy, bool light) {
+void PaintBuildingLabel(cairo_t* cr, const BuildingLabel& label, double cx, double cy, bool light) {
   const double line_height = kBuildingFont * 1.25;
   const double n = static_cast<double>(label.lines.size());
   cairo_save(cr);
@@ -67,7 +67,7 @@ void DrawBuildingLabel(cairo_t* cr, const BuildingLabel& label, double cx, doubl
   SetColour(cr, light ? kBackground : kInk);
   for (std::size_t k = 0; k < label.lines.size(); ++k) {
     const double y = -n * line_height / 2 + line_height * (static_cast<double>(k) + 0.78);
-    DrawText(cr, label.lines[k], 0, y, Anchor::kCentre);
+    PaintText(cr, label.lines[k], 0, y, Anchor::kCentre);
   }
   cairo_restore(cr);
 }
@@ -153,11 +153,11 @@ TextBox PlaceLabel(cairo_t* cr, const std::string& text, double x, double y, dou
   return best;
 }
 
-void DrawPlaced(cairo_t* cr, const std::string& text, const TextBox& box, const Rgb& colour) {
+void PaintPlaced(cairo_t* cr, const std::string& text, const TextBox& box, const Rgb& colour) {
   cairo_font_extents_t font;
   cairo_font_extents(cr, &font);
   SetColour(cr, colour);
-  DrawHaloText(cr, text, box.left, box.top + font.ascent * 0.8, Anchor::kLeft, kBackground);
+  PaintHaloText(cr, text, box.left, box.top + font.ascent * 0.8, Anchor::kLeft, kBackground);
 }
 
 std::vector<TextBox> MarkerBoxes(const MapScene& scene, const View& view) {
@@ -212,7 +212,7 @@ std::vector<Segment> Lines(const MapScene& scene, const View& view) {
 
 }  // namespace
 
-std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view) {
+std::vector<TextBox> PaintBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view) {
   const Scenario& s = scene.scenario;
   const std::vector<TextBox> markers = MarkerBoxes(scene, view);
   std::vector<TextBox> boxes;
@@ -223,7 +223,7 @@ std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, cons
     const Point2 at = fits ? fit.at : LabelPoints(b).front();
     const double cx = view.CanvasX({at.x, 0, 0}), cy = view.CanvasY({0, at.y, 0});
     if (fits && !Hides(LabelBox(cr, fit.label, cx, cy), markers)) {
-      DrawBuildingLabel(cr, fit.label, cx, cy, BuildingTextIsLight(b.height, s.venue.height));
+      PaintBuildingLabel(cr, fit.label, cx, cy, BuildingTextIsLight(b.height, s.venue.height));
       boxes.push_back(LabelBox(cr, fit.label, cx, cy));
       continue;
     }
@@ -234,14 +234,14 @@ std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, cons
     taken.boxes.insert(taken.boxes.end(), boxes.begin(), boxes.end());
     const double w = (b.xmax - b.xmin) * view.scale, h = (b.ymax - b.ymin) * view.scale;
     const TextBox box = PlaceLabel(cr, text, cx, cy, std::max(w, h) / 2 + 6, taken, view.rect);
-    DrawPlaced(cr, text, box, kInk);
+    PaintPlaced(cr, text, box, kInk);
     boxes.push_back(box);
   }
   return boxes;
 }
 
-void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
-                  std::vector<TextBox> labels) {
+void PaintUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
+                   std::vector<TextBox> labels) {
   const Scenario& s = scene.scenario;
   Obstacles taken{std::move(labels), Lines(scene, view)};
   for (const TextBox& box : MarkerBoxes(scene, view))
@@ -256,7 +256,7 @@ void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
                                ShortNumber(p.z) + " m";
       const TextBox box = PlaceLabel(cr, text, view.CanvasX(p), view.CanvasY(p),
                                      kUavGlyphSize / 2 + 4, taken, view.rect);
-      DrawPlaced(cr, text, box, s.uavs.size() > 1 ? UavColour(static_cast<int>(u)) : kInk);
+      PaintPlaced(cr, text, box, s.uavs.size() > 1 ? UavColour(static_cast<int>(u)) : kInk);
       taken.boxes.push_back(box);
     }
   }
@@ -265,7 +265,7 @@ void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
     const std::string text = ShortNumber(ue.demand_mbps);
     const double x = view.CanvasX(ue.position), y = view.CanvasY(ue.position);
     const TextBox box = PlaceLabel(cr, text, x, y, kUeMarkerSize / 2 + 3, taken, view.rect);
-    DrawPlaced(cr, text, box, kInk);
+    PaintPlaced(cr, text, box, kInk);
     taken.boxes.push_back(box);
   }
 }

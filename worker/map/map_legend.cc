@@ -84,23 +84,23 @@ std::vector<Entry> Entries(const MapScene& scene) {
   return out;
 }
 
-void DrawSymbol(cairo_t* cr, const Entry& e, double x, double y) {
+void PaintSymbol(cairo_t* cr, const Entry& e, double x, double y) {
   const double dashes[] = {5.0, 3.5};
   cairo_save(cr);
   switch (e.symbol) {
     case Symbol::kUe:
-      DrawMarker(cr, MarkerShape::kCircle, x + 12, y, kUeMarkerSize, e.colour, true);
+      PaintMarker(cr, MarkerShape::kCircle, x + 12, y, kUeMarkerSize, e.colour, true);
       break;
     case Symbol::kUav:
-      DrawUavGlyph(cr, x + 12, y, 18, e.colour);
+      PaintUavGlyph(cr, x + 12, y, 18, e.colour);
       break;
     case Symbol::kPlacement:
-      DrawMarker(cr, e.shape, x + 12, y, kPlacementMarkerSize, e.colour, false);
+      PaintMarker(cr, e.shape, x + 12, y, kPlacementMarkerSize, e.colour, false);
       break;
     case Symbol::kDemand:
       SelectFont(cr, kFont);
       SetColour(cr, kInk);
-      DrawText(cr, "58.5", x + 12, y + 3, Anchor::kCentre);
+      PaintText(cr, "58.5", x + 12, y + 3, Anchor::kCentre);
       break;
     case Symbol::kLine:
     case Symbol::kDashedLine:
@@ -123,10 +123,10 @@ void DrawSymbol(cairo_t* cr, const Entry& e, double x, double y) {
 }
 
 // The buildings' colour ramp from the ground to the venue's height limit.
-void DrawHeightScale(cairo_t* cr, const Venue& venue, double left, double top, double width) {
+void PaintHeightScale(cairo_t* cr, const Venue& venue, double left, double top, double width) {
   SetColour(cr, kInk);
   SelectFont(cr, kFont);
-  DrawText(cr, "building height (m)", left, top + 10, Anchor::kLeft);
+  PaintText(cr, "building height (m)", left, top + 10, Anchor::kLeft);
   const double bar_top = top + 16, bar_height = 10;
   const int steps = 60;
   for (int k = 0; k < steps; ++k) {
@@ -143,7 +143,7 @@ void DrawHeightScale(cairo_t* cr, const Venue& venue, double left, double top, d
     const double x = left + width * f;
     cairo_move_to(cr, x, bar_top + bar_height), cairo_line_to(cr, x, bar_top + bar_height + 3);
     cairo_stroke(cr);
-    DrawText(cr, ShortNumber(venue.height * f), x, bar_top + bar_height + 13, Anchor::kCentre);
+    PaintText(cr, ShortNumber(venue.height * f), x, bar_top + bar_height + 13, Anchor::kCentre);
   }
 }
 
@@ -154,7 +154,7 @@ double LegendHeight(const MapScene& scene) {
   return 2 * kPad + kRow * static_cast<double>(Entries(scene).size()) + scale;
 }
 
-void DrawLegend(cairo_t* cr, const MapScene& scene, const Rect& box) {
+void PaintLegend(cairo_t* cr, const MapScene& scene, const Rect& box) {
   SetColour(cr, kBackground);
   cairo_rectangle(cr, box.left, box.top, box.width, box.height);
   cairo_fill_preserve(cr);
@@ -163,23 +163,23 @@ void DrawLegend(cairo_t* cr, const MapScene& scene, const Rect& box) {
   cairo_stroke(cr);
   double y = box.top + kPad + kRow / 2;
   for (const Entry& e : Entries(scene)) {
-    DrawSymbol(cr, e, box.left + kPad, y);
+    PaintSymbol(cr, e, box.left + kPad, y);
     SetColour(cr, kInk);
     SelectFont(cr, kFont);
-    DrawText(cr, e.text, box.left + kPad + 34, y + 3.5, Anchor::kLeft);
+    PaintText(cr, e.text, box.left + kPad + 34, y + 3.5, Anchor::kLeft);
     y += kRow;
   }
   if (!scene.scenario.buildings.empty())
-    DrawHeightScale(cr, scene.scenario.venue, box.left + kPad, y - kRow / 2 + 6,
-                    box.width - 2 * kPad - 8);
+    PaintHeightScale(cr, scene.scenario.venue, box.left + kPad, y - kRow / 2 + 6,
+                     box.width - 2 * kPad - 8);
 }
 
-void DrawTitle(cairo_t* cr, const MapScene& scene, const MapLayout& layout) {
+void PaintTitle(cairo_t* cr, const MapScene& scene, const MapLayout& layout) {
   const Scenario& s = scene.scenario;
   const double left = layout.top.rect.left;
   SetColour(cr, kInk);
   SelectFont(cr, 15, true);
-  DrawText(cr, "Scenario " + s.name, left, layout.title_top + 14, Anchor::kLeft);
+  PaintText(cr, "Scenario " + s.name, left, layout.title_top + 14, Anchor::kLeft);
   std::string sub;
   if (scene.placements.size() == 1) {
     const MapPlacement& p = scene.placements.front();
@@ -194,7 +194,7 @@ void DrawTitle(cairo_t* cr, const MapScene& scene, const MapLayout& layout) {
          std::to_string(s.buildings.size()) + " buildings, " + std::to_string(s.ues.size()) +
          " UEs";
   SelectFont(cr, 11);
-  DrawText(cr, sub, left, layout.title_top + 32, Anchor::kLeft);
+  PaintText(cr, sub, left, layout.title_top + 32, Anchor::kLeft);
 }
 
 }  // namespace rlpos::map

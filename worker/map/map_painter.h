@@ -16,10 +16,10 @@ namespace rlpos::map {
 void SetColour(cairo_t* cr, const Rgb& colour, double alpha = 1.0);
 // A marker `size` across centred on (x, y): filled with `colour` and outlined in ink, or (not
 // filled) drawn as a thick outline only, so that markers on one spot stay visible.
-void DrawMarker(cairo_t* cr, MarkerShape shape, double x, double y, double size, const Rgb& colour,
-                bool filled);
+void PaintMarker(cairo_t* cr, MarkerShape shape, double x, double y, double size, const Rgb& colour,
+                 bool filled);
 // A quadcopter seen from above, `size` across.
-void DrawUavGlyph(cairo_t* cr, double x, double y, double size, const Rgb& colour);
+void PaintUavGlyph(cairo_t* cr, double x, double y, double size, const Rgb& colour);
 
 enum class Anchor { kLeft, kCentre, kRight };
 struct TextBox {
@@ -29,31 +29,32 @@ struct TextBox {
 void SelectFont(cairo_t* cr, double size, bool bold = false);
 // The box `text` takes with its baseline at y, anchored at x, in the font selected.
 TextBox MeasureText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor);
-void DrawText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor);
+void PaintText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor);
 // Text on a translucent box of the background: readable over lines.
-void DrawHaloText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor,
-                  const Rgb& halo);
+void PaintHaloText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor,
+                   const Rgb& halo);
 // "58.5", "234", "-3": the shortest form that reads back the same to 0.1.
 std::string ShortNumber(double value);
 
 // The frame, grid, ticks and axis titles of a view (map_axes.cc).
-void DrawViewBackground(cairo_t* cr, const View& view, const Venue& venue);
-void DrawViewAxes(cairo_t* cr, const View& view, const Venue& venue);
+void PaintViewBackground(cairo_t* cr, const View& view, const Venue& venue);
+void PaintViewAxes(cairo_t* cr, const View& view, const Venue& venue);
 
 // Everything a view shows of the scene (map_view.cc).
-void DrawView(cairo_t* cr, const MapScene& scene, const View& view);
+void PaintView(cairo_t* cr, const MapScene& scene, const View& view);
 // Its buildings, far ones first (map_buildings.cc).
-void DrawBuildings(cairo_t* cr, const Scenario& s, const View& view);
+void PaintBuildings(cairo_t* cr, const Scenario& s, const View& view);
 // The labels of the top view: buildings (name, height) and UEs (demand) (map_labels.cc).
 // Returns the boxes the building labels took.
-std::vector<TextBox> DrawBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view);
-void DrawUeLabels(cairo_t* cr, const MapScene& scene, const View& view, std::vector<TextBox> taken);
+std::vector<TextBox> PaintBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view);
+void PaintUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
+                   std::vector<TextBox> taken);
 
 // The legend (map_legend.cc).
 double LegendHeight(const MapScene& scene);
-void DrawLegend(cairo_t* cr, const MapScene& scene, const Rect& box);
+void PaintLegend(cairo_t* cr, const MapScene& scene, const Rect& box);
 // The title and subtitle above the views.
-void DrawTitle(cairo_t* cr, const MapScene& scene, const MapLayout& layout);
+void PaintTitle(cairo_t* cr, const MapScene& scene, const MapLayout& layout);
 
 // Shared by the view and the legend.
 constexpr double kUeMarkerSize = 10;

@@ -79,8 +79,8 @@ void SetColour(cairo_t* cr, const Rgb& colour, double alpha) {
     cairo_set_source_rgba(cr, colour.r, colour.g, colour.b, alpha);
 }
 
-void DrawMarker(cairo_t* cr, MarkerShape shape, double x, double y, double size, const Rgb& colour,
-                bool filled) {
+void PaintMarker(cairo_t* cr, MarkerShape shape, double x, double y, double size, const Rgb& colour,
+                 bool filled) {
   const double r = size / 2;
   cairo_save(cr);
   cairo_new_path(cr);
@@ -112,7 +112,7 @@ void DrawMarker(cairo_t* cr, MarkerShape shape, double x, double y, double size,
   cairo_restore(cr);
 }
 
-void DrawUavGlyph(cairo_t* cr, double x, double y, double size, const Rgb& colour) {
+void PaintUavGlyph(cairo_t* cr, double x, double y, double size, const Rgb& colour) {
   const double arm = size * 0.32, rotor = size * 0.18;
   cairo_save(cr);
   cairo_new_path(cr);
@@ -162,15 +162,15 @@ TextBox MeasureText(cairo_t* cr, const std::string& text, double x, double y, An
   return {left, y - font.ascent * 0.8, width, font.ascent * 0.8 + font.descent * 0.6};
 }
 
-void DrawText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor) {
+void PaintText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor) {
   const TextBox box = MeasureText(cr, text, x, y, anchor);
   cairo_move_to(cr, box.left, y);
   cairo_show_text(cr, text.c_str());
   cairo_new_path(cr);
 }
 
-void DrawHaloText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor,
-                  const Rgb& halo) {
+void PaintHaloText(cairo_t* cr, const std::string& text, double x, double y, Anchor anchor,
+                   const Rgb& halo) {
   // A box rather than an outline of the glyphs: an SVG then holds each glyph once.
   const TextBox box = MeasureText(cr, text, x, y, anchor);
   cairo_save(cr);
@@ -178,7 +178,7 @@ void DrawHaloText(cairo_t* cr, const std::string& text, double x, double y, Anch
   SetColour(cr, halo, 0.8);
   cairo_fill(cr);
   cairo_restore(cr);
-  DrawText(cr, text, x, y, anchor);
+  PaintText(cr, text, x, y, anchor);
 }
 
 std::string ShortNumber(double value) {

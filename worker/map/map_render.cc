@@ -20,16 +20,16 @@ cairo_status_t AppendBytes(void* closure, const unsigned char* data, unsigned in
   return CAIRO_STATUS_SUCCESS;
 }
 
-void Draw(cairo_t* cr, const MapScene& scene, const MapLayout& layout) {
+void Paint(cairo_t* cr, const MapScene& scene, const MapLayout& layout) {
   SetColour(cr, kBackground);
   cairo_paint(cr);
-  DrawTitle(cr, scene, layout);
-  DrawView(cr, scene, layout.top);
+  PaintTitle(cr, scene, layout);
+  PaintView(cr, scene, layout.top);
   if (layout.side) {
-    DrawView(cr, scene, layout.xz);
-    DrawView(cr, scene, layout.yz);
+    PaintView(cr, scene, layout.xz);
+    PaintView(cr, scene, layout.yz);
   }
-  DrawLegend(cr, scene, layout.legend);
+  PaintLegend(cr, scene, layout.legend);
 }
 
 void Check(cairo_status_t status, const char* what) {
@@ -70,7 +70,7 @@ std::string RenderSvg(const MapScene& scene, const MapLayout& layout) {
   cairo_surface_t* surface =
       cairo_svg_surface_create_for_stream(AppendBytes, &bytes, layout.width, layout.height);
   cairo_t* cr = cairo_create(surface);
-  Draw(cr, scene, layout);
+  Paint(cr, scene, layout);
   const cairo_status_t drawn = cairo_status(cr);
   cairo_destroy(cr);
   cairo_surface_finish(surface);  // writes the document's end
@@ -87,7 +87,7 @@ std::string RenderPng(const MapScene& scene, const MapLayout& layout) {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
   cairo_t* cr = cairo_create(surface);
   cairo_scale(cr, kPngPixelsPerPoint, kPngPixelsPerPoint);
-  Draw(cr, scene, layout);
+  Paint(cr, scene, layout);
   const cairo_status_t drawn = cairo_status(cr);
   cairo_destroy(cr);
   std::string bytes;

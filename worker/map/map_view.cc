@@ -8,7 +8,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-void DrawZones(cairo_t* cr, const Scenario& s, const View& view) {
+void PaintZones(cairo_t* cr, const Scenario& s, const View& view) {
   const double dashes[] = {6.0, 4.0};
   cairo_save(cr);
   cairo_set_dash(cr, dashes, 2, 0);
@@ -37,7 +37,7 @@ void DrawZones(cairo_t* cr, const Scenario& s, const View& view) {
   cairo_restore(cr);
 }
 
-void DrawLinks(cairo_t* cr, const MapScene& scene, const View& view) {
+void PaintLinks(cairo_t* cr, const MapScene& scene, const View& view) {
   if (scene.links.empty() || scene.placements.size() != 1)
     return;
   const Placement& uavs = scene.placements.front().positions;
@@ -57,7 +57,7 @@ void DrawLinks(cairo_t* cr, const MapScene& scene, const View& view) {
   cairo_restore(cr);
 }
 
-void DrawArrowHead(cairo_t* cr, double x0, double y0, double x1, double y1) {
+void PaintArrowHead(cairo_t* cr, double x0, double y0, double x1, double y1) {
   const double a = std::atan2(y1 - y0, x1 - x0), len = 9, spread = 0.45;
   cairo_move_to(cr, x1, y1);
   cairo_line_to(cr, x1 - len * std::cos(a - spread), y1 - len * std::sin(a - spread));
@@ -66,7 +66,7 @@ void DrawArrowHead(cairo_t* cr, double x0, double y0, double x1, double y1) {
   cairo_fill(cr);
 }
 
-void DrawFlight(cairo_t* cr, const MapScene& scene, const View& view) {
+void PaintFlight(cairo_t* cr, const MapScene& scene, const View& view) {
   for (const FlightPath& path : scene.flight) {
     if (path.points.size() < 2)
       continue;
@@ -91,13 +91,13 @@ void DrawFlight(cairo_t* cr, const MapScene& scene, const View& view) {
       --before;
     if (before != last) {
       const Vec3 &a = path.points[before], &b = path.points[last];
-      DrawArrowHead(cr, view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b));
+      PaintArrowHead(cr, view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b));
     }
   }
 }
 
 // Thin lines under the UEs, an arrow at each path's end: where each moving UE walks.
-void DrawUePaths(cairo_t* cr, const MapScene& scene, const View& view) {
+void PaintUePaths(cairo_t* cr, const MapScene& scene, const View& view) {
   cairo_save(cr);
   SetColour(cr, kUePath, 0.85);
   cairo_set_line_width(cr, 1.0);
@@ -112,27 +112,27 @@ void DrawUePaths(cairo_t* cr, const MapScene& scene, const View& view) {
     }
     cairo_stroke(cr);
     const Vec3 &a = path[path.size() - 2], &b = path.back();
-    DrawArrowHead(cr, view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b));
+    PaintArrowHead(cr, view.CanvasX(a), view.CanvasY(a), view.CanvasX(b), view.CanvasY(b));
   }
   cairo_restore(cr);
 }
 
-void DrawUes(cairo_t* cr, const MapScene& scene, const View& view) {
+void PaintUes(cairo_t* cr, const MapScene& scene, const View& view) {
   for (std::size_t i = 0; i < scene.scenario.ues.size(); ++i) {
     const Vec3& p = scene.scenario.ues[i].position;
-    DrawMarker(cr, MarkerShape::kCircle, view.CanvasX(p), view.CanvasY(p), kUeMarkerSize,
-               UeColour(scene, i), true);
+    PaintMarker(cr, MarkerShape::kCircle, view.CanvasX(p), view.CanvasY(p), kUeMarkerSize,
+                UeColour(scene, i), true);
   }
 }
 
-void DrawUavs(cairo_t* cr, const MapScene& scene, const View& view) {
+void PaintUavs(cairo_t* cr, const MapScene& scene, const View& view) {
   const bool several_uavs = scene.scenario.uavs.size() > 1;
   if (scene.placements.size() == 1) {
     const Placement& positions = scene.placements.front().positions;
     for (std::size_t u = 0; u < positions.size(); ++u) {
       const Rgb colour = several_uavs ? UavColour(static_cast<int>(u)) : kInk;
-      DrawUavGlyph(cr, view.CanvasX(positions[u]), view.CanvasY(positions[u]), kUavGlyphSize,
-                   colour);
+      PaintUavGlyph(cr, view.CanvasX(positions[u]), view.CanvasY(positions[u]), kUavGlyphSize,
+                    colour);
     }
     return;
   }
@@ -157,13 +157,13 @@ void DrawUavs(cairo_t* cr, const MapScene& scene, const View& view) {
   std::stable_sort(marks.begin(), marks.end(),
                    [](const Mark& a, const Mark& b) { return a.size > b.size; });
   for (const Mark& m : marks)
-    DrawMarker(cr, m.style.shape, m.x, m.y, m.size, m.style.colour, false);
+    PaintMarker(cr, m.style.shape, m.x, m.y, m.size, m.style.colour, false);
 }
 
-void DrawViewTitle(cairo_t* cr, const View& view) {
+void PaintViewTitle(cairo_t* cr, const View& view) {
   SetColour(cr, kInk);
   SelectFont(cr, 11, true);
-  DrawText(cr, view.title, view.rect.left, view.rect.top - 7, Anchor::kLeft);
+  PaintText(cr, view.title, view.rect.left, view.rect.top - 7, Anchor::kLeft);
 }
 
 }  // namespace
@@ -177,29 +177,29 @@ Rgb UeColour(const MapScene& scene, std::size_t i) {
   return link.los ? kLos : kNlos;
 }
 
-void DrawView(cairo_t* cr, const MapScene& scene, const View& view) {
+void PaintView(cairo_t* cr, const MapScene& scene, const View& view) {
   const Scenario& s = scene.scenario;
-  DrawViewBackground(cr, view, s.venue);
+  PaintViewBackground(cr, view, s.venue);
   cairo_save(cr);
   // A UAV on the venue's edge is drawn whole: the clip leaves room for half a glyph around.
   const double pad = kUavGlyphSize / 2 + 2;
   cairo_rectangle(cr, view.rect.left - pad, view.rect.top - pad, view.rect.width + 2 * pad,
                   view.rect.height + 2 * pad);
   cairo_clip(cr);
-  DrawZones(cr, s, view);
-  DrawBuildings(cr, s, view);
-  DrawLinks(cr, scene, view);
-  DrawUePaths(cr, scene, view);
-  DrawFlight(cr, scene, view);
-  DrawUes(cr, scene, view);
-  DrawUavs(cr, scene, view);
+  PaintZones(cr, s, view);
+  PaintBuildings(cr, s, view);
+  PaintLinks(cr, scene, view);
+  PaintUePaths(cr, scene, view);
+  PaintFlight(cr, scene, view);
+  PaintUes(cr, scene, view);
+  PaintUavs(cr, scene, view);
   if (view.IsTop()) {
-    DrawUeLabels(cr, scene, view, DrawBuildingLabels(cr, scene, view));
+    PaintUeLabels(cr, scene, view, PaintBuildingLabels(cr, scene, view));
   }
   cairo_restore(cr);
-  DrawViewAxes(cr, view, s.venue);
+  PaintViewAxes(cr, view, s.venue);
   if (scene.side_views)
-    DrawViewTitle(cr, view);
+    PaintViewTitle(cr, view);
 }
 
 }  // namespace rlpos::map

@@ -138,7 +138,7 @@ TEST(TrackCurves, PlottedPerScenarioAsPngs) {
       write("track_distributions.csv", FormatTrackDistributionsCsv(TrackDistributions(Runs())));
   request.track_series_csv = write("track_series.csv", FormatTrackSeriesCsv(series));
   request.out_dir = dir.File("");
-  const PlotOutcome outcome = DrawPlots(request);
+  const PlotOutcome outcome = RenderPlots(request);
   ASSERT_TRUE(outcome.warnings.empty()) << outcome.warnings[0];
   std::vector<std::string> names;
   for (const std::string& file : outcome.files) {

@@ -37,8 +37,9 @@ struct StepResult {
   StepInfo info;
 };
 
-// One step of every UAV at once: one observation per UAV (its own view), one team reward.
-struct MultiStepResult {
+// A joint step: every UAV moved once, at once. One observation per UAV (its own view), one team
+// reward.
+struct JointStepResult {
   std::vector<std::vector<double>> observations;  // [agent]: its own view
   std::vector<double> state;                      // the global state, if the env has one
   double reward = 0.0;                            // the env's reward, shared by the team
@@ -106,10 +107,10 @@ class Env {
   }
   // The actions agent `agent` may take now (empty: all).
   virtual ActionMask ValidActionsOf(std::size_t /*agent*/) const { return ValidActions(); }
-  virtual MultiStepResult StepAll(const std::vector<int>& /*actions*/) {
+  virtual JointStepResult JointStep(const std::vector<int>& /*actions*/) {
     throw std::logic_error("this env has one agent");
   }
-  virtual MultiStepResult StepAllContinuous(const std::vector<std::vector<double>>& /*actions*/) {
+  virtual JointStepResult JointStepContinuous(const std::vector<std::vector<double>>& /*actions*/) {
     throw std::logic_error("this env has one agent");
   }
 };

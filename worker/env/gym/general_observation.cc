@@ -145,7 +145,7 @@ bool IsGeneralObservation(std::string_view field) {
   return IsOneOf(field, kGeneralObservations);
 }
 
-bool IsLookAroundObservation(std::string_view field) {
+bool IsModelObservation(std::string_view field) {
   return field == "coverage" || field == "lookahead";
 }
 

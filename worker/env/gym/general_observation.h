@@ -14,7 +14,7 @@
 //             row by row (y, then x): the top of the tallest building over each cell in units
 //             of kObservedRangeM (0 where there is none), clipped to kObservedHeightLimit;
 //   "others"  kOtherUavSlots slots of [present, dx, dy, dz], the other UAVs nearest first.
-// Two more are the model's look around (the analytic model, at any fidelity), which the env
+// Two more are the model observations (the analytic model's, at any fidelity), which the env
 // computes into the step's info (StepInfo::coverage, ::lookahead):
 //   "coverage"  a coarse map of the UAV's zone, env.coverage_map cells per side, row by row
 //               (y, then x): for each cell, the best reward over the altitudes of the move
@@ -60,7 +60,7 @@ constexpr double kLookaheadGain = 10.0;
 // True for "zone", "ues", "heights", "others", "coverage", "lookahead" and "best".
 bool IsGeneralObservation(std::string_view field);
 // Whether the field needs the env to evaluate positions other than the UAVs' own.
-bool IsLookAroundObservation(std::string_view field);
+bool IsModelObservation(std::string_view field);
 // The most the scenario's reward can be (the sum of its weights), at least 1e-9.
 double CoverageRewardBound(const Scenario& scenario);
 

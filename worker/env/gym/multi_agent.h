@@ -1,5 +1,5 @@
 #pragma once
-// Several UAVs as agents that move at once (UavPositioningEnv::StepAll, rlpos.parallel_env):
+// Several UAVs as agents that move at once (UavPositioningEnv::JointStep, rlpos.parallel_env):
 // the joint move and its conflict rule, each UAV's own observation, and the global state a
 // centralised critic (MAPPO, QMIX) sees.
 #include <cstddef>

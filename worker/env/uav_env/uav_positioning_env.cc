@@ -11,7 +11,7 @@
 #include "worker/env/network/uav_network.h"
 #include "worker/env/uav_env/analytic_evaluator.h"
 #include "worker/env/uav_env/bit_keys.h"
-#include "worker/env/uav_env/look_around.h"
+#include "worker/env/uav_env/model_observations.h"
 
 namespace rlpos {
 
@@ -30,28 +30,28 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario,
   }
   const auto& fields = scenario_.env.observations;
   observes_best_ = std::find(fields.begin(), fields.end(), "best") != fields.end();
-  look_around_ = LookAround::For(scenario_);
-  if (look_around_ && !analytic_)
+  model_observations_ = ModelObservations::For(scenario_);
+  if (model_observations_ && !analytic_)
     look_model_ = std::make_unique<AnalyticEvaluator>(scenario_);
 }
 
-void UavPositioningEnv::LookAroundFor(std::size_t uav, StepInfo& info) const {
+void UavPositioningEnv::FillModelObservations(std::size_t uav, StepInfo& info) const {
   AnalyticEvaluator& model = analytic_ ? *analytic_ : *look_model_;
   // The model's reward here, not ns-3's measured one: a lookahead is the model's change.
   const double here = analytic_ ? RewardOf(info) : RewardOf(model.Evaluate(placement_));
   const auto reward_of = [this](const StepInfo& i) { return RewardOf(i); };
-  look_around_->Fill(placement_, uav, here, model, reward_of, info);
+  model_observations_->Fill(placement_, uav, here, model, reward_of, info);
 }
 
 Vec3 UavPositioningEnv::DisplacementOf(std::size_t uav, int action) const {
   if (action != to_best_)
     return move_displacements_[static_cast<std::size_t>(action)];
-  if (!look_around_->PointerTargetOf(uav, placement_)) {
+  if (!model_observations_->PointerTargetOf(uav, placement_)) {
     // another UAV's map, not worked out since the last move
     StepInfo view = info_;
-    LookAroundFor(uav, view);
+    FillModelObservations(uav, view);
   }
-  return look_around_->ToBestMove(uav, placement_);
+  return model_observations_->ToBestMove(uav, placement_);
 }
 
 UavPositioningEnv::~UavPositioningEnv() = default;
@@ -130,8 +130,8 @@ void UavPositioningEnv::Observe() {
     }
   }
   info.active_uav = static_cast<int>(active_);
-  if (look_around_)
-    LookAroundFor(active_, info);
+  if (model_observations_)
+    FillModelObservations(active_, info);
 }
 
 std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
@@ -217,18 +217,18 @@ StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
   return result;
 }
 
-void UavPositioningEnv::CheckStepAll(std::size_t actions) const {
+void UavPositioningEnv::CheckJointStep(std::size_t actions) const {
   if (placement_.empty())
-    throw std::logic_error("StepAll before the first Reset");
+    throw std::logic_error("JointStep before the first Reset");
   if (actions != placement_.size()) {
-    throw std::invalid_argument("StepAll: " + std::to_string(actions) + " actions for " +
+    throw std::invalid_argument("JointStep: " + std::to_string(actions) + " actions for " +
                                 std::to_string(placement_.size()) +
                                 " UAVs; expected one per UAV, in the scenario's order");
   }
 }
 
-MultiStepResult UavPositioningEnv::StepAll(const std::vector<int>& actions) {
-  CheckStepAll(actions.size());
+JointStepResult UavPositioningEnv::JointStep(const std::vector<int>& actions) {
+  CheckJointStep(actions.size());
   if (Continuous())
     throw std::out_of_range("this env takes continuous actions (displacements)");
   std::vector<Vec3> displacements;
@@ -244,9 +244,9 @@ MultiStepResult UavPositioningEnv::StepAll(const std::vector<int>& actions) {
   return MoveAllTo(ApplyJointDisplacement(scenario_, displacements, placement_));
 }
 
-MultiStepResult UavPositioningEnv::StepAllContinuous(
+JointStepResult UavPositioningEnv::JointStepContinuous(
     const std::vector<std::vector<double>>& displacements) {
-  CheckStepAll(displacements.size());
+  CheckJointStep(displacements.size());
   if (!Continuous())
     throw std::out_of_range("this env takes discrete actions (move indices)");
   const double step = scenario_.env.step;  // the Box is [-step, step]^3; NaN is outside
@@ -265,9 +265,9 @@ MultiStepResult UavPositioningEnv::StepAllContinuous(
   return MoveAllTo(ApplyJointDisplacement(scenario_, moves, placement_));
 }
 
-MultiStepResult UavPositioningEnv::MoveAllTo(const Placement& placement) {
+JointStepResult UavPositioningEnv::MoveAllTo(const Placement& placement) {
   StepResult step = MoveTo(placement);
-  MultiStepResult result;
+  JointStepResult result;
   result.observations = AgentObservations();
   result.state = State();
   result.reward = step.reward;
@@ -280,12 +280,12 @@ MultiStepResult UavPositioningEnv::MoveAllTo(const Placement& placement) {
 std::vector<std::vector<double>> UavPositioningEnv::AgentObservations() const {
   std::vector<std::vector<double>> observations;
   for (std::size_t u = 0; u < scenario_.uavs.size(); ++u) {
-    if (!look_around_ || u == active_) {
+    if (!model_observations_ || u == active_) {
       observations.push_back(AgentObservation(scenario_, info_, u));
       continue;
     }
     StepInfo view = info_;  // each UAV looks around from its own position
-    LookAroundFor(u, view);
+    FillModelObservations(u, view);
     observations.push_back(AgentObservation(scenario_, view, u));
   }
   return observations;

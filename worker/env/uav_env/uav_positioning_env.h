@@ -5,8 +5,9 @@
 // analytic fidelity: no packets (AnalyticEvaluator). Episode length and interval from env.
 // Several UAVs take turns in Step: each step moves the UAV whose turn it is
 // (StepInfo::active_uav, also in the observation), env.turn_steps steps in a row, so one shared
-// policy flies them all. Or they move at once as agents in StepAll (worker/env/gym/multi_agent.h):
-// one action per UAV, one decision interval, an observation per UAV and one team reward.
+// policy flies them all. Or they move at once as agents in JointStep
+// (worker/env/gym/multi_agent.h): one action per UAV, one decision interval, an observation per UAV
+// and one team reward.
 #include <memory>
 
 #include "common/scenario/scenario.h"
@@ -18,7 +19,7 @@ namespace rlpos {
 
 class UavNetwork;
 class AnalyticEvaluator;
-class LookAround;
+class ModelObservations;
 class SharedPlacementMemo;
 
 class UavPositioningEnv : public Env {
@@ -48,22 +49,23 @@ class UavPositioningEnv : public Env {
   // a wall of its zone, a building or another UAV). Without it, or if nothing moves, every
   // action.
   ActionMask ValidActions() const override { return ValidActionsOf(active_); }
-  // The same for UAV `uav`, the others where they are now (in StepAll another UAV's move can
+  // The same for UAV `uav`, the others where they are now (in JointStep another UAV's move can
   // still refuse an allowed move: ApplyJointDisplacement).
   ActionMask ValidActionsOf(std::size_t uav) const override;
   std::size_t AgentCount() const override { return scenario_.uavs.size(); }
 
   // Every UAV at once, actions[u] for UAV u (scenario order): ApplyJointDisplacement's rule,
   // then one decision interval, as Step. The reward, truncation and LastInfo are Step's
-  // (LastInfo().active_uav keeps counting Step's turns; StepAll ignores it). Works at both
+  // (LastInfo().active_uav keeps counting Step's turns; JointStep ignores it). Works at both
   // fidelities. Throws std::invalid_argument for a count other than one action per UAV,
   // std::out_of_range for an action outside the action space (naming the UAV), and
   // std::logic_error before the first Reset; a refused call moves nothing.
-  MultiStepResult StepAll(const std::vector<int>& actions) override;
+  JointStepResult JointStep(const std::vector<int>& actions) override;
   // The same with one displacement per UAV (env.action_space "continuous").
-  MultiStepResult StepAllContinuous(const std::vector<std::vector<double>>& displacements) override;
+  JointStepResult JointStepContinuous(
+      const std::vector<std::vector<double>>& displacements) override;
   // Each UAV's observation (AgentObservation) and the global state (MakeState) after the last
-  // Reset, Step or StepAll.
+  // Reset, Step or JointStep.
   std::vector<std::vector<double>> AgentObservations() const override;
   std::vector<double> TeamStateOf(std::size_t uav) const override;
   std::vector<double> State() const { return MakeState(scenario_, info_); }
@@ -81,8 +83,8 @@ class UavPositioningEnv : public Env {
   // Returns the reward here.
   double KeepBest(bool first);
   StepResult MoveTo(const Placement& placement);          // one decision interval at `placement`
-  MultiStepResult MoveAllTo(const Placement& placement);  // the same, seen by every UAV
-  void CheckStepAll(std::size_t actions) const;           // one action per UAV, after a Reset
+  JointStepResult MoveAllTo(const Placement& placement);  // the same, seen by every UAV
+  void CheckJointStep(std::size_t actions) const;         // one action per UAV, after a Reset
   bool Continuous() const { return scenario_.env.action_space == "continuous"; }
   // Packet level with several UAVs: a radio per UAV on each UE, re-associated every step.
   bool HandsOver() const { return scenario_.uavs.size() > 1; }
@@ -92,9 +94,9 @@ class UavPositioningEnv : public Env {
   std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity
   // The "coverage" and "lookahead" observations (null when not observed), on the analytic
   // model: analytic_, or at packet level a model of their own.
-  std::unique_ptr<LookAround> look_around_;
+  std::unique_ptr<ModelObservations> model_observations_;
   std::unique_ptr<AnalyticEvaluator> look_model_;
-  void LookAroundFor(std::size_t uav, StepInfo& info) const;
+  void FillModelObservations(std::size_t uav, StepInfo& info) const;
   // Each discrete action's displacement (MoveDisplacement), worked out once: the action mask asks
   // for every action at every step.
   std::vector<Vec3> move_displacements_;

@@ -212,7 +212,7 @@ void BatchedEnv::RequireStarted() const {
 }
 
 template <typename StepOne>
-void BatchedEnv::StepAll(const BatchBuffers& out, StepOne step_one) {
+void BatchedEnv::StepEveryEnv(const BatchBuffers& out, StepOne step_one) {
   pool_->ForEach(NumEnvs(), [&](std::size_t i) {
     Slot& slot = *slots_[i];
     if (slot.ended) {  // next-step autoreset: the action is ignored
@@ -255,7 +255,7 @@ void BatchedEnv::Step(const std::int64_t* actions, std::size_t count, const Batc
           std::to_string(action_space_.n) + "), got " + std::to_string(actions[i]));
     }
   }
-  StepAll(out, [actions](UavPositioningEnv& env, std::size_t i) {
+  StepEveryEnv(out, [actions](UavPositioningEnv& env, std::size_t i) {
     return env.Step(static_cast<int>(actions[i]));
   });
 }
@@ -281,7 +281,7 @@ void BatchedEnv::StepContinuous(const double* displacements, std::size_t count,
                                   FormatNumber(v));
     }
   }
-  StepAll(out, [displacements, dim](UavPositioningEnv& env, std::size_t i) {
+  StepEveryEnv(out, [displacements, dim](UavPositioningEnv& env, std::size_t i) {
     return env.StepContinuous(
         std::vector<double>(displacements + i * dim, displacements + (i + 1) * dim));
   });

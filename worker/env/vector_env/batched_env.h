@@ -100,7 +100,7 @@ class BatchedEnv {
   void Write(std::size_t env, const std::vector<double>& observation, const BatchBuffers& out);
   void RequireStarted() const;
   template <typename StepOne>
-  void StepAll(const BatchBuffers& out, StepOne step_one);
+  void StepEveryEnv(const BatchBuffers& out, StepOne step_one);
 
   std::vector<std::unique_ptr<Slot>> slots_;
   std::unique_ptr<ThreadPool> pool_;

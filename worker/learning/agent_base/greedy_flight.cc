@@ -28,16 +28,16 @@ StepResult JointStep(Env& env, Agent& agent, const BoxSpace& space, const BoxSpa
   std::vector<ActionMask> masks;
   for (const std::vector<double>& o : env.AgentObservations())
     observations.push_back(space.Normalise(o));
-  MultiStepResult joint;
+  JointStepResult joint;
   if (agent.Continuous()) {
     std::vector<std::vector<double>> displacements;
     for (const std::vector<float>& o : observations)
       displacements.push_back(ScaleToBox(agent.ActContinuous(o, false), box));
-    joint = env.StepAllContinuous(displacements);
+    joint = env.JointStepContinuous(displacements);
   } else {
     for (std::size_t a = 0; a < observations.size(); ++a)
       masks.push_back(env.ValidActionsOf(a));
-    joint = env.StepAll(agent.ActEach(observations, masks, false));
+    joint = env.JointStep(agent.ActEach(observations, masks, false));
   }
   StepResult step;
   step.reward = joint.reward;

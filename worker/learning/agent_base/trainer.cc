@@ -102,19 +102,19 @@ EpisodeRecord RunJointEpisode(Env& env, Agent& agent, std::uint64_t seed, bool l
   std::vector<std::vector<float>> teams = TeamStatesFor(env, agent, learn);
   for (;;) {
     std::vector<Transition> transitions(obs.size());
-    MultiStepResult step;
+    JointStepResult step;
     if (agent.Continuous()) {
       std::vector<std::vector<double>> displacements;
       for (std::size_t a = 0; a < obs.size(); ++a) {
         transitions[a].continuous_action = agent.ActContinuous(obs[a], learn);
         displacements.push_back(ScaleToBox(transitions[a].continuous_action, box));
       }
-      step = env.StepAllContinuous(displacements);
+      step = env.JointStepContinuous(displacements);
     } else {
       const std::vector<int> actions = agent.ActEach(obs, masks, learn);
       for (std::size_t a = 0; a < obs.size(); ++a)
         transitions[a].action = actions[a];
-      step = env.StepAll(actions);
+      step = env.JointStep(actions);
     }
     std::vector<std::vector<float>> next = NormaliseEach(space, step.observations);
     std::vector<ActionMask> next_masks = MasksOf(env);

@@ -49,7 +49,7 @@ std::vector<double> ScaleToBox(const std::vector<float>& unit, const BoxSpace& b
 std::vector<float> TeamStateFor(const Env& env, std::size_t agent);
 
 // How one episode differs from the env's own: its reset options, a step limit (0: none) after
-// which it is truncated, and whether the env's agents act at once (Env::StepAll, each from its
+// which it is truncated, and whether the env's agents act at once (Env::JointStep, each from its
 // own observation, agent.joint_steps) rather than in turns.
 struct EpisodeOptions {
   ResetOptions reset;
@@ -65,7 +65,7 @@ EpisodeOptions GreedyEpisodeOptions(const AgentSpec& spec);
 EpisodeOptions TrainingEpisodeOptions(const AgentSpec& spec, int episode);
 
 // Runs one episode from env.Reset(seed, options.reset). With `learn`, the agent explores and
-// learns. With options.joint and an env of several agents, every step is one Env::StepAll:
+// learns. With options.joint and an env of several agents, every step is one Env::JointStep:
 // each agent's transition (its observation, action and mask, the shared reward) is learnt from
 // (Agent::ObserveEach); on_step sees the joint step as a StepResult of the first agent's
 // observation and action.

@@ -118,8 +118,8 @@ class Round {
         Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
         if (lane.joint) {
           const auto from = actions.begin() + static_cast<long>(first_row[k]);
-          const MultiStepResult r =
-              lane.env->StepAll(std::vector<int>(from, from + lane.env->AgentCount()));
+          const JointStepResult r =
+              lane.env->JointStep(std::vector<int>(from, from + lane.env->AgentCount()));
           lane.reward = r.reward;
           lane.terminated = r.terminated;
           lane.truncated = r.truncated;

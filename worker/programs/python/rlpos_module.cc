@@ -130,12 +130,12 @@ py::array_t<float> Observation(const std::vector<double>& values, const Float32C
 
 // One UavPositioningEnv held for Python: its lease of ns-3 at packet level, its lock (the GIL is
 // released while it steps, one step at a time per env), and what both bindings read of it.
-class HeldEnv {
+class PyEnvHandle {
  public:
   // `lease_user` names it in the error of a second packet-level user; `closed_error` is the
   // error of a call after Close(). Both are string literals (the lease keeps the pointer).
-  HeldEnv(const std::string& file, const std::vector<std::string>& overrides,
-          const char* lease_user, const char* closed_error)
+  PyEnvHandle(const std::string& file, const std::vector<std::string>& overrides,
+              const char* lease_user, const char* closed_error)
       : closed_error_(closed_error) {
     Scenario s = Load(file, overrides);
     if (s.env.fidelity == "packet")
@@ -176,10 +176,10 @@ class HeldEnv {
   std::unique_ptr<UavPositioningEnv> env_;
 };
 
-class PyEnv : public HeldEnv {
+class PyEnv : public PyEnvHandle {
  public:
   PyEnv(const std::string& file, const std::vector<std::string>& overrides)
-      : HeldEnv(file, overrides, "a packet-level env", "rlpos: the env is closed"),
+      : PyEnvHandle(file, overrides, "a packet-level env", "rlpos: the env is closed"),
         clip_(Open().ObservationSpace()) {}
 
   py::tuple Reset(std::uint64_t seed, bool random_start) {
@@ -387,13 +387,13 @@ class PyVectorEnv {
 };
 
 // Several UAVs as agents (rlpos.parallel_env): every UAV moves at once in each step
-// (UavPositioningEnv::StepAll). Returns plain lists; the package's Python part makes the
+// (UavPositioningEnv::JointStep). Returns plain lists; the package's Python part makes the
 // per-agent dicts and numpy arrays.
-class PyParallelEnv : public HeldEnv {
+class PyParallelEnv : public PyEnvHandle {
  public:
   PyParallelEnv(const std::string& file, const std::vector<std::string>& overrides)
-      : HeldEnv(file, overrides, "a packet-level parallel env",
-                "rlpos: the parallel env is closed") {}
+      : PyEnvHandle(file, overrides, "a packet-level parallel env",
+                    "rlpos: the parallel env is closed") {}
 
   std::vector<std::string> AgentNames() const {
     std::vector<std::string> names;
@@ -409,7 +409,7 @@ class PyParallelEnv : public HeldEnv {
   // (observations per UAV, state, info)
   py::tuple Reset(std::uint64_t seed, bool random_start) {
     const Outcome o = Run([&](UavPositioningEnv& env) {
-      MultiStepResult r;
+      JointStepResult r;
       env.Reset(seed, ResetOptions{random_start});
       r.observations = env.AgentObservations();
       r.state = env.State();
@@ -420,16 +420,16 @@ class PyParallelEnv : public HeldEnv {
   }
   // (observations per UAV, state, team reward, terminated, truncated, info)
   py::tuple Step(const std::vector<int>& actions) {
-    return Finish(Run([&](UavPositioningEnv& env) { return env.StepAll(actions); }));
+    return Finish(Run([&](UavPositioningEnv& env) { return env.JointStep(actions); }));
   }
   py::tuple StepContinuous(const std::vector<std::vector<double>>& displacements) {
     return Finish(
-        Run([&](UavPositioningEnv& env) { return env.StepAllContinuous(displacements); }));
+        Run([&](UavPositioningEnv& env) { return env.JointStepContinuous(displacements); }));
   }
 
  private:
   struct Outcome {
-    MultiStepResult result;
+    JointStepResult result;
     std::vector<ActionMask> masks;                 // per UAV, after it
     std::vector<std::vector<double>> team_states;  // per UAV (team_state.h), after it
   };
@@ -454,7 +454,7 @@ class PyParallelEnv : public HeldEnv {
   }
 
   // The team's info: every UAV's position and mask, each UE's serving UAV, LoS and SNR, and
-  // the run's figures (no active_uav: StepAll has no turns).
+  // the run's figures (no active_uav: JointStep has no turns).
   static py::dict Info(const Outcome& o) {
     const StepInfo& info = o.result.info;
     py::dict d;
@@ -476,7 +476,7 @@ class PyParallelEnv : public HeldEnv {
   }
 
   static py::tuple Finish(const Outcome& o) {
-    const MultiStepResult& r = o.result;
+    const JointStepResult& r = o.result;
     return py::make_tuple(r.observations, r.state, r.reward, r.terminated, r.truncated, Info(o));
   }
 };
@@ -551,22 +551,26 @@ PYBIND11_MODULE(_rlpos, m) {
       "C++ side of rlpos: the UAV positioning env (one env, a batch, or every UAV as an agent), "
       "the oracle and packet-level evaluation";
   // What the single env and the parallel env both tell of their scenario and spaces.
-  py::class_<HeldEnv>(m, "HeldEnv")
-      .def_property_readonly("action_count", &HeldEnv::ActionCount)
-      .def_property_readonly("action_bounds", &HeldEnv::ActionBounds)
-      .def_property_readonly("observation_bounds", &HeldEnv::ObservationBounds)
-      .def_property_readonly("steps_per_episode", &HeldEnv::StepsPerEpisode)
-      .def_property_readonly("scenario_name", [](const HeldEnv& e) { return e.scenario().name; })
-      .def_property_readonly("fidelity", [](const HeldEnv& e) { return e.scenario().env.fidelity; })
-      .def_property_readonly("agent_seed", [](const HeldEnv& e) { return e.scenario().agent.seed; })
-      .def_property_readonly("actions", [](const HeldEnv& e) { return e.scenario().env.actions; })
+  py::class_<PyEnvHandle>(m, "EnvHandle")
+      .def_property_readonly("action_count", &PyEnvHandle::ActionCount)
+      .def_property_readonly("action_bounds", &PyEnvHandle::ActionBounds)
+      .def_property_readonly("observation_bounds", &PyEnvHandle::ObservationBounds)
+      .def_property_readonly("steps_per_episode", &PyEnvHandle::StepsPerEpisode)
+      .def_property_readonly("scenario_name",
+                             [](const PyEnvHandle& e) { return e.scenario().name; })
+      .def_property_readonly("fidelity",
+                             [](const PyEnvHandle& e) { return e.scenario().env.fidelity; })
+      .def_property_readonly("agent_seed",
+                             [](const PyEnvHandle& e) { return e.scenario().agent.seed; })
+      .def_property_readonly("actions",
+                             [](const PyEnvHandle& e) { return e.scenario().env.actions; })
       // The scenario as loaded (file, overrides, defaults), every field explicit: what
       // rlpos-sim train writes as a policy folder's scenario.json.
       .def_property_readonly("scenario_json",
-                             [](const HeldEnv& e) { return ToJson(e.scenario()).dump(); })
-      .def_property_readonly("closed", &HeldEnv::closed)
-      .def("close", &HeldEnv::Close);
-  py::class_<PyEnv, HeldEnv>(m, "Env")
+                             [](const PyEnvHandle& e) { return ToJson(e.scenario()).dump(); })
+      .def_property_readonly("closed", &PyEnvHandle::closed)
+      .def("close", &PyEnvHandle::Close);
+  py::class_<PyEnv, PyEnvHandle>(m, "Env")
       .def(py::init<const std::string&, const std::vector<std::string>&>(), py::arg("scenario"),
            py::arg("overrides"))
       .def("reset", &PyEnv::Reset, py::arg("seed"), py::arg("random_start") = false)
@@ -590,7 +594,7 @@ PYBIND11_MODULE(_rlpos, m) {
       .def("reset", &PyVectorEnv::Reset, py::arg("seeds"), py::arg("random_start"))
       .def("step", &PyVectorEnv::Step, py::arg("actions"))
       .def("close", &PyVectorEnv::Close);
-  py::class_<PyParallelEnv, HeldEnv>(m, "ParallelEnv")
+  py::class_<PyParallelEnv, PyEnvHandle>(m, "ParallelEnv")
       .def(py::init<const std::string&, const std::vector<std::string>&>(), py::arg("scenario"),
            py::arg("overrides"))
       .def_property_readonly("agent_names", &PyParallelEnv::AgentNames)

@@ -33,6 +33,7 @@ struct EvalOptions {
   bool progress = false;
 };
 
+// rlpos-sim train's command line (a campaign file's "train" section is CampaignTrainSection).
 struct TrainOptions {
   // Unset: the scenario's agent.algorithm, env.fidelity, agent.seed, agent.train_episodes.
   std::optional<std::string> algorithm;

@@ -1,4 +1,4 @@
-// UavPositioningEnv::StepAll: every UAV moves at once, one decision interval, an observation per
+// UavPositioningEnv::JointStep: every UAV moves at once, one decision interval, an observation per
 // UAV, one team reward and the global state.
 #include <gtest/gtest.h>
 
@@ -29,7 +29,7 @@ void ExpectSamePositions(const Placement& a, const Placement& b, int step) {
   }
 }
 
-TEST(StepAll, OneUavGivesStepsTrajectory) {
+TEST(JointStep, OneUavGivesStepsTrajectory) {
   const Scenario s = Load("b", {"env.fidelity=analytic", "env.episode_duration=5"});
   UavPositioningEnv single(s), team(s);
   const auto first = single.Reset(3, ResetOptions{true});
@@ -40,7 +40,7 @@ TEST(StepAll, OneUavGivesStepsTrajectory) {
   for (int i = 0; i < single.StepsPerEpisode(); ++i) {
     const int a = action(engine);
     const StepResult r = single.Step(a);
-    const MultiStepResult m = team.StepAll({a});
+    const JointStepResult m = team.JointStep({a});
     ASSERT_EQ(m.observations.size(), 1u);
     EXPECT_EQ(m.observations[0], r.observation) << "step " << i;
     EXPECT_EQ(m.reward, r.reward) << "step " << i;
@@ -53,7 +53,7 @@ TEST(StepAll, OneUavGivesStepsTrajectory) {
 }
 
 // What each UAV sees and the state, against the env's own LastInfo.
-void ExpectConsistent(const UavPositioningEnv& env, const MultiStepResult& m) {
+void ExpectConsistent(const UavPositioningEnv& env, const JointStepResult& m) {
   const Scenario& s = env.scenario();
   const StepInfo& info = env.LastInfo();
   const std::size_t k = s.uavs.size();
@@ -95,13 +95,13 @@ void ExpectConsistent(const UavPositioningEnv& env, const MultiStepResult& m) {
   EXPECT_EQ(m.state.back(), info.demands_met);
 }
 
-TEST(StepAll, ThreeUavsMoveAtOnceAndSeeTheSameWorld) {
+TEST(JointStep, ThreeUavsMoveAtOnceAndSeeTheSameWorld) {
   const Scenario s = Load("urban3", {"env.fidelity=analytic", "env.episode_duration=2"});
   UavPositioningEnv env(s);
   env.Reset(1);
   const Placement start = env.LastInfo().positions;
   const int forward = MoveIndex(s, "forward");
-  const MultiStepResult m = env.StepAll({forward, forward, forward});
+  const JointStepResult m = env.JointStep({forward, forward, forward});
   ExpectConsistent(env, m);
   for (std::size_t u = 0; u < 3; ++u) {  // all three moved in one step
     EXPECT_EQ(m.info.positions[u].y, start[u].y + s.env.step) << "UAV " << u;
@@ -109,10 +109,10 @@ TEST(StepAll, ThreeUavsMoveAtOnceAndSeeTheSameWorld) {
   }
   std::mt19937_64 engine(11);
   std::uniform_int_distribution<int> action(0, env.ActionSpace().n - 1);
-  MultiStepResult last = m;
+  JointStepResult last = m;
   int steps = 1;
   while (!last.truncated) {
-    last = env.StepAll({action(engine), action(engine), action(engine)});
+    last = env.JointStep({action(engine), action(engine), action(engine)});
     ExpectConsistent(env, last);
     ++steps;
   }
@@ -120,53 +120,53 @@ TEST(StepAll, ThreeUavsMoveAtOnceAndSeeTheSameWorld) {
   EXPECT_GT(last.info.n_los, 0);
 }
 
-TEST(StepAll, ContinuousDisplacementsPerUav) {
+TEST(JointStep, ContinuousDisplacementsPerUav) {
   const Scenario s = Load("urban3", {"env.fidelity=analytic", "env.episode_duration=1",
                                      "agent.algorithm=sac", "env.action_space=continuous"});
   UavPositioningEnv env(s);
   env.Reset(1);
   const Placement start = env.LastInfo().positions;
-  const MultiStepResult m = env.StepAllContinuous({{1, 0, 0}, {0, -2.5, 0}, {0, 0, 5}});
+  const JointStepResult m = env.JointStepContinuous({{1, 0, 0}, {0, -2.5, 0}, {0, 0, 5}});
   ExpectConsistent(env, m);
   EXPECT_EQ(m.info.positions[0].x, start[0].x + 1);
   EXPECT_EQ(m.info.positions[1].y, start[1].y - 2.5);
   EXPECT_EQ(m.info.positions[2].z, start[2].z + 5);
   try {
-    env.StepAllContinuous({{0, 0, 0}, {0, 0, 5.5}, {0, 0, 0}});
+    env.JointStepContinuous({{0, 0, 0}, {0, 0, 5.5}, {0, 0, 0}});
     FAIL() << "a component beyond env.step was taken";
   } catch (const std::out_of_range& e) {
     EXPECT_NE(std::string(e.what()).find("UAV 1 (\"uav2\")"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(env.StepAllContinuous({{0, 0, 0}, {0, 0}, {0, 0, 0}}), std::out_of_range);
-  EXPECT_THROW(env.StepAll({0, 0, 0}), std::out_of_range);
+  EXPECT_THROW(env.JointStepContinuous({{0, 0, 0}, {0, 0}, {0, 0, 0}}), std::out_of_range);
+  EXPECT_THROW(env.JointStep({0, 0, 0}), std::out_of_range);
 }
 
-TEST(StepAll, BadActionsAreRefusedAndMoveNothing) {
+TEST(JointStep, BadActionsAreRefusedAndMoveNothing) {
   const Scenario s = Load("urban3", {"env.fidelity=analytic", "env.episode_duration=1"});
   UavPositioningEnv env(s);
-  EXPECT_THROW(env.StepAll({0, 0, 0}), std::logic_error);  // before the first Reset
+  EXPECT_THROW(env.JointStep({0, 0, 0}), std::logic_error);  // before the first Reset
   env.Reset(1);
   const StepInfo before = env.LastInfo();
   try {
-    env.StepAll({0, 0});
+    env.JointStep({0, 0});
     FAIL() << "two actions for three UAVs were taken";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("2 actions for 3 UAVs"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(env.StepAll({0, 0, 0, 0}), std::invalid_argument);
+  EXPECT_THROW(env.JointStep({0, 0, 0, 0}), std::invalid_argument);
   try {
-    env.StepAll({MoveIndex(s, "up"), 7, 0});
+    env.JointStep({MoveIndex(s, "up"), 7, 0});
     FAIL() << "action 7 of Discrete(7) was taken";
   } catch (const std::out_of_range& e) {
     EXPECT_NE(std::string(e.what()).find("action 7 of UAV 1 (\"uav2\")"), std::string::npos)
         << e.what();
   }
-  EXPECT_THROW(env.StepAll({-1, 0, 0}), std::out_of_range);
-  EXPECT_THROW(env.StepAllContinuous({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}), std::out_of_range);
+  EXPECT_THROW(env.JointStep({-1, 0, 0}), std::out_of_range);
+  EXPECT_THROW(env.JointStepContinuous({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}), std::out_of_range);
   ExpectSamePositions(env.LastInfo().positions, before.positions, 0);  // UAV 0 did not go up
 }
 
-TEST(StepAll, PerUavMasksSeeTheOtherUavs) {
+TEST(JointStep, PerUavMasksSeeTheOtherUavs) {
   // urban3's UAVs start 10 m apart; with 5 m steps "right" of UAV 0 would end 5 m from UAV 1:
   // allowed. Brought 4 m apart, it is not.
   const Scenario s = Load("urban3", {"env.fidelity=analytic", "env.action_mask=true",
@@ -182,22 +182,22 @@ TEST(StepAll, PerUavMasksSeeTheOtherUavs) {
   EXPECT_EQ(env.ValidActions(), mask0);  // Step's turn: UAV 0
 }
 
-TEST(StepAll, PacketFidelityMeasuresOneInterval) {
+TEST(JointStep, PacketFidelityMeasuresOneInterval) {
   const Scenario s = Load("b", {"env.fidelity=packet", "env.episode_duration=0.5",
                                 "env.decision_interval=0.25", "simulation.warmup=0.5"});
   UavPositioningEnv env(s);
   env.Reset(1001);
   const int stay = MoveIndex(s, "stay");
-  const MultiStepResult first = env.StepAll({stay});
+  const JointStepResult first = env.JointStep({stay});
   ExpectConsistent(env, first);
   EXPECT_FALSE(first.truncated);
-  const MultiStepResult last = env.StepAll({stay});
+  const JointStepResult last = env.JointStep({stay});
   EXPECT_TRUE(last.truncated);
   EXPECT_EQ(last.info.n_los, 1);
   EXPECT_GT(last.info.throughput_mbps, 100.0);
 }
 
-TEST(StepAll, PacketFidelityMovesTwoUavsAtOnce) {
+TEST(JointStep, PacketFidelityMovesTwoUavsAtOnce) {
   // campus2's two UAVs at packet level: each UE has a radio per UAV and is handed over after
   // the joint move, as after Step's.
   const Scenario s = Load("campus2", {"env.fidelity=packet", "env.episode_duration=0.1",
@@ -206,7 +206,7 @@ TEST(StepAll, PacketFidelityMovesTwoUavsAtOnce) {
   env.Reset(1);
   const Placement start = env.LastInfo().positions;
   const int up = MoveIndex(s, "up");
-  const MultiStepResult m = env.StepAll({up, up});
+  const JointStepResult m = env.JointStep({up, up});
   ExpectConsistent(env, m);
   for (std::size_t u = 0; u < 2; ++u)
     EXPECT_EQ(m.info.positions[u].z, start[u].z + s.env.step) << "UAV " << u;

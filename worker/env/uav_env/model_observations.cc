@@ -1,4 +1,4 @@
-#include "worker/env/uav_env/look_around.h"
+#include "worker/env/uav_env/model_observations.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,15 +50,14 @@ bool SameOthers(const Placement& a, const Placement& b, std::size_t active) {
 
 }  // namespace
 
-std::unique_ptr<LookAround> LookAround::For(const Scenario& scenario) {
+std::unique_ptr<ModelObservations> ModelObservations::For(const Scenario& scenario) {
   const auto& o = scenario.env.observations;
-  if (std::none_of(o.begin(), o.end(),
-                   [](const std::string& f) { return IsLookAroundObservation(f); }))
+  if (std::none_of(o.begin(), o.end(), [](const std::string& f) { return IsModelObservation(f); }))
     return nullptr;
-  return std::make_unique<LookAround>(scenario);
+  return std::make_unique<ModelObservations>(scenario);
 }
 
-LookAround::LookAround(const Scenario& scenario)
+ModelObservations::ModelObservations(const Scenario& scenario)
     : scenario_(scenario), bound_(CoverageRewardBound(scenario)) {
   const auto& o = scenario.env.observations;
   coverage_ = std::find(o.begin(), o.end(), "coverage") != o.end();
@@ -75,19 +74,20 @@ LookAround::LookAround(const Scenario& scenario)
   }
 }
 
-Vec3 LookAround::ToBestMove(std::size_t uav, const Placement& placement) {
+Vec3 ModelObservations::ToBestMove(std::size_t uav, const Placement& placement) {
   return routes_.at(uav).NextMove(pointer_of_.at(uav), placement);
 }
 
-const Vec3* LookAround::PointerTargetOf(std::size_t uav, const Placement& placement) const {
+const Vec3* ModelObservations::PointerTargetOf(std::size_t uav, const Placement& placement) const {
   const Placement& for_placement = pointer_for_.at(uav);
   const bool current = for_placement.size() == placement.size() &&
                        std::equal(placement.begin(), placement.end(), for_placement.begin(), Same);
   return current ? &pointer_of_[uav] : nullptr;
 }
 
-void LookAround::Coverage(const Placement& placement, std::size_t active, AnalyticEvaluator& model,
-                          const RewardOf& reward_of, std::vector<double>& out) {
+void ModelObservations::Coverage(const Placement& placement, std::size_t active,
+                                 AnalyticEvaluator& model, const RewardOf& reward_of,
+                                 std::vector<double>& out) {
   if (!coverage_values_.empty() && active == coverage_active_ &&
       SameOthers(placement, coverage_for_, active)) {
     out = coverage_values_;
@@ -165,9 +165,9 @@ void LookAround::Coverage(const Placement& placement, std::size_t active, Analyt
   out = std::move(values);
 }
 
-void LookAround::RefinePointer(const std::vector<double>& levels, double best_of_map,
-                               OneUavMoves& moves, std::size_t active, AnalyticEvaluator& model,
-                               const RewardOf& reward_of) {
+void ModelObservations::RefinePointer(const std::vector<double>& levels, double best_of_map,
+                                      OneUavMoves& moves, std::size_t active,
+                                      AnalyticEvaluator& model, const RewardOf& reward_of) {
   const Box& zone = scenario_.uavs[active].zone;
   const double step = scenario_.env.step;
   const int radius = scenario_.env.coverage_refine;
@@ -195,7 +195,7 @@ void LookAround::RefinePointer(const std::vector<double>& levels, double best_of
   }
 }
 
-void LookAround::ForgetLinksIfUesMoved(const AnalyticEvaluator& model) {
+void ModelObservations::ForgetLinksIfUesMoved(const AnalyticEvaluator& model) {
   const std::vector<Vec3>& ues = model.UePositions();
   if (map_links_.empty() ||
       !std::equal(ues.begin(), ues.end(), map_links_ues_.begin(), map_links_ues_.end(), Same)) {
@@ -205,8 +205,9 @@ void LookAround::ForgetLinksIfUesMoved(const AnalyticEvaluator& model) {
   }
 }
 
-const std::vector<UeLink>& LookAround::MapLinks(std::size_t active, std::size_t point,
-                                                const Vec3& position, AnalyticEvaluator& model) {
+const std::vector<UeLink>& ModelObservations::MapLinks(std::size_t active, std::size_t point,
+                                                       const Vec3& position,
+                                                       AnalyticEvaluator& model) {
   if (scenario_.uavs.size() == 1) {
     scratch_links_ = model.LinksAt(active, position);
     return scratch_links_;
@@ -221,7 +222,7 @@ const std::vector<UeLink>& LookAround::MapLinks(std::size_t active, std::size_t 
   return of_uav[point];
 }
 
-void LookAround::AddPointer(const Vec3& from, std::vector<double>& out) const {
+void ModelObservations::AddPointer(const Vec3& from, std::vector<double>& out) const {
   const double step = scenario_.env.step;
   const auto offset = [step](double metres) {
     return std::clamp(metres / step, -kPointerStepLimit, kPointerStepLimit);
@@ -231,8 +232,8 @@ void LookAround::AddPointer(const Vec3& from, std::vector<double>& out) const {
   out.push_back(offset(best_point_.z - from.z));
 }
 
-void LookAround::Fill(const Placement& placement, std::size_t active, double here,
-                      AnalyticEvaluator& model, const RewardOf& reward_of, StepInfo& info) {
+void ModelObservations::Fill(const Placement& placement, std::size_t active, double here,
+                             AnalyticEvaluator& model, const RewardOf& reward_of, StepInfo& info) {
   if (coverage_) {
     Coverage(placement, active, model, reward_of, info.coverage);
     AddPointer(placement[active], info.coverage);

@@ -1,7 +1,7 @@
-// The model's look around ("coverage" and "lookahead" observations): the values are the analytic
+// The model observations ("coverage" and "lookahead"): the values are the analytic
 // model's rewards where they say, the map is no better than the oracle's grid, and the map of one
 // UAV is worked out once.
-#include "worker/env/uav_env/look_around.h"
+#include "worker/env/uav_env/model_observations.h"
 
 #include <gtest/gtest.h>
 
@@ -61,7 +61,7 @@ double GridBest(const Scenario& s) {
   return best;
 }
 
-TEST(LookAround, TheMapsBestIsAModelRewardWhereItsPointerLeadsAndNoBetterThanTheGrid) {
+TEST(ModelObservations, TheMapsBestIsAModelRewardWhereItsPointerLeadsAndNoBetterThanTheGrid) {
   const Scenario s = Observing(GeneratedUrban(1), {"coverage"});
   UavPositioningEnv env(s);
   const std::vector<double> o = env.Reset(1);
@@ -85,7 +85,7 @@ TEST(LookAround, TheMapsBestIsAModelRewardWhereItsPointerLeadsAndNoBetterThanThe
   EXPECT_NEAR(moved.observation[34] * s.env.step, pointed.z - now.z, 1e-9);
 }
 
-TEST(LookAround, EachMovesValueIsTheRewardItWouldReachMinusTheRewardHere) {
+TEST(ModelObservations, EachMovesValueIsTheRewardItWouldReachMinusTheRewardHere) {
   const Scenario s = Observing(GeneratedUrban(1), {"lookahead"});
   UavPositioningEnv env(s);
   env.Reset(1);
@@ -104,7 +104,7 @@ TEST(LookAround, EachMovesValueIsTheRewardItWouldReachMinusTheRewardHere) {
   }
 }
 
-TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
+TEST(ModelObservations, SeveralUavsEachLookFromTheirOwnPosition) {
   Scenario s = Observing(GeneratedUrban(2), {"coverage"});
   s.env.coverage_map = 3;
   UavPositioningEnv env(s);
@@ -131,7 +131,7 @@ TEST(LookAround, SeveralUavsEachLookFromTheirOwnPosition) {
 // "to_best" in env.actions: flown from the baseline it reaches where the pointer leads, the map's
 // best, one move at a time, and is masked off there; its lookahead is the reward change of the
 // move it makes.
-TEST(LookAround, ToBestFliesToTheMapsBestAndItsLookaheadIsThatMovesChange) {
+TEST(ModelObservations, ToBestFliesToTheMapsBestAndItsLookaheadIsThatMovesChange) {
   Scenario s = Observing(GeneratedUrban(1), {"coverage", "lookahead"});
   s.env.step = 5;
   s.env.actions.push_back("to_best");
@@ -172,7 +172,7 @@ TEST(LookAround, ToBestFliesToTheMapsBestAndItsLookaheadIsThatMovesChange) {
 
 // With several UAVs moving at once each flies towards its own map's best, also when nothing asked
 // for the others' observations since the last move.
-TEST(LookAround, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
+TEST(ModelObservations, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
   Scenario s = Observing(GeneratedUrban(2), {"coverage"});
   s.env.step = 5;
   s.env.coverage_map = 3;
@@ -192,8 +192,8 @@ TEST(LookAround, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
                         from[u].z + views[u][20] * s.env.step};
       moves.push_back(routes[u].NextMove(target, from));
     }
-    const MultiStepResult r = env.StepAll({to_best, to_best});
-    told.StepAll({to_best, to_best});
+    const JointStepResult r = env.JointStep({to_best, to_best});
+    told.JointStep({to_best, to_best});
     const Placement expected = ApplyJointDisplacement(s, moves, from);
     for (std::size_t u = 0; u < 2; ++u) {
       EXPECT_EQ(r.info.positions[u].x, expected[u].x) << "UAV " << u << " step " << step;
@@ -205,7 +205,7 @@ TEST(LookAround, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
 
 // env.coverage_refine: the pointer leads to the best column within that many moves (x and y) of
 // the map's best cell's column, at every altitude, or stays on the cell's when none beats it.
-TEST(LookAround, TheRefinedPointerLeadsToTheBestColumnAroundTheMapsBest) {
+TEST(ModelObservations, TheRefinedPointerLeadsToTheBestColumnAroundTheMapsBest) {
   int moved = 0;
   for (const int uavs : {1, 2}) {
     for (std::uint64_t seed = 70; seed < 80; ++seed) {
@@ -224,7 +224,7 @@ TEST(LookAround, TheRefinedPointerLeadsToTheBestColumnAroundTheMapsBest) {
         Scenario r = s;
         r.env.coverage_refine = refine;
         AnalyticEvaluator model(r);
-        LookAround look(r);
+        ModelObservations look(r);
         StepInfo info;
         Placement there = r.InitialPlacement();
         look.Fill(there, 0, 0.0, model, reward_of, info);
@@ -267,8 +267,8 @@ TEST(LookAround, TheRefinedPointerLeadsToTheBestColumnAroundTheMapsBest) {
 }
 
 // With several UAVs the map's links are kept from one map to the next: after the other UAV moved,
-// and after the UEs walked, the map is bit for bit the one a fresh look around works out.
-TEST(LookAround, KeptLinksGiveTheMapOfAFreshLookAroundAfterOthersMoveAndUesWalk) {
+// and after the UEs walked, the map is bit for bit the one fresh ModelObservations work out.
+TEST(ModelObservations, KeptLinksGiveTheMapOfFreshModelObservationsAfterOthersMoveAndUesWalk) {
   Scenario s = GeneratedUrban(2);
   s.env.fidelity = "analytic";
   s.env.observations = {"coverage"};
@@ -278,16 +278,16 @@ TEST(LookAround, KeptLinksGiveTheMapOfAFreshLookAroundAfterOthersMoveAndUesWalk)
     return (*reward)(RewardInputOf(s, i.n_los, i.throughput_mbps, i.demands_met));
   };
   AnalyticEvaluator model(s);
-  LookAround kept(s);
+  ModelObservations kept(s);
   Placement placement = s.InitialPlacement();
-  const auto map_of = [&](LookAround& look) {
+  const auto map_of = [&](ModelObservations& look) {
     StepInfo info;
     look.Fill(placement, 0, 0.0, model, reward_of, info);
     return info.coverage;
   };
   const std::vector<double> first = map_of(kept);
   placement[1].x += s.env.step;  // the other UAV moves: UAV 0's map is worked out again
-  LookAround fresh(s);
+  ModelObservations fresh(s);
   const std::vector<double> after_move = map_of(kept);
   EXPECT_EQ(after_move, map_of(fresh));
   EXPECT_NE(after_move, first) << "the other UAV's move changes nothing: a weak test";
@@ -296,13 +296,13 @@ TEST(LookAround, KeptLinksGiveTheMapOfAFreshLookAroundAfterOthersMoveAndUesWalk)
     ue.x = s.venue.width - ue.x;  // mirrored: the UEs stand elsewhere
   model.SetUePositions(walked);
   placement[1].x -= s.env.step;
-  LookAround fresh_again(s);
+  ModelObservations fresh_again(s);
   EXPECT_EQ(map_of(kept), map_of(fresh_again)) << "links of UEs that have since walked";
 }
 
-// At packet level the look around is the analytic model's too: the same values as at analytic
-// fidelity, while the step's own metrics come from ns-3.
-TEST(LookAround, PacketLevelLooksAroundWithTheAnalyticModel) {
+// At packet level the model observations are the analytic model's too: the same values as at
+// analytic fidelity, while the step's own metrics come from ns-3.
+TEST(ModelObservations, PacketLevelComputesThemWithTheAnalyticModel) {
   Scenario s = LoadScenario(
       std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/b.json",
       {"env.episode_duration=0.5", "env.decision_interval=0.25", "simulation.warmup=0.5",

@@ -1,10 +1,10 @@
 #pragma once
-// The model's look around for the "coverage" and "lookahead" observations
-// (worker/env/gym/general_observation.h): what the analytic model says of positions the UAV whose
-// turn it is could take, the other UAVs where they are. The coverage map is worked out once per
-// placement of the other UAVs (with one UAV, once per env) and reused. With several UAVs, each
-// map after another UAV moved re-scores the same points: their links to the UEs are kept (while
-// the UEs stand still), and only the association and the airtime are worked out again.
+// The model observations, "coverage" and "lookahead" (worker/env/gym/general_observation.h): what
+// the analytic model says of positions the UAV whose turn it is could take, the other UAVs where
+// they are. The coverage map is worked out once per placement of the other UAVs (with one UAV, once
+// per env) and reused. With several UAVs, each map after another UAV moved re-scores the same
+// points: their links to the UEs are kept (while the UEs stand still), and only the association and
+// the airtime are worked out again.
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -17,13 +17,13 @@
 
 namespace rlpos {
 
-class LookAround {
+class ModelObservations {
  public:
   using RewardOf = std::function<double(const StepInfo&)>;
   // Null when the scenario's observations need neither field.
-  static std::unique_ptr<LookAround> For(const Scenario& scenario);
+  static std::unique_ptr<ModelObservations> For(const Scenario& scenario);
 
-  explicit LookAround(const Scenario& scenario);
+  explicit ModelObservations(const Scenario& scenario);
   // Fills info.coverage and info.lookahead (those the observations name) for UAV `active` of
   // `placement`, whose reward is `here`.
   void Fill(const Placement& placement, std::size_t active, double here, AnalyticEvaluator& model,
