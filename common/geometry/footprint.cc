@@ -43,10 +43,10 @@ bool Contains(const Footprint& footprint, const Point2& p) {
 }
 
 // The closed segment meets the closed region iff an end lies in it or the segment meets its
-// boundary: a segment that enters the region crosses or touches an edge on the way.
+// boundary: a segment that enters the region crosses or touches an edge on the way. The edges
+// first: most are apart from the segment at the first comparisons, while the end's test walks
+// every edge in full.
 bool SegmentMeets(const Footprint& footprint, const Point2& a, const Point2& b) {
-  if (Contains(footprint, a))
-    return true;
   auto meets_ring = [&](const Ring& ring) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       if (planar::SegmentsMeet(a, b, ring[i], Next(ring, i)))
@@ -54,21 +54,18 @@ bool SegmentMeets(const Footprint& footprint, const Point2& a, const Point2& b) 
     }
     return false;
   };
-  if (meets_ring(footprint.outer))
+  if (meets_ring(footprint.outer) ||
+      std::any_of(footprint.holes.begin(), footprint.holes.end(), meets_ring))
     return true;
-  return std::any_of(footprint.holes.begin(), footprint.holes.end(), meets_ring);
+  return Contains(footprint, a);
 }
 
-bool SegmentMeetsPrism(const Footprint& footprint, double zmin, double zmax, const Vec3& a,
-                       const Vec3& b) {
-  const Point2 a2{a.x, a.y}, b2{b.x, b.y};
-  if (a.x == b.x && a.y == b.y) {  // vertical (or a point): its column against the prism
-    return std::max(a.z, b.z) >= zmin && std::min(a.z, b.z) <= zmax && Contains(footprint, a2);
-  }
+bool HeightSlice(const Vec3& a, const Vec3& b, double zmin, double zmax, Point2& from, Point2& to) {
+  from = {a.x, a.y};
+  to = {b.x, b.y};
   if (a.z == b.z)  // level: wholly in the height range or wholly out
-    return a.z >= zmin && a.z <= zmax && SegmentMeets(footprint, a2, b2);
-  // The part of the segment between the two heights, as parameters along it; an end keeps its
-  // own coordinates so that no rounding moves it.
+    return a.z >= zmin && a.z <= zmax;
+  // The part between the two heights, as parameters along the segment.
   const double dz = b.z - a.z;
   double t0 = (zmin - a.z) / dz, t1 = (zmax - a.z) / dz;
   if (t0 > t1)
@@ -79,12 +76,24 @@ bool SegmentMeetsPrism(const Footprint& footprint, double zmin, double zmax, con
     return false;
   auto at = [&](double t) -> Point2 {
     if (t == 0.0)
-      return a2;
+      return {a.x, a.y};
     if (t == 1.0)
-      return b2;
+      return {b.x, b.y};
     return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
   };
-  return SegmentMeets(footprint, at(t0), at(t1));
+  from = at(t0);
+  to = at(t1);
+  return true;
+}
+
+bool SegmentMeetsPrism(const Footprint& footprint, double zmin, double zmax, const Vec3& a,
+                       const Vec3& b) {
+  if (a.x == b.x && a.y == b.y) {  // vertical (or a point): its column against the prism
+    return std::max(a.z, b.z) >= zmin && std::min(a.z, b.z) <= zmax &&
+           Contains(footprint, {a.x, a.y});
+  }
+  Point2 from, to;
+  return HeightSlice(a, b, zmin, zmax, from, to) && SegmentMeets(footprint, from, to);
 }
 
 }  // namespace rlpos

@@ -51,8 +51,13 @@ std::string FootprintDefect(const Footprint& footprint);
 bool Contains(const Footprint& footprint, const Point2& p);
 // The closed 2-D segment [a, b] meets the closed region of `footprint`.
 bool SegmentMeets(const Footprint& footprint, const Point2& a, const Point2& b);
+// The part of the 3-D segment [a, b] between heights zmin and zmax, in the plane: [from, to], or
+// false when it has none. An end of [a, b] keeps its own coordinates, so that no rounding moves
+// it. For a segment that is not vertical (a and b differ in x or y).
+bool HeightSlice(const Vec3& a, const Vec3& b, double zmin, double zmax, Point2& from, Point2& to);
 // The closed 3-D segment [a, b] meets the prism footprint x [zmin, zmax]: the segment is cut to
-// the height range, and that part tested in the plane (a vertical segment is a point test).
+// the height range (HeightSlice), and that part tested in the plane (a vertical segment is a
+// point test).
 bool SegmentMeetsPrism(const Footprint& footprint, double zmin, double zmax, const Vec3& a,
                        const Vec3& b);
 

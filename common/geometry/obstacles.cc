@@ -18,8 +18,14 @@ Solid Solid::Prism(Footprint footprint, double zmin, double zmax) {
 Obstacles::Obstacles(std::vector<Solid> solids) {
   std::vector<Bounds2> bounds;
   for (auto& solid : solids) {
-    Entry e{std::move(solid), {}, {}};
+    Entry e{std::move(solid), {}, {}, {}};
     const Box& b = e.solid.box;
+    e.rings = BoundsOf(e.solid.footprint.outer);
+    for (const Ring& hole : e.solid.footprint.holes) {
+      const Bounds2 h = BoundsOf(hole);
+      e.rings = {std::min(e.rings.xmin, h.xmin), std::min(e.rings.ymin, h.ymin),
+                 std::max(e.rings.xmax, h.xmax), std::max(e.rings.ymax, h.ymax)};
+    }
     // Half sizes first, then the centre from the low corner: the order ns-3's Box uses.
     e.half = {0.5 * (b.xmax - b.xmin), 0.5 * (b.ymax - b.ymin), 0.5 * (b.zmax - b.zmin)};
     e.centre = {b.xmin + e.half.x, b.ymin + e.half.y, b.zmin + e.half.z};
@@ -80,7 +86,19 @@ bool Obstacles::Meets(std::size_t i, const Vec3& a, const Vec3& b) const {
       std::max(a.y, b.y) < box.ymin - pad || std::min(a.y, b.y) > box.ymax + pad ||
       std::max(a.z, b.z) < box.zmin || std::min(a.z, b.z) > box.zmax)
     return false;
-  return SegmentMeetsPrism(e.solid.footprint, box.zmin, box.zmax, a, b);
+  if (a.x == b.x && a.y == b.y)
+    return SegmentMeetsPrism(e.solid.footprint, box.zmin, box.zmax, a, b);
+  // The same for the part within the prism's heights, which a segment from the street to the
+  // sky leaves far shorter: apart from the rings' bounds by more than rounding, it meets no edge
+  // and its end lies outside, so the plane's test would say "apart" after walking every edge.
+  Point2 from, to;
+  if (!HeightSlice(a, b, box.zmin, box.zmax, from, to))
+    return false;
+  const Bounds2& r = e.rings;
+  if (std::max(from.x, to.x) < r.xmin - pad || std::min(from.x, to.x) > r.xmax + pad ||
+      std::max(from.y, to.y) < r.ymin - pad || std::min(from.y, to.y) > r.ymax + pad)
+    return false;
+  return SegmentMeets(e.solid.footprint, from, to);
 }
 
 int Obstacles::SolidAt(const Vec3& p) const {
@@ -102,14 +120,9 @@ int Obstacles::FootprintAt(double x, double y) const {
 }
 
 bool Obstacles::Blocked(const Vec3& a, const Vec3& b) const {
-  // One list per thread, reused: no allocation per query once warm.
-  thread_local std::vector<int> candidates;
-  grid_.Along({a.x, a.y}, {b.x, b.y}, candidates);
-  for (const int i : candidates) {
-    if (Meets(static_cast<std::size_t>(i), a, b))
-      return true;
-  }
-  return false;
+  // The cells from a's end, stopping at the first solid met: no list, no allocation.
+  return grid_.AnyAlong({a.x, a.y}, {b.x, b.y},
+                        [&](int i) { return Meets(static_cast<std::size_t>(i), a, b); });
 }
 
 bool Obstacles::Los(const Vec3& a, const Vec3& b) const {

@@ -57,6 +57,8 @@ class Obstacles {
     Solid solid;
     // A box as ns-3's segment test wants it: its centre and half sizes, computed once.
     Vec3 centre, half;
+    // A prism: the bounds of all its rings (holes too), for the shortcut of Meets.
+    Bounds2 rings;
   };
   static bool BoxMeets(const Entry& e, const Vec3& a, const Vec3& b);
   std::vector<Entry> solids_;

@@ -7,9 +7,10 @@
 namespace rlpos {
 namespace planar {
 
+// The box first: it rules out most pairs before the products are formed.
 bool OnSegment(const Point2& p, const Point2& a, const Point2& b) {
-  return Orient(a, b, p) == 0 && p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x) &&
-         p.y >= std::min(a.y, b.y) && p.y <= std::max(a.y, b.y);
+  return p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x) && p.y >= std::min(a.y, b.y) &&
+         p.y <= std::max(a.y, b.y) && Orient(a, b, p) == 0;
 }
 
 bool SegmentsMeet(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {

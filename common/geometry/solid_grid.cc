@@ -21,6 +21,7 @@ constexpr double kMaxCells = 4.0 * 1024 * 1024;
 SolidGrid::SolidGrid(const std::vector<Bounds2>& bounds) {
   if (bounds.empty())
     return;
+  solids_ = bounds.size();
   Bounds2 all = bounds[0];
   for (const auto& b : bounds) {
     all.xmin = std::min(all.xmin, b.xmin);
@@ -87,44 +88,63 @@ std::pair<const int*, const int*> SolidGrid::At(double x, double y) const {
   return {items_.data() + starts_[cell], items_.data() + starts_[cell + 1]};
 }
 
-void SolidGrid::AppendCell(std::size_t row, std::size_t column, std::vector<int>& out) const {
-  const std::size_t cell = row * nx_ + column;
-  out.insert(out.end(), items_.begin() + static_cast<std::ptrdiff_t>(starts_[cell]),
-             items_.begin() + static_cast<std::ptrdiff_t>(starts_[cell + 1]));
+SolidGrid::Met& SolidGrid::Met::ForThisThread() {
+  thread_local Met met;
+  return met;
 }
 
-// Row by row: the x range the segment spans within the row's y range (both widened by the pad),
-// and the cells of that range.
+void SolidGrid::Met::Begin(std::size_t solids) {
+  if (stamps_.size() < solids)
+    stamps_.resize(solids, 0);
+  if (++now_ == 0) {  // wrapped round: old stamps could pass for new ones
+    std::fill(stamps_.begin(), stamps_.end(), 0);
+    now_ = 1;
+  }
+}
+
+bool SolidGrid::FirstRow(const Point2& a, const Point2& b, Rows& rows) const {
+  if (nx_ == 0)
+    return false;
+  rows.pad = std::max(
+      pad_, PadFor(std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)})));
+  const double ylo = std::min(a.y, b.y) - rows.pad, yhi = std::max(a.y, b.y) + rows.pad;
+  if (!(yhi >= y0_ && ylo <= y1_ && std::max(a.x, b.x) + rows.pad >= x0_ &&
+        std::min(a.x, b.x) - rows.pad <= x1_))
+    return false;
+  rows.up = a.y <= b.y;
+  rows.row = rows.up ? Row(ylo) : Row(yhi);
+  rows.last = rows.up ? Row(yhi) : Row(ylo);
+  return true;
+}
+
+// The x range the segment spans within the row's y range (both widened by the pad), and the
+// cells of that range, which lie next to each other in items_.
+bool SolidGrid::RowItems(const Point2& a, const Point2& b, double pad, std::size_t r,
+                         const int*& begin, const int*& end) const {
+  double xlo = std::min(a.x, b.x), xhi = std::max(a.x, b.x);
+  if (a.y != b.y) {
+    const double row_lo = y0_ + static_cast<double>(r) * cell_h_ - pad;
+    const double row_hi = y0_ + static_cast<double>(r + 1) * cell_h_ + pad;
+    const double t0 = std::clamp((row_lo - a.y) / (b.y - a.y), 0.0, 1.0);
+    const double t1 = std::clamp((row_hi - a.y) / (b.y - a.y), 0.0, 1.0);
+    const double x_t0 = a.x + t0 * (b.x - a.x), x_t1 = a.x + t1 * (b.x - a.x);
+    xlo = std::min(x_t0, x_t1);
+    xhi = std::max(x_t0, x_t1);
+  }
+  if (xhi + pad < x0_ || xlo - pad > x1_)
+    return false;
+  const std::size_t c0 = Column(xlo - pad), c1 = Column(xhi + pad);
+  begin = items_.data() + starts_[r * nx_ + c0];
+  end = items_.data() + starts_[r * nx_ + c1 + 1];
+  return true;
+}
+
 void SolidGrid::Along(const Point2& a, const Point2& b, std::vector<int>& out) const {
   out.clear();
-  if (nx_ == 0)
-    return;
-  const double pad = std::max(
-      pad_, PadFor(std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)})));
-  const double ylo = std::min(a.y, b.y) - pad, yhi = std::max(a.y, b.y) + pad;
-  if (!(yhi >= y0_ && ylo <= y1_ && std::max(a.x, b.x) + pad >= x0_ &&
-        std::min(a.x, b.x) - pad <= x1_))
-    return;
-  const std::size_t r0 = Row(ylo), r1 = Row(yhi);
-  for (std::size_t r = r0; r <= r1; ++r) {
-    double xlo = std::min(a.x, b.x), xhi = std::max(a.x, b.x);
-    if (a.y != b.y) {
-      const double row_lo = y0_ + static_cast<double>(r) * cell_h_ - pad;
-      const double row_hi = y0_ + static_cast<double>(r + 1) * cell_h_ + pad;
-      const double t0 = std::clamp((row_lo - a.y) / (b.y - a.y), 0.0, 1.0);
-      const double t1 = std::clamp((row_hi - a.y) / (b.y - a.y), 0.0, 1.0);
-      const double x_t0 = a.x + t0 * (b.x - a.x), x_t1 = a.x + t1 * (b.x - a.x);
-      xlo = std::min(x_t0, x_t1);
-      xhi = std::max(x_t0, x_t1);
-    }
-    if (xhi + pad < x0_ || xlo - pad > x1_)
-      continue;
-    const std::size_t c0 = Column(xlo - pad), c1 = Column(xhi + pad);
-    for (std::size_t c = c0; c <= c1; ++c)
-      AppendCell(r, c, out);
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  AnyAlong(a, b, [&](int i) {
+    out.push_back(i);
+    return false;
+  });
 }
 
 }  // namespace rlpos
