@@ -37,6 +37,7 @@
 #include "common/config/config_error.h"
 #include "common/scenario_import/place_import.h"
 #include "tests/fuzz/fuzz_input.h"
+#include "tests/fuzz/pbf_blocks.h"
 #include "tests/fuzz/place_inputs.h"
 
 namespace rlpos {
@@ -45,7 +46,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using namespace rlpos::testing;  // FuzzInput and the input makers (place_inputs.h)
+using namespace rlpos::testing;  // FuzzInput and the input makers (place_inputs.h, pbf_blocks.h)
 
 // Inputs per test: some 13 s in all in a RelWithDebInfo build (an import takes a millisecond or
 // two, one of the 148 KB extract some 8 ms), some 85 s with the sanitizers (libosmium starts
