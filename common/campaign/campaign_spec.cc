@@ -445,6 +445,29 @@ std::vector<std::string> EvalOverrides(const CampaignEvalSection& eval) {
   return out;
 }
 
+json StatedScenarioDocument(const json& entry) {
+  ObjectReader reader(entry, "");
+  const json* document = reader.Child("document");
+  if (!document || !document->is_object()) {
+    throw ConfigError(reader.PathOf("document"),
+                      "expected an object, got " + (document ? TypeName(*document) : "nothing"));
+  }
+  const json* set = reader.Child("set");
+  if (!set || !set->is_array()) {
+    throw ConfigError(reader.PathOf("set"),
+                      "expected an array, got " + (set ? TypeName(*set) : "nothing"));
+  }
+  std::vector<std::string> overrides;
+  for (std::size_t i = 0; i < set->size(); ++i) {
+    if (!(*set)[i].is_string())
+      throw ConfigError(JoinPath(reader.PathOf("set"), i), "expected a string");
+    overrides.push_back((*set)[i].get<std::string>());
+  }
+  json stated = *document;
+  ApplyOverrides(stated, overrides);
+  return stated;
+}
+
 json ToJson(const CampaignSpec& spec) {
   json scenarios = json::array();
   for (const auto& s : spec.scenarios) {

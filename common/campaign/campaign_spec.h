@@ -135,6 +135,11 @@ std::vector<std::string> EvalOverrides(const CampaignEvalSection& eval);
 // scenario's document included, no absolute path (so the campaign id does not depend on where
 // the repository is checked out). This is what the campaign id hashes and the store keeps.
 nlohmann::json ToJson(const CampaignSpec& spec);
+// The document a scenario entry of ToJson's "scenarios" ({"file", "set", "document"}) states: its
+// "document" with its "set" applied, what the entry's jobs run. An entry read back from a store
+// may come from another build: throws ConfigError, at the entry's key, when "document" is not an
+// object or "set" not a list of strings, and as ApplyOverrides does.
+nlohmann::json StatedScenarioDocument(const nlohmann::json& entry);
 // ToJson(spec).dump(), the canonical text, without the tree's transient cost (below).
 std::string ToJsonText(const CampaignSpec& spec);
 

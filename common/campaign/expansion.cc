@@ -212,108 +212,146 @@ std::size_t CampaignPlan::JobCount() const {
   return count;
 }
 
-void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
-  const CampaignSpec& spec = parsed;
-  const std::string build = ThisBuild().rlpos_version;
-  std::string scenario_sha256;  // of the scenario being expanded
-  const auto add = [&](Job job) {
-    job.id = JobId(id, job.key);
-    job.content_base = JobContentBase(job.params, scenario_sha256, build);
-    emit(std::move(job));
-  };
+namespace {
 
-  for (const auto& s : spec.scenarios) {
-    const std::string& name = s.scenario.name;
-    scenario_sha256 = Sha256Hex(s.document.dump());
-    std::vector<EvalSource> sources;
+// One scenario's jobs in ForEachJob's order, each handed to `add` (which gives it its id and
+// content): its position jobs and train jobs, the evals of the positions they give, its track
+// runs.
+class ScenarioJobMaker {
+ public:
+  ScenarioJobMaker(const CampaignSpec& spec, const CampaignScenario& s,
+                   const std::string& campaign_id, const std::function<void(Job)>& add)
+      : spec_(spec), s_(s), name_(s.scenario.name), campaign_id_(campaign_id), add_(add) {}
 
+  void MakeAll() {
+    MakePositionJobs();
+    if (NeedsTraining(spec_, s_))
+      MakeTrainJobs();
+    MakeEvalJobs();
+    MakeTrackJobs();
+  }
+
+ private:
+  // A position job, whose placement the label's evals take.
+  void AddPosition(const std::string& label, JobParams params) {
+    Job job;
+    job.key = "position/" + name_ + "/" + label;
+    job.label = label;
+    job.params = std::move(params);
+    sources_.push_back({label, job.key, std::nullopt, {}});
+    add_(std::move(job));
+  }
+
+  void MakePositionJobs() {
     for (std::string_view placing : kPlacingPositioners) {
       const std::string positioner(placing);
-      if (!spec.Uses(positioner))
+      if (!spec_.Uses(positioner))
         continue;
-      Job job;
-      job.key = "position/" + name + "/" + positioner;
-      job.label = positioner;
-      job.params = ScenarioParams(spec, s, JobKind::kPosition);
-      job.params.positioner = positioner;
-      sources.push_back({positioner, job.key, std::nullopt, {}});
-      add(std::move(job));
+      JobParams params = ScenarioParams(spec_, s_, JobKind::kPosition);
+      params.positioner = positioner;
+      AddPosition(positioner, std::move(params));
     }
-
     // A named policy places the UAVs as a position job: `position --positioner rl --policy`.
-    for (const CampaignPolicy& policy : spec.policies) {
+    for (const CampaignPolicy& policy : spec_.policies) {
       if (!policy.placed)
         continue;
-      Job job;
-      job.label = PolicyLabel(policy.name);
-      job.key = "position/" + name + "/" + job.label;
-      job.params = ScenarioParams(spec, s, JobKind::kPosition);
-      job.params.positioner = "rl";
-      job.params.policy_sha256 = policy.bundle.sha256;
-      sources.push_back({job.label, job.key, std::nullopt, {}});
-      add(std::move(job));
+      JobParams params = ScenarioParams(spec_, s_, JobKind::kPosition);
+      params.positioner = "rl";
+      params.policy_sha256 = policy.bundle.sha256;
+      AddPosition(PolicyLabel(policy.name), std::move(params));
     }
+  }
 
-    if (NeedsTraining(spec, s)) {
-      const OffsetGeometry geometry = OffsetGeometryOf(s.scenario);
-      for (const std::string& algorithm : TrainAlgorithms(spec)) {
-        for (std::size_t i = 0; i < spec.train.seeds.size(); ++i) {
-          const std::uint64_t seed = spec.train.seeds[i];
-          Job job;
-          job.key = "train/" + name + "/" + (algorithm.empty() ? "" : algorithm + "/") + "seed" +
-                    std::to_string(seed);
-          job.label = EvalLabel(0, algorithm, i, seed);
-          job.params = TrainParams(spec, s, algorithm, seed);
-          if (spec.Uses("rl"))
-            sources.push_back({EvalLabel(0, algorithm, i, seed), job.key, seed, {}});
-          if (UsesOffsets(spec, s)) {
-            for (int k = 1; k <= kOffsetCount; ++k) {
-              PositionRule rule;
-              rule.offset = k;
-              rule.geometry = geometry;
-              sources.push_back({EvalLabel(k, algorithm, i, seed), job.key, seed, rule});
-            }
-          }
-          add(std::move(job));
-        }
+  void MakeTrainJobs() {
+    const OffsetGeometry geometry = OffsetGeometryOf(s_.scenario);
+    for (const std::string& algorithm : TrainAlgorithms(spec_)) {
+      for (std::size_t i = 0; i < spec_.train.seeds.size(); ++i)
+        MakeTrainJob(algorithm, i, geometry);
+    }
+  }
+
+  // The train job of the seed at `seed_index`, whose policy the rl and offset evals take.
+  void MakeTrainJob(const std::string& algorithm, std::size_t seed_index,
+                    const OffsetGeometry& geometry) {
+    const std::uint64_t seed = spec_.train.seeds[seed_index];
+    Job job;
+    job.key = "train/" + name_ + "/" + (algorithm.empty() ? "" : algorithm + "/") + "seed" +
+              std::to_string(seed);
+    job.label = EvalLabel(0, algorithm, seed_index, seed);
+    job.params = TrainParams(spec_, s_, algorithm, seed);
+    if (spec_.Uses("rl"))
+      sources_.push_back({EvalLabel(0, algorithm, seed_index, seed), job.key, seed, {}});
+    if (UsesOffsets(spec_, s_)) {
+      for (int k = 1; k <= kOffsetCount; ++k) {
+        PositionRule rule;
+        rule.offset = k;
+        rule.geometry = geometry;
+        sources_.push_back({EvalLabel(k, algorithm, seed_index, seed), job.key, seed, rule});
       }
     }
+    add_(std::move(job));
+  }
 
-    for (const std::uint64_t run : spec.rng_runs) {
-      for (const auto& source : sources) {
+  void MakeEvalJobs() {
+    for (const std::uint64_t run : spec_.rng_runs) {
+      for (const auto& source : sources_) {
         Job job;
-        job.key = "eval/" + name + "/" + source.label + "/run" + std::to_string(run);
+        job.key = "eval/" + name_ + "/" + source.label + "/run" + std::to_string(run);
         job.label = source.label;
-        job.depends_on = JobId(id, source.depends_on_key);
+        job.depends_on = JobId(campaign_id_, source.depends_on_key);
         job.position_rule = source.rule;
-        job.params = EvalParams(spec, s, run);
+        job.params = EvalParams(spec_, s_, run);
         job.params.train_seed = source.train_seed;
-        add(std::move(job));
+        add_(std::move(job));
       }
     }
+  }
 
-    // Track runs depend on no job: each decides its own placements as the UEs walk.
-    for (const std::string& positioner : spec.track.positioners) {
-      for (const std::uint64_t run : spec.rng_runs) {
-        Job job;
-        job.key = "track/" + name + "/" + positioner + "/run" + std::to_string(run);
-        job.label = positioner;
-        job.params = TrackParams(spec, s, positioner, run);
-        add(std::move(job));
-      }
+  // Track runs depend on no job: each decides its own placements as the UEs walk.
+  void AddTrack(const std::string& label, JobParams params, std::uint64_t run) {
+    Job job;
+    job.key = "track/" + name_ + "/" + label + "/run" + std::to_string(run);
+    job.label = label;
+    job.params = std::move(params);
+    add_(std::move(job));
+  }
+
+  void MakeTrackJobs() {
+    for (const std::string& positioner : spec_.track.positioners) {
+      for (const std::uint64_t run : spec_.rng_runs)
+        AddTrack(positioner, TrackParams(spec_, s_, positioner, run), run);
     }
-    for (const CampaignPolicy& policy : spec.policies) {
+    for (const CampaignPolicy& policy : spec_.policies) {
       if (!policy.tracked)
         continue;
-      for (const std::uint64_t run : spec.rng_runs) {
-        Job job;
-        job.label = PolicyLabel(policy.name);
-        job.key = "track/" + name + "/" + job.label + "/run" + std::to_string(run);
-        job.params = TrackParams(spec, s, "rl", run);
-        job.params.policy_sha256 = policy.bundle.sha256;
-        add(std::move(job));
+      for (const std::uint64_t run : spec_.rng_runs) {
+        JobParams params = TrackParams(spec_, s_, "rl", run);
+        params.policy_sha256 = policy.bundle.sha256;
+        AddTrack(PolicyLabel(policy.name), std::move(params), run);
       }
     }
+  }
+
+  const CampaignSpec& spec_;
+  const CampaignScenario& s_;
+  const std::string& name_;
+  const std::string& campaign_id_;
+  const std::function<void(Job)>& add_;
+  std::vector<EvalSource> sources_;  // the eval labels of the jobs made so far
+};
+
+}  // namespace
+
+void CampaignPlan::ForEachJob(const std::function<void(Job&&)>& emit) const {
+  const std::string build = ThisBuild().rlpos_version;
+  for (const auto& s : parsed.scenarios) {
+    const std::string scenario_sha256 = Sha256Hex(s.document.dump());
+    const std::function<void(Job)> add = [&](Job job) {
+      job.id = JobId(id, job.key);
+      job.content_base = JobContentBase(job.params, scenario_sha256, build);
+      emit(std::move(job));
+    };
+    ScenarioJobMaker(parsed, s, id, add).MakeAll();
   }
 }
 

@@ -59,7 +59,8 @@ template <typename Spec>
 SettingsSection DescribeSettings(const SettingsTable<Spec>& table,
                                  const NamedDefaults<Spec>& defaults) {
   SettingsSection out{table.section, table.path, table.summary, {}};
-  std::string prefix = std::string(table.path).substr(1);
+  // "/env/reward" -> "env.reward."; the top level's "" -> "" (its keys stand alone).
+  std::string prefix = *table.path == '\0' ? "" : std::string(table.path).substr(1) + ".";
   for (auto& c : prefix)
     c = (c == '/') ? '.' : c;
   std::vector<std::pair<std::string, nlohmann::json>> values;
@@ -79,7 +80,7 @@ SettingsSection DescribeSettings(const SettingsTable<Spec>& table,
     std::vector<std::pair<std::string, std::string>> texts;
     for (const auto& [name, json] : values)
       texts.emplace_back(name, json.at(s.key).dump());
-    SettingRow row{prefix + "." + s.key,
+    SettingRow row{prefix + s.key,
                    "",
                    texts.front().second,
                    s.required ? "required" : DefaultText(texts, s.unit),

@@ -14,6 +14,7 @@
 #include "common/scenario/default_sets.h"
 #include "common/scenario/names.h"
 #include "common/scenario/scenario_checks.h"
+#include "common/scenario/scenario_settings.h"
 
 namespace rlpos {
 namespace {
@@ -207,9 +208,8 @@ void ApplyOverrides(json& document, const std::vector<std::string>& overrides) {
 
 Scenario ParseScenario(const json& document) {
   ObjectReader r(document, "");
-  Scenario s;
-  s.name = r.String("name", "scenario");
-  s.description = r.String("description", "");
+  Scenario s = ScenarioDefaults();
+  ReadSettings(r, ScenarioSettings(), s);
   s.venue = ReadSection(r.Child("venue"), VenueSettings());
   s.wifi = ReadSection(r.Child("wifi"), WifiSettings());
   const PhyProfile phy{s.wifi.standard, s.wifi.width_mhz, s.wifi.guard_interval_ns,
@@ -251,11 +251,7 @@ Scenario ParseScenario(const json& document) {
     s.uavs.push_back(ReadUav(uav ? *uav : json::object(), s.venue, "/uav", "uav"));
   }
   s.traffic = ReadSection(r.Child("traffic"), TrafficSettings());
-  s.propagation = DefaultPropagation();
-  if (const json* v = r.Child("propagation"))
-    s.propagation = ReadObjectSpec(*v, "/propagation");
   s.simulation = ReadSection(r.Child("simulation"), SimulationSettings());
-  s.log_level = r.String("log_level", s.log_level, {"error", "warning", "info", "debug"});
   const json* env = r.Child("env");
   s.env = ReadEnv(env ? *env : json::object());
   // Without an "agent" section too: the defaults depend on the number of UAVs.
@@ -301,18 +297,15 @@ json UavsJson(const Scenario& s) {
 json ToJson(const Scenario& s) {
   json env = SettingsJson(s.env, EnvSettings());
   env["reward"] = SettingsJson(s.env.reward, RewardSettings());
-  json document = {{"name", s.name},
-                   {"description", s.description},
-                   {"venue", SettingsJson(s.venue, VenueSettings())},
+  json document = {{"venue", SettingsJson(s.venue, VenueSettings())},
                    {"buildings", ListJson(s.buildings, BuildingSettings())},
                    {"ues", ListJson(s.ues, UeSettings())},
                    {"wifi", SettingsJson(s.wifi, WifiSettings())},
                    {"traffic", SettingsJson(s.traffic, TrafficSettings())},
-                   {"propagation", ObjectSpecJson(s.propagation)},
                    {"simulation", SettingsJson(s.simulation, SimulationSettings())},
-                   {"log_level", s.log_level},
                    {"env", env},
                    {"agent", AgentJson(s.agent)}};
+  WriteSettings(s, ScenarioSettings(), document);
   const json uavs = UavsJson(s);
   if (s.uavs_listed) {
     document["uavs"] = uavs;

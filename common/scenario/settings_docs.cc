@@ -7,6 +7,7 @@
 #include "common/scenario/default_sets.h"
 #include "common/scenario/scenario.h"
 #include "common/scenario/scenario_parser.h"
+#include "common/scenario/scenario_settings.h"
 
 namespace rlpos {
 namespace {
@@ -19,6 +20,15 @@ SettingsSection DescribeShared(const std::vector<std::string>& algorithms) {
   return DescribeSettings(AgentCommonHyperparameters(), defaults);
 }
 
+// The top level: its settings (path "", so its keys take no prefix), then its lists.
+SettingsSection DescribeTopLevel() {
+  const SettingsTable<Scenario>& table = ScenarioSettings();
+  SettingsSection out = DescribeSettings(table, {{table.section, ScenarioDefaults()}});
+  for (auto& row : ScenarioListRows())
+    out.rows.push_back(std::move(row));
+  return out;
+}
+
 }  // namespace
 
 std::vector<SettingsSection> AllHyperparameterSections() {
@@ -27,14 +37,21 @@ std::vector<SettingsSection> AllHyperparameterSections() {
 }
 
 std::vector<SettingsSection> AllSettingsSections() {
-  std::vector<SettingsSection> out{
-      DescribeSettings(VenueSettings()),       DescribeSettings(BuildingSettings()),
-      DescribeSettings(UeSettings()),          DescribeSettings(UavSettings()),
-      DescribeSettings(RandomWalkSettings()),  DescribeSettings(RandomWaypointSettings()),
-      DescribeSettings(GaussMarkovSettings()), DescribeSettings(CrowdSettings()),
-      DescribeSettings(WifiSettings()),        DescribeSettings(TrafficSettings()),
-      DescribeSettings(SimulationSettings()),  DescribeSettings(EnvSettings()),
-      DescribeSettings(RewardSettings()),      DescribeSettings(AgentNetworkSettings())};
+  std::vector<SettingsSection> out{DescribeTopLevel(),
+                                   DescribeSettings(VenueSettings()),
+                                   DescribeSettings(BuildingSettings()),
+                                   DescribeSettings(UeSettings()),
+                                   DescribeSettings(UavSettings()),
+                                   DescribeSettings(RandomWalkSettings()),
+                                   DescribeSettings(RandomWaypointSettings()),
+                                   DescribeSettings(GaussMarkovSettings()),
+                                   DescribeSettings(CrowdSettings()),
+                                   DescribeSettings(WifiSettings()),
+                                   DescribeSettings(TrafficSettings()),
+                                   DescribeSettings(SimulationSettings()),
+                                   DescribeSettings(EnvSettings()),
+                                   DescribeSettings(RewardSettings()),
+                                   DescribeSettings(AgentNetworkSettings())};
   for (auto& section : AllHyperparameterSections())
     out.push_back(std::move(section));
   return out;

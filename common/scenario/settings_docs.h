@@ -9,8 +9,9 @@
 
 namespace rlpos {
 
-// The scenario's sections (venue, building, ue, uav, each mobility model's, wifi, traffic,
-// simulation, env, env.reward), then the agent's (AllHyperparameterSections).
+// The scenario's sections (its top level, "scenario"; venue, building, ue, uav, each mobility
+// model's, wifi, traffic, simulation, env, env.reward), then the agent's
+// (AllHyperparameterSections).
 std::vector<SettingsSection> AllSettingsSections();
 
 // The section named `section` ("wifi", "env.reward", "ppo", ...); throws std::invalid_argument

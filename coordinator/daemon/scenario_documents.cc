@@ -2,8 +2,7 @@
 
 #include <stdexcept>
 
-#include "common/config/config_error.h"
-#include "common/scenario/scenario_parser.h"
+#include "common/campaign/campaign_spec.h"
 
 namespace rlpos {
 
@@ -13,11 +12,9 @@ std::map<std::string, std::string> ScenarioDocumentsByName(const nlohmann::json&
     return out;
   for (const auto& entry : campaign_spec["scenarios"]) {
     try {
-      nlohmann::json document = entry.at("document");
-      nlohmann::json named = document;
-      ApplyOverrides(named, entry.at("set").get<std::vector<std::string>>());
-      // The parser's default name when the document has none.
-      out[named.value("name", std::string("scenario"))] = document.dump();
+      const nlohmann::json stated = StatedScenarioDocument(entry);
+      // The parser's default name when the document has none; the document before its "set".
+      out[stated.value("name", std::string("scenario"))] = entry.at("document").dump();
     } catch (const std::exception&) {
       // The worker then refuses the job (no valid scenario): it fails with a clear error.
     }

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/campaign/campaign_spec.h"
 #include "common/files/atomic_file.h"
 #include "common/hash/sha256.h"
 #include "common/process/child_process.h"
@@ -30,8 +31,7 @@ std::vector<std::pair<std::string, nlohmann::json>> CampaignScenarios(ResultsRea
     return out;
   for (const auto& entry : (*part)["scenarios"]) {
     try {
-      nlohmann::json document = entry.at("document");
-      ApplyOverrides(document, entry.value("set", std::vector<std::string>()));
+      const nlohmann::json document = StatedScenarioDocument(entry);
       out.emplace_back(document.value("name", std::string("scenario")), document);
     } catch (const std::exception&) {
       // A document that does not parse ran no job either: it has no map.

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "common/campaign/campaign_spec.h"
 #include "common/config/config_error.h"
 #include "common/scenario/geometry.h"
 #include "common/scenario/scenario_parser.h"
@@ -96,8 +97,7 @@ std::optional<json> ScenarioMapsJson(ResultsReader& store, const std::string& ca
   for (const auto& entry : part->value("scenarios", json::array())) {
     const std::string file = entry.value("file", "");
     try {
-      json document = entry.at("document");
-      ApplyOverrides(document, entry.value("set", std::vector<std::string>{}));
+      const json document = StatedScenarioDocument(entry);
       json map = GeometryJson(ParseScenario(document));
       map["file"] = file;
       const std::string name = map["name"];

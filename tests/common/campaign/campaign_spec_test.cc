@@ -395,5 +395,41 @@ TEST(CampaignSpec, MissingCampaignFileIsAConfigError) {
   EXPECT_THROW(ReadCampaignFile("/nonexistent/campaign.json"), ConfigError);
 }
 
+// What callers read back from a stored campaign: each entry's document with its "set" applied.
+TEST(CampaignSpec, StatedScenarioDocumentAppliesTheEntrysSet) {
+  const json spec = ToJson(ReadCampaignFile(SourcePath("campaigns/mini.json")));
+  for (const json& entry : spec.at("scenarios")) {
+    json stated = entry.at("document");
+    ApplyOverrides(stated, entry.at("set").get<std::vector<std::string>>());
+    EXPECT_EQ(StatedScenarioDocument(entry), stated);
+  }
+  const json entry = {
+      {"file", "x.json"}, {"set", {"name=Y", "/wifi/mode=adhoc"}}, {"document", {{"name", "X"}}}};
+  EXPECT_EQ(StatedScenarioDocument(entry), (json{{"name", "Y"}, {"wifi", {{"mode", "adhoc"}}}}));
+}
+
+TEST(CampaignSpec, StatedScenarioDocumentRefusesAMalformedEntry) {
+  const auto error = [](const json& entry) {
+    try {
+      StatedScenarioDocument(entry);
+    } catch (const ConfigError& e) {
+      return e.describe();
+    }
+    return std::string();
+  };
+  const json document = {{"name", "X"}};
+  EXPECT_EQ(error("x.json"), "/: expected an object, got a string");
+  EXPECT_EQ(error({{"set", json::array()}}), "/document: expected an object, got nothing");
+  EXPECT_EQ(error({{"set", json::array()}, {"document", json::array()}}),
+            "/document: expected an object, got an array");
+  EXPECT_EQ(error({{"document", document}}), "/set: expected an array, got nothing");
+  EXPECT_EQ(error({{"document", document}, {"set", "name=Y"}}),
+            "/set: expected an array, got a string");
+  EXPECT_EQ(error({{"document", document}, {"set", {"name=Y", 2}}}), "/set/1: expected a string");
+  EXPECT_EQ(error({{"document", document}, {"set", {"no-equals-sign"}}}),
+            "--set no-equals-sign: expected path=value");
+  EXPECT_EQ(error({{"document", document}, {"set", json::array()}}), "");
+}
+
 }  // namespace
 }  // namespace rlpos

@@ -1,9 +1,11 @@
-// The scenario sections' declarations (venue, wifi, traffic, simulation, env, env.reward) drive
-// the parser: every declared key is accepted through --set and comes back from ToJson, a value
-// beyond its range or outside its choices is refused naming its JSON path, and an unknown key
-// suggests a declared one. `describe settings` lists every section, the agents' included.
+// The scenario sections' declarations (the top level's, venue, wifi, traffic, simulation, env,
+// env.reward) drive the parser: every declared key is accepted through --set and comes back from
+// ToJson, a value beyond its range or outside its choices is refused naming its JSON path, and an
+// unknown key suggests a declared one. `describe settings` lists every section, the agents'
+// included, and every key a shipped scenario holds.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -54,6 +56,9 @@ std::vector<SettingsSection> SettableSections() {
 // applies (widths the standard has, a warm-up shorter than the run...), the table below.
 json OtherValue(const SettingRow& row) {
   static const std::map<std::string, json> kAcceptable = {
+      {"name", "another"},
+      {"description", "another scenario"},
+      {"propagation", {{"type", "ns3::FriisPropagationLossModel"}, {"attributes", json::object()}}},
       {"wifi.standard", "802.11ax"},
       {"wifi.width", 80},
       {"wifi.guard_interval", 400},
@@ -120,10 +125,10 @@ TEST(Settings, EveryScenarioSectionIsDeclared) {
   std::set<std::string> names;
   for (const auto& section : ScenarioSections())
     names.insert(section.section);
-  EXPECT_EQ(names, (std::set<std::string>{"venue", "building", "ue", "uav", "mobility.random_walk",
-                                          "mobility.random_waypoint", "mobility.gauss_markov",
-                                          "mobility.crowd", "wifi", "traffic", "simulation", "env",
-                                          "env.reward", "agent.network"}));
+  EXPECT_EQ(names, (std::set<std::string>{
+                       "scenario", "venue", "building", "ue", "uav", "mobility.random_walk",
+                       "mobility.random_waypoint", "mobility.gauss_markov", "mobility.crowd",
+                       "wifi", "traffic", "simulation", "env", "env.reward", "agent.network"}));
 }
 
 TEST(Settings, EveryDeclaredOneIsAcceptedAndWrittenBack) {
@@ -160,6 +165,8 @@ TEST(Settings, AChoiceOutsideTheListNamesTheChoices) {
   EXPECT_EQ(ErrorOf(ShippedScenarioDocument("b"), {"wifi.standard=\"802.11g\""}),
             "/wifi/standard: unknown value \"802.11g\" (one of: 802.11n, 802.11ac, 802.11ax); did "
             "you mean \"802.11n\"?");
+  EXPECT_EQ(ErrorOf(ShippedScenarioDocument("b"), {"log_level=verbose"}),
+            "/log_level: unknown value \"verbose\" (one of: error, warning, info, debug)");
 }
 
 TEST(Settings, UnknownKeysSuggestADeclaredOne) {
@@ -220,11 +227,88 @@ TEST(Settings, SectionsByName) {
   EXPECT_THROW(SettingsSectionNamed("wlan"), std::invalid_argument);
   const json all = SettingsSectionsJson(AllSettingsSections());
   ASSERT_TRUE(all.is_array());
-  const json wifi = all.at(8);
+  EXPECT_EQ(all.at(0).at("section"), "scenario");
+  EXPECT_EQ(all.at(0).at("path"), "");
+  EXPECT_EQ(all.at(0).at("settings").at(3).at("key"), "log_level");
+  EXPECT_EQ(all.at(0).at("settings").at(3).at("default"), "warning");
+  const json wifi = all.at(9);
   EXPECT_EQ(wifi.at("section"), "wifi");
   EXPECT_EQ(wifi.at("settings").at(5).at("key"), "wifi.tx_power");
   EXPECT_EQ(wifi.at("settings").at(5).at("default"), 20.0);
   EXPECT_EQ(wifi.at("settings").at(5).at("unit"), "dBm");
+}
+
+// The documents shipped to be run: campaigns/scenarios/*.json and each policy folder's
+// scenario.json.
+std::vector<std::filesystem::path> ShippedScenarioFiles() {
+  std::vector<std::filesystem::path> out;
+  const std::filesystem::path source(RLPOS_SOURCE_DIR);
+  for (const auto& file : std::filesystem::directory_iterator(source / "campaigns/scenarios")) {
+    if (file.path().extension() == ".json")
+      out.push_back(file.path());
+  }
+  for (const auto& folder : std::filesystem::directory_iterator(source / "policies")) {
+    if (std::filesystem::exists(folder.path() / "scenario.json"))
+      out.push_back(folder.path() / "scenario.json");
+  }
+  return out;
+}
+
+// describe settings --json's keys, each with its type.
+using Listed = std::map<std::string, std::string>;
+
+// Whether `key` is a listed setting, holds some (a section, a list's element, "env.reward"), or
+// is one its parent's shape names (the "model" of a UE's {"model", ...} mobility).
+bool IsListed(const Listed& listed, const std::string& key) {
+  const auto next = listed.lower_bound(key);
+  if (next != listed.end() && (next->first == key || next->first.rfind(key + ".", 0) == 0))
+    return true;
+  const auto dot = key.rfind('.');
+  const auto parent = dot == std::string::npos ? listed.end() : listed.find(key.substr(0, dot));
+  return parent != listed.end() &&
+         parent->second.find('"' + key.substr(dot + 1) + '"') != std::string::npos;
+}
+
+// The dotted keys of `value` below `prefix` as describe settings names them (a list's elements
+// "<i>", those of "uavs" the uav table's), down to the listed settings: a setting's own value
+// ([x, y, z], an ns-3 object's attributes) has no keys of the docs.
+void CollectKeys(const json& value, const std::string& prefix, const Listed& listed,
+                 std::set<std::string>& out) {
+  if (value.is_array()) {
+    const std::string element = prefix == "uavs" ? "uav" : prefix + ".<i>";
+    for (const json& item : value)
+      CollectKeys(item, element, listed, out);
+    return;
+  }
+  if (!value.is_object())
+    return;
+  for (const auto& [name, child] : value.items()) {
+    const std::string key = prefix.empty() ? name : prefix + "." + name;
+    out.insert(key);
+    // Descends only where the key holds listed ones (a mobility's keys under its row).
+    const auto next = listed.upper_bound(key);
+    if (!listed.count(key) || (next != listed.end() && next->first.rfind(key + ".", 0) == 0))
+      CollectKeys(child, key, listed, out);
+  }
+}
+
+TEST(Settings, EveryKeyOfAShippedScenarioIsListed) {
+  Listed listed;
+  for (const auto& section : SettingsSectionsJson(AllSettingsSections())) {
+    for (const auto& row : section.at("settings"))
+      listed[row.at("key").get<std::string>()] = row.at("type").get<std::string>();
+  }
+  const auto files = ShippedScenarioFiles();
+  ASSERT_GE(files.size(), 10u);
+  for (const auto& file : files) {
+    std::set<std::string> keys;
+    CollectKeys(ReadJsonFile(file.string()), "", listed, keys);
+    for (const std::string& key : keys)
+      EXPECT_TRUE(IsListed(listed, key)) << file << ": " << key;
+  }
+  for (const char* top :
+       {"name", "description", "propagation", "log_level", "buildings", "ues", "uav", "uavs"})
+    EXPECT_EQ(listed.count(top), 1u) << top;
 }
 
 }  // namespace
