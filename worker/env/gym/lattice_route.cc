@@ -3,7 +3,6 @@
 #include <cmath>
 #include <deque>
 
-#include "common/scenario/scenario_checks.h"
 #include "worker/env/gym/moves.h"
 
 namespace rlpos {
@@ -25,8 +24,8 @@ void AxisOf(double origin, double step, double low, double high, double& first, 
 
 }  // namespace
 
-LatticeRoute::LatticeRoute(const Scenario& scenario, std::size_t uav)
-    : scenario_(scenario), uav_(uav), step_(scenario.env.step) {
+LatticeRoute::LatticeRoute(const Scenario& scenario, const Obstacles& buildings, std::size_t uav)
+    : scenario_(scenario), buildings_(buildings), uav_(uav), step_(scenario.env.step) {
   const Box& zone = scenario.uavs.at(uav).zone;
   const Vec3& origin = scenario.uavs[uav].initial;
   AxisOf(origin.x, step_, zone.xmin, zone.xmax, first_.x, n_[0]);
@@ -41,7 +40,7 @@ bool LatticeRoute::Searchable() {
   if (free_.empty()) {  // built on the first move asked for, not with every env
     free_.assign(static_cast<std::size_t>(nodes), 0);
     for (long long node = 0; node < nodes; ++node)
-      free_[static_cast<std::size_t>(node)] = BuildingContaining(scenario_, PointOf(node)) < 0;
+      free_[static_cast<std::size_t>(node)] = buildings_.SolidAt(PointOf(node)) < 0;
   }
   return true;
 }
@@ -96,14 +95,14 @@ Vec3 LatticeRoute::NextMove(const Vec3& target, const Placement& from) {
   const Vec3& at = from.at(uav_);
   const long long goal = NodeOf(target), here = NodeOf(at);
   if (goal < 0 || here < 0 || !Searchable())
-    return StepTowards(scenario_, uav_, target, from);
+    return StepTowards(scenario_, buildings_, uav_, target, from);
   if (goal != target_node_)
     DistancesTo(goal);
   const int to_go = distance_[static_cast<std::size_t>(here)];
   if (to_go == 0)
     return {0, 0, 0};
   if (to_go < 0)  // the target is walled in
-    return StepTowards(scenario_, uav_, target, from);
+    return StepTowards(scenario_, buildings_, uav_, target, from);
   // Every move one nearer (each neighbour is one nearer, as near, or one further): of those the
   // other UAVs leave free, the one along the largest remaining offset (x, y, z on a tie), as the
   // straight move would pick where nothing is in the way.
@@ -118,14 +117,14 @@ Vec3 LatticeRoute::NextMove(const Vec3& target, const Placement& from) {
       if (next < 0 || distance_[static_cast<std::size_t>(next)] != to_go - 1 ||
           std::abs(offset[axis]) <= best_offset)
         continue;
-      const Vec3 to = DisplacementTarget(scenario_, uav_, delta, from);
+      const Vec3 to = DisplacementTarget(scenario_, buildings_, uav_, delta, from);
       if (to.x == at.x && to.y == at.y && to.z == at.z)
         continue;  // another UAV is there
       best = delta;
       best_offset = std::abs(offset[axis]);
     }
   }
-  return best_offset < 0.0 ? StepTowards(scenario_, uav_, target, from) : best;
+  return best_offset < 0.0 ? StepTowards(scenario_, buildings_, uav_, target, from) : best;
 }
 
 }  // namespace rlpos

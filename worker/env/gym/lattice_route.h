@@ -7,13 +7,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/geometry/obstacles.h"
 #include "common/scenario/scenario.h"
 
 namespace rlpos {
 
 class LatticeRoute {
  public:
-  LatticeRoute(const Scenario& scenario, std::size_t uav);
+  // `buildings`: BuildingObstacles(scenario.buildings) (moves.h); both must outlive the route.
+  LatticeRoute(const Scenario& scenario, const Obstacles& buildings, std::size_t uav);
   // The first move of a shortest path from UAV `uav`'s place in `from` to `target`, among the
   // moves that the other UAVs leave free. Where there is none (`target` or the UAV off the
   // lattice, the target walled in, every move that brings it nearer taken by another UAV), the
@@ -31,6 +33,7 @@ class LatticeRoute {
   void DistancesTo(long long node);
 
   const Scenario& scenario_;
+  const Obstacles& buildings_;
   std::size_t uav_;
   double step_;
   Vec3 first_;                      // the zone's lowest lattice point in each axis

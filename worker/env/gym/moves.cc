@@ -38,7 +38,8 @@ int ToBestAction(const Scenario& s) {
   return it == actions.end() ? -1 : static_cast<int>(it - actions.begin());
 }
 
-Vec3 StepTowards(const Scenario& s, std::size_t uav, const Vec3& target, const Placement& from) {
+Vec3 StepTowards(const Scenario& s, const Obstacles& buildings, std::size_t uav, const Vec3& target,
+                 const Placement& from) {
   const Vec3& at = from.at(uav);
   const double offset[3] = {target.x - at.x, target.y - at.y, target.z - at.z};
   int order[3] = {0, 1, 2};
@@ -50,35 +51,37 @@ Vec3 StepTowards(const Scenario& s, std::size_t uav, const Vec3& target, const P
     const double length = std::min(s.env.step, std::abs(offset[axis]));
     Vec3 delta{0, 0, 0};
     (axis == 0 ? delta.x : axis == 1 ? delta.y : delta.z) = std::copysign(length, offset[axis]);
-    const Vec3 to = DisplacementTarget(s, uav, delta, from);
+    const Vec3 to = DisplacementTarget(s, buildings, uav, delta, from);
     if (to.x != at.x || to.y != at.y || to.z != at.z)
       return delta;
   }
   return {0, 0, 0};
 }
 
-Placement ApplyMove(const Scenario& s, std::size_t uav, int action, const Placement& from) {
-  return ApplyDisplacement(s, uav, MoveDisplacement(s, action), from);
+Placement ApplyMove(const Scenario& s, const Obstacles& buildings, std::size_t uav, int action,
+                    const Placement& from) {
+  return ApplyDisplacement(s, buildings, uav, MoveDisplacement(s, action), from);
 }
 
-Vec3 TargetAlone(const Scenario& s, std::size_t uav, const Vec3& delta, const Vec3& at) {
+Vec3 TargetAlone(const Scenario& s, const Obstacles& buildings, std::size_t uav, const Vec3& delta,
+                 const Vec3& at) {
   Vec3 to{at.x + delta.x, at.y + delta.y, at.z + delta.z};
   const Box& z = s.uavs.at(uav).zone;
   to.x = std::clamp(to.x, z.xmin, z.xmax);
   to.y = std::clamp(to.y, z.ymin, z.ymax);
   to.z = std::clamp(to.z, z.zmin, z.zmax);
-  return BuildingContaining(s, to) >= 0 ? at : to;
+  return buildings.SolidAt(to) >= 0 ? at : to;
 }
 
-Vec3 DisplacementTarget(const Scenario& s, std::size_t uav, const Vec3& delta,
-                        const Placement& from) {
-  const Vec3 to = TargetAlone(s, uav, delta, from.at(uav));
+Vec3 DisplacementTarget(const Scenario& s, const Obstacles& buildings, std::size_t uav,
+                        const Vec3& delta, const Placement& from) {
+  const Vec3 to = TargetAlone(s, buildings, uav, delta, from.at(uav));
   return OverlapsAnother(from, uav, to) ? from[uav] : to;
 }
 
-Placement ApplyDisplacement(const Scenario& s, std::size_t uav, const Vec3& delta,
-                            const Placement& from) {
-  const Vec3 to = TargetAlone(s, uav, delta, from.at(uav));
+Placement ApplyDisplacement(const Scenario& s, const Obstacles& buildings, std::size_t uav,
+                            const Vec3& delta, const Placement& from) {
+  const Vec3 to = TargetAlone(s, buildings, uav, delta, from.at(uav));
   if (OverlapsAnother(from, uav, to))
     return from;
   Placement placement = from;
@@ -100,7 +103,7 @@ double LatticePoint(double from, double lo, double hi, double step, std::mt19937
 
 }  // namespace
 
-Placement RandomStart(const Scenario& s, std::uint64_t seed) {
+Placement RandomStart(const Scenario& s, const Obstacles& buildings, std::uint64_t seed) {
   std::mt19937_64 engine(seed ^ 0x5eedc0ffee5717a7ULL);  // not the ns-3 RngRun's stream
   Placement placement = s.InitialPlacement();
   const double d = s.env.step;
@@ -111,7 +114,7 @@ Placement RandomStart(const Scenario& s, std::uint64_t seed) {
       const Vec3 to{LatticePoint(from.x, zone.xmin, zone.xmax, d, engine),
                     LatticePoint(from.y, zone.ymin, zone.ymax, d, engine),
                     LatticePoint(from.z, zone.zmin, zone.zmax, d, engine)};
-      if (BuildingContaining(s, to) < 0 && !OverlapsAnother(placement, u, to)) {
+      if (buildings.SolidAt(to) < 0 && !OverlapsAnother(placement, u, to)) {
         placement[u] = to;
         break;
       }

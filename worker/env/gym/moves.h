@@ -5,17 +5,23 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry/obstacles.h"
 #include "common/scenario/scenario.h"
 #include "worker/env/gym/env.h"
 #include "worker/env/gym/spaces.h"
 
 namespace rlpos {
 
+// The functions that move a UAV take the scenario's buildings as `buildings`, the index
+// BuildingObstacles(scenario.buildings) built once per env: a move's cost stays flat in the
+// number of buildings (BuildingContaining scans them all).
+
 // The placement after UAV `uav` takes `action` (an index into scenario.env.actions): one step in
 // its direction, clamped to the UAV's zone. A move that would end inside a building, or closer
 // than kMinUavSeparation to another UAV, leaves the UAV where it is. (With env.action_mask the
 // agent never picks a move that leaves it where it is.)
-Placement ApplyMove(const Scenario& scenario, std::size_t uav, int action, const Placement& from);
+Placement ApplyMove(const Scenario& scenario, const Obstacles& buildings, std::size_t uav,
+                    int action, const Placement& from);
 // The displacement of move `action` (an index into scenario.env.actions): env.step metres along
 // its axis; "stay" is (0, 0, 0), and so is "to_best", whose displacement depends on the state
 // (StepTowards).
@@ -27,26 +33,26 @@ int ToBestAction(const Scenario& scenario);
 // is less, so that the UAV lands on the target; if that move leaves the UAV where it is (a
 // building, a zone edge, another UAV), the next largest axis's; (0, 0, 0) at the target or when
 // no axis moves it.
-Vec3 StepTowards(const Scenario& scenario, std::size_t uav, const Vec3& target,
-                 const Placement& from);
+Vec3 StepTowards(const Scenario& scenario, const Obstacles& buildings, std::size_t uav,
+                 const Vec3& target, const Placement& from);
 // Where UAV `uav` at `at` ends after `displacement` if no other UAV mattered: clamped to its
 // zone, or `at` if that point is inside a building.
-Vec3 TargetAlone(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
-                 const Vec3& at);
+Vec3 TargetAlone(const Scenario& scenario, const Obstacles& buildings, std::size_t uav,
+                 const Vec3& displacement, const Vec3& at);
 // Where ApplyDisplacement puts UAV `uav`, without building the placement (an action mask asks
 // this of every action at every step, its actions turned into displacements once).
-Vec3 DisplacementTarget(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
-                        const Placement& from);
+Vec3 DisplacementTarget(const Scenario& scenario, const Obstacles& buildings, std::size_t uav,
+                        const Vec3& displacement, const Placement& from);
 // The placement after a displacement of UAV `uav` (env.action_space "continuous"), with the
 // same rules.
-Placement ApplyDisplacement(const Scenario& scenario, std::size_t uav, const Vec3& displacement,
-                            const Placement& from);
+Placement ApplyDisplacement(const Scenario& scenario, const Obstacles& buildings, std::size_t uav,
+                            const Vec3& displacement, const Placement& from);
 // A start for an exploring-starts episode, drawn from `seed`: each UAV in turn at a point of its
 // zone on the lattice of env.step moves through its initial position (so a discrete policy
 // trained from there meets the cells it flies through from the baseline), not inside a
 // building nor too close to an earlier UAV. A UAV that finds no such point in 64 draws keeps its
 // initial position.
-Placement RandomStart(const Scenario& scenario, std::uint64_t seed);
+Placement RandomStart(const Scenario& scenario, const Obstacles& buildings, std::uint64_t seed);
 // The continuous action space: a displacement in metres, each component in [-step, step].
 BoxSpace DisplacementBounds(const Scenario& scenario);
 

@@ -15,15 +15,15 @@ bool Displaced(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-Placement ApplyJointDisplacement(const Scenario& s, const std::vector<Vec3>& displacements,
-                                 const Placement& from) {
+Placement ApplyJointDisplacement(const Scenario& s, const Obstacles& buildings,
+                                 const std::vector<Vec3>& displacements, const Placement& from) {
   if (displacements.size() != from.size()) {
     throw std::invalid_argument("ApplyJointDisplacement: " + std::to_string(displacements.size()) +
                                 " displacements for " + std::to_string(from.size()) + " UAVs");
   }
   Placement to(from.size());
   for (std::size_t u = 0; u < from.size(); ++u)
-    to[u] = TargetAlone(s, u, displacements[u], from[u]);
+    to[u] = TargetAlone(s, buildings, u, displacements[u], from[u]);
   // Each pass refuses one move, so at most one pass per UAV (plus the last, finding none).
   for (;;) {
     std::size_t refused = to.size();

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "common/geometry/obstacles.h"
 #include "common/scenario/scenario.h"
 #include "worker/env/gym/env.h"
 #include "worker/env/gym/spaces.h"
@@ -18,8 +19,9 @@ namespace rlpos {
 // another's way, hence the repeat). So a lower index has priority, the result is
 // deterministic, and no two UAVs end closer than kMinUavSeparation if none started so. Only the
 // end points count: two UAVs may swap places, as one UAV may hop past another in Step.
-Placement ApplyJointDisplacement(const Scenario& scenario, const std::vector<Vec3>& displacements,
-                                 const Placement& from);
+// `buildings`: BuildingObstacles(scenario.buildings) (moves.h).
+Placement ApplyJointDisplacement(const Scenario& scenario, const Obstacles& buildings,
+                                 const std::vector<Vec3>& displacements, const Placement& from);
 
 // UAV `uav`'s observation: the scenario's env.observations (ObservationBounds) with `uav` as
 // the active UAV (its one-hot, with several UAVs).

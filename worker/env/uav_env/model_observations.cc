@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/scenario/scenario_checks.h"
 #include "worker/env/gym/general_observation.h"
 #include "worker/env/gym/moves.h"
 #include "worker/env/uav_env/analytic_evaluator.h"
@@ -50,15 +49,16 @@ bool SameOthers(const Placement& a, const Placement& b, std::size_t active) {
 
 }  // namespace
 
-std::unique_ptr<ModelObservations> ModelObservations::For(const Scenario& scenario) {
+std::unique_ptr<ModelObservations> ModelObservations::For(const Scenario& scenario,
+                                                          const Obstacles& buildings) {
   const auto& o = scenario.env.observations;
   if (std::none_of(o.begin(), o.end(), [](const std::string& f) { return IsModelObservation(f); }))
     return nullptr;
-  return std::make_unique<ModelObservations>(scenario);
+  return std::make_unique<ModelObservations>(scenario, buildings);
 }
 
-ModelObservations::ModelObservations(const Scenario& scenario)
-    : scenario_(scenario), bound_(CoverageRewardBound(scenario)) {
+ModelObservations::ModelObservations(const Scenario& scenario, const Obstacles& buildings)
+    : scenario_(scenario), buildings_(buildings), bound_(CoverageRewardBound(scenario)) {
   const auto& o = scenario.env.observations;
   coverage_ = std::find(o.begin(), o.end(), "coverage") != o.end();
   lookahead_ = std::find(o.begin(), o.end(), "lookahead") != o.end();
@@ -70,7 +70,7 @@ ModelObservations::ModelObservations(const Scenario& scenario)
   if (to_best_ >= 0) {
     routes_.reserve(scenario.uavs.size());
     for (std::size_t u = 0; u < scenario.uavs.size(); ++u)
-      routes_.emplace_back(scenario, u);
+      routes_.emplace_back(scenario, buildings, u);
   }
 }
 
@@ -127,7 +127,7 @@ void ModelObservations::Coverage(const Placement& placement, std::size_t active,
       for (std::size_t level = 0; level < levels.size(); ++level) {
         const double z = levels[level];
         probe[active] = {x, y, z};
-        if (BuildingContaining(scenario_, probe[active]) >= 0)
+        if (buildings_.SolidAt(probe[active]) >= 0)
           continue;
         const std::size_t point =
             static_cast<std::size_t>(row * cells + col) * levels.size() + level;
@@ -181,7 +181,7 @@ void ModelObservations::RefinePointer(const std::vector<double>& levels, double 
         continue;
       for (const double z : levels) {
         const Vec3 point{x, y, z};
-        if (BuildingContaining(scenario_, point) >= 0)
+        if (buildings_.SolidAt(point) >= 0)
           continue;
         scratch_links_ = model.LinksAt(active, point);
         moves.ScoreInto(point, scratch_links_, point_info_);
@@ -243,7 +243,7 @@ void ModelObservations::Fill(const Placement& placement, std::size_t active, dou
   info.lookahead.assign(moves_.size(), 0.0);
   for (std::size_t a = 0; a < moves_.size(); ++a) {
     const Vec3 move = static_cast<int>(a) == to_best_ ? ToBestMove(active, placement) : moves_[a];
-    const Placement to = ApplyDisplacement(scenario_, active, move, placement);
+    const Placement to = ApplyDisplacement(scenario_, buildings_, active, move, placement);
     if (Same(to[active], placement[active]))
       continue;
     info.lookahead[a] =

@@ -20,10 +20,12 @@ namespace rlpos {
 class ModelObservations {
  public:
   using RewardOf = std::function<double(const StepInfo&)>;
-  // Null when the scenario's observations need neither field.
-  static std::unique_ptr<ModelObservations> For(const Scenario& scenario);
+  // Null when the scenario's observations need neither field. `buildings`:
+  // BuildingObstacles(scenario.buildings) (worker/env/gym/moves.h); both must outlive this.
+  static std::unique_ptr<ModelObservations> For(const Scenario& scenario,
+                                                const Obstacles& buildings);
 
-  explicit ModelObservations(const Scenario& scenario);
+  ModelObservations(const Scenario& scenario, const Obstacles& buildings);
   // Fills info.coverage and info.lookahead (those the observations name) for UAV `active` of
   // `placement`, whose reward is `here`.
   void Fill(const Placement& placement, std::size_t active, double here, AnalyticEvaluator& model,
@@ -55,6 +57,7 @@ class ModelObservations {
   void AddPointer(const Vec3& from, std::vector<double>& out) const;
 
   const Scenario& scenario_;
+  const Obstacles& buildings_;
   bool coverage_ = false;
   bool lookahead_ = false;
   double bound_ = 1.0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/scenario/building_obstacles.h"
 #include "common/scenario/number_text.h"
 #include "worker/env/gym/moves.h"
 #include "worker/env/gym/team_state.h"
@@ -17,7 +18,9 @@ namespace rlpos {
 
 UavPositioningEnv::UavPositioningEnv(Scenario scenario,
                                      std::shared_ptr<SharedPlacementMemo> shared_memo)
-    : scenario_(std::move(scenario)), reward_(MakeReward(scenario_.env.reward)) {
+    : scenario_(std::move(scenario)),
+      buildings_(BuildingObstacles(scenario_.buildings)),
+      reward_(MakeReward(scenario_.env.reward)) {
   steps_per_episode_ = static_cast<int>(
       std::llround(scenario_.env.episode_duration / scenario_.env.decision_interval));
   if (!Continuous()) {
@@ -30,7 +33,7 @@ UavPositioningEnv::UavPositioningEnv(Scenario scenario,
   }
   const auto& fields = scenario_.env.observations;
   observes_best_ = std::find(fields.begin(), fields.end(), "best") != fields.end();
-  model_observations_ = ModelObservations::For(scenario_);
+  model_observations_ = ModelObservations::For(scenario_, buildings_);
   if (model_observations_ && !analytic_)
     look_model_ = std::make_unique<AnalyticEvaluator>(scenario_);
 }
@@ -97,8 +100,8 @@ ActionMask UavPositioningEnv::ValidActionsOf(std::size_t uav) const {
   bool moves = false;
   for (std::size_t a = 0; a < actions.size(); ++a) {
     const Vec3& at = placement_.at(uav);
-    const Vec3 to =
-        DisplacementTarget(scenario_, uav, DisplacementOf(uav, static_cast<int>(a)), placement_);
+    const Vec3 to = DisplacementTarget(scenario_, buildings_, uav,
+                                       DisplacementOf(uav, static_cast<int>(a)), placement_);
     const bool changes = to.x != at.x || to.y != at.y || to.z != at.z;
     mask[a] = actions[a] == "stay" || changes;
     moves = moves || changes;
@@ -139,7 +142,8 @@ std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed) {
 }
 
 std::vector<double> UavPositioningEnv::Reset(std::uint64_t seed, const ResetOptions& options) {
-  placement_ = options.random_start ? RandomStart(scenario_, seed) : scenario_.InitialPlacement();
+  placement_ = options.random_start ? RandomStart(scenario_, buildings_, seed)
+                                    : scenario_.InitialPlacement();
   active_ = 0;
   steps_ = 0;
   if (!analytic_) {
@@ -176,7 +180,8 @@ StepResult UavPositioningEnv::Step(int action) {
                                                " out of the action space Discrete(" +
                                                std::to_string(ActionSpace().n) + ")");
   }
-  return MoveTo(ApplyDisplacement(scenario_, active_, DisplacementOf(active_, action), placement_));
+  return MoveTo(ApplyDisplacement(scenario_, buildings_, active_, DisplacementOf(active_, action),
+                                  placement_));
 }
 
 StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
@@ -189,7 +194,7 @@ StepResult UavPositioningEnv::StepContinuous(const std::vector<double>& d) {
     throw std::out_of_range("the displacement must have 3 components, each within [-" + bound +
                             ", " + bound + "] m");
   }
-  return MoveTo(ApplyDisplacement(scenario_, active_, {d[0], d[1], d[2]}, placement_));
+  return MoveTo(ApplyDisplacement(scenario_, buildings_, active_, {d[0], d[1], d[2]}, placement_));
 }
 
 StepResult UavPositioningEnv::MoveTo(const Placement& placement) {
@@ -241,7 +246,7 @@ JointStepResult UavPositioningEnv::JointStep(const std::vector<int>& actions) {
     }
     displacements.push_back(DisplacementOf(u, actions[u]));
   }
-  return MoveAllTo(ApplyJointDisplacement(scenario_, displacements, placement_));
+  return MoveAllTo(ApplyJointDisplacement(scenario_, buildings_, displacements, placement_));
 }
 
 JointStepResult UavPositioningEnv::JointStepContinuous(
@@ -262,7 +267,7 @@ JointStepResult UavPositioningEnv::JointStepContinuous(
     }
     moves.push_back({d[0], d[1], d[2]});
   }
-  return MoveAllTo(ApplyJointDisplacement(scenario_, moves, placement_));
+  return MoveAllTo(ApplyJointDisplacement(scenario_, buildings_, moves, placement_));
 }
 
 JointStepResult UavPositioningEnv::MoveAllTo(const Placement& placement) {

@@ -10,6 +10,7 @@
 // and one team reward.
 #include <memory>
 
+#include "common/geometry/obstacles.h"
 #include "common/scenario/scenario.h"
 #include "worker/env/gym/env.h"
 #include "worker/env/gym/multi_agent.h"
@@ -39,7 +40,8 @@ class UavPositioningEnv : public Env {
   // stand. At packet level none (the network's queues and clocks carry over).
   std::optional<DeterminingState> Determining() const override;
   std::vector<double> Reset(std::uint64_t seed) override;
-  // options.random_start: every UAV starts at RandomStart(scenario, seed) (exploring starts).
+  // options.random_start: every UAV starts at RandomStart (moves.h) drawn from `seed`
+  // (exploring starts).
   std::vector<double> Reset(std::uint64_t seed, const ResetOptions& options) override;
   // Both throw std::out_of_range for an action outside the env's action space.
   StepResult Step(int action) override;
@@ -89,6 +91,8 @@ class UavPositioningEnv : public Env {
   // Packet level with several UAVs: a radio per UAV on each UE, re-associated every step.
   bool HandsOver() const { return scenario_.uavs.size() > 1; }
   Scenario scenario_;
+  // The buildings indexed for the moves and the model observations (moves.h), built once.
+  Obstacles buildings_;
   std::unique_ptr<Reward> reward_;
   std::unique_ptr<UavNetwork> network_;          // packet fidelity
   std::unique_ptr<AnalyticEvaluator> analytic_;  // analytic fidelity

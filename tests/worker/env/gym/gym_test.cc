@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "common/scenario/building_obstacles.h"
 #include "common/scenario/names.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
@@ -54,7 +55,7 @@ TEST(Spaces, Float32ClipGivesThePythonEnvsObservation) {
 
 // One UAV's move.
 Vec3 Move(const Scenario& s, int action, const Vec3& from) {
-  return ApplyMove(s, 0, action, {from})[0];
+  return ApplyMove(s, BuildingObstacles(s.buildings), 0, action, {from})[0];
 }
 
 TEST(Moves, EachActionMovesOneStepInItsDirection) {
@@ -99,8 +100,9 @@ TEST(Moves, NeverIntoABuilding) {
 // the next axis when that one is blocked, nothing at the target.
 TEST(Moves, ToBestStepsAlongTheLargestOffsetAndAroundABlockedAxis) {
   const Scenario s = ScenarioB();  // step 5 m; tower [45, 55]^2, 20 m; zone z in [5, 60]
-  const auto towards = [&s](const Vec3& from, const Vec3& target) {
-    return StepTowards(s, 0, target, {from});
+  const Obstacles buildings = BuildingObstacles(s.buildings);
+  const auto towards = [&](const Vec3& from, const Vec3& target) {
+    return StepTowards(s, buildings, 0, target, {from});
   };
   const Vec3 p{30, 30, 30};
   const Vec3 a = towards(p, {42, 27, 30});  // x by 12, y by -3
@@ -134,16 +136,17 @@ TEST(Moves, ToBestStepsAlongTheLargestOffsetAndAroundABlockedAxis) {
 TEST(LatticeRoute, GoesRoundABuildingTheStraightMoveIsStuckBehind) {
   const Scenario s = ScenarioB();  // lattice through (50, 50, 25) by 5 m, zone z in [5, 60]
   const Vec3 start{40, 50, 15}, target{60, 50, 15};
-  const Vec3 straight = StepTowards(s, 0, target, {start});
+  const Obstacles buildings = BuildingObstacles(s.buildings);
+  const Vec3 straight = StepTowards(s, buildings, 0, target, {start});
   EXPECT_TRUE(straight.x == 0 && straight.y == 0 && straight.z == 0);
-  LatticeRoute route(s, 0);
+  LatticeRoute route(s, buildings, 0);
   Placement at{start};
   int moves = 0;
   for (; moves < 40; ++moves) {
     const Vec3 move = route.NextMove(target, at);
     if (move.x == 0 && move.y == 0 && move.z == 0)
       break;
-    at = ApplyDisplacement(s, 0, move, at);
+    at = ApplyDisplacement(s, buildings, 0, move, at);
     ASSERT_LT(BuildingContaining(s, at[0]), 0) << "move " << moves;
   }
   EXPECT_EQ(moves, 8);
@@ -152,7 +155,8 @@ TEST(LatticeRoute, GoesRoundABuildingTheStraightMoveIsStuckBehind) {
   EXPECT_EQ(at[0].z, target.z);
   // Off the lattice, or towards a point inside the tower, it is the straight move.
   const Vec3 off{42, 50, 30};
-  const Vec3 a = route.NextMove({60, 50, 30}, {off}), b = StepTowards(s, 0, {60, 50, 30}, {off});
+  const Vec3 a = route.NextMove({60, 50, 30}, {off}),
+             b = StepTowards(s, buildings, 0, {60, 50, 30}, {off});
   EXPECT_TRUE(a.x == b.x && a.y == b.y && a.z == b.z);
   const Vec3 c = route.NextMove({50, 50, 10}, {Vec3{30, 50, 10}});
   EXPECT_DOUBLE_EQ(c.x, 5);
@@ -160,7 +164,7 @@ TEST(LatticeRoute, GoesRoundABuildingTheStraightMoveIsStuckBehind) {
   // straight move, here stuck behind the tower, without building it.
   Scenario fine = s;
   fine.env.step = 0.25;
-  LatticeRoute coarse_only(fine, 0);
+  LatticeRoute coarse_only(fine, buildings, 0);
   const Vec3 stuck = coarse_only.NextMove(target, {Vec3{44.75, 50, 15}});
   EXPECT_TRUE(stuck.x == 0 && stuck.y == 0 && stuck.z == 0);
 }

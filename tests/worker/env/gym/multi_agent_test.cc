@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <random>
 
+#include "common/scenario/building_obstacles.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario/scenario_parser.h"
 #include "worker/env/gym/moves.h"
@@ -35,54 +36,66 @@ void ExpectPlacement(const Placement& got, const Placement& want) {
 
 TEST(JointMove, OneUavIsApplyDisplacement) {
   Scenario s = Urban3();
+  const Obstacles buildings = BuildingObstacles(s.buildings);
   s.uavs.resize(1);
   const Placement from{{50, 50, 40}};
   for (const Vec3& d : {Vec3{5, 0, 0}, Vec3{0, -200, 0}, Vec3{0, 0, 30}, Vec3{-2.5, 1, -1}})
-    ExpectPlacement(ApplyJointDisplacement(s, {d}, from), ApplyDisplacement(s, 0, d, from));
+    ExpectPlacement(ApplyJointDisplacement(s, buildings, {d}, from),
+                    ApplyDisplacement(s, buildings, 0, d, from));
 }
 
 TEST(JointMove, AConvoyMovesTogether) {
   // UAV 0 flies into the spot UAV 1 leaves in the same step: at once, both move (taking turns,
   // UAV 0's move would be refused).
   const Scenario s = Urban3();
+  const Obstacles buildings = BuildingObstacles(s.buildings);
   const Placement from{{50, 50, 40}, {55, 50, 40}, {100, 100, 40}};
-  const Placement to = ApplyJointDisplacement(s, {{5, 0, 0}, {5, 0, 0}, {0, 0, 0}}, from);
+  const Placement to =
+      ApplyJointDisplacement(s, buildings, {{5, 0, 0}, {5, 0, 0}, {0, 0, 0}}, from);
   ExpectPlacement(to, {{55, 50, 40}, {60, 50, 40}, {100, 100, 40}});
-  ExpectPlacement(ApplyDisplacement(s, 0, {5, 0, 0}, from), from);
+  ExpectPlacement(ApplyDisplacement(s, buildings, 0, {5, 0, 0}, from), from);
 }
 
 TEST(JointMove, TwoUavsAimingAtOneSpotTheLowerIndexWins) {
   const Scenario s = Urban3();
+  const Obstacles buildings = BuildingObstacles(s.buildings);
   const Placement from{{50, 50, 40}, {60, 50, 40}, {100, 100, 40}};
-  ExpectPlacement(ApplyJointDisplacement(s, {{5, 0, 0}, {-5, 0, 0}, {0, 0, 0}}, from),
+  ExpectPlacement(ApplyJointDisplacement(s, buildings, {{5, 0, 0}, {-5, 0, 0}, {0, 0, 0}}, from),
                   {{55, 50, 40}, {60, 50, 40}, {100, 100, 40}});
   // The same with the roles swapped: still UAV 0's move.
   const Placement mirrored{{60, 50, 40}, {50, 50, 40}, {100, 100, 40}};
-  ExpectPlacement(ApplyJointDisplacement(s, {{-5, 0, 0}, {5, 0, 0}, {0, 0, 0}}, mirrored),
-                  {{55, 50, 40}, {50, 50, 40}, {100, 100, 40}});
+  ExpectPlacement(
+      ApplyJointDisplacement(s, buildings, {{-5, 0, 0}, {5, 0, 0}, {0, 0, 0}}, mirrored),
+      {{55, 50, 40}, {50, 50, 40}, {100, 100, 40}});
 }
 
 TEST(JointMove, ARefusalThatBlocksAnotherRefusesItToo) {
   // UAV 1 loses to UAV 0 and stays; UAV 2 aimed next to where UAV 1 was leaving: it stays too.
   const Scenario s = Urban3();
+  const Obstacles buildings = BuildingObstacles(s.buildings);
   const Placement from{{50, 50, 40}, {58, 50, 40}, {58, 55, 40}};
-  ExpectPlacement(ApplyJointDisplacement(s, {{5, 0, 0}, {-2.5, 0, 0}, {0, -4.5, 0}}, from),
-                  {{55, 50, 40}, {58, 50, 40}, {58, 55, 40}});
+  ExpectPlacement(
+      ApplyJointDisplacement(s, buildings, {{5, 0, 0}, {-2.5, 0, 0}, {0, -4.5, 0}}, from),
+      {{55, 50, 40}, {58, 50, 40}, {58, 55, 40}});
   // Without UAV 0 in the way, UAV 1 moves and UAV 2 with it.
-  ExpectPlacement(ApplyJointDisplacement(s, {{0, 0, 0}, {-2.5, 0, 0}, {0, -4.5, 0}}, from),
-                  {{50, 50, 40}, {55.5, 50, 40}, {58, 50.5, 40}});
+  ExpectPlacement(
+      ApplyJointDisplacement(s, buildings, {{0, 0, 0}, {-2.5, 0, 0}, {0, -4.5, 0}}, from),
+      {{50, 50, 40}, {55.5, 50, 40}, {58, 50.5, 40}});
 }
 
 TEST(JointMove, AMoveOntoAStayingUavIsRefused) {
   const Scenario s = Urban3();
+  const Obstacles buildings = BuildingObstacles(s.buildings);
   const Placement from{{50, 50, 40}, {55, 50, 40}, {100, 100, 40}};
-  ExpectPlacement(ApplyJointDisplacement(s, {{0, 0, 0}, {-5, 0, 0}, {0, 0, 0}}, from), from);
+  ExpectPlacement(ApplyJointDisplacement(s, buildings, {{0, 0, 0}, {-5, 0, 0}, {0, 0, 0}}, from),
+                  from);
 }
 
 TEST(JointMove, ZonesAndBuildingsFirstThenNoTwoUavsTooClose) {
   // Random placements and moves: every UAV ends at its move resolved alone or where it was, and
   // no two end closer than kMinUavSeparation.
   const Scenario s = Urban3();
+  const Obstacles buildings = BuildingObstacles(s.buildings);
   std::mt19937_64 engine(7);
   std::uniform_real_distribution<double> coordinate(0, 20), move(-6, 6);
   int refused = 0;
@@ -96,10 +109,10 @@ TEST(JointMove, ZonesAndBuildingsFirstThenNoTwoUavsTooClose) {
     std::vector<Vec3> d;
     for (int u = 0; u < 3; ++u)
       d.push_back({move(engine), move(engine), move(engine)});
-    const Placement to = ApplyJointDisplacement(s, d, from);
+    const Placement to = ApplyJointDisplacement(s, buildings, d, from);
     for (std::size_t u = 0; u < 3; ++u) {
       EXPECT_FALSE(OverlapsAnother(to, u, to[u])) << "trial " << trial;
-      const Vec3 alone = TargetAlone(s, u, d[u], from[u]);
+      const Vec3 alone = TargetAlone(s, buildings, u, d[u], from[u]);
       EXPECT_TRUE(Same(to[u], alone) || Same(to[u], from[u])) << "trial " << trial;
       refused += !Same(alone, from[u]) && Same(to[u], from[u]);
     }
@@ -109,7 +122,9 @@ TEST(JointMove, ZonesAndBuildingsFirstThenNoTwoUavsTooClose) {
 
 TEST(JointMove, OneDisplacementPerUav) {
   const Scenario s = Urban3();
-  EXPECT_THROW(ApplyJointDisplacement(s, {{0, 0, 0}}, s.InitialPlacement()), std::invalid_argument);
+  const Obstacles buildings = BuildingObstacles(s.buildings);
+  EXPECT_THROW(ApplyJointDisplacement(s, buildings, {{0, 0, 0}}, s.InitialPlacement()),
+               std::invalid_argument);
 }
 
 StepInfo InfoAt(const Scenario& s) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/scenario/building_obstacles.h"
 #include "common/scenario/scenario_checks.h"
 #include "common/scenario_generator/scenario_generator.h"
 #include "worker/env/gym/general_observation.h"
@@ -90,13 +91,15 @@ TEST(ModelObservations, EachMovesValueIsTheRewardItWouldReachMinusTheRewardHere)
   UavPositioningEnv env(s);
   env.Reset(1);
   const double bound = CoverageRewardBound(s);
+  const Obstacles buildings = BuildingObstacles(s.buildings);
   for (int step = 0; step < 5; ++step) {
     const StepResult here = env.Step(static_cast<int>(step % 2 == 0 ? 4 : 2));  // left, forward
     const std::vector<double> look = here.observation;
     ASSERT_EQ(look.size(), s.env.actions.size());
     for (std::size_t a = 0; a < look.size(); ++a) {
       const Placement from = here.info.positions;
-      const Placement to = ApplyDisplacement(s, 0, MoveDisplacement(s, static_cast<int>(a)), from);
+      const Placement to =
+          ApplyDisplacement(s, buildings, 0, MoveDisplacement(s, static_cast<int>(a)), from);
       const double expected =
           std::clamp(kLookaheadGain * (AnalyticReward(s, to) - here.reward) / bound, -1.0, 1.0);
       EXPECT_NEAR(look[a], expected, 1e-12) << "move " << s.env.actions[a] << " step " << step;
@@ -181,7 +184,8 @@ TEST(ModelObservations, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
   UavPositioningEnv env(s), told(s);
   env.Reset(1);
   told.Reset(1);
-  std::vector<LatticeRoute> routes{{s, 0}, {s, 1}};
+  const Obstacles buildings = BuildingObstacles(s.buildings);
+  std::vector<LatticeRoute> routes{{s, buildings, 0}, {s, buildings, 1}};
   for (int step = 0; step < 4; ++step) {
     const auto views = told.AgentObservations();
     const Placement from = told.LastInfo().positions;
@@ -194,7 +198,7 @@ TEST(ModelObservations, ToBestOfEachUavMovingAtOnceFollowsItsOwnPointer) {
     }
     const JointStepResult r = env.JointStep({to_best, to_best});
     told.JointStep({to_best, to_best});
-    const Placement expected = ApplyJointDisplacement(s, moves, from);
+    const Placement expected = ApplyJointDisplacement(s, buildings, moves, from);
     for (std::size_t u = 0; u < 2; ++u) {
       EXPECT_EQ(r.info.positions[u].x, expected[u].x) << "UAV " << u << " step " << step;
       EXPECT_EQ(r.info.positions[u].y, expected[u].y) << "UAV " << u << " step " << step;
@@ -224,7 +228,8 @@ TEST(ModelObservations, TheRefinedPointerLeadsToTheBestColumnAroundTheMapsBest) 
         Scenario r = s;
         r.env.coverage_refine = refine;
         AnalyticEvaluator model(r);
-        ModelObservations look(r);
+        const Obstacles buildings = BuildingObstacles(r.buildings);
+        ModelObservations look(r, buildings);
         StepInfo info;
         Placement there = r.InitialPlacement();
         look.Fill(there, 0, 0.0, model, reward_of, info);
@@ -278,7 +283,8 @@ TEST(ModelObservations, KeptLinksGiveTheMapOfFreshModelObservationsAfterOthersMo
     return (*reward)(RewardInputOf(s, i.n_los, i.throughput_mbps, i.demands_met));
   };
   AnalyticEvaluator model(s);
-  ModelObservations kept(s);
+  const Obstacles buildings = BuildingObstacles(s.buildings);
+  ModelObservations kept(s, buildings);
   Placement placement = s.InitialPlacement();
   const auto map_of = [&](ModelObservations& look) {
     StepInfo info;
@@ -287,7 +293,7 @@ TEST(ModelObservations, KeptLinksGiveTheMapOfFreshModelObservationsAfterOthersMo
   };
   const std::vector<double> first = map_of(kept);
   placement[1].x += s.env.step;  // the other UAV moves: UAV 0's map is worked out again
-  ModelObservations fresh(s);
+  ModelObservations fresh(s, buildings);
   const std::vector<double> after_move = map_of(kept);
   EXPECT_EQ(after_move, map_of(fresh));
   EXPECT_NE(after_move, first) << "the other UAV's move changes nothing: a weak test";
@@ -296,7 +302,7 @@ TEST(ModelObservations, KeptLinksGiveTheMapOfFreshModelObservationsAfterOthersMo
     ue.x = s.venue.width - ue.x;  // mirrored: the UEs stand elsewhere
   model.SetUePositions(walked);
   placement[1].x -= s.env.step;
-  ModelObservations fresh_again(s);
+  ModelObservations fresh_again(s, buildings);
   EXPECT_EQ(map_of(kept), map_of(fresh_again)) << "links of UEs that have since walked";
 }
 

@@ -6,17 +6,13 @@
 
 #include <random>
 
-#include "worker/env/gym/moves.h"
-#include "worker/env/network/scenario_loading.h"
+#include "tests/worker/env/uav_env/memo_walk.h"
 #include "worker/env/uav_env/analytic_evaluator.h"
 
 namespace rlpos {
 namespace {
 
-Scenario ShippedAnalytic(const std::string& name) {
-  return LoadScenario(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/" + name,
-                      {"env.fidelity=analytic"});
-}
+using testing::AnalyticShipped;
 
 StepInfo MadeUpInfo(const Placement& placement, std::size_t n_ues, int salt) {
   StepInfo info;
@@ -101,30 +97,19 @@ TEST(PlacementMemo, StaysWithinItsBudgetWhateverItIsGiven) {
 // that scoring the placement afresh (Score on new links, which no memo answers) gives.
 void ExpectRevisitsAsFresh(const Scenario& s) {
   AnalyticEvaluator walked(s), fresh(s);
-  std::mt19937 rng(11);
-  std::uniform_int_distribution<int> action(0, static_cast<int>(s.env.actions.size()) - 1);
-  Placement at = s.InitialPlacement();
-  for (int k = 0; k < 400; ++k) {
-    const std::size_t uav = static_cast<std::size_t>(k / 7) % at.size();
-    at = ApplyMove(s, uav, action(rng), at);
-    std::vector<std::vector<UeLink>> links;
-    for (std::size_t u = 0; u < at.size(); ++u)
-      links.push_back(fresh.LinksAt(u, at[u]));
-    std::vector<const std::vector<UeLink>*> views;
-    for (const auto& l : links)
-      views.push_back(&l);
-    ExpectSameInfo(walked.Evaluate(at), fresh.Score(at, views));
-    if (k % 50 == 0)
-      at = s.InitialPlacement();  // back where it started: the memo answers
-  }
+  // Back where it started every 50 steps: the memo answers.
+  testing::RandomWalk(s, 11, 400, 50, [&](const Placement& at) {
+    const StepInfo expected = testing::FreshScore(fresh, at);
+    ExpectSameInfo(walked.Evaluate(at), expected);
+  });
 }
 
 TEST(PlacementMemo, RevisitsGiveTheFreshEvaluationsBitsOnOneUav) {
-  ExpectRevisitsAsFresh(ShippedAnalytic("b.json"));
+  ExpectRevisitsAsFresh(AnalyticShipped("b.json"));
 }
 
 TEST(PlacementMemo, RevisitsGiveTheFreshEvaluationsBitsOnSeveralUavs) {
-  ExpectRevisitsAsFresh(ShippedAnalytic("campus2.json"));
+  ExpectRevisitsAsFresh(AnalyticShipped("campus2.json"));
 }
 
 }  // namespace

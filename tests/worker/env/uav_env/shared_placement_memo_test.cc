@@ -9,17 +9,13 @@
 #include <thread>
 #include <tuple>
 
-#include "worker/env/gym/moves.h"
-#include "worker/env/network/scenario_loading.h"
+#include "tests/worker/env/uav_env/memo_walk.h"
 #include "worker/env/uav_env/analytic_evaluator.h"
 
 namespace rlpos {
 namespace {
 
-Scenario AnalyticShipped(const std::string& name) {
-  return LoadScenario(std::string(RLPOS_SOURCE_DIR) + "/campaigns/scenarios/" + name,
-                      {"env.fidelity=analytic"});
-}
+using testing::AnalyticShipped;
 
 // Whether two states are the same bits (no tolerance); gtest's macros are not for threads.
 bool SameInfo(const StepInfo& a, const StepInfo& b) {
@@ -55,24 +51,12 @@ std::set<Key> WalkTogether(const Scenario& s, SharedPlacementMemo& memo, int thr
     pool.emplace_back([&, t] {
       AnalyticEvaluator walked(s, std::shared_ptr<SharedPlacementMemo>(&memo, [](auto*) {}));
       AnalyticEvaluator fresh(s);
-      std::mt19937 rng(100 + t);
-      std::uniform_int_distribution<int> action(0, static_cast<int>(s.env.actions.size()) - 1);
-      Placement at = s.InitialPlacement();
-      for (int k = 0; k < steps; ++k) {
-        const std::size_t uav = static_cast<std::size_t>(k / 7) % at.size();
-        at = ApplyMove(s, uav, action(rng), at);
-        std::vector<std::vector<UeLink>> links;
-        for (std::size_t u = 0; u < at.size(); ++u)
-          links.push_back(fresh.LinksAt(u, at[u]));
-        std::vector<const std::vector<UeLink>*> views;
-        for (const auto& l : links)
-          views.push_back(&l);
-        if (!SameInfo(walked.Evaluate(at), fresh.Score(at, views)))
+      testing::RandomWalk(s, 100 + t, steps, 40, [&](const Placement& at) {
+        const StepInfo expected = testing::FreshScore(fresh, at);
+        if (!SameInfo(walked.Evaluate(at), expected))
           ++mismatches[t];
         visited[t].insert(KeyOf(at));
-        if (k % 40 == 0)
-          at = s.InitialPlacement();
-      }
+      });
     });
   }
   for (auto& th : pool)
