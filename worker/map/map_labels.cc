@@ -3,6 +3,7 @@
 // demands, each put where it hides no marker and no other label (the first free spot of a few
 // around its point).
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "common/scenario/building_obstacles.h"
@@ -27,13 +28,27 @@ struct Fit {
   Point2 at;
 };
 
+// Whether `text` is an OpenStreetMap element as an imported building names it: "way/123",
+// "relation/45" (common/scenario_import), or "feature/3" (GeoJSON).
+bool IsElementId(const std::string& text) {
+  for (const char* kind : {"way/", "relation/", "feature/"}) {
+    const std::string prefix = kind;
+    if (text.size() > prefix.size() && text.compare(0, prefix.size(), prefix) == 0 &&
+        text.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
+      return true;
+  }
+  return false;
+}
+
 // The first of the label's forms that fits inside the building's ground shape, upright, else
 // turned, at the first of its label points where it does; none when it fits nowhere. Each form
 // keeps 3 points of room either side and 1 above and below.
 bool FitBuildingLabel(cairo_t* cr, const BuildingSpec& b, double scale, Fit& fit) {
   const std::string height = ShortNumber(b.height) + " m";
-  const std::vector<std::vector<std::string>> forms = {
-      {b.name, height}, {b.name + ", " + height}, {height}};
+  const std::string name = BuildingLabelName(b.name);
+  std::vector<std::vector<std::string>> forms = {{name, height}, {name + ", " + height}, {height}};
+  if (name.empty())
+    forms.erase(forms.begin(), forms.begin() + 2);
   const double line_height = kBuildingFont * 1.25;
   const Footprint shape = GroundShape(b);
   const std::vector<Point2> points = LabelPoints(b);
@@ -212,6 +227,21 @@ std::vector<Segment> Lines(const MapScene& scene, const View& view) {
 
 }  // namespace
 
+std::string BuildingLabelName(const std::string& name) {
+  std::string base = name;
+  const auto piece = base.rfind(" #");
+  if (piece != std::string::npos &&
+      base.find_first_not_of("0123456789", piece + 2) == std::string::npos)
+    base.erase(piece);
+  if (IsElementId(base))
+    return "";
+  const auto open = base.rfind(" (");
+  if (open != std::string::npos && base.back() == ')' &&
+      IsElementId(base.substr(open + 2, base.size() - open - 3)))
+    return base.substr(0, open) + name.substr(base.size());
+  return name;
+}
+
 std::vector<TextBox> PaintBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view) {
   const Scenario& s = scene.scenario;
   const std::vector<TextBox> markers = MarkerBoxes(scene, view);
@@ -222,14 +252,20 @@ std::vector<TextBox> PaintBuildingLabels(cairo_t* cr, const MapScene& scene, con
     const bool fits = FitBuildingLabel(cr, b, view.scale, fit);
     const Point2 at = fits ? fit.at : LabelPoints(b).front();
     const double cx = view.CanvasX({at.x, 0, 0}), cy = view.CanvasY({0, at.y, 0});
-    if (fits && !Hides(LabelBox(cr, fit.label, cx, cy), markers)) {
+    // Inside, unless it would cover a marker or the label of a building it stands in or on.
+    const TextBox inside = fits ? LabelBox(cr, fit.label, cx, cy) : TextBox{};
+    if (fits && !Hides(inside, markers) && !Hides(inside, boxes)) {
       PaintBuildingLabel(cr, fit.label, cx, cy, BuildingTextIsLight(b.height, s.venue.height));
-      boxes.push_back(LabelBox(cr, fit.label, cx, cy));
+      boxes.push_back(inside);
       continue;
     }
     // Too small for its label, or a UAV or UE sits where it would go: the label goes beside the
-    // building, with a halo, where it hides nothing.
-    const std::string text = b.name + ", " + ShortNumber(b.height) + " m";
+    // building, with a halo, where it hides nothing; a building known only by its element id
+    // keeps just its shade (the height scale).
+    const std::string name = BuildingLabelName(b.name);
+    if (name.empty())
+      continue;
+    const std::string text = name + ", " + ShortNumber(b.height) + " m";
     Obstacles taken{markers, Lines(scene, view)};
     taken.boxes.insert(taken.boxes.end(), boxes.begin(), boxes.end());
     const double w = (b.xmax - b.xmin) * view.scale, h = (b.ymax - b.ymin) * view.scale;

@@ -47,6 +47,10 @@ void PaintBuildings(cairo_t* cr, const Scenario& s, const View& view);
 // The labels of the top view: buildings (name, height) and UEs (demand) (map_labels.cc).
 // Returns the boxes the building labels took.
 std::vector<TextBox> PaintBuildingLabels(cairo_t* cr, const MapScene& scene, const View& view);
+// What a building's label calls it: its name without the element id an imported building's name
+// carries ("Rautatalo (way/34079465)" -> "Rautatalo"); "" for a name that is only an id
+// ("way/123", "relation/45", "feature/3", with a piece's " #2"), which is left unlabelled.
+std::string BuildingLabelName(const std::string& name);
 void PaintUeLabels(cairo_t* cr, const MapScene& scene, const View& view,
                    std::vector<TextBox> taken);
 

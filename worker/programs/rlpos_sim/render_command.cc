@@ -135,7 +135,7 @@ void AddUePaths(map::MapScene& scene) {
 }  // namespace
 
 void AddRender(CLI::App& app, RenderCommand& r, CommonOptions& options) {
-  r.command = app.add_subcommand("render", "Draw a map of the scenario (PNG or SVG)");
+  r.command = app.add_subcommand("render", "Render a map of the scenario (PNG or SVG)");
   r.command->add_option("scenario", options.scenario_file, kScenarioHelp)->required();
   auto* position =
       r.command
@@ -155,7 +155,7 @@ void AddRender(CLI::App& app, RenderCommand& r, CommonOptions& options) {
   position->excludes(result)->excludes(placement);
   result->excludes(placement);
   r.command->add_option("--trajectory", r.trajectory,
-                        "Draw the rl flight of this trajectory.csv (rlpos-sim train)");
+                        "Show the rl flight of this trajectory.csv (rlpos-sim train)");
   r.command->add_flag("--side", r.side, "Add the elevation views (x-z and y-z)");
   r.command->add_option("--out", r.out, "The map: FILE.png or FILE.svg")->required();
 }
