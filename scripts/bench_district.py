@@ -32,13 +32,14 @@ import argparse
 import glob
 import json
 import os
-import platform
 import re
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+
+from bench_common import cpu_model
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -47,17 +48,6 @@ BBOX = "24.9353,60.1643,24.9533,60.1724"
 FIGURES = ("env", "agent", "vec", "eval")
 TITLES = {"env": "env alone (steps/s)", "agent": "with the agent (steps/s)",
           "vec": "make_vec (env steps/s)", "eval": "packet eval (s)"}
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def environment_of(build):

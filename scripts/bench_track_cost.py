@@ -23,6 +23,8 @@ import subprocess
 import sys
 import tempfile
 
+from bench_common import add_track_run_arguments
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 STYLES = ("urban", "campus", "suburb", "open")
@@ -70,12 +72,7 @@ def evaluate(sim, scenario, position, args):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--per-style", type=int, default=1,
-                        help="scenarios per style, the mobility models in turn (default 1)")
-    parser.add_argument("--duration", type=float, default=60.0, help="s per run (default 60)")
-    parser.add_argument("--interval", type=float, default=1.0,
-                        help="env.decision_interval, s (default 1)")
-    parser.add_argument("--run", type=int, default=1, help="RngRun (default 1)")
+    add_track_run_arguments(parser, 1, 60.0, "RngRun (default 1)")
     parser.add_argument("--build", default=os.path.join(REPO, "build"))
     args = parser.parse_args()
     if args.per_style < 1 or args.duration <= 0 or args.interval <= 0:

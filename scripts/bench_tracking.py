@@ -18,7 +18,6 @@ oracle-track, the medians of rl and centroid-track, and the worst cases.
 """
 import argparse
 import concurrent.futures
-import csv
 import json
 import os
 import statistics
@@ -26,6 +25,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+from bench_common import add_track_run_arguments, write_csv
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
@@ -78,12 +79,7 @@ def share(flags):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--policy", default=os.path.join(REPO, "policies", "generalist-1uav"))
-    parser.add_argument("--per-style", type=int, default=6,
-                        help="scenarios per style, the mobility models in turn (default 6)")
-    parser.add_argument("--duration", type=float, default=120.0, help="s per run (default 120)")
-    parser.add_argument("--interval", type=float, default=1.0,
-                        help="env.decision_interval, s (default 1)")
-    parser.add_argument("--run", type=int, default=1, help="RngRun: the trajectories (default 1)")
+    add_track_run_arguments(parser, 6, 120.0, "RngRun: the trajectories (default 1)")
     parser.add_argument("--jobs", type=int, default=2, help="runs at a time (default 2)")
     parser.add_argument("--build", default=os.path.join(REPO, "build"))
     parser.add_argument("--out", help="keep the generated scenarios here (default: a temp dir)")
@@ -138,10 +134,7 @@ def main():
           (statistics.median(r["rl_s"] for r in rows),
            statistics.median(r["oracle-track_s"] for r in rows)))
     if args.csv:
-        with open(args.csv, "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
+        write_csv(args.csv, rows)
 
 
 if __name__ == "__main__":

@@ -16,13 +16,13 @@ Each figure is the median of --rounds timings. Asserts nothing.
 """
 import argparse
 import os
-import platform
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
 
+from bench_common import cpu_model
 from rlpos_python import import_rlpos
 
 rlpos = import_rlpos()
@@ -40,17 +40,6 @@ def resident_kib():
             if line.startswith("VmRSS:"):
                 return int(line.split()[1])
     raise RuntimeError("/proc/self/status has no VmRSS")
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def generated_scenario(build, folder, seed, ues):

@@ -36,6 +36,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+from bench_common import write_csv  # noqa: E402
 from rlpos_python import import_rlpos  # noqa: E402
 from oracle_cache import (OracleCacheError, binding_identity, load_cache,  # noqa: E402
                           oracle_key, save_cache)
@@ -165,10 +166,7 @@ def main():
           (statistics.median(map_ratios), percentile(map_ratios, 0.10),
            sum(r >= 0.95 for r in map_ratios), min(map_ratios)))
     if args.csv:
-        with open(args.csv, "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
+        write_csv(args.csv, rows)
 
 
 if __name__ == "__main__":

@@ -174,20 +174,10 @@ def plot_track_series(plt, by_positioner, title, path):
 
 def plot_optimality(plt, curves, title, path):
     """The ratio's CDF per series, with the 0.95 line."""
-    figure, axes = plt.subplots(figsize=(6.4, 4.4))
-    for name, (xs, ps) in curves.items():
-        axes.plot([xs[0]] + xs, [0.0] + ps, drawstyle="steps-post", label=name)
+    figure, axes = step_curves(plt, curves, 0.0)
     axes.axvline(0.95, color="grey", linestyle="--", linewidth=1)
-    axes.set_xlabel("reward / oracle reward")
-    axes.set_ylabel("P(ratio \u2264 x)")
-    axes.set_ylim(-0.02, 1.02)
-    axes.set_title(title)
-    axes.grid(True, alpha=0.3)
-    axes.legend(fontsize="small")
-    figure.tight_layout()
-    save_atomically(figure, path)
-    plt.close(figure)
-    print(f"wrote {path}", flush=True)
+    finish_step_plot(plt, figure, axes, "reward / oracle reward", "P(ratio \u2264 x)", title,
+                     path)
 
 
 def plot_learning(plt, curves, title, path):
@@ -222,13 +212,15 @@ def file_stem(scenario, used):
     return candidate
 
 
-def save_atomically(figure, path):
+def replace_atomically(path, write, mode, suffix=""):
+    """write(file) into a temporary file beside path, renamed over path once whole: a reader sees
+    the old file or the new one, never a part (bench_generality.py writes its campaign so too)."""
     folder = os.path.dirname(os.path.abspath(path))
-    fd, temp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=".tmp",
+    fd, temp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=suffix,
                                 dir=folder)
     try:
-        with os.fdopen(fd, "wb") as f:
-            figure.savefig(f, format="png", dpi=120)
+        with os.fdopen(fd, mode) as f:
+            write(f)
         os.chmod(temp, 0o644)
         os.replace(temp, path)
     except BaseException:
@@ -237,11 +229,20 @@ def save_atomically(figure, path):
         raise
 
 
-def plot(plt, curves, start_p, xlabel, ylabel, title, path):
-    """One step curve per positioner; each starts at p = start_p left of its first point."""
+def save_atomically(figure, path):
+    replace_atomically(path, lambda f: figure.savefig(f, format="png", dpi=120), "wb", ".tmp")
+
+
+def step_curves(plt, curves, start_p):
+    """A figure of one step curve per series; each starts at p = start_p left of its first point."""
     figure, axes = plt.subplots(figsize=(6.4, 4.4))
-    for positioner, (xs, ps) in curves.items():
-        axes.plot([xs[0]] + xs, [start_p] + ps, drawstyle="steps-post", label=positioner)
+    for name, (xs, ps) in curves.items():
+        axes.plot([xs[0]] + xs, [start_p] + ps, drawstyle="steps-post", label=name)
+    return figure, axes
+
+
+def finish_step_plot(plt, figure, axes, xlabel, ylabel, title, path):
+    """Labels, the [0, 1] range, grid and legend, and the figure written to path."""
     axes.set_xlabel(xlabel)
     axes.set_ylabel(ylabel)
     axes.set_ylim(-0.02, 1.02)
@@ -252,6 +253,21 @@ def plot(plt, curves, start_p, xlabel, ylabel, title, path):
     save_atomically(figure, path)
     plt.close(figure)
     print(f"wrote {path}", flush=True)
+
+
+def plot(plt, curves, start_p, xlabel, ylabel, title, path):
+    """One step curve per positioner; each starts at p = start_p left of its first point."""
+    figure, axes = step_curves(plt, curves, start_p)
+    finish_step_plot(plt, figure, axes, xlabel, ylabel, title, path)
+
+
+def plot_per_scenario(plt, by_scenario, plot_one, prefix, what, out_dir, name):
+    """plot_one(plt, data, title, path) per scenario, titled "<prefix>scenario <s>: <what>", into
+    out_dir/<name>_<file stem>.png."""
+    used = set()
+    for scenario, data in by_scenario.items():
+        plot_one(plt, data, f"{prefix}scenario {scenario}: {what}",
+                 os.path.join(out_dir, f"{name}_{file_stem(scenario, used)}.png"))
 
 
 def main():
@@ -290,28 +306,20 @@ def main():
                  f"{prefix}scenario {scenario}: delay CDF",
                  os.path.join(args.out_dir, f"delay_cdf_{stem}.png"))
     if args.learning_curves:
-        used = set()
-        for scenario, curves in read_learning_curves(args.learning_curves).items():
-            plot_learning(plt, curves, f"{prefix}scenario {scenario}: learning curve",
-                          os.path.join(args.out_dir,
-                                       f"learning_curve_{file_stem(scenario, used)}.png"))
+        plot_per_scenario(plt, read_learning_curves(args.learning_curves), plot_learning, prefix,
+                          "learning curve", args.out_dir, "learning_curve")
     if args.optimality_cdf:
         curves = read_optimality(args.optimality_cdf)
         if curves:
             plot_optimality(plt, curves, f"{prefix}optimality: each placement against the oracle",
                             os.path.join(args.out_dir, "optimality_cdf.png"))
     if args.track_distributions:
-        used = set()
-        for scenario, metrics in read_track_distributions(args.track_distributions).items():
-            plot_track_distributions(
-                plt, metrics, f"{prefix}scenario {scenario}: track runs over their RngRuns",
-                os.path.join(args.out_dir, f"track_distributions_{file_stem(scenario, used)}.png"))
+        plot_per_scenario(plt, read_track_distributions(args.track_distributions),
+                          plot_track_distributions, prefix, "track runs over their RngRuns",
+                          args.out_dir, "track_distributions")
     if args.track_series:
-        used = set()
-        for scenario, series in read_track_series(args.track_series).items():
-            plot_track_series(
-                plt, series, f"{prefix}scenario {scenario}: track runs over time (mean of RngRuns)",
-                os.path.join(args.out_dir, f"track_series_{file_stem(scenario, used)}.png"))
+        plot_per_scenario(plt, read_track_series(args.track_series), plot_track_series, prefix,
+                          "track runs over time (mean of RngRuns)", args.out_dir, "track_series")
     return 0
 
 

@@ -180,10 +180,7 @@ std::vector<Bounds2> WallBoxes(const std::vector<PlaceBuilding>& b) {
   return boxes;
 }
 
-}  // namespace
-
-void ResolveOverlaps(std::vector<PlaceBuilding>& buildings, double level_height,
-                     OverlapCounts& counts, std::vector<ImportWarning>& warnings) {
+std::vector<std::size_t> LargestFirst(const std::vector<PlaceBuilding>& buildings) {
   std::vector<std::size_t> order(buildings.size());
   std::iota(order.begin(), order.end(), 0);
   std::vector<double> area;
@@ -191,82 +188,157 @@ void ResolveOverlaps(std::vector<PlaceBuilding>& buildings, double level_height,
     area.push_back(Area(b.footprint));
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t x, std::size_t y) { return area[x] > area[y]; });
-  // The scenario's own rule, with boxes first to keep it quick.
-  auto overlapping = [&](const std::vector<BuildingSpec>& specs, const std::vector<Bounds2>& boxes,
-                         std::size_t i, std::size_t j) {
-    return BoxesMeet(boxes[i], boxes[j], 0) && BuildingsOverlap(specs[i], specs[j]);
-  };
-  std::vector<BuildingSpec> specs;
-  for (const auto& b : buildings)
-    specs.push_back(PlaceBuildingSpec(b));
-  std::vector<Bounds2> boxes = WallBoxes(buildings);
-  // Pairs (i < j) that overlap as the map drew them.
-  std::vector<std::pair<std::size_t, std::size_t>> overlapping_before;
-  for (std::size_t i = 0; i < buildings.size(); ++i) {
-    for (std::size_t j = i + 1; j < buildings.size(); ++j) {
-      if (overlapping(specs, boxes, i, j))
-        overlapping_before.push_back({i, j});
+  return order;
+}
+
+// The scenario's own rule, with boxes first to keep it quick.
+class OverlapTest {
+ public:
+  explicit OverlapTest(const std::vector<PlaceBuilding>& buildings) { Update(buildings); }
+
+  void Update(const std::vector<PlaceBuilding>& buildings) {
+    specs_.clear();
+    for (const auto& b : buildings)
+      specs_.push_back(PlaceBuildingSpec(b));
+    boxes_ = WallBoxes(buildings);
+  }
+  // After a change of heights only: the walls' boxes stay.
+  void UpdateHeights(const PlaceBuilding& building, std::size_t i) {
+    specs_[i] = PlaceBuildingSpec(building);
+  }
+  bool operator()(std::size_t i, std::size_t j) const {
+    return BoxesMeet(boxes_[i], boxes_[j], 0) && BuildingsOverlap(specs_[i], specs_[j]);
+  }
+
+ private:
+  std::vector<BuildingSpec> specs_;
+  std::vector<Bounds2> boxes_;
+};
+
+// Pairs (i < j) that overlap.
+std::vector<std::pair<std::size_t, std::size_t>> OverlappingPairs(std::size_t n,
+                                                                  const OverlapTest& overlapping) {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (overlapping(i, j))
+        pairs.push_back({i, j});
     }
   }
+  return pairs;
+}
+
+// Snaps corners and walls; a snap that left a ring that is not simple is undone: that building
+// keeps its walls.
+void SnapKeepingSimpleRings(std::vector<PlaceBuilding>& buildings,
+                            const std::vector<std::size_t>& order) {
   const std::vector<PlaceBuilding> original = buildings;
   SnapCorners(buildings, order);
   SnapWalls(buildings);
-  // A snap that left a ring that is not simple is undone: that building keeps its walls.
   for (std::size_t i = 0; i < buildings.size(); ++i) {
     if (!FootprintDefect(buildings[i].footprint).empty())
       buildings[i].footprint = original[i].footprint;
-    specs[i] = PlaceBuildingSpec(buildings[i]);
   }
-  boxes = WallBoxes(buildings);
-  for (const auto& [i, j] : overlapping_before) {
-    if (!overlapping(specs, boxes, i, j))
-      ++counts.trimmed;
-  }
-  // The larger first: a building is kept unless it overlaps one kept already.
-  std::vector<bool> dropped(buildings.size(), false);
-  std::vector<std::size_t> kept;
-  auto drop = [&](std::size_t i, std::size_t j, const std::string& why) {
-    dropped[i] = true;
-    ++counts.dropped;
-    warnings.push_back({buildings[i].source, why + " \"" + buildings[j].name + "\" (" +
-                                                 buildings[j].source + "): dropped"});
-  };
-  for (std::size_t i : order) {
-    for (bool again = true; again && !dropped[i];) {
-      again = false;
-      for (std::size_t j : kept) {
-        if (!overlapping(specs, boxes, i, j))
-          continue;
-        ResolvedHeight& a = buildings[i].height;
-        const ResolvedHeight& b = buildings[j].height;
-        if (WithinFootprint(buildings[i].footprint, buildings[j].footprint)) {
-          if (a.height > b.height && b.min_height <= a.min_height) {
-            // A taller part drawn inside a larger one from the ground (a dome on its church):
-            // the part above the larger one's top is what it adds.
-            warnings.push_back({buildings[i].source, "stands inside \"" + buildings[j].name +
-                                                         "\" (" + buildings[j].source +
-                                                         "): it starts on its top, " +
-                                                         MetresText(b.height)});
-            a.min_height = b.height;
-            a.floors =
-                std::max(1, static_cast<int>(std::floor((a.height - a.min_height) / level_height)));
-            specs[i] = PlaceBuildingSpec(buildings[i]);
-            ++counts.stacked;
-            again = true;
-            break;
-          }
-          if (a.height <= b.height && a.min_height >= b.min_height) {
-            drop(i, j, "lies within the volume of the larger building");
-            break;
-          }
+}
+
+// Goes through the buildings larger first: a building is kept unless it overlaps one kept
+// already.
+class KeepLargerFirst {
+ public:
+  KeepLargerFirst(std::vector<PlaceBuilding>& buildings, double level_height,
+                  OverlapTest& overlapping, OverlapCounts& counts,
+                  std::vector<ImportWarning>& warnings)
+      : buildings_(buildings),
+        level_height_(level_height),
+        overlapping_(overlapping),
+        counts_(counts),
+        warnings_(warnings),
+        dropped_(buildings.size(), false) {}
+
+  // Which buildings are dropped.
+  std::vector<bool> Run(const std::vector<std::size_t>& order) {
+    for (std::size_t i : order) {
+      for (bool again = true; again && !dropped_[i];) {
+        again = false;
+        for (std::size_t j : kept_) {
+          if (!overlapping_(i, j))
+            continue;
+          again = SettleOverlap(i, j);
+          break;
         }
-        drop(i, j, "overlaps the larger building");
-        break;
+      }
+      if (!dropped_[i])
+        kept_.push_back(i);
+    }
+    return dropped_;
+  }
+
+ private:
+  // Stacks building i on the kept building j it overlaps (true: it may overlap others now) or
+  // drops it.
+  bool SettleOverlap(std::size_t i, std::size_t j) {
+    const ResolvedHeight& a = buildings_[i].height;
+    const ResolvedHeight& b = buildings_[j].height;
+    if (WithinFootprint(buildings_[i].footprint, buildings_[j].footprint)) {
+      if (a.height > b.height && b.min_height <= a.min_height) {
+        StackOnTop(i, j);
+        return true;
+      }
+      if (a.height <= b.height && a.min_height >= b.min_height) {
+        Drop(i, j, "lies within the volume of the larger building");
+        return false;
       }
     }
-    if (!dropped[i])
-      kept.push_back(i);
+    Drop(i, j, "overlaps the larger building");
+    return false;
   }
+
+  // A taller part drawn inside a larger one from the ground (a dome on its church): the part
+  // above the larger one's top is what it adds.
+  void StackOnTop(std::size_t i, std::size_t j) {
+    ResolvedHeight& a = buildings_[i].height;
+    const ResolvedHeight& b = buildings_[j].height;
+    warnings_.push_back({buildings_[i].source,
+                         "stands inside \"" + buildings_[j].name + "\" (" + buildings_[j].source +
+                             "): it starts on its top, " + MetresText(b.height)});
+    a.min_height = b.height;
+    a.floors = std::max(1, static_cast<int>(std::floor((a.height - a.min_height) / level_height_)));
+    overlapping_.UpdateHeights(buildings_[i], i);
+    ++counts_.stacked;
+  }
+
+  void Drop(std::size_t i, std::size_t j, const std::string& why) {
+    dropped_[i] = true;
+    ++counts_.dropped;
+    warnings_.push_back({buildings_[i].source, why + " \"" + buildings_[j].name + "\" (" +
+                                                   buildings_[j].source + "): dropped"});
+  }
+
+  std::vector<PlaceBuilding>& buildings_;
+  double level_height_;
+  OverlapTest& overlapping_;
+  OverlapCounts& counts_;
+  std::vector<ImportWarning>& warnings_;
+  std::vector<bool> dropped_;
+  std::vector<std::size_t> kept_;
+};
+
+}  // namespace
+
+void ResolveOverlaps(std::vector<PlaceBuilding>& buildings, double level_height,
+                     OverlapCounts& counts, std::vector<ImportWarning>& warnings) {
+  const std::vector<std::size_t> order = LargestFirst(buildings);
+  OverlapTest overlapping(buildings);
+  // Pairs that overlap as the map drew them.
+  const auto overlapping_before = OverlappingPairs(buildings.size(), overlapping);
+  SnapKeepingSimpleRings(buildings, order);
+  overlapping.Update(buildings);
+  for (const auto& [i, j] : overlapping_before) {
+    if (!overlapping(i, j))
+      ++counts.trimmed;
+  }
+  const std::vector<bool> dropped =
+      KeepLargerFirst(buildings, level_height, overlapping, counts, warnings).Run(order);
   std::vector<PlaceBuilding> out;
   for (std::size_t i = 0; i < buildings.size(); ++i) {
     if (!dropped[i])

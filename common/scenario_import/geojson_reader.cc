@@ -18,10 +18,7 @@ struct ExtentBuilder {
       box = GeoBox{p.lon, p.lat, p.lon, p.lat};
       return;
     }
-    box->min_lon = std::min(box->min_lon, p.lon);
-    box->min_lat = std::min(box->min_lat, p.lat);
-    box->max_lon = std::max(box->max_lon, p.lon);
-    box->max_lat = std::max(box->max_lat, p.lat);
+    box->Extend(p);
   }
 };
 
@@ -46,6 +43,28 @@ std::vector<LonLat> ReadLine(const json& v, const std::string& path, ExtentBuild
     extent.Add(line.back());
   }
   return line;
+}
+
+// A property as the import's tags hold it: text as is, anything else as JSON writes it;
+// nullopt when it is absent or null.
+std::optional<std::string> PropertyText(const json& properties, const std::string& key) {
+  if (!properties.contains(key) || properties.at(key).is_null())
+    return std::nullopt;
+  const json& v = properties.at(key);
+  return v.is_string() ? v.get<std::string>() : v.dump();
+}
+
+BuildingRole RoleOfProperties(const json& properties) {
+  const auto building = PropertyText(properties, "building");
+  const auto part = PropertyText(properties, "building:part");
+  return RoleOf(building ? building->c_str() : nullptr, part ? part->c_str() : nullptr);
+}
+
+void ReadTags(const json& properties, PlaceFeature& feature) {
+  for (const auto& key : PlaceTagKeys()) {
+    if (auto text = PropertyText(properties, key))
+      feature.tags[key] = std::move(*text);
+  }
 }
 
 class GeoJsonReader {
@@ -109,56 +128,58 @@ class GeoJsonReader {
     const json empty = json::object();
     const json& p = props ? *props : empty;
     if (type == "LineString" || type == "MultiLineString") {
-      std::vector<std::vector<LonLat>> lines;
-      if (type == "LineString") {
-        lines.push_back(ReadLine(coords, cpath, extent_));
-      } else {
-        if (!coords.is_array())
-          throw ConfigError(cpath, "expected an array of lines");
-        for (std::size_t i = 0; i < coords.size(); ++i)
-          lines.push_back(ReadLine(coords[i], JoinPath(cpath, i), extent_));
-      }
-      if (p.contains("highway")) {
-        for (auto& line : lines) {
-          if (line.size() >= 2 && Near(line))
-            data_.streets.push_back(std::move(line));
-        }
-      }
-      return;
+      ReadStreets(type, coords, cpath, p);
+    } else if (type == "Polygon" || type == "MultiPolygon") {
+      PlaceFeature feature;
+      feature.source = path;
+      feature.id = "feature/" + std::to_string(index);
+      ReadPolygons(type, coords, cpath, feature);
+      const BuildingRole role = RoleOfProperties(p);
+      if (tagged && role == BuildingRole::kNone)
+        return;
+      feature.is_part = role == BuildingRole::kPart;
+      ReadTags(p, feature);
+      AddBuilding(std::move(feature));
+    } else if (type == "Point" || type == "MultiPoint") {
+      // Nothing a building or a street is made of, but part of the data's extent.
+      ReadLine(type == "Point" ? json::array({coords}) : coords, cpath, extent_);
     }
-    if (type != "Polygon" && type != "MultiPolygon") {
-      if (type == "Point" || type == "MultiPoint")
-        ReadLine(type == "Point" ? json::array({coords}) : coords, cpath, extent_);
-      return;  // a point or a collection: nothing a building or a street is made of
-    }
-    PlaceFeature feature;
-    feature.source = path;
-    feature.id = "feature/" + std::to_string(index);
-    if (type == "Polygon") {
-      feature.polygons.push_back(ReadPolygon(coords, cpath, feature));
+  }
+
+  // A line or lines; those of a highway near the area are streets.
+  void ReadStreets(const std::string& type, const json& coords, const std::string& cpath,
+                   const json& p) {
+    std::vector<std::vector<LonLat>> lines;
+    if (type == "LineString") {
+      lines.push_back(ReadLine(coords, cpath, extent_));
     } else {
       if (!coords.is_array())
-        throw ConfigError(cpath, "expected an array of polygons");
+        throw ConfigError(cpath, "expected an array of lines");
       for (std::size_t i = 0; i < coords.size(); ++i)
-        feature.polygons.push_back(ReadPolygon(coords[i], JoinPath(cpath, i), feature));
+        lines.push_back(ReadLine(coords[i], JoinPath(cpath, i), extent_));
     }
-    auto text = [&](const char* key) -> std::optional<std::string> {
-      if (!p.contains(key) || p.at(key).is_null())
-        return std::nullopt;
-      return p.at(key).is_string() ? p.at(key).get<std::string>() : p.at(key).dump();
-    };
-    const auto building = text("building"), part = text("building:part");
-    const BuildingRole role =
-        RoleOf(building ? building->c_str() : nullptr, part ? part->c_str() : nullptr);
-    if (tagged && role == BuildingRole::kNone)
+    if (!p.contains("highway"))
       return;
-    feature.is_part = role == BuildingRole::kPart;
-    for (const auto& key : PlaceTagKeys()) {
-      if (!p.contains(key) || p.at(key).is_null())
-        continue;
-      const json& v = p.at(key);
-      feature.tags[key] = v.is_string() ? v.get<std::string>() : v.dump();
+    for (auto& line : lines) {
+      if (line.size() >= 2 && Near(line))
+        data_.streets.push_back(std::move(line));
     }
+  }
+
+  void ReadPolygons(const std::string& type, const json& coords, const std::string& cpath,
+                    PlaceFeature& feature) {
+    if (type == "Polygon") {
+      feature.polygons.push_back(ReadPolygon(coords, cpath, feature));
+      return;
+    }
+    if (!coords.is_array())
+      throw ConfigError(cpath, "expected an array of polygons");
+    for (std::size_t i = 0; i < coords.size(); ++i)
+      feature.polygons.push_back(ReadPolygon(coords[i], JoinPath(cpath, i), feature));
+  }
+
+  // Keeps a building with a polygon near the area, warning about the rings it closed.
+  void AddBuilding(PlaceFeature feature) {
     bool near = false;
     for (const auto& polygon : feature.polygons)
       near = near || Near(polygon.outer);
@@ -194,16 +215,10 @@ class GeoJsonReader {
   }
 
   bool Near(const std::vector<LonLat>& line) const {
-    if (line.empty())
-      return false;
-    GeoBox box{line[0].lon, line[0].lat, line[0].lon, line[0].lat};
-    for (const auto& p : line) {
-      box.min_lon = std::min(box.min_lon, p.lon);
-      box.min_lat = std::min(box.min_lat, p.lat);
-      box.max_lon = std::max(box.max_lon, p.lon);
-      box.max_lat = std::max(box.max_lat, p.lat);
-    }
-    return box.Meets(area_);
+    ExtentBuilder extent;
+    for (const auto& p : line)
+      extent.Add(p);
+    return extent.box && extent.box->Meets(area_);
   }
 
   GeoBox area_;

@@ -109,100 +109,149 @@ std::optional<double> ParseOsmLevels(const std::string& text) {
   return number;
 }
 
-ResolvedHeight ResolveHeight(const PlaceFeature& f, const HeightRules& rules,
-                             std::vector<ImportWarning>& warnings) {
-  ResolvedHeight r;
-  auto warn = [&](const std::string& message) {
-    warnings.push_back({f.source, message});
-    ++r.bad_values;
-  };
-  // Each source is read only when the ones before it gave nothing, so a bad value is warned
-  // about only when it would have counted. -1: no usable count.
-  auto levels_of = [&](const char* key) {
-    const std::string* text = Tag(f, key);
-    const double v = text ? ParseOsmLevels(*text).value_or(-1) : -1;
-    return v > kMaxLevels ? -1 : v;
-  };
-  const double levels = levels_of("building:levels");
-  const double min_levels = levels_of("building:min_level");
-  // The bottom: min_height, else building:min_level levels up, else the ground.
-  bool have_bottom = false;
-  if (const std::string* text = Tag(f, "min_height")) {
+namespace {
+
+// One feature's height being resolved: its level counts (-1: no usable count), read once, and
+// the warnings each tag that falls back adds, counted against the result.
+struct HeightResolution {
+  const PlaceFeature& feature;
+  const HeightRules& rules;
+  std::vector<ImportWarning>& warnings;
+  ResolvedHeight result;
+  double levels = -1;
+  double min_levels = -1;
+
+  void Warn(const std::string& message) {
+    warnings.push_back({feature.source, message});
+    ++result.bad_values;
+  }
+};
+
+double LevelsTag(const PlaceFeature& f, const char* key) {
+  const std::string* text = Tag(f, key);
+  const double v = text ? ParseOsmLevels(*text).value_or(-1) : -1;
+  return v > kMaxLevels ? -1 : v;
+}
+
+// Each source is read only when the ones before it gave nothing, so a bad value is warned
+// about only when it would have counted.
+
+// The bottom: min_height, else building:min_level levels up, else the ground.
+void ResolveBottom(HeightResolution& h) {
+  ResolvedHeight& r = h.result;
+  if (const std::string* text = Tag(h.feature, "min_height")) {
     const auto m = ParseOsmLength(*text);
     if (m && *m <= kMaxBuildingHeight) {
       r.min_height = *m;
-      have_bottom = true;
-    } else {
-      warn("min_height " + Quoted(*text) + " is not a height in metres or feet: " +
-           (min_levels >= 0 ? "building:min_level is used" : "the building stands on the ground"));
+      return;
     }
+    h.Warn(
+        "min_height " + Quoted(*text) + " is not a height in metres or feet: " +
+        (h.min_levels >= 0 ? "building:min_level is used" : "the building stands on the ground"));
   }
-  if (!have_bottom) {
-    if (const std::string* text = Tag(f, "building:min_level")) {
-      if (min_levels >= 0) {
-        r.min_height = min_levels * rules.level_height;
-      } else {
-        warn("building:min_level " + Quoted(*text) +
+  if (const std::string* text = Tag(h.feature, "building:min_level")) {
+    if (h.min_levels >= 0) {
+      r.min_height = h.min_levels * h.rules.level_height;
+    } else {
+      h.Warn("building:min_level " + Quoted(*text) +
              " is not a number of levels: the building stands on the ground");
-      }
     }
   }
-  // The top: height, else the levels and the roof on them, else the default.
-  bool have_top = false;
-  if (const std::string* text = Tag(f, "height")) {
-    const auto h = ParseOsmLength(*text);
-    if (h && *h > 0 && *h <= kMaxBuildingHeight) {
-      r.height = *h;
-      r.source = HeightSource::kHeight;
-      have_top = true;
-    } else {
-      warn("height " + Quoted(*text) + " is not a height in metres or feet: " +
-           (levels > 0 ? "building:levels is used" : "the default is used"));
-    }
+}
+
+// The top from the height tag; false when it has none usable.
+bool ResolveTopFromHeight(HeightResolution& h) {
+  const std::string* text = Tag(h.feature, "height");
+  if (!text)
+    return false;
+  const auto m = ParseOsmLength(*text);
+  if (m && *m > 0 && *m <= kMaxBuildingHeight) {
+    h.result.height = *m;
+    h.result.source = HeightSource::kHeight;
+    return true;
   }
-  double roof = 0;
-  if (const std::string* text = have_top ? nullptr : Tag(f, "roof:height")) {
-    const auto h = ParseOsmLength(*text);
-    if (h && *h <= kMaxBuildingHeight)
-      roof = *h;
-    else
-      warn("roof:height " + Quoted(*text) + " is not a height in metres or feet: no roof added");
+  h.Warn("height " + Quoted(*text) + " is not a height in metres or feet: " +
+         (h.levels > 0 ? "building:levels is used" : "the default is used"));
+  return false;
+}
+
+// The roof:height added on the levels; 0 without a usable one.
+double RoofHeight(HeightResolution& h) {
+  const std::string* text = Tag(h.feature, "roof:height");
+  if (!text)
+    return 0;
+  const auto m = ParseOsmLength(*text);
+  if (m && *m <= kMaxBuildingHeight)
+    return *m;
+  h.Warn("roof:height " + Quoted(*text) + " is not a height in metres or feet: no roof added");
+  return 0;
+}
+
+// The top from building:levels and the roof on them; false when it has none usable.
+bool ResolveTopFromLevels(HeightResolution& h, double roof) {
+  const std::string* text = Tag(h.feature, "building:levels");
+  if (!text)
+    return false;
+  if (h.levels > 0) {
+    h.result.height = h.levels * h.rules.level_height + roof;
+    h.result.source = HeightSource::kLevels;
+    return true;
   }
-  if (!have_top) {
-    if (const std::string* text = Tag(f, "building:levels")) {
-      if (levels > 0) {
-        r.height = levels * rules.level_height + roof;
-        r.source = HeightSource::kLevels;
-        have_top = true;
-      } else {
-        warn("building:levels " + Quoted(*text) + " is not a number of levels from 1 to 200: " +
-             "the default height " + Metres(rules.default_height) + " is used");
-      }
-    }
-  }
-  if (!have_top) {
-    // A part that starts at or above the default height (a dome on a drum): its roof, or one
-    // level, above its bottom.
-    r.height = rules.default_height;
-    if (r.height <= r.min_height)
-      r.height = r.min_height + (roof > 0 ? roof : rules.level_height);
-    r.source = HeightSource::kDefault;
-  }
+  h.Warn("building:levels " + Quoted(*text) + " is not a number of levels from 1 to 200: " +
+         "the default height " + Metres(h.rules.default_height) + " is used");
+  return false;
+}
+
+// The top: height, else the levels and the roof on them, else the default.
+void ResolveTop(HeightResolution& h) {
+  if (ResolveTopFromHeight(h))
+    return;
+  const double roof = RoofHeight(h);
+  if (ResolveTopFromLevels(h, roof))
+    return;
+  // A part that starts at or above the default height (a dome on a drum): its roof, or one
+  // level, above its bottom.
+  ResolvedHeight& r = h.result;
+  r.height = h.rules.default_height;
+  if (r.height <= r.min_height)
+    r.height = r.min_height + (roof > 0 ? roof : h.rules.level_height);
+  r.source = HeightSource::kDefault;
+}
+
+// Rounds both ends to the centimetre and puts a bottom that is not below the top on the ground.
+void SettleEnds(HeightResolution& h) {
+  ResolvedHeight& r = h.result;
   r.height = Centimetres(r.height);
   r.min_height = Centimetres(r.min_height);
   if (r.min_height >= r.height) {
-    warn("its bottom (" + Metres(r.min_height) + ") is not below its top (" + Metres(r.height) +
-         "): it stands on the ground");
+    h.Warn("its bottom (" + Metres(r.min_height) + ") is not below its top (" + Metres(r.height) +
+           "): it stands on the ground");
     r.min_height = 0;
   }
-  // Floors: the levels it spans when the tags count them, else its height in levels.
+}
+
+// Floors: the levels it spans when the tags count them, else its height in levels.
+int CountFloors(const HeightResolution& h) {
+  const ResolvedHeight& r = h.result;
   double floors = 0;
-  if (levels > 0 && r.source != HeightSource::kDefault)
-    floors = std::round(levels - (r.min_height > 0 && min_levels > 0 ? min_levels : 0.0));
+  if (h.levels > 0 && r.source != HeightSource::kDefault)
+    floors = std::round(h.levels - (r.min_height > 0 && h.min_levels > 0 ? h.min_levels : 0.0));
   if (floors < 1)
-    floors = std::floor((r.height - r.min_height) / rules.level_height);
-  r.floors = static_cast<int>(std::clamp(floors, 1.0, kMaxLevels));
-  return r;
+    floors = std::floor((r.height - r.min_height) / h.rules.level_height);
+  return static_cast<int>(std::clamp(floors, 1.0, kMaxLevels));
+}
+
+}  // namespace
+
+ResolvedHeight ResolveHeight(const PlaceFeature& f, const HeightRules& rules,
+                             std::vector<ImportWarning>& warnings) {
+  HeightResolution h{
+      f, rules, warnings, {}, LevelsTag(f, "building:levels"), LevelsTag(f, "building:min_level")};
+  ResolveBottom(h);
+  ResolveTop(h);
+  SettleEnds(h);
+  h.result.floors = CountFloors(h);
+  return h.result;
 }
 
 }  // namespace rlpos

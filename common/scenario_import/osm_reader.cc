@@ -48,9 +48,9 @@ void CheckTagLists(const osmium::memory::Buffer& buffer) {
       ++texts;
     }
     if (text != end || texts % 2 != 0) {
-      throw ConfigError::AboutFile(
-          std::string(osmium::item_type_to_name(object.type())) + " " +
-          std::to_string(object.id()) + ": a tag's key or value holds a zero byte");
+      throw ConfigError::AboutFile(std::string(osmium::item_type_to_name(object.type())) + " " +
+                                   std::to_string(object.id()) +
+                                   ": a tag's key or value holds a zero byte");
     }
   }
 }
@@ -135,10 +135,7 @@ struct GeoBounds {
       any = true;
       return;
     }
-    box.min_lon = std::min(box.min_lon, l.lon());
-    box.min_lat = std::min(box.min_lat, l.lat());
-    box.max_lon = std::max(box.max_lon, l.lon());
-    box.max_lat = std::max(box.max_lat, l.lat());
+    box.Extend({l.lon(), l.lat()});
   }
 };
 

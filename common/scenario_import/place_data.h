@@ -2,6 +2,7 @@
 // What a map file holds for an import, before any projection: building outlines and parts as
 // polygons in WGS84 longitude and latitude, street centre lines, the extent of the data, and
 // what the reader had to skip. The OpenStreetMap and GeoJSON readers both fill it.
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
@@ -31,6 +32,13 @@ struct GeoBox {
   bool Meets(const GeoBox& o) const {
     return min_lon <= o.max_lon && o.min_lon <= max_lon && min_lat <= o.max_lat &&
            o.min_lat <= max_lat;
+  }
+  // Grows the box to hold p.
+  void Extend(const LonLat& p) {
+    min_lon = std::min(min_lon, p.lon);
+    min_lat = std::min(min_lat, p.lat);
+    max_lon = std::max(max_lon, p.lon);
+    max_lat = std::max(max_lat, p.lat);
   }
 };
 

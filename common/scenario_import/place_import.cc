@@ -45,11 +45,7 @@ GeoBox VenueArea(const LocalProjection& projection, const VenueSize& size, doubl
   const double hx = size.width / 2 + margin, hy = size.depth / 2 + margin;
   for (double fx : {-1.0, 0.0, 1.0}) {
     for (double fy : {-1.0, 0.0, 1.0}) {
-      const LonLat p = projection.Inverse({fx * hx, fy * hy});
-      box.min_lon = std::min(box.min_lon, p.lon);
-      box.min_lat = std::min(box.min_lat, p.lat);
-      box.max_lon = std::max(box.max_lon, p.lon);
-      box.max_lat = std::max(box.max_lat, p.lat);
+      box.Extend(projection.Inverse({fx * hx, fy * hy}));
     }
   }
   return box;

@@ -6,9 +6,23 @@
 namespace rlpos {
 namespace {
 
+constexpr double kTiny = 1e-300;
+
+// One step of modified Lentz's method with the partial numerator aa: updates d and c (kept off
+// zero) and returns the factor it applies to the fraction.
+double LentzStep(double aa, double& c, double& d) {
+  d = 1.0 + aa * d;
+  if (std::fabs(d) < kTiny)
+    d = kTiny;
+  c = 1.0 + aa / c;
+  if (std::fabs(c) < kTiny)
+    c = kTiny;
+  d = 1.0 / d;
+  return d * c;
+}
+
 // Continued fraction of the regularized incomplete beta function (modified Lentz's method).
 double BetaContinuedFraction(double a, double b, double x) {
-  constexpr double kTiny = 1e-300;
   constexpr double kEpsilon = 1e-15;
   double c = 1.0;
   double d = 1.0 - (a + b) * x / (a + 1.0);
@@ -18,24 +32,8 @@ double BetaContinuedFraction(double a, double b, double x) {
   double h = d;
   for (int m = 1; m <= 1000; ++m) {
     const double m2 = 2.0 * m;
-    double aa = m * (b - m) * x / ((a + m2 - 1.0) * (a + m2));
-    d = 1.0 + aa * d;
-    if (std::fabs(d) < kTiny)
-      d = kTiny;
-    c = 1.0 + aa / c;
-    if (std::fabs(c) < kTiny)
-      c = kTiny;
-    d = 1.0 / d;
-    h *= d * c;
-    aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1.0));
-    d = 1.0 + aa * d;
-    if (std::fabs(d) < kTiny)
-      d = kTiny;
-    c = 1.0 + aa / c;
-    if (std::fabs(c) < kTiny)
-      c = kTiny;
-    d = 1.0 / d;
-    const double step = d * c;
+    h *= LentzStep(m * (b - m) * x / ((a + m2 - 1.0) * (a + m2)), c, d);
+    const double step = LentzStep(-(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1.0)), c, d);
     h *= step;
     if (std::fabs(step - 1.0) < kEpsilon)
       break;

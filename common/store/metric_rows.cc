@@ -1,5 +1,6 @@
 #include "common/store/metric_rows.h"
 
+#include "common/store/run_key_columns.h"
 #include "common/store/sqlite_db.h"
 
 namespace rlpos {
@@ -73,6 +74,32 @@ const auto kUavView = [](const Def& m) { return m.HasUav() ? m.UavView() : nullp
 const auto kUavReal = [](const Def& m) { return m.uav_real; };
 const auto kUavCount = [](const Def& m) { return m.uav_count; };
 
+// What the rows of v_eval_runs and v_eval_uavs share: the run, a position and the metrics of
+// that side (view: kRunView or kUavView).
+struct EvalRowColumns {
+  template <typename View>
+  EvalRowColumns(const Statement& select, View view)
+      : run_key(select),
+        x(select.Column("x")),
+        y(select.Column("y")),
+        z(select.Column("z")),
+        metrics(MetricColumns(select, view)) {}
+
+  // Row: MetricRow or UavMetricRow, with the real_of and count_of of its side.
+  template <typename Row, typename Real, typename Count>
+  void Read(const Statement& select, Row& row, Real real_of, Count count_of) const {
+    run_key.Read(select, row);
+    row.x = select.Double(x);
+    row.y = select.Double(y);
+    row.z = select.Double(z);
+    ReadMetrics(select, metrics, row, real_of, count_of);
+  }
+
+  RunKeyColumns run_key;
+  ResultColumn x, y, z;
+  std::vector<std::optional<ResultColumn>> metrics;
+};
+
 int CountOf(const std::string& columns) {
   int commas = 0;
   for (const char c : columns)
@@ -115,21 +142,11 @@ std::vector<MetricRow> ReadMetricRows(Database& db, const std::string& campaign_
   Statement select = db.Prepare("SELECT job_id, scenario, positioner, rng_run, x, y, z" +
                                 ColumnList(kRunView) + " FROM v_eval_runs" + kOfCampaignInOrder);
   select.Bind(campaign_id);
-  const ResultColumn job_id = select.Column("job_id"), scenario = select.Column("scenario"),
-                     label = select.Column("positioner"), rng_run = select.Column("rng_run"),
-                     x = select.Column("x"), y = select.Column("y"), z = select.Column("z");
-  const auto metrics = MetricColumns(select, kRunView);
+  const EvalRowColumns columns(select, kRunView);
   std::vector<MetricRow> out;
   while (select.Step()) {
     MetricRow m;
-    m.job_id = select.Text(job_id);
-    m.scenario = select.Text(scenario);
-    m.label = select.Text(label);
-    m.rng_run = select.Int(rng_run);
-    m.x = select.Double(x);
-    m.y = select.Double(y);
-    m.z = select.Double(z);
-    ReadMetrics(select, metrics, m, kRunReal, kRunCount);
+    columns.Read(select, m, kRunReal, kRunCount);
     out.push_back(std::move(m));
   }
   return out;
@@ -140,24 +157,14 @@ std::vector<UavMetricRow> ReadUavMetricRows(Database& db, const std::string& cam
       db.Prepare("SELECT job_id, scenario, positioner, rng_run, uav, uav_name, x, y, z" +
                  ColumnList(kUavView) + " FROM v_eval_uavs" + kOfCampaignInOrder + ", uav");
   select.Bind(campaign_id);
-  const ResultColumn job_id = select.Column("job_id"), scenario = select.Column("scenario"),
-                     label = select.Column("positioner"), rng_run = select.Column("rng_run"),
-                     uav = select.Column("uav"), name = select.Column("uav_name"),
-                     x = select.Column("x"), y = select.Column("y"), z = select.Column("z");
-  const auto metrics = MetricColumns(select, kUavView);
+  const EvalRowColumns columns(select, kUavView);
+  const ResultColumn uav = select.Column("uav"), name = select.Column("uav_name");
   std::vector<UavMetricRow> out;
   while (select.Step()) {
     UavMetricRow m;
-    m.job_id = select.Text(job_id);
-    m.scenario = select.Text(scenario);
-    m.label = select.Text(label);
-    m.rng_run = select.Int(rng_run);
+    columns.Read(select, m, kUavReal, kUavCount);
     m.uav = static_cast<int>(select.Int(uav));
     m.name = select.Text(name);
-    m.x = select.Double(x);
-    m.y = select.Double(y);
-    m.z = select.Double(z);
-    ReadMetrics(select, metrics, m, kUavReal, kUavCount);
     out.push_back(std::move(m));
   }
   return out;

@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "common/store/run_key_columns.h"
 #include "common/store/sqlite_db.h"
 
 namespace rlpos {
@@ -33,6 +34,24 @@ std::string PositionsJson(const Placement& positions) {
 std::optional<double> Stored(double v) {
   return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
 }
+
+// The values of an interval, of one run (v_track_intervals) or averaged over the runs (the
+// series), read alike.
+struct IntervalValueColumns {
+  ResultColumn time_s, scored, reward, throughput_mbps, delay_ms, los_share, demands_met_share;
+
+  // Row: TrackIntervalRow or TrackSeriesRow.
+  template <typename Row>
+  void Read(const Statement& select, Row& row) const {
+    row.time_s = select.Double(time_s);
+    row.scored = select.Int(scored) != 0;
+    row.reward = select.Double(reward);
+    row.throughput_mbps = select.Double(throughput_mbps);
+    row.delay_ms = select.OptionalDouble(delay_ms);
+    row.los_share = select.Double(los_share);
+    row.demands_met_share = select.Double(demands_met_share);
+  }
+};
 
 }  // namespace
 
@@ -86,9 +105,8 @@ std::vector<TrackRunRow> ReadTrackRunRows(Database& db, const std::string& campa
       "intervals, scored_intervals" +
       MetricColumns() + " FROM v_track_runs" + OfCampaignInOrder());
   select.Bind(campaign_id);
-  const ResultColumn job_id = select.Column("job_id"), scenario = select.Column("scenario"),
-                     label = select.Column("positioner"), rng_run = select.Column("rng_run"),
-                     fidelity = select.Column("fidelity"), duration_s = select.Column("duration_s"),
+  const RunKeyColumns run_key(select);
+  const ResultColumn fidelity = select.Column("fidelity"), duration_s = select.Column("duration_s"),
                      decision_interval_s = select.Column("decision_interval_s"),
                      intervals = select.Column("intervals"),
                      scored_intervals = select.Column("scored_intervals");
@@ -98,10 +116,7 @@ std::vector<TrackRunRow> ReadTrackRunRows(Database& db, const std::string& campa
   std::vector<TrackRunRow> out;
   while (select.Step()) {
     TrackRunRow row;
-    row.job_id = select.Text(job_id);
-    row.scenario = select.Text(scenario);
-    row.label = select.Text(label);
-    row.rng_run = select.Int(rng_run);
+    run_key.Read(select, row);
     row.fidelity = select.Text(fidelity);
     row.duration_s = select.Double(duration_s);
     row.decision_interval_s = select.Double(decision_interval_s);
@@ -133,13 +148,12 @@ std::vector<TrackIntervalRecord> ReadTrackIntervalRows(Database& db, const std::
       order + ", interval");
   select.Bind(campaign_id);
   const ResultColumn scenario = select.Column("scenario"), label = select.Column("positioner"),
-                     rng_run = select.Column("rng_run"), interval = select.Column("interval"),
-                     time_s = select.Column("time_s"), scored = select.Column("scored"),
-                     reward = select.Column("reward"),
-                     throughput_mbps = select.Column("throughput_mbps"),
-                     delay_ms = select.Column("delay_ms"), los_share = select.Column("los_share"),
-                     demands_met_share = select.Column("demands_met_share"),
-                     positions_json = select.Column("positions_json");
+                     rng_run = select.Column("rng_run"), interval = select.Column("interval");
+  const IntervalValueColumns values{
+      select.Column("time_s"),           select.Column("scored"),   select.Column("reward"),
+      select.Column("throughput_mbps"),  select.Column("delay_ms"), select.Column("los_share"),
+      select.Column("demands_met_share")};
+  const ResultColumn positions_json = select.Column("positions_json");
   std::vector<TrackIntervalRecord> out;
   while (select.Step()) {
     TrackIntervalRecord record;
@@ -148,13 +162,7 @@ std::vector<TrackIntervalRecord> ReadTrackIntervalRows(Database& db, const std::
     record.rng_run = select.Int(rng_run);
     record.interval = static_cast<int>(select.Int(interval));
     TrackIntervalRow& row = record.row;
-    row.time_s = select.Double(time_s);
-    row.scored = select.Int(scored) != 0;
-    row.reward = select.Double(reward);
-    row.throughput_mbps = select.Double(throughput_mbps);
-    row.delay_ms = select.OptionalDouble(delay_ms);
-    row.los_share = select.Double(los_share);
-    row.demands_met_share = select.Double(demands_met_share);
+    values.Read(select, row);
     // Written by InsertTrackRun from a checked result: [[x, y, z], ...].
     for (const auto& p : nlohmann::json::parse(select.Text(positions_json)))
       row.positions.push_back(
@@ -179,13 +187,12 @@ std::vector<TrackSeriesRow> ReadTrackSeriesRows(Database& db, const std::string&
       order);
   select.Bind(campaign_id);
   const ResultColumn scenario = select.Column("scenario"), label = select.Column("positioner"),
-                     interval = select.Column("interval"), runs = select.Column("runs"),
-                     time_s = select.Column("mean_time_s"), scored = select.Column("all_scored"),
-                     reward = select.Column("mean_reward"),
-                     throughput_mbps = select.Column("mean_throughput_mbps"),
-                     delay_ms = select.Column("mean_delay_ms"),
-                     los_share = select.Column("mean_los_share"),
-                     demands_met_share = select.Column("mean_demands_met_share");
+                     interval = select.Column("interval"), runs = select.Column("runs");
+  const IntervalValueColumns values{
+      select.Column("mean_time_s"),           select.Column("all_scored"),
+      select.Column("mean_reward"),           select.Column("mean_throughput_mbps"),
+      select.Column("mean_delay_ms"),         select.Column("mean_los_share"),
+      select.Column("mean_demands_met_share")};
   std::vector<TrackSeriesRow> out;
   while (select.Step()) {
     TrackSeriesRow row;
@@ -193,13 +200,7 @@ std::vector<TrackSeriesRow> ReadTrackSeriesRows(Database& db, const std::string&
     row.label = select.Text(label);
     row.interval = static_cast<int>(select.Int(interval));
     row.runs = static_cast<int>(select.Int(runs));
-    row.time_s = select.Double(time_s);
-    row.scored = select.Int(scored) != 0;
-    row.reward = select.Double(reward);
-    row.throughput_mbps = select.Double(throughput_mbps);
-    row.delay_ms = select.OptionalDouble(delay_ms);
-    row.los_share = select.Double(los_share);
-    row.demands_met_share = select.Double(demands_met_share);
+    values.Read(select, row);
     out.push_back(std::move(row));
   }
   return out;

@@ -47,6 +47,15 @@ static_assert(kPositioners.size() ==
               kPositioners[5] == rlpos::kTrackingPositioners[0] &&
               kPositioners[6] == rlpos::kTrackingPositioners[1]);
 
+// A policy file's fields, the same in a job's order and in a campaign's request.
+template <typename Io>
+auto PolicyFileFields(Io& io) {
+  return [&io](auto& f, auto& c_f) {
+    io.Text(f.name, c_f.name, "policy file name");
+    io.Octets(f.data, c_f.data, wire::kMaxPolicyFileBytes, "policy file");
+  };
+}
+
 template <typename M>
 struct Message;
 
@@ -109,10 +118,7 @@ struct Message<msg::JobAssignment> {
     io.Optional(p.duration_s, c.has_duration, c.duration_s);
     io.Optional(p.warmup_s, c.has_warmup, c.warmup_s);
     io.Text(p.policy_sha256, c.policy_sha256, "policy_sha256");
-    io.Policy(order.policy, c.policy_files, p.policy_sha256, [&](auto& f, auto& c_f) {
-      io.Text(f.name, c_f.name, "policy file name");
-      io.Octets(f.data, c_f.data, wire::kMaxPolicyFileBytes, "policy file");
-    });
+    io.Policy(order.policy, c.policy_files, p.policy_sha256, PolicyFileFields(io));
   }
 };
 
@@ -164,15 +170,12 @@ struct Message<msg::CampaignRequest> {
                             "scenario document");
                 });
     io.Value(m.no_cache, c.no_cache);
-    io.Sequence(
-        m.policies, c.policies, wire::kMaxPolicyFolders, "policies", [&](auto& p, auto& c_p) {
-          io.Text(p.folder, c_p.folder, "policy folder");
-          io.Sequence(p.files, c_p.files, wire::kMaxPolicyFiles, "policy files",
-                      [&](auto& f, auto& c_f) {
-                        io.Text(f.name, c_f.name, "policy file name");
-                        io.Octets(f.data, c_f.data, wire::kMaxPolicyFileBytes, "policy file");
-                      });
-        });
+    io.Sequence(m.policies, c.policies, wire::kMaxPolicyFolders, "policies",
+                [&](auto& p, auto& c_p) {
+                  io.Text(p.folder, c_p.folder, "policy folder");
+                  io.Sequence(p.files, c_p.files, wire::kMaxPolicyFiles, "policy files",
+                              PolicyFileFields(io));
+                });
   }
 };
 

@@ -136,6 +136,15 @@ def check_blocks(pages, bin_dir, source_dir, fix):
     return errors
 
 
+def exit_with(errors, summary):
+    """Each error on stderr, then the summary on stdout; exit status 1 if there was an error
+    (check_layout.py ends so too)."""
+    for e in errors:
+        print(e, file=sys.stderr)
+    print(summary)
+    sys.exit(1 if errors else 0)
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
@@ -146,10 +155,7 @@ def main():
     pages += sorted(glob.glob(os.path.join(source_dir, 'docs', 'experiments', '*.md')))
     errors = check_links(pages, source_dir) + check_blocks(pages, bin_dir, source_dir, fix)
     errors += check_lengths(pages, source_dir)
-    for e in errors:
-        print(e, file=sys.stderr)
-    print(f'{len(pages)} pages, {len(errors)} problems')
-    sys.exit(1 if errors else 0)
+    exit_with(errors, f'{len(pages)} pages, {len(errors)} problems')
 
 
 if __name__ == '__main__':

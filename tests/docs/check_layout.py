@@ -13,6 +13,8 @@ import os
 import re
 import sys
 
+from check_docs import exit_with
+
 TOPS = ('common', 'idl', 'worker', 'coordinator')
 # The calls that make a target, and the target's name as their first argument.
 TARGET_CALL = re.compile(
@@ -96,10 +98,8 @@ def main():
                        if os.path.isdir(os.path.join(base, sub))]
             if not any(os.path.isdir(p) for p in nested):
                 errors.append(f'README.md: the layout of {top}/ names {path}, which is no folder')
-    for e in errors:
-        print(e, file=sys.stderr)
-    print(f'{len(found)} folders with a target, {len(rows)} table rows, {len(errors)} problems')
-    sys.exit(1 if errors else 0)
+    exit_with(errors,
+              f'{len(found)} folders with a target, {len(rows)} table rows, {len(errors)} problems')
 
 
 if __name__ == '__main__':

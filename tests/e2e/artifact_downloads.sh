@@ -7,10 +7,7 @@
 source "$(dirname "$0")/lib.sh"
 PYTHON=/usr/bin/python3  # the standard library only
 DB=$WORK/rlpos.db
-"$CAMPAIGN" run "$SRC/tests/e2e/campaigns/artifacts.json" --workers 2 --db "$DB" --tag "$TAG" \
-  --no-progress >"$WORK/out.txt" 2>"$WORK/err.txt" || { rc=$?; cat "$WORK/err.txt" >&2; fail "run exited $rc"; }
-ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
-[ -n "$ID" ] || fail "run printed no campaign id"
+run_campaign "$SRC/tests/e2e/campaigns/artifacts.json" --no-progress
 ARTIFACTS=$(sql "$DB" "SELECT COUNT(*) FROM artifacts")
 [ "$ARTIFACTS" -ge 6 ] || fail "expected the artifacts of two train jobs, the database has $ARTIFACTS"
 

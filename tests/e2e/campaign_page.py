@@ -3,6 +3,7 @@
 
 Exit 0 when every check holds; 1 with a one-line reason otherwise."""
 import argparse
+import contextlib
 import os
 import sys
 import tempfile
@@ -41,6 +42,17 @@ def browser(user_data_dir):
     if os.geteuid() == 0:
         options.add_argument("--no-sandbox")  # Chromium's sandbox refuses to run as root
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+
+
+@contextlib.contextmanager
+def browser_session():
+    """A headless Chromium on a profile of its own, quit (and the profile removed) on the way out."""
+    with tempfile.TemporaryDirectory(prefix="rlpos-chromium-") as profile:
+        driver = browser(profile)
+        try:
+            yield driver
+        finally:
+            driver.quit()
 
 
 def attribute_int(driver, selector, name):
@@ -119,37 +131,33 @@ def main():
     parser.add_argument("--deadline", type=float, default=600)
     args = parser.parse_args()
     deadline = time.monotonic() + args.deadline
-    with tempfile.TemporaryDirectory(prefix="rlpos-chromium-") as profile:
-        driver = browser(profile)
-        try:
-            driver.get(args.url)
-            row = f'tr.campaign[data-id="{args.campaign}"]'
-            wait(driver, "the campaign in the list", lambda d: d.find_elements(By.CSS_SELECTOR, row), deadline)
-            first = attribute_int(driver, row + " .progress-text", "data-done")
-            total = attribute_int(driver, row + " .progress-text", "data-total")
-            if first >= total:
-                fail(f"the campaign was over ({first}/{total}) before the page loaded")
-            driver.save_screenshot(os.path.join(args.out, "campaign_list.png"))
-            # Set once; a reload would lose it.
-            driver.execute_script("window.rlposLoadedOnce = true")
-            driver.find_element(By.CSS_SELECTOR, row).click()
-            done = "#campaign-done"
-            wait(driver, "progress to advance", lambda d: attribute_int(d, done, "data-done") > first, deadline)
-            wait(driver, "the campaign to finish on the page",
-                 lambda d: attribute_int(d, done, "data-done") == total, deadline)
-            wait(driver, "the plots of the finished campaign",
-                 lambda d: d.find_element(By.TAG_NAME, "body").get_attribute("data-plotted-done") == str(total),
-                 deadline)
-            if not driver.execute_script("return window.rlposLoadedOnce === true"):
-                fail("the page was reloaded")
-            check_plots(driver, args.positioners, args.scenarios)
-            check_legends_fit(driver)
-            check_legend_toggle(driver)
-            full_page_screenshot(driver, os.path.join(args.out, "campaign_page.png"))
-            print(f"page ok: {first}/{total} at first sight, then {total}/{total} without reload; "
-                  f"screenshots in {args.out}")
-        finally:
-            driver.quit()
+    with browser_session() as driver:
+        driver.get(args.url)
+        row = f'tr.campaign[data-id="{args.campaign}"]'
+        wait(driver, "the campaign in the list", lambda d: d.find_elements(By.CSS_SELECTOR, row), deadline)
+        first = attribute_int(driver, row + " .progress-text", "data-done")
+        total = attribute_int(driver, row + " .progress-text", "data-total")
+        if first >= total:
+            fail(f"the campaign was over ({first}/{total}) before the page loaded")
+        driver.save_screenshot(os.path.join(args.out, "campaign_list.png"))
+        # Set once; a reload would lose it.
+        driver.execute_script("window.rlposLoadedOnce = true")
+        driver.find_element(By.CSS_SELECTOR, row).click()
+        done = "#campaign-done"
+        wait(driver, "progress to advance", lambda d: attribute_int(d, done, "data-done") > first, deadline)
+        wait(driver, "the campaign to finish on the page",
+             lambda d: attribute_int(d, done, "data-done") == total, deadline)
+        wait(driver, "the plots of the finished campaign",
+             lambda d: d.find_element(By.TAG_NAME, "body").get_attribute("data-plotted-done") == str(total),
+             deadline)
+        if not driver.execute_script("return window.rlposLoadedOnce === true"):
+            fail("the page was reloaded")
+        check_plots(driver, args.positioners, args.scenarios)
+        check_legends_fit(driver)
+        check_legend_toggle(driver)
+        full_page_screenshot(driver, os.path.join(args.out, "campaign_page.png"))
+        print(f"page ok: {first}/{total} at first sight, then {total}/{total} without reload; "
+              f"screenshots in {args.out}")
 
 
 if __name__ == "__main__":

@@ -21,7 +21,6 @@
 //   sent ...; heard N (...); forged F replies; heard from peers P      at the end
 //   rlpos-hostile-peer DOMAIN TAG|CYCLONE_XML DB WORKER_ID SCENARIO_JSON SECONDS [--write-only]
 #include <dds/dds.h>
-#include <sqlite3.h>
 
 #include <algorithm>
 #include <chrono>
@@ -33,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "common/store/sqlite_db.h"
+#include "common/store/store_error.h"
 #include "idl/dds/dds_config.h"
 #include "rlpos_messages.h"
 #include "tests/support/program_usage.h"
@@ -68,20 +69,19 @@ struct RunningJob {
 
 std::vector<RunningJob> RunningJobs(const std::string& db_file) {
   std::vector<RunningJob> out;
-  sqlite3* db = nullptr;
-  if (sqlite3_open_v2(db_file.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
-    sqlite3_stmt* st = nullptr;
-    if (sqlite3_prepare_v2(
-            db, "SELECT id, attempt, COALESCE(slot, 0) FROM jobs WHERE state = 'running'", -1, &st,
-            nullptr) == SQLITE_OK) {
-      while (sqlite3_step(st) == SQLITE_ROW) {
-        out.push_back({reinterpret_cast<const char*>(sqlite3_column_text(st, 0)),
-                       sqlite3_column_int(st, 1), sqlite3_column_int(st, 2)});
-      }
+  // What could be read is enough: a peer that finds no database (or a busy one) attacks no job.
+  try {
+    rlpos::Database db(db_file, /*read_only=*/true, /*busy_timeout_ms=*/0);
+    rlpos::Statement running = db.Prepare(
+        "SELECT id, attempt, COALESCE(slot, 0) AS slot FROM jobs WHERE state = 'running'");
+    const rlpos::ResultColumn id = running.Column("id"), attempt = running.Column("attempt"),
+                              slot = running.Column("slot");
+    while (running.Step()) {
+      out.push_back({running.Text(id), static_cast<int>(running.Int(attempt)),
+                     static_cast<int>(running.Int(slot))});
     }
-    sqlite3_finalize(st);
+  } catch (const rlpos::StoreError&) {
   }
-  sqlite3_close(db);
   return out;
 }
 

@@ -65,10 +65,7 @@ refused "a policy of another scenario" "policies/on-c" "(trained on C) does not 
 [ ! -e "$DB" ] || fail "a refused campaign wrote $DB"
 
 write_campaign "$WORK/campaign.json" "policies/tiny"
-"$CAMPAIGN" run "$WORK/campaign.json" --workers 2 --db "$DB" --tag "$TAG" --no-progress \
-  >"$WORK/out.txt" 2>"$WORK/err.txt" || { rc=$?; cat "$WORK/err.txt" >&2; fail "run exited $rc"; }
-ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
-[ -n "$ID" ] || fail "run printed no campaign id"
+run_campaign "$WORK/campaign.json" --no-progress
 
 # 2 position jobs (oracle, rl+tiny) + 2 x 2 evals; nothing trained.
 expect_complete "$DB" 6

@@ -4,10 +4,7 @@
 # the run's totals, offsets are left out, and the summary and report show each UAV.
 source "$(dirname "$0")/lib.sh"
 DB=$WORK/rlpos.db
-"$CAMPAIGN" run "$SRC/tests/e2e/campaigns/several_uavs.json" --workers 2 --db "$DB" \
-  --tag "$TAG" >"$WORK/out.txt" 2>"$WORK/err.txt" || { rc=$?; cat "$WORK/err.txt" >&2; fail "run exited $rc"; }
-ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
-[ -n "$ID" ] || fail "run printed no campaign id"
+run_campaign "$SRC/tests/e2e/campaigns/several_uavs.json"
 
 # Per scenario: 2 positions + 1 train + 3 evals (baseline, centroid, rl; no offsets).
 expect_complete "$DB" 12

@@ -4,10 +4,7 @@
 # report shows the three.
 source "$(dirname "$0")/lib.sh"
 DB=$WORK/rlpos.db
-"$CAMPAIGN" run "$SRC/tests/e2e/campaigns/three_algorithms.json" --workers 2 --db "$DB" \
-  --tag "$TAG" >"$WORK/out.txt" 2>"$WORK/err.txt" || { rc=$?; cat "$WORK/err.txt" >&2; fail "run exited $rc"; }
-ID=$(sed -n 's/^campaign //p' "$WORK/out.txt")
-[ -n "$ID" ] || fail "run printed no campaign id"
+run_campaign "$SRC/tests/e2e/campaigns/three_algorithms.json"
 
 # 1 oracle position + 3 trains + 4 evals.
 expect_complete "$DB" 8

@@ -5,13 +5,12 @@ Exit 0 when every check holds; 1 with a one-line reason otherwise."""
 import argparse
 import os
 import sys
-import tempfile
 import time
 
 from selenium.webdriver.common.by import By
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from campaign_page import browser, fail, full_page_screenshot, wait  # noqa: E402
+from campaign_page import browser_session, fail, full_page_screenshot, wait  # noqa: E402
 
 
 def frame(driver, scenario):
@@ -51,40 +50,36 @@ def main():
     args = parser.parse_args()
     deadline = time.monotonic() + args.deadline
     positioners = args.positioners.split(",")
-    with tempfile.TemporaryDirectory(prefix="rlpos-chromium-") as profile:
-        driver = browser(profile)
-        try:
-            driver.get(f"{args.url}#/campaign/{args.campaign}")
-            controls = f'.track-controls[data-scenario="{args.scenario}"]'
-            wait(driver, "the map's time slider", lambda d: d.find_elements(By.CSS_SELECTOR, controls), deadline)
-            first = frame(driver, args.scenario)
-            if first["max"] != args.frames - 1:
-                fail(f"the slider has {first['max'] + 1} frames, expected {args.frames}")
-            if sorted(first["uavs"]) != sorted(positioners):
-                fail(f"UAV markers of {sorted(first['uavs'])}, expected {sorted(positioners)}")
-            if not first["ues"]:
-                fail("no UE on the played map")
-            slide_to(driver, args.scenario, first["max"])
-            last = frame(driver, args.scenario)
-            if last["label"] == first["label"]:
-                fail(f"the time label stayed {first['label']!r} when the slider moved")
-            if not any(last["uavs"][p] != first["uavs"][p] for p in positioners):
-                fail("no UAV marker moved with the slider")
-            if not any(a != b for a, b in zip(first["ues"], last["ues"])):
-                fail("no UE marker moved with the slider")
-            card = driver.find_element(By.CSS_SELECTOR, controls).find_element(By.XPATH, "..")
-            driver.execute_script("arguments[0].scrollIntoView()", card)
-            card.screenshot(os.path.join(args.out, "track_map.png"))
-            # Play from the start: the frames advance by themselves.
-            slide_to(driver, args.scenario, 0)
-            start = frame(driver, args.scenario)["label"]
-            driver.find_element(By.CSS_SELECTOR, controls + " .track-play").click()
-            wait(driver, "play to advance the time", lambda d: frame(d, args.scenario)["label"] != start, deadline)
-            full_page_screenshot(driver, os.path.join(args.out, "track_page.png"))
-            print(f"map ok: {first['label']} -> {last['label']}, {len(last['ues'])} UEs, "
-                  f"UAVs of {', '.join(positioners)}; screenshots in {args.out}")
-        finally:
-            driver.quit()
+    with browser_session() as driver:
+        driver.get(f"{args.url}#/campaign/{args.campaign}")
+        controls = f'.track-controls[data-scenario="{args.scenario}"]'
+        wait(driver, "the map's time slider", lambda d: d.find_elements(By.CSS_SELECTOR, controls), deadline)
+        first = frame(driver, args.scenario)
+        if first["max"] != args.frames - 1:
+            fail(f"the slider has {first['max'] + 1} frames, expected {args.frames}")
+        if sorted(first["uavs"]) != sorted(positioners):
+            fail(f"UAV markers of {sorted(first['uavs'])}, expected {sorted(positioners)}")
+        if not first["ues"]:
+            fail("no UE on the played map")
+        slide_to(driver, args.scenario, first["max"])
+        last = frame(driver, args.scenario)
+        if last["label"] == first["label"]:
+            fail(f"the time label stayed {first['label']!r} when the slider moved")
+        if not any(last["uavs"][p] != first["uavs"][p] for p in positioners):
+            fail("no UAV marker moved with the slider")
+        if not any(a != b for a, b in zip(first["ues"], last["ues"])):
+            fail("no UE marker moved with the slider")
+        card = driver.find_element(By.CSS_SELECTOR, controls).find_element(By.XPATH, "..")
+        driver.execute_script("arguments[0].scrollIntoView()", card)
+        card.screenshot(os.path.join(args.out, "track_map.png"))
+        # Play from the start: the frames advance by themselves.
+        slide_to(driver, args.scenario, 0)
+        start = frame(driver, args.scenario)["label"]
+        driver.find_element(By.CSS_SELECTOR, controls + " .track-play").click()
+        wait(driver, "play to advance the time", lambda d: frame(d, args.scenario)["label"] != start, deadline)
+        full_page_screenshot(driver, os.path.join(args.out, "track_page.png"))
+        print(f"map ok: {first['label']} -> {last['label']}, {len(last['ues'])} UEs, "
+              f"UAVs of {', '.join(positioners)}; screenshots in {args.out}")
 
 
 if __name__ == "__main__":

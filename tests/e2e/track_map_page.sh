@@ -7,15 +7,7 @@
 # Skips (77) where Chromium, its driver or Selenium is missing.
 # Usage: track_map_page.sh BIN_DIR SOURCE_DIR OUTPUT_DIR
 source "$(dirname "$0")/lib.sh"
-OUT=${3:-$WORK}
-PYTHON=/usr/bin/python3
-for tool in chromium chromedriver; do
-  command -v "$tool" >/dev/null || { echo "SKIP: $tool is not installed" >&2; exit 77; }
-done
-"$PYTHON" -c 'import selenium' 2>/dev/null || { echo "SKIP: python3-selenium is not installed" >&2; exit 77; }
-mkdir -p "$OUT"
-
-DB=$WORK/rlpos.db
+start_browser_test "${3:-}"
 cat >"$WORK/walk.json" <<JSON
 {
   "name": "track-map",

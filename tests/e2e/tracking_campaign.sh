@@ -23,16 +23,7 @@ cat >"$WORK/track.json" <<JSON
 }
 JSON
 start_run "$WORK/track.json"
-running_on_w0() {
-  kill -0 "$RUN" 2>/dev/null || fail "the run exited before a track job ran: $(cat "$WORK/err.txt")"
-  [ -f "$DB" ] && [ "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE state = 'running'
-    AND kind = 'track' AND worker_id = '$TAG-w0'" 2>/dev/null)" = 1 ]
-}
-wait_until 240 running_on_w0 || fail "no track job ever ran on worker w0"
-JOB=$(sql "$DB" "SELECT id FROM jobs WHERE state = 'running' AND worker_id = '$TAG-w0'")
-W0=$(pgrep -f -- "rlpos-worker --id $TAG-w0 ") || fail "no process for worker w0"
-sim_running() { pgrep -P "$W0" -f -- "rlpos-sim track" >/dev/null; }
-wait_until 60 sim_running || fail "the track run never started on w0"
+await_job_on_w0 track "the track run" check-run
 pkill -KILL -f -- "rlpos-worker --id $TAG-w0 " || fail "could not kill worker w0"
 wait "$RUN" || { cat "$WORK/err.txt" >&2; fail "run exited non-zero"; }
 

@@ -5,16 +5,8 @@
 source "$(dirname "$0")/lib.sh"
 DB=$WORK/rlpos.db
 start_run "$SRC/tests/e2e/campaigns/kill.json"
-running_on_w0() {
-  [ -f "$DB" ] && [ "$(sql "$DB" "SELECT COUNT(*) FROM jobs WHERE state = 'running'
-    AND kind = 'eval' AND worker_id = '$TAG-w0'" 2>/dev/null)" = 1 ]
-}
-wait_until 240 running_on_w0 || fail "no eval job ever ran on worker w0"
-JOB=$(sql "$DB" "SELECT id FROM jobs WHERE state = 'running' AND worker_id = '$TAG-w0'")
 # In the middle of the eval: its rlpos-sim runs under w0.
-W0=$(pgrep -f -- "rlpos-worker --id $TAG-w0 ") || fail "no process for worker w0"
-sim_running() { pgrep -P "$W0" -f -- "rlpos-sim eval" >/dev/null; }
-wait_until 60 sim_running || fail "the eval never started on w0"
+await_job_on_w0 eval "the eval"
 # `status` from another terminal while it runs: jobs running.
 "$CAMPAIGN" status --db "$DB" | grep -Eq "(^| )[1-9][0-9]* running" || fail "status does not show the running job"
 pkill -KILL -f -- "rlpos-worker --id $TAG-w0 " || fail "could not kill worker w0"

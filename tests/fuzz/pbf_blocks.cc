@@ -187,6 +187,93 @@ std::uint64_t WeirdVarint(std::uint64_t v, FuzzInput& in) {
   return KnownOsmiumBugsIncluded() ? odd : odd & ((std::uint64_t{1} << 30) - 1);
 }
 
+// A packed value deleted, doubled, made odd, or the values cut short.
+void EditPackedValues(ProtoParts& parts, FuzzInput& in) {
+  auto& values = parts.packed[in.Below(parts.packed.size())]->values;
+  const auto at = static_cast<long>(in.Below(values.size()));
+  switch (in.Below(4)) {
+    case 0:
+      values.erase(values.begin() + at);
+      break;
+    case 1:
+      values.insert(values.begin() + at, values[static_cast<std::size_t>(at)]);
+      break;
+    case 2:
+      values.resize(in.Below(values.size()));
+      break;
+    default:
+      values[static_cast<std::size_t>(at)] = WeirdVarint(values[static_cast<std::size_t>(at)], in);
+  }
+}
+
+// A string made a key or value the importer looks for, another string, or mutated.
+void EditString(ProtoParts& parts, FuzzInput& in) {
+  static const char* const kStrings[] = {"building",
+                                         "building:part",
+                                         "highway",
+                                         "type",
+                                         "multipolygon",
+                                         "outer",
+                                         "inner",
+                                         "yes",
+                                         "no",
+                                         "height",
+                                         "building:levels",
+                                         "min_height",
+                                         "tunnel",
+                                         "",
+                                         "1e999",
+                                         "NaN",
+                                         "-5"};
+  ProtoField& field = *parts.strings[in.Below(parts.strings.size())];
+  std::string& text = field.bytes;
+  switch (in.Below(3)) {
+    case 0:
+      text = kStrings[in.Below(std::size(kStrings))];
+      break;
+    case 1:
+      text = parts.strings[in.Below(parts.strings.size())]->bytes;
+      break;
+    default:
+      text = in.Mutate(text);
+  }
+}
+
+// A submessage's bytes mutated (only the string table's, unless the known bugs are included).
+void DamageSubmessage(ProtoParts& parts, FuzzInput& in) {
+  std::vector<ProtoField*> damageable;
+  for (ProtoField* f : parts.submessages) {
+    if (KnownOsmiumBugsIncluded() || f->type == PbfMessage::kStringTable)
+      damageable.push_back(f);
+  }
+  if (damageable.empty())
+    return;
+  ProtoField& f = *damageable[in.Below(damageable.size())];
+  std::string damaged = in.Mutate(SerializeProto(f.fields));
+  f.bytes = std::move(damaged);
+  f.fields.clear();
+  f.kind = ProtoField::Kind::kBytes;
+}
+
+// A field of a message deleted, doubled, or swapped with another.
+void EditMessageFields(ProtoParts& parts, FuzzInput& in) {
+  auto& fields = *parts.messages[in.Below(parts.messages.size())];
+  if (fields.empty())
+    return;
+  const auto a = static_cast<long>(in.Below(fields.size()));
+  const auto b = static_cast<long>(in.Below(fields.size()));
+  switch (in.Below(3)) {
+    case 0:
+      fields.erase(fields.begin() + a);
+      break;
+    case 1:
+      fields.insert(fields.begin() + b, ProtoField(fields[static_cast<std::size_t>(a)]));
+      break;
+    default:
+      std::swap(fields[static_cast<std::size_t>(a)], fields[static_cast<std::size_t>(b)]);
+  }
+}
+
 }  // namespace
 
 void EditProto(std::vector<ProtoField>& block, FuzzInput& in) {
@@ -197,81 +284,13 @@ void EditProto(std::vector<ProtoField>& block, FuzzInput& in) {
     ProtoField& f = *parts.varints[in.Below(parts.varints.size())];
     f.value = WeirdVarint(f.value, in);
   } else if (edit < 7 && !parts.packed.empty()) {
-    auto& values = parts.packed[in.Below(parts.packed.size())]->values;
-    const auto at = static_cast<long>(in.Below(values.size()));
-    switch (in.Below(4)) {
-      case 0:
-        values.erase(values.begin() + at);
-        break;
-      case 1:
-        values.insert(values.begin() + at, values[static_cast<std::size_t>(at)]);
-        break;
-      case 2:
-        values.resize(in.Below(values.size()));
-        break;
-      default:
-        values[static_cast<std::size_t>(at)] =
-            WeirdVarint(values[static_cast<std::size_t>(at)], in);
-    }
+    EditPackedValues(parts, in);
   } else if (edit < 9 && !parts.strings.empty()) {
-    static const char* const kStrings[] = {"building",
-                                           "building:part",
-                                           "highway",
-                                           "type",
-                                           "multipolygon",
-                                           "outer",
-                                           "inner",
-                                           "yes",
-                                           "no",
-                                           "height",
-                                           "building:levels",
-                                           "min_height",
-                                           "tunnel",
-                                           "",
-                                           "1e999",
-                                           "NaN",
-                                           "-5"};
-    ProtoField& field = *parts.strings[in.Below(parts.strings.size())];
-    std::string& text = field.bytes;
-    switch (in.Below(3)) {
-      case 0:
-        text = kStrings[in.Below(std::size(kStrings))];
-        break;
-      case 1:
-        text = parts.strings[in.Below(parts.strings.size())]->bytes;
-        break;
-      default:
-        text = in.Mutate(text);
-    }
+    EditString(parts, in);
   } else if (edit == 10) {
-    std::vector<ProtoField*> damageable;
-    for (ProtoField* f : parts.submessages) {
-      if (KnownOsmiumBugsIncluded() || f->type == PbfMessage::kStringTable)
-        damageable.push_back(f);
-    }
-    if (damageable.empty())
-      return;
-    ProtoField& f = *damageable[in.Below(damageable.size())];
-    std::string damaged = in.Mutate(SerializeProto(f.fields));
-    f.bytes = std::move(damaged);
-    f.fields.clear();
-    f.kind = ProtoField::Kind::kBytes;
+    DamageSubmessage(parts, in);
   } else {
-    auto& fields = *parts.messages[in.Below(parts.messages.size())];
-    if (fields.empty())
-      return;
-    const auto a = static_cast<long>(in.Below(fields.size()));
-    const auto b = static_cast<long>(in.Below(fields.size()));
-    switch (in.Below(3)) {
-      case 0:
-        fields.erase(fields.begin() + a);
-        break;
-      case 1:
-        fields.insert(fields.begin() + b, ProtoField(fields[static_cast<std::size_t>(a)]));
-        break;
-      default:
-        std::swap(fields[static_cast<std::size_t>(a)], fields[static_cast<std::size_t>(b)]);
-    }
+    EditMessageFields(parts, in);
   }
 }
 

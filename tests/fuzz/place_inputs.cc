@@ -201,182 +201,243 @@ std::string MovedCoordinate(const std::string& value, const std::string& other, 
   }
 }
 
+// Each edit below is one case of EditOsmXml, its random draws in the order they always were (a
+// seed gives the same file).
+
+// An element deleted, a node more often than not.
+void DeleteElement(OsmXml& xml, FuzzInput& in) {
+  auto& elements = xml.elements;
+  const std::size_t n = elements.size();
+  if (n > 0) {
+    const auto nodes = xml.Find("<node");
+    const std::size_t i =
+        in.Chance(0.6) && !nodes.empty() ? nodes[in.Below(nodes.size())] : in.Below(n);
+    elements.erase(elements.begin() + static_cast<long>(i));
+  }
+}
+
+// An element duplicated (its id twice).
+void DuplicateElement(OsmXml& xml, FuzzInput& in) {
+  auto& elements = xml.elements;
+  const std::size_t n = elements.size();
+  if (n > 0)
+    elements.insert(elements.begin() + static_cast<long>(in.Below(n + 1)), elements[in.Below(n)]);
+}
+
+// An element moved (a way before its nodes, a relation before its ways).
+void MoveElement(OsmXml& xml, FuzzInput& in) {
+  auto& elements = xml.elements;
+  const std::size_t n = elements.size();
+  if (n > 1) {
+    auto element = elements[in.Below(n)];
+    elements.erase(std::find(elements.begin(), elements.end(), element));
+    elements.insert(elements.begin() + static_cast<long>(in.Below(n)), std::move(element));
+  }
+}
+
+// An element of another fixture (its ids clash or dangle).
+void InsertOtherElement(OsmXml& xml, const std::vector<OsmXml>& others, FuzzInput& in) {
+  auto& elements = xml.elements;
+  const std::size_t n = elements.size();
+  const OsmXml& other = others[in.Below(others.size())];
+  if (!other.elements.empty())
+    elements.insert(elements.begin() + static_cast<long>(in.Below(n + 1)),
+                    other.elements[in.Below(other.elements.size())]);
+}
+
+// A child line (<nd>, <member>, <tag>) deleted, duplicated, or swapped with another.
+void EditChildLine(OsmXml& xml, FuzzInput& in) {
+  auto& elements = xml.elements;
+  const std::size_t n = elements.size();
+  if (n == 0)
+    return;
+  auto& element = elements[in.Below(n)];
+  if (element.size() < 3)
+    return;
+  const std::size_t a = 1 + in.Below(element.size() - 2);
+  const std::size_t b = 1 + in.Below(element.size() - 2);
+  const std::size_t edit = in.Below(3);
+  if (edit == 0)
+    element.erase(element.begin() + static_cast<long>(a));
+  else if (edit == 1)
+    element.insert(element.begin() + static_cast<long>(b), element[a]);
+  else
+    std::swap(element[a], element[b]);
+}
+
+// An attribute value made a weird number (an id, ref, lat, lon, version, v).
+void MakeValueWeird(OsmXml& xml, FuzzInput& in) {
+  std::string* line = PickLine(xml, {}, in);
+  if (line == nullptr)
+    return;
+  const auto values = AttributeValues(*line, "");
+  if (!values.empty()) {
+    const auto [begin, end] = values[in.Below(values.size())];
+    line->replace(begin, end - begin, WeirdNumberText(in));
+  }
+}
+
+// A tag's value made odd (and maybe its key).
+void MakeTagOdd(OsmXml& xml, FuzzInput& in) {
+  std::vector<std::string*> tags;
+  for (auto& element : xml.elements) {
+    for (auto& line : element) {
+      if (StartsWith(Trimmed(line), "<tag"))
+        tags.push_back(&line);
+    }
+  }
+  if (tags.empty())
+    return;
+  std::string& tag = *tags[in.Below(tags.size())];
+  static const char* const kKeys[] = {
+      "height",      "building:levels", "min_height",    "building:min_level",
+      "roof:height", "building",        "building:part", "type",
+      "highway",     "tunnel"};
+  if (in.Chance(0.3))
+    SetAttribute(tag, "k", kKeys[in.Below(sizeof kKeys / sizeof kKeys[0])]);
+  static const char* const kValues[] = {"yes",         "no",    "part", "multipolygon", "inner", "",
+                                        "residential", "&amp;", "&#0;", "&#x10FFFF;"};
+  SetAttribute(
+      tag, "v",
+      in.Chance(0.6) ? WeirdNumberText(in) : kValues[in.Below(sizeof kValues / sizeof kValues[0])]);
+}
+
+// A way's ring broken: open, closed on another node, or through a missing one.
+void BreakWayRing(OsmXml& xml, FuzzInput& in) {
+  const auto ways = xml.Find("<way");
+  if (ways.empty())
+    return;
+  auto& way = xml.elements[ways[in.Below(ways.size())]];
+  std::vector<std::size_t> nds;
+  for (std::size_t i = 0; i < way.size(); ++i) {
+    if (StartsWith(Trimmed(way[i]), "<nd"))
+      nds.push_back(i);
+  }
+  if (nds.empty())
+    return;
+  const std::size_t edit = in.Below(3);
+  if (edit == 0) {
+    way.erase(way.begin() + static_cast<long>(nds.back()));
+  } else if (edit == 1) {
+    SetAttribute(way[nds.back()], "ref", AttributeValue(way[nds[in.Below(nds.size())]], "ref"));
+  } else {
+    std::string nd = way[nds[0]];
+    SetAttribute(nd, "ref", std::to_string(1 + in.Below(99999)));
+    way.insert(way.begin() + static_cast<long>(nds[in.Below(nds.size())]), nd);
+  }
+}
+
+// A node moved.
+void MoveNode(OsmXml& xml, FuzzInput& in) {
+  auto& elements = xml.elements;
+  const auto nodes = xml.Find("<node");
+  if (nodes.empty())
+    return;
+  std::string& node = elements[nodes[in.Below(nodes.size())]][0];
+  const std::string& other = elements[nodes[in.Below(nodes.size())]][0];
+  const char* axis = in.Chance(0.5) ? "lat" : "lon";
+  const std::string moved =
+      MovedCoordinate(AttributeValue(node, axis), AttributeValue(other, axis), in);
+  SetAttribute(node, axis, moved);
+  if (in.Chance(0.3)) {  // both axes onto the other node's
+    SetAttribute(node, "lat", AttributeValue(other, "lat"));
+    SetAttribute(node, "lon", AttributeValue(other, "lon"));
+  }
+}
+
+// The bounds: dropped, shrunk off the venue's centre, or made odd.
+void EditBounds(OsmXml& xml, FuzzInput& in) {
+  for (std::size_t i = 0; i < xml.head.size(); ++i) {
+    std::string& line = xml.head[i];
+    if (!StartsWith(Trimmed(line), "<bounds"))
+      continue;
+    const std::size_t edit = in.Below(3);
+    if (edit == 0) {
+      xml.head.erase(xml.head.begin() + static_cast<long>(i));
+    } else if (edit == 1) {
+      SetAttribute(line, in.Chance(0.5) ? "maxlat" : "minlon",
+                   in.Chance(0.5) ? "60.0000000" : "24.9999000");
+    } else {
+      static const char* const kNames[] = {"minlat", "minlon", "maxlat", "maxlon"};
+      SetAttribute(line, kNames[in.Below(4)], WeirdNumberText(in));
+    }
+    return;
+  }
+}
+
+// A relation's member: its role, type or ref changed.
+void EditMember(OsmXml& xml, FuzzInput& in) {
+  const auto relations = xml.Find("<relation");
+  if (relations.empty())
+    return;
+  auto& relation = xml.elements[relations[in.Below(relations.size())]];
+  std::string& line = relation[in.Below(relation.size())];
+  if (!StartsWith(Trimmed(line), "<member"))
+    return;
+  static const char* const kRoles[] = {"outer", "inner", "", "part", "outline"};
+  static const char* const kTypes[] = {"way", "node", "relation", "area"};
+  const std::size_t edit = in.Below(3);
+  if (edit == 0)
+    SetAttribute(line, "role", kRoles[in.Below(5)]);
+  else if (edit == 1)
+    SetAttribute(line, "type", kTypes[in.Below(4)]);
+  else
+    SetAttribute(line, "ref", in.Chance(0.5) ? "1" : AttributeValue(relation[0], "id"));
+}
+
+// An id or a ref made another element's id.
+void ShareId(OsmXml& xml, FuzzInput& in) {
+  std::string* line = PickLine(xml, {}, in);
+  std::string* other = PickLine(xml, {}, in);
+  if (line == nullptr)
+    return;
+  const std::string id = AttributeValue(*other, "id");
+  if (!id.empty())
+    SetAttribute(*line, in.Chance(0.5) ? "id" : "ref", id);
+}
+
 }  // namespace
 
 void EditOsmXml(OsmXml& xml, const std::vector<OsmXml>& others, FuzzInput& in) {
-  auto& elements = xml.elements;
-  const std::size_t n = elements.size();
   switch (in.Below(14)) {
-    case 0:  // delete an element, a node more often than not
-      if (n > 0) {
-        const auto nodes = xml.Find("<node");
-        const std::size_t i =
-            in.Chance(0.6) && !nodes.empty() ? nodes[in.Below(nodes.size())] : in.Below(n);
-        elements.erase(elements.begin() + static_cast<long>(i));
-      }
+    case 0:
+      DeleteElement(xml, in);
       break;
-    case 1:  // duplicate an element (its id twice)
-      if (n > 0)
-        elements.insert(elements.begin() + static_cast<long>(in.Below(n + 1)),
-                        elements[in.Below(n)]);
+    case 1:
+      DuplicateElement(xml, in);
       break;
-    case 2:  // move an element (a way before its nodes, a relation before its ways)
-      if (n > 1) {
-        auto element = elements[in.Below(n)];
-        elements.erase(std::find(elements.begin(), elements.end(), element));
-        elements.insert(elements.begin() + static_cast<long>(in.Below(n)), std::move(element));
-      }
+    case 2:
+      MoveElement(xml, in);
       break;
-    case 3: {  // an element of another fixture (its ids clash or dangle)
-      const OsmXml& other = others[in.Below(others.size())];
-      if (!other.elements.empty())
-        elements.insert(elements.begin() + static_cast<long>(in.Below(n + 1)),
-                        other.elements[in.Below(other.elements.size())]);
+    case 3:
+      InsertOtherElement(xml, others, in);
       break;
-    }
-    case 4:    // delete a child line (<nd>, <member>, <tag>)
-    case 5:    // duplicate one
-    case 6: {  // swap two
-      if (n == 0)
-        break;
-      auto& element = elements[in.Below(n)];
-      if (element.size() < 3)
-        break;
-      const std::size_t a = 1 + in.Below(element.size() - 2);
-      const std::size_t b = 1 + in.Below(element.size() - 2);
-      const std::size_t edit = in.Below(3);
-      if (edit == 0)
-        element.erase(element.begin() + static_cast<long>(a));
-      else if (edit == 1)
-        element.insert(element.begin() + static_cast<long>(b), element[a]);
-      else
-        std::swap(element[a], element[b]);
+    case 4:
+    case 5:
+    case 6:
+      EditChildLine(xml, in);
       break;
-    }
-    case 7: {  // an attribute value made a weird number (an id, ref, lat, lon, version, v)
-      std::string* line = PickLine(xml, {}, in);
-      if (line == nullptr)
-        break;
-      const auto values = AttributeValues(*line, "");
-      if (!values.empty()) {
-        const auto [begin, end] = values[in.Below(values.size())];
-        line->replace(begin, end - begin, WeirdNumberText(in));
-      }
+    case 7:
+      MakeValueWeird(xml, in);
       break;
-    }
-    case 8: {  // a tag's value made odd
-      std::vector<std::string*> tags;
-      for (auto& element : elements) {
-        for (auto& line : element) {
-          if (StartsWith(Trimmed(line), "<tag"))
-            tags.push_back(&line);
-        }
-      }
-      if (tags.empty())
-        break;
-      std::string& tag = *tags[in.Below(tags.size())];
-      static const char* const kKeys[] = {
-          "height",      "building:levels", "min_height",    "building:min_level",
-          "roof:height", "building",        "building:part", "type",
-          "highway",     "tunnel"};
-      if (in.Chance(0.3))
-        SetAttribute(tag, "k", kKeys[in.Below(sizeof kKeys / sizeof kKeys[0])]);
-      static const char* const kValues[] = {"yes",   "no",        "part",        "multipolygon",
-                                            "inner", "",          "residential", "&amp;",
-                                            "&#0;",  "&#x10FFFF;"};
-      SetAttribute(tag, "v",
-                   in.Chance(0.6) ? WeirdNumberText(in)
-                                  : kValues[in.Below(sizeof kValues / sizeof kValues[0])]);
+    case 8:
+      MakeTagOdd(xml, in);
       break;
-    }
-    case 9: {  // a way's ring broken: open, closed on another node, or through a missing one
-      const auto ways = xml.Find("<way");
-      if (ways.empty())
-        break;
-      auto& way = elements[ways[in.Below(ways.size())]];
-      std::vector<std::size_t> nds;
-      for (std::size_t i = 0; i < way.size(); ++i) {
-        if (StartsWith(Trimmed(way[i]), "<nd"))
-          nds.push_back(i);
-      }
-      if (nds.empty())
-        break;
-      const std::size_t edit = in.Below(3);
-      if (edit == 0) {
-        way.erase(way.begin() + static_cast<long>(nds.back()));
-      } else if (edit == 1) {
-        SetAttribute(way[nds.back()], "ref", AttributeValue(way[nds[in.Below(nds.size())]], "ref"));
-      } else {
-        std::string nd = way[nds[0]];
-        SetAttribute(nd, "ref", std::to_string(1 + in.Below(99999)));
-        way.insert(way.begin() + static_cast<long>(nds[in.Below(nds.size())]), nd);
-      }
+    case 9:
+      BreakWayRing(xml, in);
       break;
-    }
-    case 10: {  // a node moved
-      const auto nodes = xml.Find("<node");
-      if (nodes.empty())
-        break;
-      std::string& node = elements[nodes[in.Below(nodes.size())]][0];
-      const std::string& other = elements[nodes[in.Below(nodes.size())]][0];
-      const char* axis = in.Chance(0.5) ? "lat" : "lon";
-      const std::string moved =
-          MovedCoordinate(AttributeValue(node, axis), AttributeValue(other, axis), in);
-      SetAttribute(node, axis, moved);
-      if (in.Chance(0.3)) {  // both axes onto the other node's
-        SetAttribute(node, "lat", AttributeValue(other, "lat"));
-        SetAttribute(node, "lon", AttributeValue(other, "lon"));
-      }
+    case 10:
+      MoveNode(xml, in);
       break;
-    }
-    case 11: {  // the bounds: dropped, shrunk off the venue's centre, or made odd
-      for (std::size_t i = 0; i < xml.head.size(); ++i) {
-        std::string& line = xml.head[i];
-        if (!StartsWith(Trimmed(line), "<bounds"))
-          continue;
-        const std::size_t edit = in.Below(3);
-        if (edit == 0) {
-          xml.head.erase(xml.head.begin() + static_cast<long>(i));
-        } else if (edit == 1) {
-          SetAttribute(line, in.Chance(0.5) ? "maxlat" : "minlon",
-                       in.Chance(0.5) ? "60.0000000" : "24.9999000");
-        } else {
-          static const char* const kNames[] = {"minlat", "minlon", "maxlat", "maxlon"};
-          SetAttribute(line, kNames[in.Below(4)], WeirdNumberText(in));
-        }
-        break;
-      }
+    case 11:
+      EditBounds(xml, in);
       break;
-    }
-    case 12: {  // a relation's member: its role, type or ref changed
-      const auto relations = xml.Find("<relation");
-      if (relations.empty())
-        break;
-      auto& relation = elements[relations[in.Below(relations.size())]];
-      std::string& line = relation[in.Below(relation.size())];
-      if (!StartsWith(Trimmed(line), "<member"))
-        break;
-      static const char* const kRoles[] = {"outer", "inner", "", "part", "outline"};
-      static const char* const kTypes[] = {"way", "node", "relation", "area"};
-      const std::size_t edit = in.Below(3);
-      if (edit == 0)
-        SetAttribute(line, "role", kRoles[in.Below(5)]);
-      else if (edit == 1)
-        SetAttribute(line, "type", kTypes[in.Below(4)]);
-      else
-        SetAttribute(line, "ref", in.Chance(0.5) ? "1" : AttributeValue(relation[0], "id"));
+    case 12:
+      EditMember(xml, in);
       break;
-    }
-    default: {  // an id or a ref made another element's id
-      std::string* line = PickLine(xml, {}, in);
-      std::string* other = PickLine(xml, {}, in);
-      if (line == nullptr)
-        break;
-      const std::string id = AttributeValue(*other, "id");
-      if (!id.empty())
-        SetAttribute(*line, in.Chance(0.5) ? "id" : "ref", id);
+    default:
+      ShareId(xml, in);
       break;
-    }
   }
 }
 

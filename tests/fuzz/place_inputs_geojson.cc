@@ -55,23 +55,21 @@ void CollectParts(json& v, JsonParts& parts) {
     CollectParts(child, parts);
 }
 
-}  // namespace
-
-void EditGeoJson(json& doc, FuzzInput& in) {
+// The parts of a document one edit may change, drawn before the edit is.
+struct GeoJsonTargets {
   JsonParts parts;
-  CollectParts(doc, parts);
-  json* features = doc.is_object() && doc.contains("features") && doc["features"].is_array()
-                       ? &doc["features"]
-                       : nullptr;
-  json* feature =
-      features && !features->empty() ? &(*features)[in.Below(features->size())] : nullptr;
-  json* position =
-      parts.positions.empty() ? nullptr : parts.positions[in.Below(parts.positions.size())];
-  json* line = parts.lines.empty() ? nullptr : parts.lines[in.Below(parts.lines.size())];
-  const std::size_t edit = in.Below(14);
-  if (edit <= 8 && line == nullptr)
-    return;
-  const auto at = static_cast<long>(line ? in.Below(line->size()) : 0);
+  json* features = nullptr;
+  json* feature = nullptr;
+  json* position = nullptr;
+  json* line = nullptr;
+  long at = 0;  // a position's index in `line`
+};
+
+// Edits 0 to 8 of EditGeoJson: of a position or of a line (`line` is not null).
+void EditPositions(std::size_t edit, GeoJsonTargets& t, FuzzInput& in) {
+  json* const line = t.line;
+  json* const position = t.position;
+  const long at = t.at;
   switch (edit) {
     case 0:  // a position deleted
       line->erase(line->begin() + at);
@@ -81,7 +79,7 @@ void EditGeoJson(json& doc, FuzzInput& in) {
                    json((*line)[static_cast<std::size_t>(at)]));
       break;
     case 2:  // a position onto another's
-      *position = *parts.positions[in.Below(parts.positions.size())];
+      *position = *t.parts.positions[in.Below(t.parts.positions.size())];
       break;
     case 3: {  // a position moved by a hair or a few metres
       static const double kSteps[] = {1e-9, -1e-7, 1e-6, 2e-5, -3e-4};
@@ -101,93 +99,140 @@ void EditGeoJson(json& doc, FuzzInput& in) {
     case 7:  // a ring turned the other way
       std::reverse(line->begin(), line->end());
       break;
-    case 8:  // a line cut to 0, 1 or 2 positions
+    default:  // a line cut to 0, 1 or 2 positions
       line->erase(line->begin() + std::min<long>(static_cast<long>(in.Below(3)),
                                                  static_cast<long>(line->size())),
                   line->end());
+  }
+}
+
+// A feature deleted or given twice.
+void DeleteOrDoubleFeature(json* features, json* feature, FuzzInput& in) {
+  if (feature == nullptr)
+    return;
+  if (in.Chance(0.5))
+    features->erase(features->begin() + (feature - &(*features)[0]));
+  else
+    features->push_back(json(*feature));
+}
+
+bool HasGeometry(const json* feature) {
+  return feature != nullptr && feature->is_object() && feature->contains("geometry") &&
+         (*feature)["geometry"].is_object();
+}
+
+// A geometry of another type, or none.
+void RetypeGeometry(json* feature, FuzzInput& in) {
+  if (!HasGeometry(feature))
+    return;
+  static const char* const kTypes[] = {
+      "Polygon", "MultiPolygon", "LineString",         "MultiLineString",
+      "Point",   "MultiPoint",   "GeometryCollection", "polygon"};
+  json& geometry = (*feature)["geometry"];
+  if (in.Chance(0.1))
+    geometry = nullptr;
+  else
+    geometry["type"] = kTypes[in.Below(8)];
+}
+
+// A property made odd, or the properties.
+void MakePropertyOdd(json* feature, FuzzInput& in) {
+  if (feature == nullptr || !feature->is_object())
+    return;
+  static const char* const kKeys[] = {
+      "height",      "building:levels", "min_height",    "building:min_level",
+      "roof:height", "building",        "building:part", "highway",
+      "name"};
+  json& properties = (*feature)["properties"];
+  if (in.Chance(0.1)) {
+    static const json kOdd[] = {nullptr, json::array(), "x", 5};
+    properties = kOdd[in.Below(4)];
+    return;
+  }
+  if (!properties.is_object())
+    properties = json::object();
+  const char* key = kKeys[in.Below(9)];
+  switch (in.Below(4)) {
+    case 0:
+      properties[key] = WeirdNumberText(in);
       break;
-    case 9:  // a feature deleted or given twice
-      if (feature == nullptr)
-        break;
-      if (in.Chance(0.5))
-        features->erase(features->begin() + (feature - &(*features)[0]));
-      else
-        features->push_back(json(*feature));
+    case 1:
+      properties[key] = WeirdJsonNumber(in);
       break;
-    case 10: {  // a geometry of another type, or none
-      if (feature == nullptr || !feature->is_object() || !feature->contains("geometry") ||
-          !(*feature)["geometry"].is_object())
-        break;
-      static const char* const kTypes[] = {
-          "Polygon", "MultiPolygon", "LineString",         "MultiLineString",
-          "Point",   "MultiPoint",   "GeometryCollection", "polygon"};
-      json& geometry = (*feature)["geometry"];
-      if (in.Chance(0.1))
-        geometry = nullptr;
-      else
-        geometry["type"] = kTypes[in.Below(8)];
+    case 2:
+      properties[key] = in.Chance(0.5) ? json("yes") : json("no");
       break;
-    }
-    case 11: {  // a property made odd, or the properties
-      if (feature == nullptr || !feature->is_object())
-        break;
-      static const char* const kKeys[] = {
-          "height",      "building:levels", "min_height",    "building:min_level",
-          "roof:height", "building",        "building:part", "highway",
-          "name"};
-      json& properties = (*feature)["properties"];
-      if (in.Chance(0.1)) {
-        static const json kOdd[] = {nullptr, json::array(), "x", 5};
-        properties = kOdd[in.Below(4)];
-        break;
-      }
-      if (!properties.is_object())
-        properties = json::object();
-      const char* key = kKeys[in.Below(9)];
-      switch (in.Below(4)) {
-        case 0:
-          properties[key] = WeirdNumberText(in);
-          break;
-        case 1:
-          properties[key] = WeirdJsonNumber(in);
-          break;
-        case 2:
-          properties[key] = in.Chance(0.5) ? json("yes") : json("no");
-          break;
-        default:
-          properties[key] = in.Chance(0.5) ? json(nullptr) : json::object({{"a", 1}});
-      }
+    default:
+      properties[key] = in.Chance(0.5) ? json(nullptr) : json::object({{"a", 1}});
+  }
+}
+
+// The bbox: dropped, shrunk off the centre, turned over, or odd.
+void EditBbox(json& doc, FuzzInput& in) {
+  if (!doc.is_object())
+    return;
+  switch (in.Below(4)) {
+    case 0:
+      doc.erase("bbox");
       break;
-    }
-    case 12: {  // the bbox: dropped, shrunk off the centre, turned over, or odd
-      if (!doc.is_object())
-        break;
-      switch (in.Below(4)) {
-        case 0:
-          doc.erase("bbox");
-          break;
-        case 1:
-          doc["bbox"] = {25.0000001, 59.9991922, 25.0016129, 60.0008078};
-          break;
-        case 2:
-          doc["bbox"] = {25.0016129, 60.0008078, 24.9983871, 59.9991922};
-          break;
-        default:
-          if (doc.contains("bbox") && doc["bbox"].is_array() && !doc["bbox"].empty())
-            doc["bbox"][in.Below(doc["bbox"].size())] = WeirdJsonNumber(in);
-      }
+    case 1:
+      doc["bbox"] = {25.0000001, 59.9991922, 25.0016129, 60.0008078};
       break;
-    }
-    default: {  // coordinates nested a level deeper or shallower
-      if (feature == nullptr || !feature->is_object() || !feature->contains("geometry") ||
-          !(*feature)["geometry"].is_object() || !(*feature)["geometry"].contains("coordinates"))
-        break;
-      json& coordinates = (*feature)["geometry"]["coordinates"];
-      if (in.Chance(0.5))
-        coordinates = json::array({coordinates});
-      else if (coordinates.is_array() && !coordinates.empty())
-        coordinates = json(coordinates[0]);
-    }
+    case 2:
+      doc["bbox"] = {25.0016129, 60.0008078, 24.9983871, 59.9991922};
+      break;
+    default:
+      if (doc.contains("bbox") && doc["bbox"].is_array() && !doc["bbox"].empty())
+        doc["bbox"][in.Below(doc["bbox"].size())] = WeirdJsonNumber(in);
+  }
+}
+
+// Coordinates nested a level deeper or shallower.
+void RenestCoordinates(json* feature, FuzzInput& in) {
+  if (!HasGeometry(feature) || !(*feature)["geometry"].contains("coordinates"))
+    return;
+  json& coordinates = (*feature)["geometry"]["coordinates"];
+  if (in.Chance(0.5))
+    coordinates = json::array({coordinates});
+  else if (coordinates.is_array() && !coordinates.empty())
+    coordinates = json(coordinates[0]);
+}
+
+}  // namespace
+
+void EditGeoJson(json& doc, FuzzInput& in) {
+  GeoJsonTargets t;
+  CollectParts(doc, t.parts);
+  t.features = doc.is_object() && doc.contains("features") && doc["features"].is_array()
+                   ? &doc["features"]
+                   : nullptr;
+  t.feature =
+      t.features && !t.features->empty() ? &(*t.features)[in.Below(t.features->size())] : nullptr;
+  t.position =
+      t.parts.positions.empty() ? nullptr : t.parts.positions[in.Below(t.parts.positions.size())];
+  t.line = t.parts.lines.empty() ? nullptr : t.parts.lines[in.Below(t.parts.lines.size())];
+  const std::size_t edit = in.Below(14);
+  if (edit <= 8 && t.line == nullptr)
+    return;
+  t.at = static_cast<long>(t.line ? in.Below(t.line->size()) : 0);
+  switch (edit) {
+    case 9:
+      DeleteOrDoubleFeature(t.features, t.feature, in);
+      break;
+    case 10:
+      RetypeGeometry(t.feature, in);
+      break;
+    case 11:
+      MakePropertyOdd(t.feature, in);
+      break;
+    case 12:
+      EditBbox(doc, in);
+      break;
+    case 13:
+      RenestCoordinates(t.feature, in);
+      break;
+    default:
+      EditPositions(edit, t, in);
   }
 }
 

@@ -131,31 +131,22 @@ RandomPlace MakeRandomPlace(FuzzInput& in) {
 
 namespace {
 
+// A tag's text as an XML attribute value: markup escaped, and newlines and tabs as character
+// references (attribute-value normalisation would read them back as spaces).
 std::string XmlEscaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\n':
-        out += "&#10;";
-        break;
-      case '\t':
-        out += "&#9;";
-        break;
-      default:
-        out += c;
-    }
+    const char* reference = c == '&'    ? "&amp;"
+                            : c == '<'  ? "&lt;"
+                            : c == '>'  ? "&gt;"
+                            : c == '"'  ? "&quot;"
+                            : c == '\n' ? "&#10;"
+                            : c == '\t' ? "&#9;"
+                                        : nullptr;
+    if (reference)
+      out += reference;
+    else
+      out += c;
   }
   return out;
 }

@@ -1,9 +1,9 @@
 #include "tests/support/campaign_fixtures.h"
 
-#include <sqlite3.h>
-
 #include "common/job/job_fields.h"
 #include "common/scenario/number_text.h"
+#include "common/store/sqlite_db.h"
+#include "common/store/store_error.h"
 
 namespace rlpos::testing {
 
@@ -91,19 +91,16 @@ std::string FormatPlacement(const std::optional<Placement>& placement) {
 }
 
 std::string QueryOne(const std::string& db_file, const std::string& sql) {
-  sqlite3* db = nullptr;
-  sqlite3_open_v2(db_file.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
-  sqlite3_stmt* stmt = nullptr;
-  std::string out = "<no row>";
-  if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr) != SQLITE_OK) {
-    out = sqlite3_errmsg(db);
-  } else if (sqlite3_step(stmt) == SQLITE_ROW) {
-    const auto* text = sqlite3_column_text(stmt, 0);
-    out = text ? reinterpret_cast<const char*>(text) : "<null>";
+  try {
+    Database db(db_file, /*read_only=*/true, /*busy_timeout_ms=*/0);
+    // A common table expression names the query's one value, whatever its expression, so that
+    // it is read by name.
+    Statement one = db.Prepare("WITH one(value) AS (" + sql + ") SELECT value FROM one");
+    const ResultColumn value = one.Column("value");
+    return one.Step() ? one.OptionalText(value).value_or("<null>") : "<no row>";
+  } catch (const StoreError& e) {
+    return e.what();
   }
-  sqlite3_finalize(stmt);
-  sqlite3_close(db);
-  return out;
 }
 
 }  // namespace rlpos::testing

@@ -25,8 +25,8 @@ nlohmann::json EvalResult(std::uint64_t run, double throughput_mbps, double dela
 // Every field of two jobs' params, naming the ones that differ.
 ::testing::AssertionResult SameParams(const JobParams& a, const JobParams& b);
 
-// The first column of the first row of `sql` on the database file, through SQLite's C API (what
-// a user's own query sees): "<null>" for NULL, "<no row>", or SQLite's error message.
+// The one column of the first row of `sql` on the database file, opened read-only as a user's
+// own query would: "<null>" for NULL, "<no row>", or the error message.
 std::string QueryOne(const std::string& db_file, const std::string& sql);
 
 // `result` with the position the store bound to the eval job (results of another position are

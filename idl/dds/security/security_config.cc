@@ -72,8 +72,4 @@ std::string SecurityElementXml(const IdentityFiles& files) {
          "</Cryptographic></Security>";
 }
 
-std::string SecurityConfigXml(const IdentityFiles& files) {
-  return "<CycloneDDS><Domain Id=\"any\">" + SecurityElementXml(files) + "</Domain></CycloneDDS>";
-}
-
 }  // namespace rlpos::security

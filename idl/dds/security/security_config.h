@@ -11,11 +11,8 @@ namespace rlpos::security {
 // The folder of libdds_security_{auth,ac,crypto}.so, or "" to let the loader search.
 std::string PluginDir();
 
-// <CycloneDDS><Domain Id="any"><Security>...</Security></Domain></CycloneDDS>. Throws
-// std::runtime_error when the plugins are not where the build found them.
-std::string SecurityConfigXml(const IdentityFiles& files);
-
-// The <Security> element alone, to go inside a <Domain> the caller writes.
+// The <Security> element, to go inside a <Domain> the caller writes. Throws std::runtime_error
+// when the plugins are not where the build found them.
 std::string SecurityElementXml(const IdentityFiles& files);
 
 }  // namespace rlpos::security

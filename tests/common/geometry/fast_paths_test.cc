@@ -43,22 +43,9 @@ bool PlainMeetsPrism(const Footprint& f, double zmin, double zmax, const Vec3& a
     return std::max(a.z, b.z) >= zmin && std::min(a.z, b.z) <= zmax && Contains(f, a2);
   if (a.z == b.z)
     return a.z >= zmin && a.z <= zmax && PlainSegmentMeets(f, a2, b2);
-  const double dz = b.z - a.z;
-  double t0 = (zmin - a.z) / dz, t1 = (zmax - a.z) / dz;
-  if (t0 > t1)
-    std::swap(t0, t1);
-  t0 = std::max(t0, 0.0);
-  t1 = std::min(t1, 1.0);
-  if (t0 > t1)
-    return false;
-  auto at = [&](double t) -> Point2 {
-    if (t == 0.0)
-      return a2;
-    if (t == 1.0)
-      return b2;
-    return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-  };
-  return PlainSegmentMeets(f, at(t0), at(t1));
+  // The cut to the heights is the library's (no shortcut in it); the plane test is the plain one.
+  Point2 from, to;
+  return HeightSlice(a, b, zmin, zmax, from, to) && PlainSegmentMeets(f, from, to);
 }
 
 // A star-shaped outer ring (8-14 vertices, radii in [0.6 r, r]) with 0-3 small holes on a circle

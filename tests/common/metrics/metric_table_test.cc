@@ -16,9 +16,12 @@
 #include "coordinator/reporting/results_format.h"
 #include "coordinator/reporting/uav_summary.h"
 #include "tests/support/campaign_fixtures.h"
+#include "tests/support/store_migrations.h"
 
 namespace rlpos {
 namespace {
+
+using testing::MigrateUpTo;
 
 // "name TYPE [NOT NULL]" of each column of `table`, in order.
 std::vector<std::string> Columns(Database& db, const std::string& table) {
@@ -37,18 +40,6 @@ std::string ViewSql(Database& db, const std::string& view) {
   Statement select = db.Prepare("SELECT sql FROM sqlite_master WHERE name = ?");
   select.Bind(view);
   return select.Step() ? select.Text(select.Column("sql")) : "";
-}
-
-void MigrateUpTo(Database& db, int version) {
-  for (const Migration& m : Migrations()) {
-    if (m.version > version)
-      break;
-    db.Exec(m.sql);
-    if (m.convert)
-      m.convert(db);
-    if (m.sql_after)
-      db.Exec(m.sql_after);
-  }
 }
 
 template <typename Def>

@@ -63,6 +63,15 @@ class ResultCacheTest : public ::testing::Test {
     campaign.use_cache = use_cache;
     return campaign;
   }
+  // The mini campaign with two train seeds and rl alone, submitted.
+  ExpandedCampaign SubmitTwoSeedsOfRl() {
+    CampaignSpec spec = testing::MiniSpec();
+    spec.train.seeds = {1, 2};
+    spec.positioners = {"rl"};
+    const ExpandedCampaign campaign = ExpandCampaign(spec);
+    store_.ledger.Submit(campaign);
+    return campaign;
+  }
 
   testing::TempDir dir_;
   CoordinatorStore store_;
@@ -130,11 +139,7 @@ TEST_F(ResultCacheTest, NoCacheRunsEveryJob) {
 TEST_F(ResultCacheTest, IdenticalEvalsInACampaignRunOnce) {
   // Two train seeds that end at the same position: their rl evals of one run are one content
   // (the train seed only says where a position came from).
-  CampaignSpec spec = testing::MiniSpec();
-  spec.train.seeds = {1, 2};
-  spec.positioners = {"rl"};
-  const ExpandedCampaign campaign = ExpandCampaign(spec);
-  store_.ledger.Submit(campaign);
+  SubmitTwoSeedsOfRl();
   const int ran = RunAll();
   // 2 scenarios x (2 trains + 2 runs of rl); rl@seed2's evals took rl's results.
   EXPECT_EQ(ran, 2 * (2 + 2));
@@ -145,11 +150,7 @@ TEST_F(ResultCacheTest, IdenticalEvalsInACampaignRunOnce) {
 }
 
 TEST_F(ResultCacheTest, AnotherPositionOrRunIsAnotherContent) {
-  CampaignSpec spec = testing::MiniSpec();
-  spec.train.seeds = {1, 2};
-  spec.positioners = {"rl"};
-  const ExpandedCampaign campaign = ExpandCampaign(spec);
-  store_.ledger.Submit(campaign);
+  const ExpandedCampaign campaign = SubmitTwoSeedsOfRl();
   // Seed 2's training ends elsewhere: nothing is shared.
   const int ran = RunAll([](const ReadyJob& job) {
     return Vec3{job.params.train_seed == 2u ? 55.0 : 50.0, 50, 30};

@@ -15,6 +15,7 @@
 #include "common/job/position_rule.h"
 #include "common/scenario/number_text.h"
 #include "common/store/schema.h"
+#include "common/store/sqlite_db.h"
 #include "common/store/store_error.h"
 #include "common/wire/job_order.h"
 #include "coordinator/scheduling/coordinator_store.h"
@@ -67,22 +68,16 @@ TEST(StoreSchema, NewFileGetsTheLatestSchemaInWalMode) {
     EXPECT_EQ(store.db.SchemaVersion(), LatestSchemaVersion());
     EXPECT_EQ(store.db.file(), file);
   }
-  sqlite3* db = nullptr;
-  ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
-  sqlite3_stmt* stmt = nullptr;
-  sqlite3_prepare_v2(db, "PRAGMA journal_mode", -1, &stmt, nullptr);
-  ASSERT_EQ(sqlite3_step(stmt), SQLITE_ROW);
-  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(stmt, 0)), "wal");
-  sqlite3_finalize(stmt);
-  sqlite3_prepare_v2(db,
-                     "SELECT COUNT(*) FROM sqlite_master WHERE name IN ('campaigns', 'jobs', "
-                     "'metrics', 'artifacts', 'schema_version', 'v_eval_runs', "
-                     "'v_campaign_progress', 'workers')",
-                     -1, &stmt, nullptr);
-  ASSERT_EQ(sqlite3_step(stmt), SQLITE_ROW);
-  EXPECT_EQ(sqlite3_column_int(stmt, 0), 8);
-  sqlite3_finalize(stmt);
-  sqlite3_close(db);
+  Database db(file, /*read_only=*/false, /*busy_timeout_ms=*/0);
+  Statement mode = db.Prepare("PRAGMA journal_mode");
+  ASSERT_TRUE(mode.Step());
+  EXPECT_EQ(mode.Text(mode.Column("journal_mode")), "wal");
+  Statement tables = db.Prepare(
+      "SELECT COUNT(*) AS n FROM sqlite_master WHERE name IN ('campaigns', 'jobs', "
+      "'metrics', 'artifacts', 'schema_version', 'v_eval_runs', "
+      "'v_campaign_progress', 'workers')");
+  ASSERT_TRUE(tables.Step());
+  EXPECT_EQ(tables.Int(tables.Column("n")), 8);
 }
 
 TEST(StoreSchema, EmptyFileIsMigrated) {

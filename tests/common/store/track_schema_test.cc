@@ -10,21 +10,15 @@
 #include "common/store/schema.h"
 #include "common/store/sqlite_db.h"
 #include "common/store/store_error.h"
+#include "tests/support/store_migrations.h"
 #include "tests/support/temp_dir.h"
 
 namespace rlpos {
 namespace {
 
-void MigrateUpTo(Database& db, int version) {
-  for (const Migration& m : Migrations()) {
-    if (m.version > version)
-      break;
-    db.Exec(m.sql);
-    if (m.convert)
-      m.convert(db);
-    if (m.sql_after)
-      db.Exec(m.sql_after);
-  }
+// The store as schema `version` left it, its version recorded.
+void MigrateTo(Database& db, int version) {
+  testing::MigrateUpTo(db, version);
   db.Exec("CREATE TABLE schema_version (version INTEGER NOT NULL)");
   db.Exec("INSERT INTO schema_version (version) VALUES (" + std::to_string(version) + ")");
 }
@@ -47,7 +41,7 @@ TEST(TrackSchema, AStoreOfSchema12TakesTrackJobsAndKeepsItsRows) {
   const std::string file = dir.File("v12.db");
   {
     Database db(file, false, 1000);
-    MigrateUpTo(db, 12);
+    MigrateTo(db, 12);
     db.Exec(
         "INSERT INTO campaigns (id, name, spec_json, created_at, state, max_attempts, "
         "job_timeout_s) VALUES ('c0ffee', 'old', '{}', 1000, 'active', 2, 300)");

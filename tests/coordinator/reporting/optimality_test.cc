@@ -330,62 +330,83 @@ TEST_F(OptimalityStoreTest, TheReportHasTheSectionItsFilesAndItsPlot) {
 // A named policy's evals have a row of their own, under their label as algorithm: no summary
 // counts them with the trained rl of the scenario's algorithm. Beside them, centroid's and the
 // oracle's, each with the seconds of the job that placed it (a cached job: its source's).
-TEST(OptimalityNamedPolicy, ANamedPolicyIsNeverCountedAsTrainedRl) {
-  testing::TempDir dir;
-  const std::string folder = dir.File("policies/p1");
-  fs::create_directories(folder);
-  testing::WriteFile(folder + "/scenario.json",
-                     testing::ReadFile(testing::SourcePath("campaigns/scenarios/b.json")));
-  testing::WriteFile(folder + "/result.json", R"({"algorithm": "dqn"})");
-  testing::WriteFile(folder + "/policy.pt", "weights");
-  const json document = {
-      {"name", "named"},
-      {"scenarios", {"scenarios/b.json"}},
-      {"rng_runs", {1, 1}},
-      {"positioners", {"oracle", "centroid", "rl", {{"rl", {{"policy", "policies/p1"}}}}}}};
-  ExpandedCampaign campaign =
-      ExpandCampaign(ParseCampaign(document, FileScenarioSource(testing::SourcePath("campaigns")),
-                                   FilePolicySource(dir.path())));
-  campaign.use_cache = false;
-  CoordinatorStore store(dir.File("rlpos.db"));
-  store.ledger.Submit(campaign);
-  const auto succeed = [&](const std::string& key, const json& result) {
-    const std::string id = campaign.id + "/" + key;
-    ASSERT_TRUE(store.ledger.MarkRunning(id, "w1", 0, 1)) << key;
-    ASSERT_EQ(store.recorder.RecordSuccess(id, 1, result), JobUpdate::kSucceeded) << key;
-  };
-  const auto eval = [&](const std::string& label, double reward) {
+class OptimalityNamedPolicy : public ::testing::Test {
+ protected:
+  OptimalityNamedPolicy() : campaign_(NamedPolicyCampaign(dir_)), store_(dir_.File("rlpos.db")) {
+    store_.ledger.Submit(campaign_);
+  }
+
+  // Scenario B placed by the oracle, centroid, trained rl and the named policy p1.
+  static ExpandedCampaign NamedPolicyCampaign(const testing::TempDir& dir) {
+    const std::string folder = dir.File("policies/p1");
+    fs::create_directories(folder);
+    testing::WriteFile(folder + "/scenario.json",
+                       testing::ReadFile(testing::SourcePath("campaigns/scenarios/b.json")));
+    testing::WriteFile(folder + "/result.json", R"({"algorithm": "dqn"})");
+    testing::WriteFile(folder + "/policy.pt", "weights");
+    const json document = {
+        {"name", "named"},
+        {"scenarios", {"scenarios/b.json"}},
+        {"rng_runs", {1, 1}},
+        {"positioners", {"oracle", "centroid", "rl", {{"rl", {{"policy", "policies/p1"}}}}}}};
+    ExpandedCampaign campaign =
+        ExpandCampaign(ParseCampaign(document, FileScenarioSource(testing::SourcePath("campaigns")),
+                                     FilePolicySource(dir.path())));
+    campaign.use_cache = false;
+    return campaign;
+  }
+
+  void Succeed(const std::string& key, const json& result) {
+    const std::string id = campaign_.id + "/" + key;
+    ASSERT_TRUE(store_.ledger.MarkRunning(id, "w1", 0, 1)) << key;
+    ASSERT_EQ(store_.recorder.RecordSuccess(id, 1, result), JobUpdate::kSucceeded) << key;
+  }
+
+  void Eval(const std::string& label, double reward) {
     const std::string key = "eval/B/" + label + "/run1";
     json result = testing::EvalResult(1, 100, 2.0);
     result["reward"] = reward;
-    succeed(key, testing::AtJobPosition(store.reader, campaign.id + "/" + key, result));
-  };
-  succeed("position/B/oracle", testing::PositionResult(5, 50, 55));
-  json trained = testing::PositionResult(50, 35, 11);
-  trained["algorithm"] = "dqn";
-  succeed("train/B/seed1", trained);
-  succeed("position/B/rl+p1", testing::PositionResult(40, 30, 12));
-  succeed("position/B/centroid", testing::PositionResult(45, 40, 20));
-  {
-    // The jobs' clocks, set by hand: the training 30 s, the policy's flight 0.5 s, centroid's
-    // placement taken from another job of the cache (its own clock says 0.01 s).
-    Database db(dir.File("rlpos.db"), false, 1000);
+    Succeed(key, testing::AtJobPosition(store_.reader, campaign_.id + "/" + key, result));
+  }
+
+  // The jobs' clocks, set by hand: the training 30 s, the policy's flight 0.5 s, centroid's
+  // placement taken from another job of the cache (its own clock says 0.01 s).
+  void SetClocks() {
+    Database db(dir_.File("rlpos.db"), false, 1000);
     const auto clock = [&](const std::string& key, double started, double finished) {
       db.Exec("UPDATE jobs SET started_at = " + std::to_string(started) + ", finished_at = " +
-              std::to_string(finished) + " WHERE id = '" + campaign.id + "/" + key + "'");
+              std::to_string(finished) + " WHERE id = '" + campaign_.id + "/" + key + "'");
     };
     clock("train/B/seed1", 100, 130);
     clock("position/B/rl+p1", 200, 200.5);
     clock("position/B/oracle", 300, 304);
     clock("position/B/centroid", 400, 400.01);
-    db.Exec("UPDATE jobs SET cached_from = '" + campaign.id + "/position/B/oracle' WHERE id = '" +
-            campaign.id + "/position/B/centroid'");
+    db.Exec("UPDATE jobs SET cached_from = '" + campaign_.id + "/position/B/oracle' WHERE id = '" +
+            campaign_.id + "/position/B/centroid'");
   }
-  eval("oracle", 0.8);
-  eval("centroid", 0.6);
-  eval("rl", 0.4);
-  eval("rl+p1", 0.8);
-  const std::vector<OptimalityRow> rows = store.reader.Optimality(campaign.id);
+
+  void RecordResults() {
+    Succeed("position/B/oracle", testing::PositionResult(5, 50, 55));
+    json trained = testing::PositionResult(50, 35, 11);
+    trained["algorithm"] = "dqn";
+    Succeed("train/B/seed1", trained);
+    Succeed("position/B/rl+p1", testing::PositionResult(40, 30, 12));
+    Succeed("position/B/centroid", testing::PositionResult(45, 40, 20));
+    SetClocks();
+    Eval("oracle", 0.8);
+    Eval("centroid", 0.6);
+    Eval("rl", 0.4);
+    Eval("rl+p1", 0.8);
+  }
+
+  testing::TempDir dir_;
+  ExpandedCampaign campaign_;
+  CoordinatorStore store_;
+};
+
+TEST_F(OptimalityNamedPolicy, ANamedPolicyIsNeverCountedAsTrainedRl) {
+  RecordResults();
+  const std::vector<OptimalityRow> rows = store_.reader.Optimality(campaign_.id);
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0].label, "rl");
   EXPECT_EQ(rows[0].algorithm, "dqn");

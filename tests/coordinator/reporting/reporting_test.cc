@@ -164,6 +164,23 @@ TEST(ReportOrder, ScenariosKeepTheOrderOfTheRows) {
 
 // --- Summary numbers ---
 
+// A summary's run count and throughput statistics: mean, median and the half-width of its 95 % CI.
+void ExpectThroughput(const PositionerSummary& s, int runs, double mean, double median,
+                      double ci95) {
+  EXPECT_EQ(s.runs, runs);
+  EXPECT_DOUBLE_EQ(s.throughput_mean_mbps, mean);
+  EXPECT_DOUBLE_EQ(s.throughput_median_mbps, median);
+  EXPECT_NEAR(s.throughput_ci95_mbps, ci95, 1e-9);
+}
+
+// How many of a summary's runs had a delay and how many had none, and the delays' mean.
+void ExpectDelays(const PositionerSummary& s, int runs, int null_runs, double mean_ms) {
+  EXPECT_EQ(s.delay_runs, runs);
+  EXPECT_EQ(s.delay_null_runs, null_runs);
+  ASSERT_TRUE(s.delay_mean_ms.has_value());
+  EXPECT_DOUBLE_EQ(*s.delay_mean_ms, mean_ms);
+}
+
 TEST_F(ReportingTest, SummaryMatchesHandComputedValues) {
   RecordResults();
   const auto summary = SummarizeCampaign(store_.reader, campaign_.id);
@@ -174,15 +191,9 @@ TEST_F(ReportingTest, SummaryMatchesHandComputedValues) {
                                              "C/oracle"}));
 
   const PositionerSummary& base = summary[0];
-  EXPECT_EQ(base.runs, 2);
-  EXPECT_DOUBLE_EQ(base.throughput_median_mbps, 110.0);
-  EXPECT_DOUBLE_EQ(base.throughput_mean_mbps, 110.0);
   // s = sqrt(((100 - 110)^2 + (120 - 110)^2) / 1) = 10 sqrt(2); s / sqrt(2) = 10.
-  EXPECT_NEAR(base.throughput_ci95_mbps, kT1 * 10.0, 1e-9);
-  EXPECT_EQ(base.delay_runs, 2);
-  EXPECT_EQ(base.delay_null_runs, 0);
-  ASSERT_TRUE(base.delay_mean_ms.has_value());
-  EXPECT_DOUBLE_EQ(*base.delay_mean_ms, 5.0);
+  ExpectThroughput(base, 2, 110.0, 110.0, kT1 * 10.0);
+  ExpectDelays(base, 2, 0, 5.0);
   EXPECT_NEAR(base.delay_ci95_ms, kT1 * 1.0, 1e-9);  // s = sqrt(2), s / sqrt(2) = 1
   EXPECT_DOUBLE_EQ(base.nlos_ratio_mean, 1.0);
   EXPECT_DOUBLE_EQ(base.demands_met_mean, 3.0);
@@ -204,13 +215,8 @@ TEST_F(ReportingTest, SummaryMatchesHandComputedValues) {
   EXPECT_NEAR(*centroid.delay_change_pct, -60.0, 1e-12);
 
   const PositionerSummary& rl = summary[3];
-  EXPECT_EQ(rl.runs, 2);
-  EXPECT_DOUBLE_EQ(rl.throughput_mean_mbps, 140.0);
-  EXPECT_DOUBLE_EQ(rl.throughput_median_mbps, 140.0);
-  EXPECT_NEAR(rl.throughput_ci95_mbps, kT1 * 10.0, 1e-9);
-  EXPECT_EQ(rl.delay_runs, 1);
-  EXPECT_EQ(rl.delay_null_runs, 1);
-  EXPECT_DOUBLE_EQ(*rl.delay_mean_ms, 3.0);
+  ExpectThroughput(rl, 2, 140.0, 140.0, kT1 * 10.0);
+  ExpectDelays(rl, 1, 1, 3.0);
   EXPECT_TRUE(std::isnan(rl.delay_ci95_ms));
   EXPECT_DOUBLE_EQ(rl.nlos_ratio_mean, 0.75);  // (4/4 + 2/4) / 2
   EXPECT_NEAR(*rl.throughput_change_pct, 100.0 * 30.0 / 110.0, 1e-12);

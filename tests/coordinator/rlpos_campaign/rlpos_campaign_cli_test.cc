@@ -40,6 +40,11 @@ class RlposCampaignCli : public ::testing::Test {
     return R"({"name": "t", "scenarios": [")" + std::string(RLPOS_SOURCE_DIR) +
            R"(/campaigns/scenarios/b.json"], "rng_runs": [1, 2])" + extra + "}";
   }
+  // A campaign over the shipped scenario B with one per-scenario override, `set`.
+  std::string CampaignSettingB(const std::string& set) {
+    return R"({"name": "t", "scenarios": [{"file": ")" + std::string(RLPOS_SOURCE_DIR) +
+           R"(/campaigns/scenarios/b.json", "set": [")" + set + R"("]}], "rng_runs": [1, 1]})";
+  }
   void ExpectOneLineError(const CommandResult& r, int exit_code, const std::string& fragment) {
     EXPECT_EQ(r.exit_code, exit_code) << r.err;
     EXPECT_TRUE(r.out.empty()) << "stdout must stay empty on failure: " << r.out;
@@ -85,10 +90,7 @@ TEST_F(RlposCampaignCli, OutOfRangeValue) {
 
 TEST_F(RlposCampaignCli, BrokenScenarioIsRefusedBeforeAnythingStarts) {
   // A building outside the venue, via the campaign's per-scenario overrides.
-  const auto file =
-      Write("s.json", R"({"name": "t", "scenarios": [{"file": ")" + std::string(RLPOS_SOURCE_DIR) +
-                          R"(/campaigns/scenarios/b.json", "set": ["buildings.0.x=[45, 500]"]}],
-                    "rng_runs": [1, 1]})");
+  const auto file = Write("s.json", CampaignSettingB("buildings.0.x=[45, 500]"));
   const auto r = Campaign("run " + file);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("s.json: /scenarios/0"), std::string::npos) << r.err;
@@ -97,10 +99,7 @@ TEST_F(RlposCampaignCli, BrokenScenarioIsRefusedBeforeAnythingStarts) {
 
 TEST_F(RlposCampaignCli, ASetThatContradictsTheCampaignIsRefusedBeforeAnythingStarts) {
   // The campaign trains at analytic fidelity (the default); the scenario's "set" says packet.
-  const auto file =
-      Write("f.json", R"({"name": "t", "scenarios": [{"file": ")" + std::string(RLPOS_SOURCE_DIR) +
-                          R"(/campaigns/scenarios/b.json", "set": ["env.fidelity=packet"]}],
-                    "rng_runs": [1, 1]})");
+  const auto file = Write("f.json", CampaignSettingB("env.fidelity=packet"));
   const std::string both =
       "f.json: /scenarios/0/set/0: \"env.fidelity=packet\" contradicts "
       "/train/fidelity";

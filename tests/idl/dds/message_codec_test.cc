@@ -18,6 +18,7 @@
 #include "idl/dds/message_checks.h"
 #include "idl/dds/topics.h"
 #include "rlpos_messages.h"
+#include "tests/idl/dds/topics_test_messages.h"
 
 namespace rlpos {
 namespace {
@@ -117,52 +118,34 @@ msg::WorkerStatus Status() {
   return s;
 }
 
+// The topics tests' eval assignment, with its remaining fields away from their defaults too.
 msg::JobAssignment Eval() {
-  msg::JobAssignment a;
+  msg::JobAssignment a = testing::Assignment("c0ffee/eval/B/rl/run2", 4, 3);
   a.worker_id = "w-7";
-  a.slot = 3;
-  JobOrder& o = a.order;
-  o.job_id = "c0ffee/eval/B/rl/run2";
-  o.attempt = 4;
-  o.campaign_id = "c0ffee";
-  o.timeout_s = 12.5;
-  o.params.kind = JobKind::kEval;
-  o.params.scenario = "B";
-  o.params.train_seed = 9;
-  o.params.rng_run = 7;
-  o.params.duration_s = 5;
-  o.params.warmup_s = 0.5;
-  o.params.overrides = {{"wifi.mode", "\"adhoc\""}, {"ues.0.demand", "12.5"}};
-  o.placement = Placement{{10, 20, 30}, {40.25, 50, 60}, {70, 80, 90.5}};
-  o.scenario_document = R"({"name": "B"})";
+  a.order.params.train_seed = 9;
+  a.order.params.warmup_s = 0.5;
+  a.order.placement = Placement{{10, 20, 30}, {40.25, 50, 60}, {70, 80, 90.5}};
+  a.order.scenario_document = R"({"name": "B"})";
   return a;
 }
 
 msg::JobAssignment Train() {
-  msg::JobAssignment a = Eval();
-  a.order.params = JobParams{};
-  a.order.params.kind = JobKind::kTrain;
-  a.order.params.scenario = "C";
+  msg::JobAssignment a = testing::WithFreshParams(Eval(), JobKind::kTrain, "C");
   a.order.params.train_seed = 11;
   a.order.params.fidelity = "packet";
   a.order.params.train_episodes = 25;
   a.order.params.duration_s = 2;
   a.order.params.warmup_s = 0.25;
   a.order.params.overrides = {{"agent.hidden", "[16]"}};
-  a.order.placement.reset();
   return a;
 }
 
 msg::JobAssignment Position() {
-  msg::JobAssignment a = Eval();
-  a.order.params = JobParams{};
-  a.order.params.kind = JobKind::kPosition;
-  a.order.params.scenario = "C";
+  msg::JobAssignment a = testing::WithFreshParams(Eval(), JobKind::kPosition, "C");
   a.order.params.positioner = "oracle";
   a.order.params.duration_s = 0.25;
   a.order.params.warmup_s = 0.125;
   a.order.params.overrides = {{"uav.step", "10"}};
-  a.order.placement.reset();
   return a;
 }
 
@@ -205,12 +188,7 @@ msg::CampaignRequest Request() {
 }
 
 msg::CampaignReply Reply() {
-  msg::CampaignReply r;
-  r.request_id = "client-1-7";
-  r.ok = true;
-  r.campaign_id = "c0ffee";
-  r.jobs = 44;
-  r.created = true;
+  msg::CampaignReply r = testing::CreatedReply("client-1-7");
   r.message = "submitted";
   return r;
 }

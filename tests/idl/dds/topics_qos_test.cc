@@ -16,17 +16,17 @@
 #include "tests/idl/dds/dds_test_support.h"
 #include "tests/idl/dds/topics_test_messages.h"
 
-namespace rlpos {
+namespace rlpos::testing {
 namespace {
 
-using testing::Assignment;
-using testing::AwaitData;
-using testing::AwaitSample;
-using testing::ExpectSame;
-using testing::Status;
-using testing::TakenBeforeMarker;
-using testing::TopicsTest;
-using testing::WaitFor;
+// A second participant of this process: with neither config nor tag it joins the domain that
+// `first` created (its loopback config), as a participant of its own.
+DdsOptions SecondParticipantOptions(const Participant& first) {
+  DdsOptions same_domain;
+  same_domain.domain = first.options().domain;
+  same_domain.insecure = true;  // no config of its own: it never leaves first's loopback
+  return same_domain;
+}
 
 TEST_F(TopicsTest, DisposeArrivesAsAnInvalidSampleWithTheKey) {
   Reader<msg::JobAssignment> reader(participant_);
@@ -90,12 +90,7 @@ TEST_F(TopicsTest, LateReaderGetsTheLastAssignment) {
 }
 
 TEST_F(TopicsTest, WriterParticipantTellsWhichParticipantWrote) {
-  // A second participant of this process: with neither config nor tag it joins the domain that
-  // participant_ created (its loopback config), as a participant of its own.
-  DdsOptions same_domain;
-  same_domain.domain = participant_.options().domain;
-  same_domain.insecure = true;  // no config of its own: it never leaves participant_'s loopback
-  Participant other(same_domain);
+  Participant other(SecondParticipantOptions(participant_));
   Reader<msg::JobEvent> reader(participant_);
   Writer<msg::JobEvent> first(participant_), second(participant_), foreign(other);
   ASSERT_TRUE(WaitFor([&] { return reader.MatchedWriters() == 3; }));
@@ -126,10 +121,7 @@ TEST_F(TopicsTest, WriterParticipantTellsWhichParticipantWrote) {
 }
 
 TEST_F(TopicsTest, HasMatchedWriterOfSeesPastManyOtherWriters) {
-  DdsOptions same_domain;
-  same_domain.domain = participant_.options().domain;
-  same_domain.insecure = true;  // no config of its own: it never leaves participant_'s loopback
-  Participant other(same_domain);
+  Participant other(SecondParticipantOptions(participant_));
   Reader<msg::JobAssignment> reader(participant_);
   std::vector<std::unique_ptr<Writer<msg::JobAssignment>>> crowd;
   for (int i = 0; i < 100; ++i)
@@ -247,4 +239,4 @@ TEST_F(TopicsTest, WaitSetWakesOnData) {
 }
 
 }  // namespace
-}  // namespace rlpos
+}  // namespace rlpos::testing

@@ -11,72 +11,26 @@
 #include "tests/idl/dds/dds_test_support.h"
 #include "tests/idl/dds/topics_test_messages.h"
 
-namespace rlpos {
+namespace rlpos::testing {
 namespace {
 
-using testing::Assignment;
-using testing::AwaitData;
-using testing::AwaitSample;
-using testing::ExpectSame;
-using testing::Status;
-using testing::TakenBeforeMarker;
-using testing::TopicsTest;
-using testing::WaitFor;
-
 msg::JobAssignment PositionAssignment() {
-  msg::JobAssignment a = Assignment("c0ffee/position/C/centroid", 2);
+  msg::JobAssignment a =
+      WithFreshParams(Assignment("c0ffee/position/C/centroid", 2), JobKind::kPosition, "C");
   a.worker_id = "w-\xc3\xa9";
-  a.order.params = JobParams{};
-  a.order.params.kind = JobKind::kPosition;
-  a.order.params.scenario = "C";
   a.order.params.positioner = "centroid";
   a.order.params.duration_s = 0.25;
   a.order.params.overrides = {{"/ues/0/demand", "1e-3"}};
-  a.order.placement.reset();
   a.order.scenario_document = "{}";
   return a;
 }
 
 msg::JobAssignment TrainAssignment() {
-  msg::JobAssignment a = Assignment("job-t", 1);
-  a.order.params = JobParams{};
-  a.order.params.kind = JobKind::kTrain;
-  a.order.params.scenario = "C";
+  msg::JobAssignment a = WithFreshParams(Assignment("job-t", 1), JobKind::kTrain, "C");
   a.order.params.train_seed = 9;
   a.order.params.fidelity = "packet";
   a.order.params.train_episodes = 25;
-  a.order.placement.reset();
   return a;
-}
-
-void ExpectSame(const msg::JobAssignment& a, const msg::JobAssignment& b) {
-  EXPECT_EQ(a.worker_id, b.worker_id);
-  EXPECT_EQ(a.slot, b.slot);
-  const JobOrder &x = a.order, &y = b.order;
-  EXPECT_EQ(x.job_id, y.job_id);
-  EXPECT_EQ(x.attempt, y.attempt);
-  EXPECT_EQ(x.campaign_id, y.campaign_id);
-  EXPECT_DOUBLE_EQ(x.timeout_s, y.timeout_s);
-  EXPECT_EQ(x.scenario_document, y.scenario_document);
-  EXPECT_EQ(x.params.kind, y.params.kind);
-  EXPECT_EQ(x.params.scenario, y.params.scenario);
-  EXPECT_EQ(x.params.rng_run, y.params.rng_run);
-  EXPECT_EQ(x.params.train_seed, y.params.train_seed);
-  EXPECT_EQ(x.params.fidelity, y.params.fidelity);
-  EXPECT_EQ(x.params.train_episodes, y.params.train_episodes);
-  EXPECT_EQ(x.params.positioner, y.params.positioner);
-  EXPECT_EQ(x.params.duration_s, y.params.duration_s);
-  EXPECT_EQ(x.params.warmup_s, y.params.warmup_s);
-  EXPECT_EQ(x.params.overrides, y.params.overrides);
-  ASSERT_EQ(x.placement.has_value(), y.placement.has_value());
-  if (x.placement) {
-    ASSERT_EQ(x.placement->size(), y.placement->size());
-    for (std::size_t i = 0; i < x.placement->size(); ++i) {
-      EXPECT_EQ((*x.placement)[i].x, (*y.placement)[i].x);
-      EXPECT_EQ((*x.placement)[i].y, (*y.placement)[i].y);
-      EXPECT_EQ((*x.placement)[i].z, (*y.placement)[i].z);
-    }
-  }
 }
 
 TEST_F(TopicsTest, WorkerStatusRoundTrip) {
@@ -205,12 +159,7 @@ TEST_F(TopicsTest, CampaignRequestRoundTripEveryKind) {
 TEST_F(TopicsTest, CampaignReplyRoundTrip) {
   Reader<msg::CampaignReply> reader(participant_);
   Writer<msg::CampaignReply> writer(participant_);
-  msg::CampaignReply ok;
-  ok.request_id = "req-1";
-  ok.ok = true;
-  ok.campaign_id = "c0ffee";
-  ok.jobs = 44;
-  ok.created = true;
+  const msg::CampaignReply ok = CreatedReply("req-1");
   msg::CampaignReply refused;
   refused.request_id = "req-2";
   refused.ok = false;
@@ -387,4 +336,4 @@ TEST_F(TopicsTest, ALongReplyMessageIsCutToItsBound) {
 }
 
 }  // namespace
-}  // namespace rlpos
+}  // namespace rlpos::testing

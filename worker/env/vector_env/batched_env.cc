@@ -19,6 +19,17 @@ std::uint64_t RunAfter(std::uint64_t run) {
   return run < kMaxRun ? run + 1 : 0;  // as rlpos.make's env counts runs
 }
 
+// Env i's reward and ends, into the arrays the caller asked for.
+void WriteOutcome(const BatchBuffers& out, std::size_t i, double reward, bool terminated,
+                  bool truncated) {
+  if (out.rewards)
+    out.rewards[i] = reward;
+  if (out.terminated)
+    out.terminated[i] = terminated;
+  if (out.truncated)
+    out.truncated[i] = truncated;
+}
+
 std::string Describe(const DiscreteSpace& discrete, const BoxSpace& continuous) {
   if (discrete.n > 0)
     return "Discrete(" + std::to_string(discrete.n) + ")";
@@ -220,23 +231,13 @@ void BatchedEnv::StepEveryEnv(const BatchBuffers& out, StepOne step_one) {
       slot.next_run = RunAfter(run);
       slot.ended = false;
       Write(i, slot.env.Reset(run), out);
-      if (out.rewards)
-        out.rewards[i] = 0.0;
-      if (out.terminated)
-        out.terminated[i] = false;
-      if (out.truncated)
-        out.truncated[i] = false;
+      WriteOutcome(out, i, 0.0, false, false);
       return;
     }
     const StepResult r = step_one(slot.env, i);
     slot.ended = r.terminated || r.truncated;
     Write(i, r.observation, out);
-    if (out.rewards)
-      out.rewards[i] = r.reward;
-    if (out.terminated)
-      out.terminated[i] = r.terminated;
-    if (out.truncated)
-      out.truncated[i] = r.truncated;
+    WriteOutcome(out, i, r.reward, r.terminated, r.truncated);
   });
 }
 

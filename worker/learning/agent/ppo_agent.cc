@@ -13,6 +13,7 @@
 #include "worker/env/gym/team_state.h"
 #include "worker/learning/agent/libtorch.h"
 #include "worker/learning/agent/ppo_network.h"
+#include "worker/learning/agent_base/advantage_estimate.h"
 #include "worker/learning/agent_base/flat_adam.h"
 #include "worker/learning/agent_base/ppo_actor_head.h"
 #include "worker/learning/agent_base/ppo_objective.h"
@@ -126,38 +127,18 @@ struct PpoAgent::Impl {
     return values;
   }
 
-  // Advantages by GAE(lambda), and the returns (advantages + values). A truncated episode
-  // bootstraps from the value of its last next observation; a terminal one from 0; no advantage
-  // is carried across an episode's end, nor from one env's transitions to another's (the last
-  // of each env's is cut as the rollout's).
-  std::pair<std::vector<float>, std::vector<float>> AdvantagesAndReturns(
-      const std::vector<float>& obs, const std::vector<float>& next) {
-    const long n = static_cast<long>(rollout.size());
-    const std::vector<float> v = Values(obs, static_cast<int>(n));
-    const std::vector<float> nv = Values(next, static_cast<int>(n));
-    std::vector<float> adv(static_cast<std::size_t>(n));
-    const int stream_count = 1 + *std::max_element(streams.begin(), streams.end());
-    std::vector<float> carried_of(static_cast<std::size_t>(stream_count), 0.0f);
-    std::vector<bool> seen(static_cast<std::size_t>(stream_count), false);
-    for (long t = n - 1; t >= 0; --t) {
-      const auto i = static_cast<std::size_t>(t);
-      const Transition& tr = rollout[i];
-      const auto stream = static_cast<std::size_t>(streams[i]);
-      float& carried = carried_of[stream];
-      const float reward =
-          spec.normalise_rewards ? reward_moments.Standardise(tr.reward) : tr.reward;
-      const float bootstrap = tr.terminal ? 0.0f : static_cast<float>(ppo.gamma) * nv[i];
-      const float delta = reward + bootstrap - v[i];
-      if (tr.episode_end || !seen[stream])
-        carried = 0.0f;
-      seen[stream] = true;
-      carried = delta + static_cast<float>(ppo.gamma * ppo.gae_lambda) * carried;
-      adv[i] = carried;
+  // The advantages and returns of the rollout (EstimateAdvantages), from the critic's inputs of
+  // its observations and of its next observations.
+  AdvantageEstimate AdvantagesAndReturns(const std::vector<float>& obs,
+                                         const std::vector<float>& next) {
+    const int n = static_cast<int>(rollout.size());
+    std::vector<float> rewards(rollout.size());
+    for (std::size_t i = 0; i < rollout.size(); ++i) {
+      const float r = rollout[i].reward;
+      rewards[i] = spec.normalise_rewards ? reward_moments.Standardise(r) : r;
     }
-    std::vector<float> returns(static_cast<std::size_t>(n));
-    for (std::size_t i = 0; i < returns.size(); ++i)
-      returns[i] = adv[i] + v[i];
-    return {adv, returns};
+    return EstimateAdvantages(rollout, streams, rewards, Values(obs, n), Values(next, n), ppo.gamma,
+                              ppo.gae_lambda);
   }
 
   // Linear decay to 0 over the planned rollouts, as CleanRL's anneal_lr: the first rollout
@@ -177,21 +158,10 @@ struct PpoAgent::Impl {
   int Choose(const float* p, const ActionMask& mask, bool explore) {
     if (!mask.empty() && std::none_of(mask.begin(), mask.end(), [](std::uint8_t a) { return a; }))
       throw std::invalid_argument("the action mask allows no action");
-    int action = -1;
-    if (!explore) {
-      action = MostProbableAllowed(p, mask, action_count);
-    } else {
-      const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
-      double cumulative = 0.0;
-      for (int a = 0; a < action_count; ++a) {
-        if (!Allowed(mask, a) || p[a] <= 0.0f)
-          continue;
-        action = a;  // the last allowed action takes what rounding leaves over
-        cumulative += p[a];
-        if (u < cumulative)
-          break;
-      }
-    }
+    const int action = explore
+                           ? SampleAllowed(p, mask, action_count,
+                                           std::uniform_real_distribution<double>(0.0, 1.0)(rng))
+                           : MostProbableAllowed(p, mask, action_count);
     pending_masks.push_back(mask);
     pending_log_probs.push_back(std::log(std::max(p[action], 1e-30f)));
     return action;
@@ -230,79 +200,124 @@ struct PpoAgent::Impl {
     }
   }
 
+  // The rollout as the minibatches read it, a row per transition.
+  struct RolloutRows {
+    std::vector<float> obs;
+    std::vector<float> team_in;  // the critic's inputs, with a team state only
+    std::vector<float> advantages;
+    std::vector<float> returns;
+    std::vector<int> actions;
+  };
+
+  // One minibatch's rows, gathered.
+  struct MinibatchRows {
+    std::vector<float> obs;
+    std::vector<float> critic;  // with a team state only
+    std::vector<const ActionMask*> masks;
+    std::vector<int> actions;
+    std::vector<float> old_log_probs;
+    std::vector<float> advantages;
+    std::vector<float> returns;
+    std::vector<float> logits;
+    std::vector<float> values;
+  };
+
+  RolloutRows ReadRollout() {
+    RolloutRows in;
+    in.obs = Observations(false);
+    // Without a team state the critic reads the observations themselves: no second copy.
+    if (team_state_dim > 0)
+      in.team_in = CriticInputs(false);
+    AdvantageEstimate estimate =
+        AdvantagesAndReturns(team_state_dim > 0 ? in.team_in : in.obs, CriticInputs(true));
+    in.advantages = std::move(estimate.advantages);
+    in.returns = std::move(estimate.returns);
+    in.actions.resize(rollout.size());
+    for (std::size_t r = 0; r < rollout.size(); ++r)
+      in.actions[r] = rollout[r].action;
+    return in;
+  }
+
+  MinibatchRows SizedMinibatch(long size) const {
+    const auto rows = static_cast<std::size_t>(size);
+    const auto dim = static_cast<std::size_t>(observation_dim);
+    MinibatchRows b;
+    b.obs.resize(rows * dim);
+    b.critic.resize(team_state_dim > 0 ? rows * (dim + static_cast<std::size_t>(team_state_dim))
+                                       : 0);
+    b.masks.resize(rows);
+    b.actions.resize(rows);
+    b.old_log_probs.resize(rows);
+    b.advantages.resize(rows);
+    b.returns.resize(rows);
+    b.values.resize(rows);
+    return b;
+  }
+
+  // Gathers rollout rows order[start], order[start + 1], ... into the minibatch `b`.
+  void Gather(const RolloutRows& in, const std::vector<long>& order, long start,
+              MinibatchRows& b) const {
+    const auto dim = static_cast<std::size_t>(observation_dim);
+    const auto critic_dim = dim + static_cast<std::size_t>(team_state_dim);
+    for (std::size_t row = 0; row < b.masks.size(); ++row) {
+      const auto i = static_cast<std::size_t>(order[static_cast<std::size_t>(start) + row]);
+      std::copy(in.obs.begin() + static_cast<long>(i * dim),
+                in.obs.begin() + static_cast<long>((i + 1) * dim),
+                b.obs.begin() + static_cast<long>(row * dim));
+      if (team_state_dim > 0) {
+        std::copy(in.team_in.begin() + static_cast<long>(i * critic_dim),
+                  in.team_in.begin() + static_cast<long>((i + 1) * critic_dim),
+                  b.critic.begin() + static_cast<long>(row * critic_dim));
+      }
+      b.masks[row] = &masks[i];
+      b.actions[row] = in.actions[i];
+      b.old_log_probs[row] = log_probs[i];
+      b.advantages[row] = in.advantages[i];
+      b.returns[row] = in.returns[i];
+    }
+  }
+
+  // One gradient step of both networks on the minibatch.
+  PpoObjective Update(MinibatchRows& b) {
+    const int rows = static_cast<int>(b.masks.size());
+    Logits(b.obs.data(), rows, b.masks.data(), b.logits);
+    critic_net.Forward(team_state_dim > 0 ? b.critic.data() : b.obs.data(), rows, b.values.data());
+    const PpoMinibatch minibatch{rows,
+                                 action_count,
+                                 b.logits.data(),
+                                 b.values.data(),
+                                 b.actions.data(),
+                                 b.old_log_probs.data(),
+                                 b.advantages.data(),
+                                 b.returns.data()};
+    const PpoCoefficients coefficients{ppo.clip, ppo.entropy_coefficient, ppo.value_coefficient};
+    PpoObjective objective = PpoLossAndGradients(minibatch, coefficients);
+    actor_net.Backward(objective.d_logits.data());
+    critic_net.Backward(objective.d_values.data());
+    ClipGradients();
+    actor_adam.Step(actor_net.Parameters(), actor_net.Gradients());
+    critic_adam.Step(critic_net.Parameters(), critic_net.Gradients());
+    return objective;
+  }
+
   // The mean loss of the minibatch updates.
   double Learn() {
     AnnealLearningRate();
     ++done_updates;
-    const std::vector<float> obs = Observations(false);
-    // Without a team state the critic reads the observations themselves: no second copy.
-    const std::vector<float> team_in =
-        team_state_dim > 0 ? CriticInputs(false) : std::vector<float>{};
-    const std::vector<float>& critic_in = team_state_dim > 0 ? team_in : obs;
-    const auto [advantages, returns] = AdvantagesAndReturns(critic_in, CriticInputs(true));
+    const RolloutRows in = ReadRollout();
     const long n = static_cast<long>(rollout.size());
-    std::vector<int> actions(static_cast<std::size_t>(n));
-    for (long r = 0; r < n; ++r)
-      actions[static_cast<std::size_t>(r)] = rollout[static_cast<std::size_t>(r)].action;
-
     std::vector<long> order(static_cast<std::size_t>(n));
     std::iota(order.begin(), order.end(), 0L);
     const long size = std::max(1L, n / ppo.minibatches);
-    const auto dim = static_cast<std::size_t>(observation_dim);
-    const auto critic_dim = dim + static_cast<std::size_t>(team_state_dim);
-    // One minibatch's rows, gathered.
-    std::vector<float> batch_obs(static_cast<std::size_t>(size) * dim);
-    std::vector<float> batch_critic(team_state_dim > 0 ? static_cast<std::size_t>(size) * critic_dim
-                                                       : 0);
-    std::vector<const ActionMask*> batch_masks(static_cast<std::size_t>(size));
-    std::vector<int> batch_actions(static_cast<std::size_t>(size));
-    std::vector<float> batch_old(static_cast<std::size_t>(size));
-    std::vector<float> batch_adv(static_cast<std::size_t>(size));
-    std::vector<float> batch_returns(static_cast<std::size_t>(size));
-    std::vector<float> logits;
-    std::vector<float> values(static_cast<std::size_t>(size));
-    const PpoCoefficients coefficients{ppo.clip, ppo.entropy_coefficient, ppo.value_coefficient};
+    MinibatchRows batch = SizedMinibatch(size);
     double loss_sum = 0.0;
     double entropy_sum = 0.0;
     int updates = 0;
     for (int epoch = 0; epoch < ppo.epochs; ++epoch) {
       std::shuffle(order.begin(), order.end(), rng);
       for (long start = 0; start + size <= n; start += size) {
-        for (long k = 0; k < size; ++k) {
-          const auto i = static_cast<std::size_t>(order[static_cast<std::size_t>(start + k)]);
-          const auto row = static_cast<std::size_t>(k);
-          std::copy(obs.begin() + static_cast<long>(i * dim),
-                    obs.begin() + static_cast<long>((i + 1) * dim),
-                    batch_obs.begin() + static_cast<long>(row * dim));
-          if (team_state_dim > 0) {
-            std::copy(critic_in.begin() + static_cast<long>(i * critic_dim),
-                      critic_in.begin() + static_cast<long>((i + 1) * critic_dim),
-                      batch_critic.begin() + static_cast<long>(row * critic_dim));
-          }
-          batch_masks[row] = &masks[i];
-          batch_actions[row] = actions[i];
-          batch_old[row] = log_probs[i];
-          batch_adv[row] = advantages[i];
-          batch_returns[row] = returns[i];
-        }
-        const int rows = static_cast<int>(size);
-        Logits(batch_obs.data(), rows, batch_masks.data(), logits);
-        critic_net.Forward(team_state_dim > 0 ? batch_critic.data() : batch_obs.data(), rows,
-                           values.data());
-        const PpoMinibatch minibatch{rows,
-                                     action_count,
-                                     logits.data(),
-                                     values.data(),
-                                     batch_actions.data(),
-                                     batch_old.data(),
-                                     batch_adv.data(),
-                                     batch_returns.data()};
-        const PpoObjective objective = PpoLossAndGradients(minibatch, coefficients);
-        actor_net.Backward(objective.d_logits.data());
-        critic_net.Backward(objective.d_values.data());
-        ClipGradients();
-        actor_adam.Step(actor_net.Parameters(), actor_net.Gradients());
-        critic_adam.Step(critic_net.Parameters(), critic_net.Gradients());
+        Gather(in, order, start, batch);
+        const PpoObjective objective = Update(batch);
         loss_sum += objective.loss;
         entropy_sum += objective.entropy;
         ++updates;

@@ -25,4 +25,18 @@ int MostProbableAllowed(const float* p, const ActionMask& mask, int count) {
   return action;
 }
 
+int SampleAllowed(const float* p, const ActionMask& mask, int count, double u) {
+  int action = -1;
+  double cumulative = 0.0;
+  for (int a = 0; a < count; ++a) {
+    if (!Allowed(mask, a) || p[a] <= 0.0f)
+      continue;
+    action = a;
+    cumulative += p[a];
+    if (u < cumulative)
+      break;
+  }
+  return action;
+}
+
 }  // namespace rlpos

@@ -17,5 +17,9 @@ void MaskLogits(const ActionMask& mask, int count, float* logits);
 // The most probable action `mask` allows (the lowest index among equals). std::invalid_argument
 // when the mask allows nothing.
 int MostProbableAllowed(const float* p, const ActionMask& mask, int count);
+// The allowed action whose share of the cumulative probabilities holds `u` (in [0, 1)): a sample
+// by inverse CDF, actions of probability 0 skipped; the last allowed action takes what rounding
+// leaves over. -1 when the mask allows nothing with a probability above 0.
+int SampleAllowed(const float* p, const ActionMask& mask, int count, double u);
 
 }  // namespace rlpos

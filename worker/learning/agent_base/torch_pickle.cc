@@ -122,83 +122,102 @@ bool Unpickler::Step() {
   const auto opcode = static_cast<unsigned char>(Bytes(1)[0]);
   if ((op_at == 0) != (opcode == op::kProto))
     Fail("data.pkl: PROTO other than first");
+  if (opcode == op::kStop)
+    return false;
+  if (!StepFrame(opcode) && !StepLiteral(opcode) && !StepObject(opcode)) {
+    static const char kHex[] = "0123456789abcdef";
+    Fail(std::string("data.pkl: opcode 0x") + kHex[opcode >> 4] + kHex[opcode & 15] + " at byte " +
+         std::to_string(op_at) + " is not one torch::save writes for a module");
+  }
+  return true;
+}
+
+bool Unpickler::StepFrame(unsigned char opcode) {
   switch (opcode) {
     case op::kProto:
       if (Operand(1) != kPickleProtocol)
         Fail("data.pkl: pickle protocol other than 2");
-      break;
-    case op::kGlobal:
-      PushGlobal();
-      break;
+      return true;
     case op::kBinPut:
       Memoize(Operand(1));
-      break;
+      return true;
     case op::kLongBinPut:
       Memoize(Operand(4));
-      break;
+      return true;
     case op::kBinGet:
       Recall(Operand(1));
-      break;
+      return true;
     case op::kLongBinGet:
       Recall(Operand(4));
-      break;
-    case op::kEmptyTuple:
-      Push(Make(Kind::kTuple));
-      break;
-    case op::kEmptyDict:
-      Push(Make(Kind::kDict));
-      break;
+      return true;
     case op::kMark:
       if (marks_.size() >= kMaxMarks)
         Fail("data.pkl: MARKs nested too deep");
       marks_.push_back(stack_.size());
-      break;
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool Unpickler::StepLiteral(unsigned char opcode) {
+  switch (opcode) {
+    case op::kGlobal:
+      PushGlobal();
+      return true;
+    case op::kEmptyTuple:
+      Push(Make(Kind::kTuple));
+      return true;
+    case op::kEmptyDict:
+      Push(Make(Kind::kDict));
+      return true;
     case op::kBinUnicode:
       PushString();
-      break;
+      return true;
     case op::kTuple:
       PushTuple();
-      break;
+      return true;
     case op::kBinPersId:
       PushStorage();
-      break;
+      return true;
     case op::kBinInt1:
       PushInt(static_cast<std::int64_t>(Operand(1)));
-      break;
+      return true;
     case op::kBinInt2:
       PushInt(static_cast<std::int64_t>(Operand(2)));
-      break;
+      return true;
     case op::kBinInt:
       PushInt(static_cast<std::int32_t>(static_cast<std::uint32_t>(Operand(4))));
-      break;
+      return true;
     case op::kNewTrue:
     case op::kNewFalse: {
       Value v = Make(Kind::kBool);
       v.number = opcode == op::kNewTrue;
       Push(std::move(v));
-      break;
+      return true;
     }
+    default:
+      return false;
+  }
+}
+
+bool Unpickler::StepObject(unsigned char opcode) {
+  switch (opcode) {
     case op::kReduce:
       Reduce();
-      break;
+      return true;
     case op::kNewObj:
       NewObject();
-      break;
+      return true;
     case op::kSetItems:
       SetItems();
-      break;
+      return true;
     case op::kBuild:
       Build();
-      break;
-    case op::kStop:
+      return true;
+    default:
       return false;
-    default: {
-      static const char kHex[] = "0123456789abcdef";
-      Fail(std::string("data.pkl: opcode 0x") + kHex[opcode >> 4] + kHex[opcode & 15] +
-           " at byte " + std::to_string(op_at) + " is not one torch::save writes for a module");
-    }
   }
-  return true;
 }
 
 std::string_view Unpickler::Bytes(std::uint64_t count) {

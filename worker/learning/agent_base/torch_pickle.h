@@ -79,6 +79,11 @@ class Unpickler {
 
  private:
   bool Step();
+  // Each runs `opcode` if it is of its kind and says whether it was: the protocol, marks and
+  // memo; the values pushed as the pickle spells them; the objects made of values on the stack.
+  bool StepFrame(unsigned char opcode);
+  bool StepLiteral(unsigned char opcode);
+  bool StepObject(unsigned char opcode);
   std::string_view Bytes(std::uint64_t count);
   std::uint64_t Operand(int width);
   std::string_view Line();

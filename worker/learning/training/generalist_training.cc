@@ -80,92 +80,125 @@ class Round {
   // Flies every lane to its episode's end; returns the transitions learnt from (one per agent
   // and step).
   std::int64_t Fly(PpoAgent& agent, double& final_reward_sum) {
-    const int limit = spec_.train_episode_steps;
     std::int64_t transitions_seen = 0;
-    std::vector<int> active;
-    std::vector<std::size_t> first_row;  // of each active lane, in the batch
     for (;;) {
-      active.clear();
-      first_row.clear();
-      std::size_t rows = 0;
-      for (std::size_t i = 0; i < lanes_.size(); ++i) {
-        if (lanes_[i].running) {
-          active.push_back(static_cast<int>(i));
-          first_row.push_back(rows);
-          rows += lanes_[i].observations.size();
-        }
-      }
+      const std::vector<int> active = Running();
       if (active.empty())
         return transitions_seen;
-      std::vector<std::vector<float>> batch(rows);
-      std::vector<ActionMask> masks(rows);
-      std::vector<std::vector<float>> team_states(rows);
-      std::vector<int> streams(rows);
-      for (std::size_t k = 0; k < active.size(); ++k) {
-        Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
-        for (std::size_t a = 0; a < lane.observations.size(); ++a) {
-          const std::size_t r = first_row[k] + a;
-          batch[r] = std::move(lane.observations[a]);
-          masks[r] = std::move(lane.masks[a]);
-          if (teams_)
-            team_states[r] = std::move(lane.team_states[a]);
-          // GAE follows each agent's own stream (with turns, the lane's one stream).
-          streams[r] = active[k] * static_cast<int>(kMaxUavs) + static_cast<int>(a);
-        }
-      }
-      const std::vector<int> actions = agent.ActBatch(batch, masks);
-      pool_.ForEach(active.size(), [&](std::size_t k) {
-        Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
-        if (lane.joint) {
-          const auto from = actions.begin() + static_cast<long>(first_row[k]);
-          const JointStepResult r =
-              lane.env->JointStep(std::vector<int>(from, from + lane.env->AgentCount()));
-          lane.reward = r.reward;
-          lane.terminated = r.terminated;
-          lane.truncated = r.truncated;
-          See(lane, {});  // on the pool too: the masks probe every move, the look around evaluates
-        } else {
-          StepResult r = lane.env->Step(actions[first_row[k]]);
-          lane.reward = r.reward;
-          lane.terminated = r.terminated;
-          lane.truncated = r.truncated;
-          See(lane, std::move(r.observation));
-        }
-      });
-      std::vector<Transition> transitions(rows);
-      for (std::size_t k = 0; k < active.size(); ++k) {
-        Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
-        ++lane.steps;
-        const double learnt = LearntReward(spec_, lane.reward, lane.best);
-        const bool truncated = lane.truncated || (limit > 0 && lane.steps >= limit);
-        const bool end = lane.terminated || truncated;
-        for (std::size_t a = 0; a < lane.observations.size(); ++a) {
-          const std::size_t r = first_row[k] + a;
-          Transition& t = transitions[r];
-          t.observation = std::move(batch[r]);
-          t.action = actions[r];
-          t.reward = static_cast<float>(learnt);
-          t.next_observation = lane.observations[a];
-          t.terminal = lane.terminated;
-          t.next_mask = lane.masks[a];
-          t.episode_end = end;
-          if (teams_) {
-            t.team_state = std::move(team_states[r]);
-            t.next_team_state = lane.team_states[a];
-          }
-        }
-        if (end) {
-          lane.running = false;
-          final_reward_sum += lane.reward;
-          lane.env.reset();  // its scenario's memory goes now, not with the next round
-        }
-      }
+      LaneBatch batch = TakeBatch(active);
+      const std::vector<int> actions = agent.ActBatch(batch.observations, batch.masks);
+      Step(active, batch.first_row, actions);
+      std::vector<Transition> transitions = Learnt(active, actions, batch, final_reward_sum);
       transitions_seen += static_cast<std::int64_t>(transitions.size());
-      agent.ObserveBatch(std::move(transitions), streams);
+      agent.ObserveBatch(std::move(transitions), batch.streams);
     }
   }
 
  private:
+  // The rows the agent acts on, its agents' rows for each active lane in turn (taken from the
+  // lanes).
+  struct LaneBatch {
+    std::vector<std::size_t> first_row;  // of each active lane
+    std::vector<std::vector<float>> observations;
+    std::vector<ActionMask> masks;
+    std::vector<std::vector<float>> team_states;
+    std::vector<int> streams;
+  };
+
+  std::vector<int> Running() const {
+    std::vector<int> active;
+    for (std::size_t i = 0; i < lanes_.size(); ++i) {
+      if (lanes_[i].running)
+        active.push_back(static_cast<int>(i));
+    }
+    return active;
+  }
+
+  LaneBatch TakeBatch(const std::vector<int>& active) {
+    LaneBatch b;
+    std::size_t rows = 0;
+    for (int i : active) {
+      b.first_row.push_back(rows);
+      rows += lanes_[static_cast<std::size_t>(i)].observations.size();
+    }
+    b.observations.resize(rows);
+    b.masks.resize(rows);
+    b.team_states.resize(rows);
+    b.streams.resize(rows);
+    for (std::size_t k = 0; k < active.size(); ++k) {
+      Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
+      for (std::size_t a = 0; a < lane.observations.size(); ++a) {
+        const std::size_t r = b.first_row[k] + a;
+        b.observations[r] = std::move(lane.observations[a]);
+        b.masks[r] = std::move(lane.masks[a]);
+        if (teams_)
+          b.team_states[r] = std::move(lane.team_states[a]);
+        // GAE follows each agent's own stream (with turns, the lane's one stream).
+        b.streams[r] = active[k] * static_cast<int>(kMaxUavs) + static_cast<int>(a);
+      }
+    }
+    return b;
+  }
+
+  // Every active lane takes its step, on the pool.
+  void Step(const std::vector<int>& active, const std::vector<std::size_t>& first_row,
+            const std::vector<int>& actions) {
+    pool_.ForEach(active.size(), [&](std::size_t k) {
+      Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
+      if (lane.joint) {
+        const auto from = actions.begin() + static_cast<long>(first_row[k]);
+        const JointStepResult r =
+            lane.env->JointStep(std::vector<int>(from, from + lane.env->AgentCount()));
+        lane.reward = r.reward;
+        lane.terminated = r.terminated;
+        lane.truncated = r.truncated;
+        See(lane, {});  // on the pool too: the masks probe every move, the look around evaluates
+      } else {
+        StepResult r = lane.env->Step(actions[first_row[k]]);
+        lane.reward = r.reward;
+        lane.terminated = r.terminated;
+        lane.truncated = r.truncated;
+        See(lane, std::move(r.observation));
+      }
+    });
+  }
+
+  // The step's transitions, one per agent of each active lane; ends the lanes whose episode
+  // ended, adding their final reward to `final_reward_sum`.
+  std::vector<Transition> Learnt(const std::vector<int>& active, const std::vector<int>& actions,
+                                 LaneBatch& b, double& final_reward_sum) {
+    const int limit = spec_.train_episode_steps;
+    std::vector<Transition> transitions(b.observations.size());
+    for (std::size_t k = 0; k < active.size(); ++k) {
+      Lane& lane = lanes_[static_cast<std::size_t>(active[k])];
+      ++lane.steps;
+      const double learnt = LearntReward(spec_, lane.reward, lane.best);
+      const bool truncated = lane.truncated || (limit > 0 && lane.steps >= limit);
+      const bool end = lane.terminated || truncated;
+      for (std::size_t a = 0; a < lane.observations.size(); ++a) {
+        const std::size_t r = b.first_row[k] + a;
+        Transition& t = transitions[r];
+        t.observation = std::move(b.observations[r]);
+        t.action = actions[r];
+        t.reward = static_cast<float>(learnt);
+        t.next_observation = lane.observations[a];
+        t.terminal = lane.terminated;
+        t.next_mask = lane.masks[a];
+        t.episode_end = end;
+        if (teams_) {
+          t.team_state = std::move(b.team_states[r]);
+          t.next_team_state = lane.team_states[a];
+        }
+      }
+      if (end) {
+        lane.running = false;
+        final_reward_sum += lane.reward;
+        lane.env.reset();  // its scenario's memory goes now, not with the next round
+      }
+    }
+    return transitions;
+  }
+
   // The lane's agents' observations, masks and team states now; `turn`: the observation of the
   // UAV whose turn it is, as the env's last Reset or Step gave it (unused with joint steps).
   void See(Lane& lane, const std::vector<double>& turn) const {

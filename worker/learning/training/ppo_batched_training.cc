@@ -73,92 +73,155 @@ std::vector<float> TeamStateNow(const BatchedEnv& envs, std::size_t i, bool need
   return std::vector<float>(state.begin(), state.end());
 }
 
+// The batch the agent acts on: the running envs' observations (taken from the round) and, when
+// the env masks, their masks.
+struct Batch {
+  std::vector<std::vector<float>> observations;
+  std::vector<ActionMask> masks;
+};
+
 // One round: env i flies training episode first + i, for i < records.size(), until each has
 // ended; the others are stepped too (a batched env steps every env) and ignored.
-void FlyRound(BatchedEnv& envs, Rows& rows, PpoAgent& agent, const AgentSpec& spec,
-              std::uint64_t seed, int first, std::vector<EpisodeRecord>& records,
-              std::vector<double>& loss_sums) {
-  const std::size_t n = envs.NumEnvs();
-  const std::size_t count = records.size();
-  std::vector<std::optional<std::uint64_t>> seeds(n);
-  std::vector<ResetOptions> resets(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const int episode = first + static_cast<int>(i < count ? i : 0);
-    seeds[i] = seed + static_cast<std::uint64_t>(episode);
-    resets[i] = TrainingEpisodeOptions(spec, episode).reset;
+class BatchedRound {
+ public:
+  BatchedRound(BatchedEnv& envs, Rows& rows, PpoAgent& agent, const AgentSpec& spec,
+               std::vector<EpisodeRecord>& records)
+      : envs_(envs),
+        rows_(rows),
+        agent_(agent),
+        spec_(spec),
+        records_(records),
+        count_(records.size()),
+        chosen_(envs.NumEnvs(), 0) {}
+
+  void Start(std::uint64_t seed, int first) {
+    const std::size_t n = envs_.NumEnvs();
+    std::vector<std::optional<std::uint64_t>> seeds(n);
+    std::vector<ResetOptions> resets(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const int episode = first + static_cast<int>(i < count_ ? i : 0);
+      seeds[i] = seed + static_cast<std::uint64_t>(episode);
+      resets[i] = TrainingEpisodeOptions(spec_, episode).reset;
+    }
+    envs_.Reset(seeds, resets, rows_.Buffers());
+    teams_ = agent_.NeedsTeamState();
+    observations_.resize(count_);
+    masks_.resize(count_);
+    team_states_.resize(count_);
+    for (std::size_t i = 0; i < count_; ++i) {
+      observations_[i] = rows_.Observation(i);
+      masks_[i] = rows_.Mask(i);
+      team_states_[i] = TeamStateNow(envs_, i, teams_);
+    }
+    running_.assign(count_, true);
   }
-  envs.Reset(seeds, resets, rows.Buffers());
-  const bool teams = agent.NeedsTeamState();
-  std::vector<std::vector<float>> observations(count);
-  std::vector<ActionMask> masks(count);
-  std::vector<std::vector<float>> team_states(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    observations[i] = rows.Observation(i);
-    masks[i] = rows.Mask(i);
-    team_states[i] = TeamStateNow(envs, i, teams);
+
+  // Steps until every episode has ended; an update is counted in the episode of the lowest env
+  // that took part in it.
+  void Fly(std::vector<double>& loss_sums) {
+    for (;;) {
+      const std::vector<int> active = Running();
+      if (active.empty())
+        return;
+      Batch batch = TakeBatch(active);
+      const std::vector<int> actions = agent_.ActBatch(batch.observations, batch.masks);
+      Step(active, actions);
+      std::vector<Transition> transitions = Record(active, actions, batch);
+      if (const std::optional<double> loss = agent_.ObserveBatch(std::move(transitions), active)) {
+        const auto i = static_cast<std::size_t>(active.front());
+        ++records_[i].updates;
+        loss_sums[i] += *loss;
+      }
+    }
   }
-  std::vector<bool> running(count, true);
-  std::vector<int> active;
-  std::vector<std::int64_t> chosen(n, 0);
-  const int limit = spec.train_episode_steps;
-  for (;;) {
-    active.clear();
-    for (std::size_t i = 0; i < count; ++i) {
-      if (running[i])
+
+ private:
+  std::vector<int> Running() const {
+    std::vector<int> active;
+    for (std::size_t i = 0; i < count_; ++i) {
+      if (running_[i])
         active.push_back(static_cast<int>(i));
     }
-    if (active.empty())
-      return;
-    std::vector<std::vector<float>> batch(active.size());
-    std::vector<ActionMask> batch_masks;
+    return active;
+  }
+
+  Batch TakeBatch(const std::vector<int>& active) {
+    Batch batch;
+    batch.observations.resize(active.size());
     for (std::size_t k = 0; k < active.size(); ++k) {
       const auto i = static_cast<std::size_t>(active[k]);
-      batch[k] = std::move(observations[i]);
-      if (rows.Masked())
-        batch_masks.push_back(std::move(masks[i]));
+      batch.observations[k] = std::move(observations_[i]);
+      if (rows_.Masked())
+        batch.masks.push_back(std::move(masks_[i]));
     }
-    const std::vector<int> actions = agent.ActBatch(batch, batch_masks);
-    std::fill(chosen.begin(), chosen.end(), 0);
-    for (std::size_t k = 0; k < active.size(); ++k)
-      chosen[static_cast<std::size_t>(active[k])] = actions[k];
-    envs.Step(chosen.data(), n, rows.Buffers());
+    return batch;
+  }
 
+  // The active envs move as chosen; the others stand (action 0).
+  void Step(const std::vector<int>& active, const std::vector<int>& actions) {
+    std::fill(chosen_.begin(), chosen_.end(), 0);
+    for (std::size_t k = 0; k < active.size(); ++k)
+      chosen_[static_cast<std::size_t>(active[k])] = actions[k];
+    envs_.Step(chosen_.data(), envs_.NumEnvs(), rows_.Buffers());
+  }
+
+  // The step's transitions, one per active env; updates the episodes' records and what each env
+  // observes next.
+  std::vector<Transition> Record(const std::vector<int>& active, const std::vector<int>& actions,
+                                 Batch& batch) {
+    const int limit = spec_.train_episode_steps;
     std::vector<Transition> transitions(active.size());
     for (std::size_t k = 0; k < active.size(); ++k) {
       const auto i = static_cast<std::size_t>(active[k]);
-      EpisodeRecord& record = records[i];
+      EpisodeRecord& record = records_[i];
       Transition& t = transitions[k];
-      std::vector<float> next = rows.Observation(i);
-      ActionMask next_mask = rows.Mask(i);
+      std::vector<float> next = rows_.Observation(i);
+      ActionMask next_mask = rows_.Mask(i);
       // agent.train_episode_steps: a time limit, so the next state still bootstraps.
-      const bool truncated = rows.Truncated(i) || (limit > 0 && record.steps + 1 >= limit);
-      t.observation = std::move(batch[k]);
+      const bool truncated = rows_.Truncated(i) || (limit > 0 && record.steps + 1 >= limit);
+      t.observation = std::move(batch.observations[k]);
       t.action = actions[k];
-      t.reward = static_cast<float>(rows.Reward(i));
+      t.reward = static_cast<float>(rows_.Reward(i));
       t.next_observation = next;
-      t.terminal = rows.Terminated(i);
+      t.terminal = rows_.Terminated(i);
       t.next_mask = next_mask;
-      t.episode_end = rows.Terminated(i) || truncated;
-      t.team_state = std::move(team_states[i]);
-      t.next_team_state = TeamStateNow(envs, i, teams);
-      team_states[i] = t.next_team_state;
-      record.total_reward += rows.Reward(i);
-      record.final_reward = rows.Reward(i);
+      t.episode_end = rows_.Terminated(i) || truncated;
+      t.team_state = std::move(team_states_[i]);
+      t.next_team_state = TeamStateNow(envs_, i, teams_);
+      team_states_[i] = t.next_team_state;
+      record.total_reward += rows_.Reward(i);
+      record.final_reward = rows_.Reward(i);
       ++record.steps;
       if (t.episode_end) {
-        running[i] = false;
-        record.final_info = envs.LastInfo(i);
+        running_[i] = false;
+        record.final_info = envs_.LastInfo(i);
       }
-      observations[i] = std::move(next);
-      masks[i] = std::move(next_mask);
+      observations_[i] = std::move(next);
+      masks_[i] = std::move(next_mask);
     }
-    // An update is counted in the episode of the lowest env that took part in it.
-    if (const std::optional<double> loss = agent.ObserveBatch(std::move(transitions), active)) {
-      const auto i = static_cast<std::size_t>(active.front());
-      ++records[i].updates;
-      loss_sums[i] += *loss;
-    }
+    return transitions;
   }
+
+  BatchedEnv& envs_;
+  Rows& rows_;
+  PpoAgent& agent_;
+  const AgentSpec& spec_;
+  std::vector<EpisodeRecord>& records_;
+  std::size_t count_;
+  bool teams_ = false;
+  std::vector<std::vector<float>> observations_;  // what env i observes now, normalised
+  std::vector<ActionMask> masks_;
+  std::vector<std::vector<float>> team_states_;
+  std::vector<bool> running_;
+  std::vector<std::int64_t> chosen_;  // the actions of a batched step, one per env
+};
+
+void FlyRound(BatchedEnv& envs, Rows& rows, PpoAgent& agent, const AgentSpec& spec,
+              std::uint64_t seed, int first, std::vector<EpisodeRecord>& records,
+              std::vector<double>& loss_sums) {
+  BatchedRound round(envs, rows, agent, spec, records);
+  round.Start(seed, first);
+  round.Fly(loss_sums);
 }
 
 }  // namespace

@@ -134,14 +134,8 @@ class PyEnvHandle {
   const Scenario& scenario() const { return Open().scenario(); }
   int ActionCount() const { return Open().ActionSpace().n; }
   int StepsPerEpisode() const { return Open().StepsPerEpisode(); }
-  std::pair<std::vector<double>, std::vector<double>> ActionBounds() const {
-    const BoxSpace box = Open().ContinuousActionSpace();
-    return {box.low, box.high};
-  }
-  std::pair<std::vector<double>, std::vector<double>> ObservationBounds() const {
-    const BoxSpace box = Open().ObservationSpace();
-    return {box.low, box.high};
-  }
+  Bounds ActionBounds() const { return BoundsOf(Open().ContinuousActionSpace()); }
+  Bounds ObservationBounds() const { return BoundsOf(Open().ObservationSpace()); }
 
   void Close() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -252,10 +246,7 @@ class PyParallelEnv : public PyEnvHandle {
       names.push_back(uav.name);
     return names;
   }
-  std::pair<std::vector<double>, std::vector<double>> StateBounds() const {
-    const BoxSpace box = Open().StateSpace();
-    return {box.low, box.high};
-  }
+  Bounds StateBounds() const { return BoundsOf(Open().StateSpace()); }
 
   // (observations per UAV, state, info)
   py::tuple Reset(std::uint64_t seed, bool random_start) {

@@ -40,14 +40,8 @@ class PyVectorEnv {
   std::size_t Threads() const { return Open().Threads(); }
   std::size_t UavCount() const { return Open().UavCount(); }
   int ActionCount() const { return Open().ActionSpace().n; }
-  std::pair<std::vector<double>, std::vector<double>> ActionBounds() const {
-    const BoxSpace box = Open().ContinuousActionSpace();
-    return {box.low, box.high};
-  }
-  std::pair<std::vector<double>, std::vector<double>> ObservationBounds() const {
-    const BoxSpace box = Open().ObservationSpace();
-    return {box.low, box.high};
-  }
+  Bounds ActionBounds() const { return BoundsOf(Open().ContinuousActionSpace()); }
+  Bounds ObservationBounds() const { return BoundsOf(Open().ObservationSpace()); }
   std::vector<std::string> ScenarioNames() const {
     std::vector<std::string> names;
     for (std::size_t i = 0; i < Open().NumEnvs(); ++i)

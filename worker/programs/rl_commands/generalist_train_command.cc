@@ -166,22 +166,14 @@ nlohmann::json ValidationJson(const std::vector<ValidationScore>& scores) {
   return rows;
 }
 
-}  // namespace
-
-bool TrainsAcrossScenarios(const TrainOptions& t) {
-  return !t.generated.empty() || !t.scenarios_dir.empty();
-}
-
-int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) {
+// The option combinations training across scenarios refuses, in the order they are reported.
+void CheckGeneralistOptions(const CommonOptions& options, const TrainOptions& t) {
   if (!t.generated.empty() && !t.scenarios_dir.empty())
     throw ConfigError("--generated", "and --scenarios exclude each other");
   if (!options.scenario_file.empty())
     throw ConfigError("--scenario", "trains for one scenario; --generated and --scenarios for any");
   if (!t.steps)
     throw ConfigError("--steps", "is required with --generated and --scenarios");
-  const long long steps = *t.steps;
-  const int validation_scenarios =
-      t.validation_scenarios.value_or(GeneralistOptions{}.validation_scenarios);
   if (t.episodes)
     throw ConfigError("--episodes", "counts one scenario's episodes; give --steps instead");
   if (t.algorithm && *t.algorithm != "ppo")
@@ -190,136 +182,209 @@ int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) 
     throw ConfigError("--fidelity", "training across scenarios runs at analytic fidelity");
   if (!t.scenarios_dir.empty() && (t.uavs != "1" || !t.ues.empty()))
     throw ConfigError("--uavs", "and --ues shape --generated's draws; --scenarios takes the set's");
+}
+
+// One training across scenarios: what it trains on, for how long, and the OUT.partial folder it
+// works in until it is done.
+struct GeneralistJob {
+  const TrainOptions& t;
+  long long steps;
+  int validation_scenarios;
+  const Source& source;
+  fs::path partial;
+  const GeneralistCheckpoint& checkpoint;
+  const std::optional<SavedCheckpoint>& resumed;
+};
+
+// What the training is: a checkpoint of anything else is not resumed.
+std::string TrainingFingerprint(const Source& source, long long steps, int validation_scenarios) {
+  return Sha256Hex(ToJson(source.settings).dump() + source.description.dump() + "|" +
+                   std::to_string(steps) + "|" + std::to_string(validation_scenarios));
+}
+
+// A fresh OUT.partial, for a training with no checkpoint to go on from.
+void CreatePartial(const fs::path& partial) {
+  std::error_code ec;
+  fs::remove_all(partial, ec);
+  if (!fs::create_directories(partial, ec) || ec)
+    throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
+}
+
+// Episode e of a training from seed S starts from RngRun S * 1000000 + 1 + e, as per-scenario
+// training's (its exploring start).
+std::uint64_t FirstEpisodeRun(const Scenario& settings) {
+  return settings.agent.seed * 1000000 + 1;
+}
+
+void WriteCurveHeader(std::ostream& curve) {
+  curve << "steps,episodes,train_final_reward,validation_ratio,validation_worst_ratio,"
+           "best_validation_ratio\n";
+}
+
+void WriteCurveRow(std::ostream& curve, const GeneralistProgress& p) {
+  curve << p.steps << ',' << p.episodes << ',' << p.train_final_reward << ',';
+  if (p.validation)
+    curve << *p.validation << ',' << *p.validation_worst;
+  else
+    curve << ',';
+  curve << ',';
+  if (p.best_validation)
+    curve << *p.best_validation;
+  curve << '\n';
+}
+
+void PrintProgress(const GeneralistProgress& p, long long steps, double elapsed) {
+  const double share = std::min(1.0, static_cast<double>(p.steps) / static_cast<double>(steps));
+  std::fprintf(stderr, "steps %lld/%lld (%.0f%%), episodes %lld, final reward %.3f",
+               static_cast<long long>(p.steps), steps, 100 * share,
+               static_cast<long long>(p.episodes), p.train_final_reward);
+  if (p.validation)
+    std::fprintf(stderr, ", validation %.3f of the oracle, worst %.3f (best mean %.3f)",
+                 *p.validation, *p.validation_worst, *p.best_validation);
+  std::fprintf(stderr, ", %s, ETA %s\n", FormatDuration(elapsed).c_str(),
+               FormatDuration(share > 0 ? elapsed * (1 - share) / share : 0).c_str());
+}
+
+// Trains `agent` from the checkpoint, if any, writing the learning curve and checkpoints into
+// the partial folder; `seconds` gets the training time, the checkpoint's included.
+GeneralistResult TrainInPartial(const GeneralistJob& job, PpoAgent& agent, double& seconds) {
+  GeneralistOptions g;
+  g.steps = job.steps;
+  g.validation_scenarios = job.validation_scenarios;
+  const fs::path curve_file = job.partial / "learning_curve.csv";
+  std::ofstream curve;
+  GeneralistCheckpoints checkpoints;
+  double seconds_before = 0.0;
+  if (job.resumed) {
+    job.checkpoint.LoadAgent(agent);
+    // The curve as it stood at the checkpoint: rows written after it are flown again.
+    fs::resize_file(curve_file, job.resumed->curve_bytes);
+    curve.open(curve_file, std::ios::app);
+    checkpoints.resume = &job.resumed->state;
+    seconds_before = job.resumed->seconds;
+    std::fprintf(stderr, "resuming from the checkpoint in %s: step %lld of %lld\n",
+                 job.partial.string().c_str(),
+                 static_cast<long long>(job.resumed->state.result.steps), job.steps);
+  } else {
+    curve.open(curve_file);
+    WriteCurveHeader(curve);
+  }
+  const auto started = Clock::now() - std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double>(seconds_before));
+  auto last_checkpoint = Clock::now();
+  checkpoints.due = [&] {
+    return Clock::now() - last_checkpoint >=
+           std::chrono::duration<double>(job.t.checkpoint_seconds);
+  };
+  checkpoints.save = [&](const GeneralistState& state) {
+    curve.flush();
+    const double elapsed = std::chrono::duration<double>(Clock::now() - started).count();
+    job.checkpoint.Save(state, agent, static_cast<std::uint64_t>(fs::file_size(curve_file)),
+                        elapsed);
+    last_checkpoint = Clock::now();
+  };
+  auto last_print = started;
+  const auto on_progress = [&](const GeneralistProgress& p) {
+    WriteCurveRow(curve, p);
+    const auto now = Clock::now();
+    if (!p.validation && now - last_print < std::chrono::seconds(5))
+      return;
+    last_print = now;
+    PrintProgress(p, job.steps, std::chrono::duration<double>(now - started).count());
+  };
+  const Scenario& settings = job.source.settings;
+  const GeneralistResult r = TrainGeneralist(*job.source.draw, agent, settings.agent, g,
+                                             FirstEpisodeRun(settings), on_progress, checkpoints);
+  seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  return r;
+}
+
+nlohmann::json ResultJson(const GeneralistJob& job, const GeneralistResult& r, double seconds) {
+  const Scenario& settings = job.source.settings;
+  nlohmann::json result = {{"general", true},
+                           {"algorithm", settings.agent.algorithm},
+                           {"action_space", settings.env.action_space},
+                           {"fidelity", settings.env.fidelity},
+                           {"seed", settings.agent.seed},
+                           {"training", job.source.description},
+                           {"steps", r.steps},
+                           {"episodes", r.episodes},
+                           {"kept_at_steps", r.kept_at_steps},
+                           {"validation_ratio", r.best_validation},
+                           {"validation", ValidationJson(r.validation)},
+                           {"train_seconds", seconds},
+                           // The commit and the libraries it was trained with.
+                           {"build", DescribeBuild(ThisBuild())}};
+  result["training"]["seed"] = settings.agent.seed;
+  if (job.source.draw->Generated()) {
+    const std::uint64_t first = job.source.draw->FirstTrainingSeed();
+    result["training"]["generator_seeds"] = {first + r.first_draw, first + r.last_draw};
+    result["training"]["validation_seeds"] = {
+        kValidationSeedBase,
+        kValidationSeedBase + static_cast<std::uint64_t>(job.validation_scenarios) - 1};
+  }
+  // The replay's runs: a general policy is flown greedy from the baseline with run 1.
+  result.update(SeedStreamJson(FirstEpisodeRun(settings), 1));
+  result["general"] = true;
+  return result;
+}
+
+void PrintSummary(const GeneralistJob& job, const GeneralistResult& r, double seconds,
+                  const nlohmann::json& result) {
+  if (job.t.json) {
+    std::cout << result.dump(2) << std::endl;
+    return;
+  }
+  std::printf(
+      "trained a policy for any scenario (ppo, seed %llu): %lld steps, %lld episodes "
+      "in %s; %.3f of the oracle's reward on %zu validation scenarios\npolicy in %s\n",
+      static_cast<unsigned long long>(job.source.settings.agent.seed),
+      static_cast<long long>(r.steps), static_cast<long long>(r.episodes),
+      FormatDuration(seconds).c_str(), r.best_validation, r.validation.size(), job.t.out.c_str());
+}
+
+// Trains, then writes the policy folder in OUT.partial and renames it to OUT.
+void TrainAndWritePolicy(const GeneralistJob& job) {
+  const Scenario& settings = job.source.settings;
+  UavPositioningEnv example(settings);
+  PpoAgent agent(settings.agent, static_cast<int>(example.ObservationSpace().Dim()),
+                 example.ActionSpace().n, job.steps, example.UeSlots());
+  double seconds = 0.0;
+  const GeneralistResult r = TrainInPartial(job, agent, seconds);
+  agent.Save(job.partial.string());
+  const nlohmann::json result = ResultJson(job, r, seconds);
+  std::ofstream(job.partial / "result.json") << result.dump(2) << '\n';
+  std::ofstream(job.partial / "scenario.json") << ToJson(settings).dump(2) << '\n';
+  job.checkpoint.Remove();
+  fs::rename(job.partial, job.t.out);
+  PrintSummary(job, r, seconds, result);
+}
+
+}  // namespace
+
+bool TrainsAcrossScenarios(const TrainOptions& t) {
+  return !t.generated.empty() || !t.scenarios_dir.empty();
+}
+
+int GeneralistTrainCommand(const CommonOptions& options, const TrainOptions& t) {
+  CheckGeneralistOptions(options, t);
+  const long long steps = *t.steps;
+  const int validation_scenarios =
+      t.validation_scenarios.value_or(GeneralistOptions{}.validation_scenarios);
   const Source source = t.generated.empty() ? FolderSource(t, options.overrides)
                                             : GeneratedSource(t, options.overrides);
-  const Scenario& settings = source.settings;
-  const fs::path out = t.out;
-  if (fs::exists(out))
+  if (fs::exists(fs::path(t.out)))
     throw ConfigError("--out", t.out + " already exists; choose another folder or remove it");
   const fs::path partial = t.out + ".partial";
-  // What the training is: a checkpoint of anything else is not resumed.
-  const GeneralistCheckpoint checkpoint(
-      partial, Sha256Hex(ToJson(settings).dump() + source.description.dump() + "|" +
-                         std::to_string(steps) + "|" + std::to_string(validation_scenarios)));
+  const GeneralistCheckpoint checkpoint(partial,
+                                        TrainingFingerprint(source, steps, validation_scenarios));
   const std::optional<SavedCheckpoint> resumed = checkpoint.Find();
-  std::error_code ec;
-  if (!resumed) {
-    fs::remove_all(partial, ec);
-    if (!fs::create_directories(partial, ec) || ec)
-      throw ConfigError("--out", "cannot create " + partial.string() + ": " + ec.message());
-  }
+  if (!resumed)
+    CreatePartial(partial);
   try {
-    UavPositioningEnv example(settings);
-    PpoAgent agent(settings.agent, static_cast<int>(example.ObservationSpace().Dim()),
-                   example.ActionSpace().n, steps, example.UeSlots());
-    GeneralistOptions g;
-    g.steps = steps;
-    g.validation_scenarios = validation_scenarios;
-    const fs::path curve_file = partial / "learning_curve.csv";
-    std::ofstream curve;
-    GeneralistCheckpoints checkpoints;
-    double seconds_before = 0.0;
-    if (resumed) {
-      checkpoint.LoadAgent(agent);
-      // The curve as it stood at the checkpoint: rows written after it are flown again.
-      fs::resize_file(curve_file, resumed->curve_bytes);
-      curve.open(curve_file, std::ios::app);
-      checkpoints.resume = &resumed->state;
-      seconds_before = resumed->seconds;
-      std::fprintf(stderr, "resuming from the checkpoint in %s: step %lld of %lld\n",
-                   partial.string().c_str(), static_cast<long long>(resumed->state.result.steps),
-                   steps);
-    } else {
-      curve.open(curve_file);
-      curve << "steps,episodes,train_final_reward,validation_ratio,validation_worst_ratio,"
-               "best_validation_ratio\n";
-    }
-    const auto started = Clock::now() - std::chrono::duration_cast<Clock::duration>(
-                                            std::chrono::duration<double>(seconds_before));
-    auto last_checkpoint = Clock::now();
-    checkpoints.due = [&] {
-      return Clock::now() - last_checkpoint >= std::chrono::duration<double>(t.checkpoint_seconds);
-    };
-    checkpoints.save = [&](const GeneralistState& state) {
-      curve.flush();
-      const double elapsed = std::chrono::duration<double>(Clock::now() - started).count();
-      checkpoint.Save(state, agent, static_cast<std::uint64_t>(fs::file_size(curve_file)), elapsed);
-      last_checkpoint = Clock::now();
-    };
-    auto last_print = started;
-    const auto on_progress = [&](const GeneralistProgress& p) {
-      curve << p.steps << ',' << p.episodes << ',' << p.train_final_reward << ',';
-      if (p.validation)
-        curve << *p.validation << ',' << *p.validation_worst;
-      else
-        curve << ',';
-      curve << ',';
-      if (p.best_validation)
-        curve << *p.best_validation;
-      curve << '\n';
-      const auto now = Clock::now();
-      if (!p.validation && now - last_print < std::chrono::seconds(5))
-        return;
-      last_print = now;
-      const double elapsed = std::chrono::duration<double>(now - started).count();
-      const double share = std::min(1.0, static_cast<double>(p.steps) / static_cast<double>(steps));
-      std::fprintf(stderr, "steps %lld/%lld (%.0f%%), episodes %lld, final reward %.3f",
-                   static_cast<long long>(p.steps), steps, 100 * share,
-                   static_cast<long long>(p.episodes), p.train_final_reward);
-      if (p.validation)
-        std::fprintf(stderr, ", validation %.3f of the oracle, worst %.3f (best mean %.3f)",
-                     *p.validation, *p.validation_worst, *p.best_validation);
-      std::fprintf(stderr, ", %s, ETA %s\n", FormatDuration(elapsed).c_str(),
-                   FormatDuration(share > 0 ? elapsed * (1 - share) / share : 0).c_str());
-    };
-    // Episode e of a training from seed S starts from RngRun S * 1000000 + 1 + e, as
-    // per-scenario training's (its exploring start).
-    const std::uint64_t first_run = settings.agent.seed * 1000000 + 1;
-    const GeneralistResult r = TrainGeneralist(*source.draw, agent, settings.agent, g, first_run,
-                                               on_progress, checkpoints);
-    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-    curve.close();
-    agent.Save(partial.string());
-    nlohmann::json result = {{"general", true},
-                             {"algorithm", settings.agent.algorithm},
-                             {"action_space", settings.env.action_space},
-                             {"fidelity", settings.env.fidelity},
-                             {"seed", settings.agent.seed},
-                             {"training", source.description},
-                             {"steps", r.steps},
-                             {"episodes", r.episodes},
-                             {"kept_at_steps", r.kept_at_steps},
-                             {"validation_ratio", r.best_validation},
-                             {"validation", ValidationJson(r.validation)},
-                             {"train_seconds", seconds},
-                             // The commit and the libraries it was trained with.
-                             {"build", DescribeBuild(ThisBuild())}};
-    result["training"]["seed"] = settings.agent.seed;
-    if (source.draw->Generated()) {
-      const std::uint64_t first = source.draw->FirstTrainingSeed();
-      result["training"]["generator_seeds"] = {first + r.first_draw, first + r.last_draw};
-      result["training"]["validation_seeds"] = {
-          kValidationSeedBase,
-          kValidationSeedBase + static_cast<std::uint64_t>(validation_scenarios) - 1};
-    }
-    // The replay's runs: a general policy is flown greedy from the baseline with run 1.
-    result.update(SeedStreamJson(first_run, 1));
-    result["general"] = true;
-    std::ofstream(partial / "result.json") << result.dump(2) << '\n';
-    std::ofstream(partial / "scenario.json") << ToJson(settings).dump(2) << '\n';
-    checkpoint.Remove();
-    fs::rename(partial, out);
-    if (t.json) {
-      std::cout << result.dump(2) << std::endl;
-    } else {
-      std::printf(
-          "trained a policy for any scenario (ppo, seed %llu): %lld steps, %lld episodes "
-          "in %s; %.3f of the oracle's reward on %zu validation scenarios\npolicy in %s\n",
-          static_cast<unsigned long long>(settings.agent.seed), static_cast<long long>(r.steps),
-          static_cast<long long>(r.episodes), FormatDuration(seconds).c_str(), r.best_validation,
-          r.validation.size(), t.out.c_str());
-    }
+    TrainAndWritePolicy({t, steps, validation_scenarios, source, partial, checkpoint, resumed});
   } catch (...) {
+    std::error_code ec;
     if (!checkpoint.Exists())  // a checkpoint stays, for the same command to go on from
       fs::remove_all(partial, ec);
     throw;

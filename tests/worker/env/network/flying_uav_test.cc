@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <string>
 
 #include "tests/worker/env/network/shipped_scenario.h"
 #include "worker/env/network/uav_network.h"
@@ -31,23 +32,26 @@ int LosCount(const UavNetwork& network) {
   return n;
 }
 
+// Gives the UAV the leg `from` -> `to`, to end at `arrive`: at `halfway` it is midway, at `after`
+// at `to`.
+void ExpectLeg(UavNetwork& network, const Vec3& from, const Vec3& to, double halfway, double arrive,
+               double after, const std::string& leg) {
+  network.FlyUav(0, to, arrive);
+  network.RunUntil(halfway);
+  ExpectAt(network, Between(from, to, 0.5), ("halfway through the " + leg + " leg").c_str());
+  network.RunUntil(after);
+  ExpectAt(network, to, ("after the " + leg + " leg").c_str());
+}
+
 TEST(FlyingUav, FliesEachLegAtConstantVelocityAndTheLinksFollow) {
   const Scenario b = LoadShipped("b", {"simulation.duration=1.2"});
   const Vec3 start = b.InitialPlacement().front();
   UavNetwork network(b, {start}, Handover::kOff, UavMotion::kFlies);
   ASSERT_LT(LosCount(network), 4);
-  network.FlyUav(0, kSeesAllB, 0.4);
-  network.RunUntil(0.2);
-  ExpectAt(network, Between(start, kSeesAllB, 0.5), "halfway through the first leg");
-  network.RunUntil(0.6);
-  ExpectAt(network, kSeesAllB, "after the first leg");
+  ExpectLeg(network, start, kSeesAllB, 0.2, 0.4, 0.6, "first");
   EXPECT_EQ(LosCount(network), 4);
   // The next leg starts when it is given, not when the last one ended.
-  network.FlyUav(0, start, 1.0);
-  network.RunUntil(0.8);
-  ExpectAt(network, Between(kSeesAllB, start, 0.5), "halfway through the second leg");
-  network.RunUntil(1.1);
-  ExpectAt(network, start, "after the second leg");
+  ExpectLeg(network, kSeesAllB, start, 0.8, 1.0, 1.1, "second");
   EXPECT_LT(LosCount(network), 4);
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "tests/worker/learning/agent/plain_training.h"
+#include "tests/worker/learning/agent/policy_checks.h"
 #include "tests/worker/learning/agent/tiny_envs.h"
 #include "worker/learning/agent/dqn_agent.h"
 #include "worker/learning/agent_base/replay_buffer.h"
@@ -60,8 +61,8 @@ TEST(RunningMoments, MeanSpreadAndStandardise) {
   EXPECT_NEAR(m.Standardise(4.0 + std::sqrt(20.0 / 3.0)), 1.0f, 1e-6);
 }
 
-AgentSpec SmallSpec(std::uint64_t seed) {
-  AgentSpec spec = PlainTrainingSpec("dqn", seed, 60);
+AgentSpec SmallSpec(std::uint64_t seed, int episodes = 60) {
+  AgentSpec spec = PlainTrainingSpec("dqn", seed, episodes);
   DqnSpec& dqn = spec.dqn;
   dqn.learning_rate = 1e-2;
   dqn.replay_capacity = 10000;
@@ -191,8 +192,7 @@ class NearlyFlatBandit : public Env {
 
 TEST(DqnAgent, NormalisedRewardsResolveAOnePercentGap) {
   NearlyFlatBandit env;
-  AgentSpec spec = SmallSpec(6);
-  spec.train_episodes = 20;
+  const AgentSpec spec = SmallSpec(6, 20);
   DqnAgent agent(spec, 1, 2);
   Train(env, agent, spec, 1);
   const auto q = agent.QValues({0.0f});
@@ -206,13 +206,12 @@ TEST(DqnAgent, NormalisedRewardsResolveAOnePercentGap) {
 // that of a terminal end is not (a bug here caps every value at an episode's rewards).
 float LearnedValueOfOneStepEpisodes(bool truncate) {
   OneStepEnv env(truncate);
-  AgentSpec spec = SmallSpec(8);
+  AgentSpec spec = SmallSpec(8, 600);
   spec.normalise_rewards = false;  // a constant reward would standardise to 0
   spec.dqn.gamma = 0.5;
   spec.dqn.batch_size = 8;
   spec.dqn.warmup_steps = 8;
   spec.dqn.target_update_interval = 10;
-  spec.train_episodes = 600;
   DqnAgent agent(spec, 1, 1);
   Train(env, agent, spec, 1);
   return agent.QValues({0.0f})[0];
@@ -241,50 +240,32 @@ TEST(DqnAgent, LearnsTheChain) {
 }
 
 TEST(DqnAgent, SameSeedSamePolicyOtherSeedOther) {
-  auto train = [](std::uint64_t seed) {
-    ChainEnv env;
-    AgentSpec spec = SmallSpec(seed);
-    spec.train_episodes = 5;
-    DqnAgent agent(spec, 1, 2);
-    Train(env, agent, spec, 1);
-    return agent.QValues({0.25f});
-  };
-  EXPECT_EQ(train(11), train(11));
-  EXPECT_NE(train(11), train(12));
+  ExpectTheSeedDecidesThePolicy<DqnAgent, ChainEnv>(
+      [](std::uint64_t seed) { return SmallSpec(seed, 5); }, 1, 2,
+      [](const DqnAgent& agent) { return agent.QValues({0.25f}); });
+}
+
+std::vector<float> QValuesAtHalf(const DqnAgent& agent) {
+  return agent.QValues({0.5f});
 }
 
 TEST(DqnAgent, SaveLoadRoundTrip) {
   ChainEnv env;
-  AgentSpec spec = SmallSpec(5);
-  spec.train_episodes = 5;
+  const AgentSpec spec = SmallSpec(5, 5);
   DqnAgent trained(spec, 1, 2);
   Train(env, trained, spec, 1);
-  const auto dir = std::filesystem::temp_directory_path() / "rlpos-dqn-roundtrip";
-  std::filesystem::remove_all(dir);
-  trained.Save(dir.string());
   DqnAgent loaded(SmallSpec(99), 1, 2);
-  EXPECT_NE(loaded.QValues({0.5f}), trained.QValues({0.5f}));
-  loaded.Load(dir.string());
-  EXPECT_EQ(loaded.QValues({0.5f}), trained.QValues({0.5f}));
-  DqnAgent other_shape(spec, 3, 2);
-  EXPECT_THROW(other_shape.Load(dir.string()), std::runtime_error);
+  const auto dir = ExpectSaveLoadRoundTrip(trained, loaded, "rlpos-dqn-roundtrip", QValuesAtHalf,
+                                           [&] { return DqnAgent(spec, 3, 2); });
   EXPECT_THROW(loaded.Load((dir / "missing").string()), std::runtime_error);
   std::filesystem::remove_all(dir);
 }
 
 TEST(DqnAgent, RestoresTheKeptPolicyAfterLearningOn) {
   ChainEnv env;
-  AgentSpec spec = SmallSpec(5);
-  spec.train_episodes = 5;
+  const AgentSpec spec = SmallSpec(5, 5);
   DqnAgent agent(spec, 1, 2);
-  EXPECT_THROW(agent.RestoreKeptPolicy(), std::logic_error);
-  Train(env, agent, spec, 1);
-  agent.KeepPolicy();
-  const auto kept = agent.QValues({0.5f});
-  Train(env, agent, spec, 100);
-  EXPECT_NE(agent.QValues({0.5f}), kept);
-  agent.RestoreKeptPolicy();
-  EXPECT_EQ(agent.QValues({0.5f}), kept);
+  ExpectRestoresTheKeptPolicy(env, agent, spec, spec, QValuesAtHalf);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "tests/worker/learning/agent/plain_training.h"
+#include "tests/worker/learning/agent/policy_checks.h"
 #include "tests/worker/learning/agent/tiny_envs.h"
 #include "worker/env/gym/team_state.h"
 #include "worker/learning/agent_base/trainer.h"
@@ -55,15 +56,9 @@ TEST(PpoAgent, LearnsTheChain) {
 }
 
 TEST(PpoAgent, SameSeedSamePolicyOtherSeedOther) {
-  auto train = [](std::uint64_t seed) {
-    ChainEnv env;
-    const AgentSpec spec = PpoSpecFor(seed, 8);
-    PpoAgent agent(spec, 1, 2);
-    Train(env, agent, spec, 1);
-    return agent.Probabilities({0.25f}, {});
-  };
-  EXPECT_EQ(train(11), train(11));
-  EXPECT_NE(train(11), train(12));
+  ExpectTheSeedDecidesThePolicy<PpoAgent, ChainEnv>(
+      [](std::uint64_t seed) { return PpoSpecFor(seed, 8); }, 1, 2,
+      [](const PpoAgent& agent) { return agent.Probabilities({0.25f}, {}); });
 }
 
 TEST(PpoAgent, NeverTakesAMaskedAction) {
@@ -115,20 +110,19 @@ TEST(PpoAgent, AnnealsTheLearningRateOverThePlannedRollouts) {
   EXPECT_EQ(rates(true, 0), std::vector<double>(4, 1.0));
 }
 
+std::vector<float> ProbabilitiesAtHalf(const PpoAgent& agent) {
+  return agent.Probabilities({0.5f}, {});
+}
+
 TEST(PpoAgent, SaveLoadRoundTrip) {
   ChainEnv env;
   const AgentSpec spec = PpoSpecFor(5, 5);
   PpoAgent trained(spec, 1, 2);
   Train(env, trained, spec, 1);
-  const auto dir = std::filesystem::temp_directory_path() / "rlpos-ppo-roundtrip";
-  std::filesystem::remove_all(dir);
-  trained.Save(dir.string());
   PpoAgent loaded(PpoSpecFor(99, 5), 1, 2);
-  EXPECT_NE(loaded.Probabilities({0.5f}, {}), trained.Probabilities({0.5f}, {}));
-  loaded.Load(dir.string());
-  EXPECT_EQ(loaded.Probabilities({0.5f}, {}), trained.Probabilities({0.5f}, {}));
-  PpoAgent other_shape(spec, 3, 2);
-  EXPECT_THROW(other_shape.Load(dir.string()), std::runtime_error);
+  const auto dir =
+      ExpectSaveLoadRoundTrip(trained, loaded, "rlpos-ppo-roundtrip", ProbabilitiesAtHalf,
+                              [&] { return PpoAgent(spec, 3, 2); });
   // A campaign's artifacts carry policy.pt, not the critic: acting needs only the actor.
   ASSERT_TRUE(std::filesystem::remove(dir / "value.pt"));
   PpoAgent actor_only(PpoSpecFor(99, 5), 1, 2);
@@ -141,14 +135,8 @@ TEST(PpoAgent, RestoresTheKeptPolicyAfterLearningOn) {
   ChainEnv env;
   const AgentSpec spec = PpoSpecFor(5, 5);
   PpoAgent agent(spec, 1, 2);
-  EXPECT_THROW(agent.RestoreKeptPolicy(), std::logic_error);
-  Train(env, agent, spec, 1);
-  agent.KeepPolicy();
-  const auto kept = agent.Probabilities({0.5f}, {});
-  Train(env, agent, PpoSpecFor(5, 30), 100);  // enough steps for several rollouts
-  EXPECT_NE(agent.Probabilities({0.5f}, {}), kept);
-  agent.RestoreKeptPolicy();
-  EXPECT_EQ(agent.Probabilities({0.5f}, {}), kept);
+  // Learning on for 30 episodes: enough steps for several rollouts.
+  ExpectRestoresTheKeptPolicy(env, agent, spec, PpoSpecFor(5, 30), ProbabilitiesAtHalf);
 }
 
 // Acts and learns on the chain for `steps` steps from where `env` stands; the actions taken.

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "tests/worker/learning/agent/plain_training.h"
+#include "tests/worker/learning/agent/policy_checks.h"
 #include "tests/worker/learning/agent/tiny_envs.h"
 #include "worker/learning/agent_base/trainer.h"
 
@@ -85,15 +86,13 @@ TEST(SacAgent, TemperatureIsTunedUnlessFixed) {
 }
 
 TEST(SacAgent, SameSeedSamePolicyOtherSeedOther) {
-  auto train = [](std::uint64_t seed) {
-    PointEnv env;
-    const AgentSpec spec = SacSpecFor(seed, 8);
-    SacAgent agent(spec, 1, 1);
-    Train(env, agent, spec, 1);
-    return agent.ActContinuous({0.25f}, false);
-  };
-  EXPECT_EQ(train(11), train(11));
-  EXPECT_NE(train(11), train(12));
+  ExpectTheSeedDecidesThePolicy<SacAgent, PointEnv>(
+      [](std::uint64_t seed) { return SacSpecFor(seed, 8); }, 1, 1,
+      [](SacAgent& agent) { return agent.ActContinuous({0.25f}, false); });
+}
+
+std::vector<float> GreedyActionAtHalf(SacAgent& agent) {
+  return agent.ActContinuous({0.5f}, false);
 }
 
 TEST(SacAgent, SaveLoadRoundTrip) {
@@ -101,30 +100,17 @@ TEST(SacAgent, SaveLoadRoundTrip) {
   const AgentSpec spec = SacSpecFor(5, 8);
   SacAgent trained(spec, 1, 1);
   Train(env, trained, spec, 1);
-  const auto dir = std::filesystem::temp_directory_path() / "rlpos-sac-roundtrip";
-  std::filesystem::remove_all(dir);
-  trained.Save(dir.string());
   SacAgent loaded(SacSpecFor(99, 8), 1, 1);
-  EXPECT_NE(loaded.ActContinuous({0.5f}, false), trained.ActContinuous({0.5f}, false));
-  loaded.Load(dir.string());
-  EXPECT_EQ(loaded.ActContinuous({0.5f}, false), trained.ActContinuous({0.5f}, false));
-  SacAgent other_shape(spec, 1, 3);
-  EXPECT_THROW(other_shape.Load(dir.string()), std::runtime_error);
-  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(ExpectSaveLoadRoundTrip(trained, loaded, "rlpos-sac-roundtrip",
+                                                      GreedyActionAtHalf,
+                                                      [&] { return SacAgent(spec, 1, 3); }));
 }
 
 TEST(SacAgent, RestoresTheKeptPolicyAfterLearningOn) {
   PointEnv env;
   const AgentSpec spec = SacSpecFor(5, 8);
   SacAgent agent(spec, 1, 1);
-  EXPECT_THROW(agent.RestoreKeptPolicy(), std::logic_error);
-  Train(env, agent, spec, 1);
-  agent.KeepPolicy();
-  const auto kept = agent.ActContinuous({0.5f}, false);
-  Train(env, agent, spec, 100);
-  EXPECT_NE(agent.ActContinuous({0.5f}, false), kept);
-  agent.RestoreKeptPolicy();
-  EXPECT_EQ(agent.ActContinuous({0.5f}, false), kept);
+  ExpectRestoresTheKeptPolicy(env, agent, spec, spec, GreedyActionAtHalf);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tests/worker/learning/classic_envs/seeded_reset.h"
+
 namespace rlpos {
 namespace {
 
@@ -61,9 +63,7 @@ TEST(Pendulum, TruncatedAfter200StepsAndNeverTerminated) {
 TEST(Pendulum, ResetDrawsTheAngleAndSpeedFromTheSeed) {
   PendulumEnv a;
   PendulumEnv b;
-  const auto first = a.Reset(11);
-  EXPECT_EQ(first, b.Reset(11));
-  EXPECT_NE(first, a.Reset(12));
+  ExpectResetFollowsTheSeed(a, b, 11);
   for (std::uint64_t seed = 0; seed < 200; ++seed) {
     const auto obs = a.Reset(seed);
     EXPECT_NEAR(obs[0] * obs[0] + obs[1] * obs[1], 1.0, 1e-12);

@@ -7,6 +7,12 @@ SOURCE = os.environ.get("RLPOS_SOURCE_DIR", os.path.join(os.path.dirname(__file_
 BIN = os.environ.get("RLPOS_BIN_DIR", os.path.join(SOURCE, "build", "bin"))
 
 
+def closed_after(env):
+    """The body of an env fixture: yields `env` to the test, closes it after."""
+    yield env
+    env.close()
+
+
 def scenario_path(name):
     return os.path.join(SOURCE, "campaigns", "scenarios", name + ".json")
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import rlpos
-from conftest import BIN, scenario_path
+from conftest import BIN, closed_after, scenario_path
 
 SHORT = {"env.episode_duration": 1}  # 10 steps of 0.1 s
 CONTINUOUS = {"agent.algorithm": "sac", "env.action_space": "continuous"}
@@ -16,9 +16,7 @@ CONTINUOUS = {"agent.algorithm": "sac", "env.action_space": "continuous"}
 
 @pytest.fixture
 def env(scenario_b):
-    e = rlpos.make(scenario_b, fidelity="analytic", seed=3, overrides=SHORT)
-    yield e
-    e.close()
+    yield from closed_after(rlpos.make(scenario_b, fidelity="analytic", seed=3, overrides=SHORT))
 
 
 def test_spaces_types_and_shapes(env):

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import rlpos
-from conftest import scenario_path
+from conftest import closed_after, scenario_path
 
 SHORT = {"env.episode_duration": 1}  # 10 steps of 0.1 s
 KINDS = {
@@ -65,10 +65,8 @@ def check_step_result(env, result):
 
 @pytest.fixture(params=sorted(KINDS))
 def kind_env(request):
-    env = rlpos.make(scenario_path("b"), fidelity="analytic", seed=3,
-                     overrides={**SHORT, **KINDS[request.param]})
-    yield env
-    env.close()
+    yield from closed_after(rlpos.make(scenario_path("b"), fidelity="analytic", seed=3,
+                                       overrides={**SHORT, **KINDS[request.param]}))
 
 
 def test_the_spaces_and_attributes(kind_env):

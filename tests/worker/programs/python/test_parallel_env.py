@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import rlpos
-from conftest import scenario_path
+from conftest import closed_after, scenario_path
 from test_env_contract import check_space, same
 
 SHORT = {"env.episode_duration": 1}  # 10 steps of 0.1 s
@@ -29,9 +29,7 @@ def make(name, seed=3, **overrides):
 
 @pytest.fixture(params=sorted(CASES))
 def env(request):
-    e = make(request.param)
-    yield e
-    e.close()
+    yield from closed_after(make(request.param))
 
 
 def sample(env, agents=None):

@@ -10,7 +10,7 @@ import torch
 from torch import nn
 
 import rlpos
-from conftest import BIN
+from conftest import BIN, closed_after
 
 SHORT = {"env.episode_duration": 5}  # 50 steps of 0.1 s
 
@@ -76,9 +76,7 @@ def position(scenario, policy_dir):
 
 @pytest.fixture
 def env(scenario_b):
-    e = rlpos.make(scenario_b, fidelity="analytic", seed=11, overrides=SHORT)
-    yield e
-    e.close()
+    yield from closed_after(rlpos.make(scenario_b, fidelity="analytic", seed=11, overrides=SHORT))
 
 
 def policy_for(env):

@@ -10,7 +10,7 @@ import pytest
 
 import rlpos
 from rlpos.spaces import GYMNASIUM
-from conftest import scenario_path
+from conftest import closed_after, scenario_path
 
 SHORT = {"env.episode_duration": 1}  # 10 steps of 0.1 s
 CONTINUOUS = {"agent.algorithm": "sac", "env.action_space": "continuous"}
@@ -23,9 +23,8 @@ def threads_of_this_process():
 
 @pytest.fixture
 def envs(scenario_b):
-    e = rlpos.make_vec(scenario_b, num_envs=4, seed=3, overrides=SHORT, threads=2)
-    yield e
-    e.close()
+    yield from closed_after(
+        rlpos.make_vec(scenario_b, num_envs=4, seed=3, overrides=SHORT, threads=2))
 
 
 def check_infos(infos, n, keys):

@@ -2,6 +2,10 @@
 // error and a non-zero exit before any simulation runs.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "tests/support/command.h"
 
 namespace rlpos::testing {
@@ -16,22 +20,27 @@ void ExpectOneLineError(const std::string& command_line, const std::string& mess
   EXPECT_EQ(r.err, "error: " + message + "\n");
 }
 
+// `bench` run with each row's arguments: the row's one-line error.
+void ExpectOneLineErrors(const std::string& bench,
+                         const std::vector<std::pair<std::string, std::string>>& rows) {
+  for (const auto& [arguments, message] : rows)
+    ExpectOneLineError(bench + " " + arguments, message);
+}
+
+const std::string kMissingScenario = "/nonexistent.json: cannot open: No such file or directory";
+
 TEST(BenchCli, AccessRejectsBadArguments) {
-  const std::string bench = BuiltBinary("rlpos-bench-access");
-  ExpectOneLineError(bench + " /nonexistent.json 1,2,3",
-                     "/nonexistent.json: cannot open: No such file or directory");
-  ExpectOneLineError(bench + " " + kScenarioA + " 1,2",
-                     "position: expected x,y,z in metres, got \"1,2\"");
-  ExpectOneLineError(bench + " " + kScenarioA + " 1,2,3 -1",
-                     "duration: -1 is not a positive number of seconds");
+  ExpectOneLineErrors(
+      BuiltBinary("rlpos-bench-access"),
+      {{"/nonexistent.json 1,2,3", kMissingScenario},
+       {kScenarioA + " 1,2", "position: expected x,y,z in metres, got \"1,2\""},
+       {kScenarioA + " 1,2,3 -1", "duration: -1 is not a positive number of seconds"}});
 }
 
 TEST(BenchCli, CalibrationRejectsBadArguments) {
-  const std::string bench = BuiltBinary("rlpos-bench-calibration");
-  ExpectOneLineError(bench + " /nonexistent.json",
-                     "/nonexistent.json: cannot open: No such file or directory");
-  ExpectOneLineError(bench + " " + kScenarioA + " 2s",
-                     "duration: 2s is not a positive number of seconds");
+  ExpectOneLineErrors(BuiltBinary("rlpos-bench-calibration"),
+                      {{"/nonexistent.json", kMissingScenario},
+                       {kScenarioA + " 2s", "duration: 2s is not a positive number of seconds"}});
 }
 
 // rlpos-bench-env once aborted on --help (it took it for the scenario file): its usage now, and
@@ -46,12 +55,12 @@ TEST(BenchCli, EnvAnswersHelpAndRejectsBadArguments) {
   const CommandResult none = RunCommand(bench);
   EXPECT_EQ(none.exit_code, 2);
   EXPECT_EQ(none.err, usage);
-  ExpectOneLineError(bench + " /nonexistent.json",
-                     "/nonexistent.json: cannot open: No such file or directory");
-  ExpectOneLineError(bench + " " + kScenarioA + " 10 0",
-                     "PACKET_STEPS: expected a positive whole number of steps, got \"0\"");
-  ExpectOneLineError(bench + " " + kScenarioA + " 2k",
-                     "ANALYTIC_STEPS: expected a positive whole number of steps, got \"2k\"");
+  ExpectOneLineErrors(
+      bench,
+      {{"/nonexistent.json", kMissingScenario},
+       {kScenarioA + " 10 0", "PACKET_STEPS: expected a positive whole number of steps, got \"0\""},
+       {kScenarioA + " 2k",
+        "ANALYTIC_STEPS: expected a positive whole number of steps, got \"2k\""}});
 }
 
 }  // namespace

@@ -29,6 +29,11 @@ void ExpectOneLineError(const CommandResult& r, int exit_code, const std::string
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
 }
 
+// rlpos-sim run with `arguments`: a usage error (exit 2) of one line holding `fragment`.
+void ExpectUsageError(const std::string& arguments, const std::string& fragment) {
+  ExpectOneLineError(RunCommand(Sim(arguments)), 2, fragment);
+}
+
 TEST(RlposSimCli, ValidatePrintsASummary) {
   const auto r = RunCommand(Sim("validate " + kScenarioB));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -50,14 +55,13 @@ TEST(RlposSimCli, ValidateSaysHowTheUesMove) {
 }
 
 TEST(RlposSimCli, BadMobilityIsAOneLineErrorWithItsPath) {
-  ExpectOneLineError(
-      RunCommand(Sim("validate " + kScenarioB +
-                     " --set 'ues.2.mobility={\"model\": \"crowd\", \"target\": [50, 50]}'")),
-      2, "/ues/2/mobility/target: crowd target (50, 50) is inside building 0 (\"tower\")");
-  ExpectOneLineError(
-      RunCommand(Sim("validate " + kScenarioB +
-                     " --set 'ues.2.mobility={\"model\": \"gauss_markov\", \"alpha\": 2}'")),
-      2, "/ues/2/mobility/alpha: must be <= 1, got 2");
+  ExpectUsageError(
+      "validate " + kScenarioB +
+          " --set 'ues.2.mobility={\"model\": \"crowd\", \"target\": [50, 50]}'",
+      "/ues/2/mobility/target: crowd target (50, 50) is inside building 0 (\"tower\")");
+  ExpectUsageError("validate " + kScenarioB +
+                       " --set 'ues.2.mobility={\"model\": \"gauss_markov\", \"alpha\": 2}'",
+                   "/ues/2/mobility/alpha: must be <= 1, got 2");
 }
 
 TEST(RlposSimCli, ValidateCountsTheUesInLoSOfSeveralUavs) {
@@ -69,65 +73,59 @@ TEST(RlposSimCli, ValidateCountsTheUesInLoSOfSeveralUavs) {
 }
 
 TEST(RlposSimCli, MissingFile) {
-  ExpectOneLineError(RunCommand(Sim("validate /nonexistent.json")), 2,
-                     "/nonexistent.json: cannot open: No such file or directory");
+  ExpectUsageError("validate /nonexistent.json",
+                   "/nonexistent.json: cannot open: No such file or directory");
 }
 
 TEST(RlposSimCli, MalformedJson) {
   const std::string file = TempFile("{\"ues\": [}");
-  ExpectOneLineError(RunCommand(Sim("validate " + file)), 2,
-                     file + ": /: malformed JSON at line 1");
+  ExpectUsageError("validate " + file, file + ": /: malformed JSON at line 1");
 }
 
 TEST(RlposSimCli, UnknownKeyWithSuggestion) {
-  ExpectOneLineError(RunCommand(Sim("validate " + kScenarioB + " --set wifi.chanel=36")), 2,
-                     "/wifi/chanel: unknown key \"chanel\"; did you mean \"channel\"?");
+  ExpectUsageError("validate " + kScenarioB + " --set wifi.chanel=36",
+                   "/wifi/chanel: unknown key \"chanel\"; did you mean \"channel\"?");
 }
 
 TEST(RlposSimCli, UnknownTypeId) {
-  ExpectOneLineError(
-      RunCommand(
-          Sim("validate " + kScenarioB + " --set propagation.type=ns3::FriisPropagationLosModel")),
-      2,
+  ExpectUsageError(
+      "validate " + kScenarioB + " --set propagation.type=ns3::FriisPropagationLosModel",
       "/propagation/type: unknown ns-3 TypeId \"ns3::FriisPropagationLosModel\"; did you mean "
       "\"ns3::FriisPropagationLossModel\"?");
 }
 
 TEST(RlposSimCli, TypeOfTheWrongKind) {
-  ExpectOneLineError(
-      RunCommand(Sim("validate " + kScenarioB + " --set wifi.rate_manager.type=ns3::Node")), 2,
-      "/wifi/rate_manager/type: \"ns3::Node\" is not a ns3::WifiRemoteStationManager");
+  ExpectUsageError("validate " + kScenarioB + " --set wifi.rate_manager.type=ns3::Node",
+                   "/wifi/rate_manager/type: \"ns3::Node\" is not a ns3::WifiRemoteStationManager");
 }
 
 TEST(RlposSimCli, AttributeTheTypeDoesNotHave) {
-  ExpectOneLineError(
-      RunCommand(Sim("validate " + kScenarioB +
-                     " --set propagation.attributes.LosModel.attributes.Frequncy=5e9")),
-      2,
+  ExpectUsageError(
+      "validate " + kScenarioB + " --set propagation.attributes.LosModel.attributes.Frequncy=5e9",
       "/propagation/attributes/LosModel/attributes/Frequncy: "
       "ns3::ItuR1411LosPropagationLossModel has no attribute \"Frequncy\"; did you mean "
       "\"Frequency\"?");
 }
 
 TEST(RlposSimCli, AttributeValueOfTheWrongType) {
-  ExpectOneLineError(
-      RunCommand(Sim("validate " + kScenarioB +
-                     " --set 'propagation.attributes.NlosModel.attributes.Environment=\"Moon\"'")),
-      2, "/propagation/attributes/NlosModel/attributes/Environment: invalid value \"Moon\"");
+  ExpectUsageError(
+      "validate " + kScenarioB +
+          " --set 'propagation.attributes.NlosModel.attributes.Environment=\"Moon\"'",
+      "/propagation/attributes/NlosModel/attributes/Environment: invalid value \"Moon\"");
 }
 
 TEST(RlposSimCli, ChannelNotOfThatWidth) {
-  ExpectOneLineError(RunCommand(Sim("validate " + kScenarioB + " --set wifi.channel=36")), 2,
-                     "/wifi/channel: channel 36 is not a 160 MHz 802.11ac channel");
+  ExpectUsageError("validate " + kScenarioB + " --set wifi.channel=36",
+                   "/wifi/channel: channel 36 is not a 160 MHz 802.11ac channel");
 }
 
 TEST(RlposSimCli, BadPositions) {
-  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 1,2")), 2,
-                     "--position: expected x,y,z");
-  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,50,10")), 2,
-                     "--position: (50, 50, 10) is inside building 0 (\"tower\")");
-  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,150,10")), 2,
-                     "--position: (50, 150, 10) is outside the venue");
+  ExpectUsageError("eval --scenario " + kScenarioB + " --position 1,2",
+                   "--position: expected x,y,z");
+  ExpectUsageError("eval --scenario " + kScenarioB + " --position 50,50,10",
+                   "--position: (50, 50, 10) is inside building 0 (\"tower\")");
+  ExpectUsageError("eval --scenario " + kScenarioB + " --position 50,150,10",
+                   "--position: (50, 150, 10) is outside the venue");
 }
 
 TEST(RlposSimCli, ASetErrorNamesTheOverrideNotTheFile) {
@@ -145,12 +143,11 @@ TEST(RlposSimCli, ASetErrorNamesTheOverrideNotTheFile) {
 
 TEST(RlposSimCli, CommandLineErrorsAreOneLine) {
   // CLI11's own errors keep the project's format: one line, the program's prefix, exit 2.
-  ExpectOneLineError(RunCommand(Sim("position --scenario " + kScenarioB + " --positioner kmean")),
-                     2, "--positioner: kmean not in");
-  ExpectOneLineError(RunCommand(Sim("validate " + kScenarioB + " --no-such-flag")), 2,
-                     "--no-such-flag");
-  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB)), 2, "--position");
-  ExpectOneLineError(RunCommand(Sim("")), 2, "subcommand");
+  ExpectUsageError("position --scenario " + kScenarioB + " --positioner kmean",
+                   "--positioner: kmean not in");
+  ExpectUsageError("validate " + kScenarioB + " --no-such-flag", "--no-such-flag");
+  ExpectUsageError("eval --scenario " + kScenarioB, "--position");
+  ExpectUsageError("", "subcommand");
 }
 
 TEST(RlposSimCli, UsageErrorsExitTwo) {
@@ -227,13 +224,11 @@ TEST(RlposSimCli, AnEvalTheAnalyticModelCannotScoreHasANullReward) {
 
 // An eval whose settings cannot run fails before it simulates: one line, no progress shown.
 TEST(RlposSimCli, AnEvalOfBadSettingsFailsBeforeSimulating) {
-  ExpectOneLineError(
-      RunCommand(Sim("eval --scenario " + kScenarioB + " --position 50,35,10" +
-                     " --set 'propagation={\"type\": \"ns3::NoSuchPropagationLossModel\"}'")),
-      2, "/propagation/type");
-  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kScenarioB +
-                                    " --position 50,35,10 --set wifi.mode=mesh")),
-                     2, "/wifi/mode");
+  ExpectUsageError("eval --scenario " + kScenarioB + " --position 50,35,10" +
+                       " --set 'propagation={\"type\": \"ns3::NoSuchPropagationLossModel\"}'",
+                   "/propagation/type");
+  ExpectUsageError("eval --scenario " + kScenarioB + " --position 50,35,10 --set wifi.mode=mesh",
+                   "/wifi/mode");
 }
 
 TEST(RlposSimCli, OracleCandidatesNotRescoredCarryNull) {
@@ -279,16 +274,14 @@ TEST(RlposSimCli, EvalOfThreeUavs) {
 }
 
 TEST(RlposSimCli, EvalNeedsAPositionPerUav) {
-  ExpectOneLineError(RunCommand(Sim("eval --scenario " + kUrban3 + " --position 135,85,60")), 2,
-                     "--position: scenario urban3 has 3 UAV(s): give one x,y,z each (1 given)");
-  ExpectOneLineError(
-      RunCommand(Sim("eval --scenario " + kUrban3 +
-                     " --position 135,85,60 --position 135,85.5,60 --position 70,15,60")),
-      2, "--position #2: UAVs uav1 and uav2 overlap");
-  ExpectOneLineError(
-      RunCommand(Sim("eval --scenario " + kUrban3 +
-                     " --position 135,85,60 --position 25,25,10 --position 70,15,60")),
-      2, "--position #2: (25, 25, 10) is inside building 0");
+  ExpectUsageError("eval --scenario " + kUrban3 + " --position 135,85,60",
+                   "--position: scenario urban3 has 3 UAV(s): give one x,y,z each (1 given)");
+  ExpectUsageError("eval --scenario " + kUrban3 +
+                       " --position 135,85,60 --position 135,85.5,60 --position 70,15,60",
+                   "--position #2: UAVs uav1 and uav2 overlap");
+  ExpectUsageError("eval --scenario " + kUrban3 +
+                       " --position 135,85,60 --position 25,25,10 --position 70,15,60",
+                   "--position #2: (25, 25, 10) is inside building 0");
 }
 
 TEST(RlposSimCli, DescribeHyperparametersOfOneAlgorithm) {

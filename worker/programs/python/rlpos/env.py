@@ -5,7 +5,7 @@ import os
 import numpy as np
 
 from . import _rlpos
-from .spaces import GYMNASIUM, Box, Discrete, gymnasium
+from .spaces import GYMNASIUM, Discrete, action_space_of, float32_box, gymnasium
 
 _MAX_SEED = 2**63 - 1
 
@@ -22,6 +22,24 @@ def override_texts(overrides, **settings):
         if value is not None:
             texts.append(path + "=" + json.dumps(value))
     return texts
+
+
+def check_env_arguments(fidelity, render_mode):
+    """What the single and the parallel env take besides the scenario, checked alike."""
+    if render_mode is not None:
+        raise ValueError("render_mode: the env renders nothing; leave it None")
+    if fidelity not in (None, "analytic", "packet"):
+        raise ValueError("fidelity: expected \"analytic\" or \"packet\", got %r" % (fidelity,))
+
+
+def random_start_option(options):
+    """reset's options, {"random_start": bool} or none: whether the UAVs start at random."""
+    if not options:
+        return False
+    unknown = sorted(set(options) - {"random_start"})
+    if unknown or not isinstance(options.get("random_start", False), bool):
+        raise ValueError("options: expected {\"random_start\": bool}, got %r" % (options,))
+    return options.get("random_start", False)
 
 
 def _check_seed(seed, what):
@@ -74,22 +92,12 @@ class UavPositioningEnv(WrappedEnvProperties, gymnasium.Env if GYMNASIUM else ob
     metadata = {"render_modes": []}
 
     def __init__(self, scenario, fidelity=None, seed=None, overrides=None, render_mode=None):
-        if render_mode is not None:
-            raise ValueError("render_mode: the env renders nothing; leave it None")
-        if fidelity not in (None, "analytic", "packet"):
-            raise ValueError("fidelity: expected \"analytic\" or \"packet\", got %r" % (fidelity,))
+        check_env_arguments(fidelity, render_mode)
         self.render_mode = None
         self._env = _rlpos.Env(os.fspath(scenario),
                                override_texts(overrides, **{"env.fidelity": fidelity}))
-        if self._env.action_count > 0:
-            self.action_space = Discrete(self._env.action_count)
-        else:
-            low, high = self._env.action_bounds
-            self.action_space = Box(np.array(low, np.float32), np.array(high, np.float32),
-                                    dtype=np.float32)
-        low, high = self._env.observation_bounds
-        self.observation_space = Box(np.array(low, np.float32), np.array(high, np.float32),
-                                     dtype=np.float32)
+        self.action_space = action_space_of(self._env)
+        self.observation_space = float32_box(self._env.observation_bounds)
         # The C++ side returns the observation as a float32 array clipped to this space and the
         # info dict as it is handed out; a plain int action in range goes straight to it.
         self._discrete_n = self._env.action_count
@@ -102,12 +110,7 @@ class UavPositioningEnv(WrappedEnvProperties, gymnasium.Env if GYMNASIUM else ob
     def reset(self, *, seed=None, options=None):
         if GYMNASIUM:
             super().reset(seed=seed)
-        random_start = False
-        if options:
-            unknown = sorted(set(options) - {"random_start"})
-            if unknown or not isinstance(options.get("random_start", False), bool):
-                raise ValueError("options: expected {\"random_start\": bool}, got %r" % (options,))
-            random_start = options.get("random_start", False)
+        random_start = random_start_option(options)
         if seed is not None:
             self._next_run = _check_seed(seed, "seed")
         run = self._next_run

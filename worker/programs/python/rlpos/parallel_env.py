@@ -5,8 +5,9 @@ import os
 import numpy as np
 
 from . import _rlpos
-from .env import _MAX_SEED, WrappedEnvProperties, _check_seed, override_texts
-from .spaces import Box, Discrete
+from .env import (_MAX_SEED, WrappedEnvProperties, _check_seed, check_env_arguments,
+                  override_texts)
+from .spaces import action_space_of, float32_box
 
 try:
     import pettingzoo
@@ -46,31 +47,18 @@ class ParallelUavEnv(WrappedEnvProperties, pettingzoo.ParallelEnv if PETTINGZOO 
     metadata = {"name": "rlpos_uav_positioning_v0", "render_modes": [], "is_parallelizable": True}
 
     def __init__(self, scenario, fidelity=None, seed=None, overrides=None, render_mode=None):
-        if render_mode is not None:
-            raise ValueError("render_mode: the env renders nothing; leave it None")
-        if fidelity not in (None, "analytic", "packet"):
-            raise ValueError("fidelity: expected \"analytic\" or \"packet\", got %r" % (fidelity,))
+        check_env_arguments(fidelity, render_mode)
         self.render_mode = None
         self._env = _rlpos.ParallelEnv(os.fspath(scenario),
                                        override_texts(overrides, **{"env.fidelity": fidelity}))
         self.possible_agents = list(self._env.agent_names)
         self.agents = []
         self._index = {agent: u for u, agent in enumerate(self.possible_agents)}
-        low, high = self._env.observation_bounds
-        self.observation_spaces = {
-            agent: Box(np.array(low, np.float32), np.array(high, np.float32), dtype=np.float32)
-            for agent in self.possible_agents}
-        if self._env.action_count > 0:
-            self.action_spaces = {agent: Discrete(self._env.action_count)
-                                  for agent in self.possible_agents}
-        else:
-            low, high = self._env.action_bounds
-            self.action_spaces = {
-                agent: Box(np.array(low, np.float32), np.array(high, np.float32), dtype=np.float32)
-                for agent in self.possible_agents}
-        low, high = self._env.state_bounds
-        self.state_space = Box(np.array(low, np.float32), np.array(high, np.float32),
-                               dtype=np.float32)
+        # A space of its own for each agent: each samples from its own seed.
+        self.observation_spaces = {agent: float32_box(self._env.observation_bounds)
+                                   for agent in self.possible_agents}
+        self.action_spaces = {agent: action_space_of(self._env) for agent in self.possible_agents}
+        self.state_space = float32_box(self._env.state_bounds)
         self._state = None
         if seed is None:
             self._next_run = self._env.agent_seed * 1000000 + 1

@@ -111,3 +111,16 @@ else:
     Box = FallbackBox
     MultiDiscrete = FallbackMultiDiscrete
     batch_space = fallback_batch_space
+
+
+def float32_box(bounds):
+    """A float32 Box between the C++ env's (low, high) bounds."""
+    low, high = bounds
+    return Box(np.array(low, np.float32), np.array(high, np.float32), dtype=np.float32)
+
+
+def action_space_of(env):
+    """The C++ env's moves, or with no moves (a continuous action space) its displacement Box."""
+    if env.action_count > 0:
+        return Discrete(env.action_count)
+    return float32_box(env.action_bounds)

@@ -5,8 +5,8 @@ import os
 import numpy as np
 
 from . import _rlpos
-from .env import override_texts
-from .spaces import GYMNASIUM, Box, Discrete, batch_space, gymnasium
+from .env import override_texts, random_start_option
+from .spaces import GYMNASIUM, Discrete, action_space_of, batch_space, float32_box, gymnasium
 
 MAX_ENVS = 4096
 _MAX_SEED = 2**63 - 1
@@ -77,15 +77,8 @@ class VectorEnv(gymnasium.vector.VectorEnv if GYMNASIUM else object):
                                      override_texts(overrides, **{"env.fidelity": fidelity}),
                                      num_envs, seed, threads or 0)
         self.num_envs = num_envs
-        if self._env.action_count > 0:
-            self.single_action_space = Discrete(self._env.action_count)
-        else:
-            low, high = self._env.action_bounds
-            self.single_action_space = Box(np.array(low, np.float32), np.array(high, np.float32),
-                                           dtype=np.float32)
-        low, high = self._env.observation_bounds
-        self.single_observation_space = Box(np.array(low, np.float32),
-                                            np.array(high, np.float32), dtype=np.float32)
+        self.single_action_space = action_space_of(self._env)
+        self.single_observation_space = float32_box(self._env.observation_bounds)
         self.action_space = batch_space(self.single_action_space, num_envs)
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         if seed is not None:
@@ -108,12 +101,7 @@ class VectorEnv(gymnasium.vector.VectorEnv if GYMNASIUM else object):
         return list(self._env.actions)
 
     def reset(self, *, seed=None, options=None):
-        random_start = False
-        if options:
-            unknown = sorted(set(options) - {"random_start"})
-            if unknown or not isinstance(options.get("random_start", False), bool):
-                raise ValueError("options: expected {\"random_start\": bool}, got %r" % (options,))
-            random_start = options.get("random_start", False)
+        random_start = random_start_option(options)
         n = self.num_envs
         if seed is None:
             seeds = []
