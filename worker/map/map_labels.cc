@@ -42,10 +42,11 @@ bool IsElementId(const std::string& text) {
 
 // The first of the label's forms that fits inside the building's ground shape, upright, else
 // turned, at the first of its label points where it does; none when it fits nowhere. Each form
-// keeps 3 points of room either side and 1 above and below.
-bool FitBuildingLabel(cairo_t* cr, const BuildingSpec& b, double scale, Fit& fit) {
+// keeps 3 points of room either side and 1 above and below. `name`: BuildingLabelName's, empty
+// for the height alone.
+bool FitBuildingLabel(cairo_t* cr, const BuildingSpec& b, const std::string& name, double scale,
+                      Fit& fit) {
   const std::string height = ShortNumber(b.height) + " m";
-  const std::string name = BuildingLabelName(b.name);
   std::vector<std::vector<std::string>> forms = {{name, height}, {name + ", " + height}, {height}};
   if (name.empty())
     forms.erase(forms.begin(), forms.begin() + 2);
@@ -248,8 +249,9 @@ std::vector<TextBox> PaintBuildingLabels(cairo_t* cr, const MapScene& scene, con
   std::vector<TextBox> boxes;
   SelectFont(cr, kBuildingFont);
   for (const BuildingSpec& b : s.buildings) {
+    const std::string name = BuildingLabelName(b.name);
     Fit fit;
-    const bool fits = FitBuildingLabel(cr, b, view.scale, fit);
+    const bool fits = FitBuildingLabel(cr, b, name, view.scale, fit);
     const Point2 at = fits ? fit.at : LabelPoints(b).front();
     const double cx = view.CanvasX({at.x, 0, 0}), cy = view.CanvasY({0, at.y, 0});
     // Inside, unless it would cover a marker or the label of a building it stands in or on.
@@ -262,7 +264,6 @@ std::vector<TextBox> PaintBuildingLabels(cairo_t* cr, const MapScene& scene, con
     // Too small for its label, or a UAV or UE sits where it would go: the label goes beside the
     // building, with a halo, where it hides nothing; a building known only by its element id
     // keeps just its shade (the height scale).
-    const std::string name = BuildingLabelName(b.name);
     if (name.empty())
       continue;
     const std::string text = name + ", " + ShortNumber(b.height) + " m";
